@@ -1,0 +1,1 @@
+//! SVG/PNG plots of polars, point distributions and rotor results (plotters, shipped font).

@@ -1,0 +1,33 @@
+//! Polars: α sweeps of the viscous solver with warm starts and recovery of failed points.
+
+use serde::{Deserialize, Serialize};
+
+/// One operating point of a polar: the result of the solver at one (Re, M, α).
+///
+/// Unconverged points are kept (with `converged = false`) so that tables can flag them;
+/// their coefficients must never be used as results.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PolarPoint {
+    /// Angle of attack [deg].
+    pub alpha: f64,
+    /// Lift coefficient.
+    pub cl: f64,
+    /// Total drag coefficient (Squire–Young at the wake end; 0 for inviscid).
+    pub cd: f64,
+    /// Pressure drag coefficient, cd − cdf.
+    pub cdp: f64,
+    /// Skin-friction drag coefficient.
+    pub cdf: f64,
+    /// Pitching-moment coefficient about the quarter chord.
+    pub cm: f64,
+    /// Transition location x/c on the upper surface (1 if laminar to the TE).
+    pub xtr_top: f64,
+    /// Transition location x/c on the lower surface.
+    pub xtr_bot: f64,
+    /// Whether the solver converged at this point.
+    pub converged: bool,
+    /// Newton iterations used.
+    pub iterations: u32,
+    /// Final residual norm of the Newton system.
+    pub residual: f64,
+}

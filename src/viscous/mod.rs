@@ -1,0 +1,2 @@
+//! Viscous–inviscid coupling: wake, boundary-layer stations, global Newton solve of the
+//! boundary-layer equations together with the edge velocity (XFOIL's approach).
