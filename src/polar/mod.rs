@@ -1,6 +1,11 @@
-//! Polars: α sweeps of the viscous solver with warm starts and recovery of failed points.
+//! Polars: α sweeps of a point solver with warm starts and recovery of failed points.
 
+pub mod range;
+pub mod sweep;
+
+pub use range::{march_order, parse_alpha_range, RangeError};
 use serde::{Deserialize, Serialize};
+pub use sweep::{sweep, SweepParams, WarmStartSolver};
 
 /// One operating point of a polar: the result of the solver at one (Re, M, α).
 ///

@@ -1,0 +1,166 @@
+//! Angle-of-attack ranges `A0:A1:DA` and the order in which a sweep visits them.
+
+use thiserror::Error;
+
+/// Why an α range was rejected.
+#[derive(Debug, Error, PartialEq)]
+pub enum RangeError {
+    /// The text is not `A0:A1:DA` or a single value.
+    #[error("alpha range '{0}' is not A0:A1:DA or a single value")]
+    Syntax(String),
+    /// A field is not a finite number.
+    #[error("alpha range '{text}': '{field}' is not a finite number")]
+    Number {
+        /// The whole range text.
+        text: String,
+        /// The offending field.
+        field: String,
+    },
+    /// The step is zero.
+    #[error("alpha range '{0}': step is 0")]
+    ZeroStep(String),
+    /// The step does not lead from A0 to A1 (wrong sign).
+    #[error("alpha range '{0}' is empty: the step does not lead from A0 to A1")]
+    Empty(String),
+    /// Too many points (a typo such as a tiny step).
+    #[error("alpha range '{text}' has {count} points (at most {max})")]
+    TooMany {
+        /// The whole range text.
+        text: String,
+        /// Number of points it would give.
+        count: usize,
+        /// The limit.
+        max: usize,
+    },
+}
+
+/// Largest number of α values one range may produce.
+pub const MAX_ALPHA_POINTS: usize = 100_000;
+
+/// Parse `A0:A1:DA` (degrees, inclusive of A1 within 1e-9 of a step) or a single value `A`.
+///
+/// The values are `A0 + i·DA`, rounded to 1e-9 so that `-4:12:0.1` yields exactly `0.3` rather
+/// than `0.30000000000000004`.
+pub fn parse_alpha_range(text: &str) -> Result<Vec<f64>, RangeError> {
+    let fields: Vec<&str> = text.split(':').map(str::trim).collect();
+    let num = |f: &str| -> Result<f64, RangeError> {
+        match f.parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            _ => Err(RangeError::Number {
+                text: text.to_string(),
+                field: f.to_string(),
+            }),
+        }
+    };
+    match fields.as_slice() {
+        [a] => Ok(vec![num(a)?]),
+        [a0, a1, da] => {
+            let (a0, a1, da) = (num(a0)?, num(a1)?, num(da)?);
+            if da == 0.0 {
+                return Err(RangeError::ZeroStep(text.to_string()));
+            }
+            let span = (a1 - a0) / da;
+            if span < -1e-9 {
+                return Err(RangeError::Empty(text.to_string()));
+            }
+            let n = (span + 1e-9).floor();
+            if n + 1.0 > MAX_ALPHA_POINTS as f64 {
+                return Err(RangeError::TooMany {
+                    text: text.to_string(),
+                    count: (n + 1.0).min(usize::MAX as f64) as usize,
+                    max: MAX_ALPHA_POINTS,
+                });
+            }
+            Ok((0..=n as usize)
+                .map(|i| round9(a0 + i as f64 * da))
+                .collect())
+        }
+        _ => Err(RangeError::Syntax(text.to_string())),
+    }
+}
+
+/// Round to 9 decimals (removes binary noise from `A0 + i·DA`).
+fn round9(v: f64) -> f64 {
+    let r = (v * 1e9).round() / 1e9;
+    if r == 0.0 {
+        0.0
+    } else {
+        r
+    }
+}
+
+/// The order in which a warm-started sweep visits `alphas`: start at the value nearest 0°,
+/// march up to the largest, then return to the start and march down (as XFOIL users do).
+///
+/// Returns two index lists into `alphas` after sorting by value: `(upward, downward)`, where
+/// `upward` begins with the start point and `downward` does not contain it.
+pub fn march_order(alphas: &[f64]) -> (Vec<usize>, Vec<usize>) {
+    let mut idx: Vec<usize> = (0..alphas.len()).collect();
+    idx.sort_by(|&a, &b| alphas[a].total_cmp(&alphas[b]));
+    let Some(start) = (0..idx.len()).min_by(|&a, &b| {
+        alphas[idx[a]]
+            .abs()
+            .total_cmp(&alphas[idx[b]].abs())
+            .then(a.cmp(&b))
+    }) else {
+        return (Vec::new(), Vec::new());
+    };
+    let up = idx[start..].to_vec();
+    let down = idx[..start].iter().rev().copied().collect();
+    (up, down)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges() {
+        assert_eq!(parse_alpha_range("-4:12:2").unwrap().len(), 9);
+        assert_eq!(parse_alpha_range("-4:12:0.1").unwrap()[43], 0.3);
+        assert_eq!(
+            parse_alpha_range("12:-4:-4").unwrap(),
+            vec![12.0, 8.0, 4.0, 0.0, -4.0]
+        );
+        assert_eq!(parse_alpha_range("3").unwrap(), vec![3.0]);
+        assert_eq!(
+            parse_alpha_range("0:1:0.3").unwrap(),
+            vec![0.0, 0.3, 0.6, 0.9]
+        );
+        assert!(matches!(
+            parse_alpha_range("0:4:0"),
+            Err(RangeError::ZeroStep(_))
+        ));
+        assert!(matches!(
+            parse_alpha_range("4:0:1"),
+            Err(RangeError::Empty(_))
+        ));
+        assert!(matches!(
+            parse_alpha_range("a:1:1"),
+            Err(RangeError::Number { .. })
+        ));
+        assert!(matches!(
+            parse_alpha_range("nan:1:1"),
+            Err(RangeError::Number { .. })
+        ));
+        assert!(matches!(
+            parse_alpha_range("1:2"),
+            Err(RangeError::Syntax(_))
+        ));
+        assert!(matches!(
+            parse_alpha_range("0:1e9:1e-3"),
+            Err(RangeError::TooMany { .. })
+        ));
+    }
+
+    #[test]
+    fn order_starts_near_zero() {
+        let a = [-4.0, -2.0, 0.5, 2.0, 4.0];
+        let (up, down) = march_order(&a);
+        assert_eq!(up, vec![2, 3, 4]);
+        assert_eq!(down, vec![1, 0]);
+        let (up, down) = march_order(&[5.0, 3.0, 4.0]);
+        assert_eq!(up, vec![1, 2, 0]);
+        assert!(down.is_empty());
+    }
+}

@@ -1,0 +1,209 @@
+//! α sweeps with warm starts and recovery of failed points.
+//!
+//! A sweep starts at the α nearest 0°, marches up, then restarts from the saved state at the
+//! start point and marches down — the way XFOIL users run polars. A point that fails is retried
+//! by sub-stepping from the last converged neighbour (half, then quarter steps), then from a fresh
+//! start; if it still fails it is kept with `converged = false` and the march continues from the
+//! last converged state, so one bad point does not poison its neighbours.
+
+use super::range::march_order;
+use super::PolarPoint;
+
+/// A point solver that can be marched along α with warm starts.
+pub trait WarmStartSolver {
+    /// Everything needed to resume from a solved point.
+    type State: Clone;
+    /// Solve at `alpha_deg`, warm-starting from the current state.
+    fn solve(&mut self, alpha_deg: f64) -> PolarPoint;
+    /// Forget the warm-start state: the next solve starts from the inviscid solution.
+    fn reset(&mut self);
+    /// Snapshot of the current state.
+    fn save(&self) -> Self::State;
+    /// Return to a snapshot taken with [`save`](Self::save).
+    fn restore(&mut self, state: &Self::State);
+}
+
+/// Settings of the sweep's recovery of failed points.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SweepParams {
+    /// How many times the step from the last converged neighbour is halved when retrying a
+    /// failed point (1 → a half step, 2 → also quarter steps).
+    pub substep_levels: u32,
+    /// Retry a failed point once more from a fresh (inviscid) start.
+    pub fresh_retry: bool,
+}
+
+impl Default for SweepParams {
+    fn default() -> Self {
+        Self {
+            substep_levels: 2,
+            fresh_retry: true,
+        }
+    }
+}
+
+/// Solve every α in `alphas` and return the points in the order of `alphas`.
+pub fn sweep<S: WarmStartSolver>(
+    solver: &mut S,
+    alphas: &[f64],
+    params: &SweepParams,
+) -> Vec<PolarPoint> {
+    let mut out: Vec<Option<PolarPoint>> = vec![None; alphas.len()];
+    let (up, down) = march_order(alphas);
+    solver.reset();
+    let start_state = march(solver, alphas, &up, None, params, &mut out);
+    if !down.is_empty() {
+        // The downward branch starts from the start point's state (if it converged).
+        let anchor = start_state.map(|s| (alphas[up[0]], s));
+        match &anchor {
+            Some((_, s)) => solver.restore(s),
+            None => solver.reset(),
+        }
+        march(solver, alphas, &down, anchor, params, &mut out);
+    }
+    out.into_iter()
+        .map(|p| p.expect("every alpha visited once"))
+        .collect()
+}
+
+/// March through `order`; `anchor` is the last converged (α, state) before the first point.
+/// Returns the state at the first point of `order` if it converged.
+fn march<S: WarmStartSolver>(
+    solver: &mut S,
+    alphas: &[f64],
+    order: &[usize],
+    mut anchor: Option<(f64, S::State)>,
+    params: &SweepParams,
+    out: &mut [Option<PolarPoint>],
+) -> Option<S::State> {
+    let mut first_state = None;
+    for (k, &i) in order.iter().enumerate() {
+        let alpha = alphas[i];
+        let mut point = solver.solve(alpha);
+        if !point.converged {
+            point = recover(solver, alpha, anchor.as_ref(), params).unwrap_or(point);
+        }
+        if point.converged {
+            let state = solver.save();
+            if k == 0 {
+                first_state = Some(state.clone());
+            }
+            anchor = Some((alpha, state));
+        } else {
+            match &anchor {
+                Some((_, s)) => solver.restore(s),
+                None => solver.reset(),
+            }
+        }
+        out[i] = Some(point);
+    }
+    first_state
+}
+
+/// Retry a failed point: sub-steps from the last converged neighbour, then a fresh start.
+fn recover<S: WarmStartSolver>(
+    solver: &mut S,
+    alpha: f64,
+    anchor: Option<&(f64, S::State)>,
+    params: &SweepParams,
+) -> Option<PolarPoint> {
+    if let Some((a0, state)) = anchor {
+        for level in 1..=params.substep_levels {
+            let n = 1u32 << level;
+            solver.restore(state);
+            let mut ok = true;
+            for j in 1..n {
+                let a = a0 + (alpha - a0) * f64::from(j) / f64::from(n);
+                if !solver.solve(a).converged {
+                    ok = false;
+                    break;
+                }
+            }
+            if ok {
+                let p = solver.solve(alpha);
+                if p.converged {
+                    return Some(p);
+                }
+            }
+        }
+    }
+    if params.fresh_retry {
+        solver.reset();
+        let p = solver.solve(alpha);
+        if p.converged {
+            return Some(p);
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A mock solver that converges only when the step from its state is at most `max_step`
+    /// (a fresh start counts as state 0°), and never at α in `bad`.
+    struct Mock {
+        state: Option<f64>,
+        max_step: f64,
+        bad: Vec<f64>,
+    }
+
+    impl WarmStartSolver for Mock {
+        type State = Option<f64>;
+        fn solve(&mut self, alpha: f64) -> PolarPoint {
+            let from = self.state.unwrap_or(0.0);
+            let ok = (alpha - from).abs() <= self.max_step + 1e-12 && !self.bad.contains(&alpha);
+            self.state = if ok { Some(alpha) } else { Some(f64::NAN) };
+            PolarPoint {
+                alpha,
+                cl: 0.1 * alpha,
+                cd: 0.01,
+                cdp: 0.005,
+                cdf: 0.005,
+                cm: 0.0,
+                xtr_top: 1.0,
+                xtr_bot: 1.0,
+                converged: ok,
+                iterations: 1,
+                residual: 0.0,
+            }
+        }
+        fn reset(&mut self) {
+            self.state = None;
+        }
+        fn save(&self) -> Self::State {
+            self.state
+        }
+        fn restore(&mut self, s: &Self::State) {
+            self.state = *s;
+        }
+    }
+
+    #[test]
+    fn marches_from_zero_and_recovers_with_substeps() {
+        let alphas: Vec<f64> = (-4..=8).map(|a| a as f64 * 2.0).collect();
+        // Steps of 2° are too big; 1° sub-steps work.
+        let mut m = Mock {
+            state: None,
+            max_step: 1.0,
+            bad: vec![],
+        };
+        let pts = sweep(&mut m, &alphas, &SweepParams::default());
+        assert!(pts.iter().all(|p| p.converged));
+        assert_eq!(pts.iter().map(|p| p.alpha).collect::<Vec<_>>(), alphas);
+    }
+
+    #[test]
+    fn failed_point_is_flagged_and_march_continues() {
+        let alphas = [0.0, 1.0, 2.0, 3.0, -1.0, -2.0];
+        let mut m = Mock {
+            state: None,
+            max_step: 2.0,
+            bad: vec![2.0, -1.0],
+        };
+        let pts = sweep(&mut m, &alphas, &SweepParams::default());
+        let conv: Vec<bool> = pts.iter().map(|p| p.converged).collect();
+        assert_eq!(conv, vec![true, true, false, true, false, true]);
+    }
+}
