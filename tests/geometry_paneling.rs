@@ -54,8 +54,8 @@ fn naca8h12_leading_edge_is_smooth() {
     let ang = |k: usize| (y[k + 1] - y[k]).atan2(x[k + 1] - x[k]);
     let le = p.le_index();
     let mut checked = 0;
-    for i in 1..p.len() - 1 {
-        if x[i] > 0.03 {
+    for (i, &xi) in x.iter().enumerate().take(p.len() - 1).skip(1) {
+        if xi > 0.03 {
             continue;
         }
         checked += 1;
