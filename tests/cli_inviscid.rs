@@ -1,0 +1,139 @@
+//! The `polargen` binary in inviscid mode: output format, α parsing, errors.
+
+use std::process::{Command, Output};
+
+fn polargen(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_polargen"))
+        .args(args)
+        .output()
+        .expect("run polargen")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).to_string()
+}
+
+#[test]
+fn inviscid_csv_to_stdout() {
+    let o = polargen(&["--airfoil", "naca0012", "--inviscid", "--alpha", "-4:4:2"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "alpha,cl,cd,cm,converged");
+    assert_eq!(lines.len(), 6);
+    // Symmetric section: cl(α) = −cl(−α), cl(0) = 0 printed without a sign.
+    let row = |i: usize| -> Vec<String> { lines[i].split(',').map(String::from).collect() };
+    assert_eq!(row(3), ["0", "0.000000", "0", "0.000000", "true"]);
+    let cl4: f64 = row(5)[1].parse().unwrap();
+    let clm4: f64 = row(1)[1].parse().unwrap();
+    assert!((cl4 + clm4).abs() < 1e-6);
+    // Thin-airfoil theory with thickness: ~0.121 per degree for the 0012 (XFOIL: 0.4829 at 4°).
+    assert!((cl4 - 0.4829).abs() < 0.005, "cl(4°) = {cl4}");
+}
+
+#[test]
+fn alpha_with_equals_and_negative_start() {
+    let a = polargen(&["--airfoil=naca8h12", "--inviscid", "--alpha=-4:12:2"]);
+    let b = polargen(&["--airfoil", "naca8h12", "--inviscid", "--alpha", "-4:12:2"]);
+    assert!(a.status.success() && b.status.success());
+    assert_eq!(a.stdout, b.stdout);
+    assert_eq!(String::from_utf8_lossy(&a.stdout).lines().count(), 10);
+}
+
+#[test]
+fn out_file_is_written_into_new_folder() {
+    let dir = std::env::temp_dir().join(format!("polargen-cli-{}", std::process::id()));
+    let path = dir.join("sub").join("p.csv");
+    let o = polargen(&[
+        "--airfoil",
+        "naca2412",
+        "--inviscid",
+        "--mach",
+        "0.3",
+        "--alpha",
+        "2",
+        "--out",
+        path.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(o.stdout.is_empty());
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(text.starts_with("alpha,cl,cd,cm,converged\n2,"));
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// Each bad input gives exactly one line on stderr naming the problem and a non-zero exit.
+#[test]
+fn errors_are_one_line() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["--airfoil", "nope", "--inviscid"],
+            "unknown airfoil 'nope'",
+        ),
+        (
+            &["--airfoil", "naca0012", "--inviscid", "--mach", "1"],
+            "--mach",
+        ),
+        (
+            &["--airfoil", "naca0012", "--inviscid", "--mach", "-0.1"],
+            "--mach",
+        ),
+        (
+            &["--airfoil", "naca0012", "--inviscid", "--mach", "abc"],
+            "--mach",
+        ),
+        (
+            &["--airfoil", "naca0012", "--inviscid", "--alpha", "4:0:1"],
+            "empty",
+        ),
+        (
+            &["--airfoil", "naca0012", "--inviscid", "--alpha", "0:4:0"],
+            "step is 0",
+        ),
+        (
+            &["--airfoil", "naca0012", "--inviscid", "--alpha", "0:x:1"],
+            "'x'",
+        ),
+        (
+            &["--airfoil", "naca0012", "--inviscid", "--panels", "5"],
+            "--panels",
+        ),
+        (
+            &["--airfoil", "naca0012", "--inviscid", "--panels", "100000"],
+            "--panels",
+        ),
+        (
+            &["--airfoil", "/no/such/file.dat", "--inviscid"],
+            "/no/such/file.dat",
+        ),
+        (&["--airfoil", "naca0012", "--bogus"], "--bogus"),
+        (&["--inviscid"], "--airfoil"),
+    ];
+    for (args, needle) in cases {
+        let o = polargen(args);
+        let err = stderr(&o);
+        assert!(!o.status.success(), "{args:?} succeeded");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn failure_leaves_no_output_file() {
+    let dir = std::env::temp_dir().join(format!("polargen-cli-fail-{}", std::process::id()));
+    let path = dir.join("p.csv");
+    // M = 0.95 exceeds the critical Mach: the error comes mid-sweep, after the file was opened.
+    let o = polargen(&[
+        "--airfoil",
+        "naca0012",
+        "--inviscid",
+        "--mach",
+        "0.95",
+        "--out",
+        path.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(!path.exists());
+    let _ = std::fs::remove_dir_all(dir);
+}
