@@ -281,7 +281,10 @@ pub fn validate_contour(
             });
         }
     }
-    if let Some((i, j, px, py)) = first_crossing(x, y) {
+    // A closed TE (end points equal up to round-off) makes the first and last segments
+    // neighbours, which must not count as a crossing.
+    let closed = (x[0] - x[n - 1]).hypot(y[0] - y[n - 1]) <= 1e-9 * scale;
+    if let Some((i, j, px, py)) = first_crossing(x, y, closed) {
         return Err(GeometryError::SelfIntersecting {
             file: file.to_string(),
             line_a: line_of[i],
@@ -295,8 +298,8 @@ pub fn validate_contour(
 
 /// First pair of non-adjacent polyline segments (i, i+1), (j, j+1), i < j, that cross
 /// properly (each segment's end points strictly on opposite sides of the other), with the
-/// crossing point.
-fn first_crossing(x: &[f64], y: &[f64]) -> Option<(usize, usize, f64, f64)> {
+/// crossing point. With `closed`, the first and last segments are treated as adjacent.
+fn first_crossing(x: &[f64], y: &[f64], closed: bool) -> Option<(usize, usize, f64, f64)> {
     let n = x.len();
     let orient = |a: usize, b: usize, c: usize| -> f64 {
         (x[b] - x[a]) * (y[c] - y[a]) - (y[b] - y[a]) * (x[c] - x[a])
@@ -305,6 +308,9 @@ fn first_crossing(x: &[f64], y: &[f64]) -> Option<(usize, usize, f64, f64)> {
         let (xmin_i, xmax_i) = (x[i].min(x[i + 1]), x[i].max(x[i + 1]));
         let (ymin_i, ymax_i) = (y[i].min(y[i + 1]), y[i].max(y[i + 1]));
         for j in i + 2..n - 1 {
+            if closed && i == 0 && j == n - 2 {
+                continue;
+            }
             if x[j].max(x[j + 1]) < xmin_i
                 || x[j].min(x[j + 1]) > xmax_i
                 || y[j].max(y[j + 1]) < ymin_i
