@@ -228,6 +228,19 @@ pub fn parse_airfoil_text(
     Ok((airfoil, format))
 }
 
+/// Formats an airfoil as a Selig file: the name line, then one `x y` pair per line in
+/// XFOIL order, with 8 decimals (enough to round-trip paneled nodes to 1e-8 chord).
+pub fn to_selig_string(airfoil: &Airfoil) -> String {
+    let mut out = String::with_capacity(24 * (airfoil.x.len() + 1));
+    let name = airfoil.name.lines().next().unwrap_or("").trim();
+    out.push_str(if name.is_empty() { "airfoil" } else { name });
+    out.push('\n');
+    for (x, y) in airfoil.x.iter().zip(&airfoil.y) {
+        out.push_str(&format!("{x:12.8} {y:12.8}\n"));
+    }
+    out
+}
+
 /// Signed area enclosed by the contour closed through its end points (positive for
 /// counter-clockwise, i.e. XFOIL order), as in XFOIL `LOAD`.
 pub fn signed_area(x: &[f64], y: &[f64]) -> f64 {
