@@ -43,7 +43,7 @@ fn random_system(nu: usize, nl: usize, nw: usize, seed: u64) -> BlockSystem {
         }
         for r in 0..3 {
             for j in 0..n {
-                sys.dense[(3 * k + r, j)] = 0.3 * g.next() / n as f64;
+                sys.dense[(3 * k + r) * n + j] = 0.3 * g.next() / n as f64;
             }
         }
         sys.rhs[k] = [g.next(), g.next(), g.next()];
@@ -80,9 +80,9 @@ fn structured_solve_matches_dense_lu() {
 fn invert3_inverts_and_rejects_singular() {
     let a = [[2.0, 1.0, 0.5], [0.3, 3.0, -1.0], [1.0, -0.5, 4.0]];
     let ai = invert3(&a).expect("regular");
-    for r in 0..3 {
+    for (r, row) in a.iter().enumerate() {
         for c in 0..3 {
-            let s: f64 = (0..3).map(|k| a[r][k] * ai[k][c]).sum();
+            let s: f64 = row.iter().zip(&ai).map(|(x, ai_row)| x * ai_row[c]).sum();
             let e = if r == c { 1.0 } else { 0.0 };
             assert!((s - e).abs() < 1e-14, "A·A⁻¹[{r}][{c}] = {s}");
         }

@@ -35,8 +35,9 @@ pub struct BlockSystem {
     pub upstream: Vec<Option<(usize, Block3)>>,
     /// Second upstream station q(k) (< k) with its block C_k (trailing-edge junction).
     pub upstream2: Vec<Option<(usize, Block3)>>,
-    /// Dense mass columns V, shape 3n × n: row 3k+r, column j = ∂(equation r of station k)/∂m_j.
-    pub dense: Mat<f64>,
+    /// Dense mass columns V, 3n × n stored row-major: entry `[(3k+r)·n + j]` is
+    /// ∂(equation r of station k)/∂m_j.
+    pub dense: Vec<f64>,
     /// Right-hand sides r_k.
     pub rhs: Vec<[f64; 3]>,
 }
@@ -49,7 +50,7 @@ impl BlockSystem {
             diag: vec![[[0.0; 3]; 3]; n],
             upstream: vec![None; n],
             upstream2: vec![None; n],
-            dense: Mat::zeros(3 * n, n),
+            dense: vec![0.0; 3 * n * n],
             rhs: vec![[0.0; 3]; n],
         }
     }
@@ -70,7 +71,7 @@ impl BlockSystem {
                     }
                 }
                 for j in 0..n {
-                    a[(3 * k + r, 3 * j + 2)] += self.dense[(3 * k + r, j)];
+                    a[(3 * k + r, 3 * j + 2)] += self.dense[(3 * k + r) * n + j];
                 }
             }
         }
@@ -87,12 +88,13 @@ impl BlockSystem {
             .map(|(k, a)| invert3(a).ok_or(ViscousError::SingularSystem { station: k }))
             .collect::<Result<_, _>>()?;
 
-        // Forward substitution y = L⁻¹ r and Y = L⁻¹ V (rows 3k..3k+3 of Y per station).
+        // Forward substitution y = L⁻¹ r and Y = L⁻¹ V (Y row-major like V).
         let mut y = vec![[0.0; 3]; n];
-        let mut big_y = Mat::<f64>::zeros(3 * n, n);
-        let mut tmp = vec![[0.0; 3]; n];
+        let mut big_y = self.dense.clone();
+        let mut t3 = vec![0.0; 3 * n];
         for k in 0..n {
             let mut t = self.rhs[k];
+            t3.copy_from_slice(&big_y[3 * k * n..3 * (k + 1) * n]);
             for (p, b) in [&self.upstream[k], &self.upstream2[k]]
                 .into_iter()
                 .flatten()
@@ -101,42 +103,32 @@ impl BlockSystem {
                 for (r, tr) in t.iter_mut().enumerate() {
                     *tr -= b[r][0] * yp[0] + b[r][1] * yp[1] + b[r][2] * yp[2];
                 }
-            }
-            y[k] = mul3(&inv[k], &t);
-
-            for (j, tj) in tmp.iter_mut().enumerate() {
-                *tj = [
-                    self.dense[(3 * k, j)],
-                    self.dense[(3 * k + 1, j)],
-                    self.dense[(3 * k + 2, j)],
-                ];
-            }
-            for (p, b) in [&self.upstream[k], &self.upstream2[k]]
-                .into_iter()
-                .flatten()
-            {
-                for (j, tj) in tmp.iter_mut().enumerate() {
-                    let yp = [
-                        big_y[(3 * p, j)],
-                        big_y[(3 * p + 1, j)],
-                        big_y[(3 * p + 2, j)],
-                    ];
-                    for (r, tr) in tj.iter_mut().enumerate() {
-                        *tr -= b[r][0] * yp[0] + b[r][1] * yp[1] + b[r][2] * yp[2];
+                let (rows_p, _) = big_y.split_at(3 * (p + 1) * n);
+                let p0 = &rows_p[3 * p * n..(3 * p + 1) * n];
+                let p1 = &rows_p[(3 * p + 1) * n..(3 * p + 2) * n];
+                let p2 = &rows_p[(3 * p + 2) * n..(3 * p + 3) * n];
+                for r in 0..3 {
+                    let row = &mut t3[r * n..(r + 1) * n];
+                    let (c0, c1, c2) = (b[r][0], b[r][1], b[r][2]);
+                    for j in 0..n {
+                        row[j] -= c0 * p0[j] + c1 * p1[j] + c2 * p2[j];
                     }
                 }
             }
-            for (j, tj) in tmp.iter().enumerate() {
-                let v = mul3(&inv[k], tj);
-                big_y[(3 * k, j)] = v[0];
-                big_y[(3 * k + 1, j)] = v[1];
-                big_y[(3 * k + 2, j)] = v[2];
+            let a = &inv[k];
+            y[k] = mul3(a, &t);
+            let out = &mut big_y[3 * k * n..3 * (k + 1) * n];
+            for j in 0..n {
+                let v = [t3[j], t3[n + j], t3[2 * n + j]];
+                out[j] = a[0][0] * v[0] + a[0][1] * v[1] + a[0][2] * v[2];
+                out[n + j] = a[1][0] * v[0] + a[1][1] * v[1] + a[1][2] * v[2];
+                out[2 * n + j] = a[2][0] * v[0] + a[2][1] * v[1] + a[2][2] * v[2];
             }
         }
 
         // Schur complement on the mass unknowns: (I + P Y) m = P y.
         let schur = Mat::<f64>::from_fn(n, n, |i, j| {
-            big_y[(3 * i + 2, j)] + if i == j { 1.0 } else { 0.0 }
+            big_y[(3 * i + 2) * n + j] + if i == j { 1.0 } else { 0.0 }
         });
         let mut m = Mat::<f64>::from_fn(n, 1, |i, _| y[i][2]);
         let lu = schur.partial_piv_lu();
@@ -145,14 +137,13 @@ impl BlockSystem {
             return Err(ViscousError::SingularSystem { station: i });
         }
 
+        let mdense: Vec<f64> = (0..n).map(|j| m[(j, 0)]).collect();
         // Back substitution w = y − Y m.
         let mut w = y;
         for (k, wk) in w.iter_mut().enumerate() {
             for (r, wr) in wk.iter_mut().enumerate() {
-                let mut s = 0.0;
-                for j in 0..n {
-                    s += big_y[(3 * k + r, j)] * m[(j, 0)];
-                }
+                let row = &big_y[(3 * k + r) * n..(3 * k + r + 1) * n];
+                let s: f64 = row.iter().zip(&mdense).map(|(a, b)| a * b).sum();
                 *wr -= s;
             }
         }
