@@ -10,6 +10,8 @@
 //! step solves `d1·δ1 + d2·δ2 = −res`. Jacobian columns are ordered (s, θ, δ*, u, ξ) as XFOIL's
 //! VS1/VS2 columns 1..5.
 
+use super::error::ViscousError;
+
 /// Primary variables of one station (XFOIL BLPRV arguments).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct StationVars {
@@ -109,10 +111,15 @@ pub struct StationProperties {
 pub trait BoundaryLayerModel {
     /// Similarity-station equations (XFOIL SIMI: station 1 = station 2); the Jacobian w.r.t. the
     /// station is `d1 + d2`.
-    fn similarity(&self, st: &StationVars) -> IntervalEquations;
+    fn similarity(&self, st: &StationVars) -> Result<IntervalEquations, ViscousError>;
 
     /// Equations of an interval without transition (XFOIL BLDIF).
-    fn interval(&self, regime: Regime, st1: &StationVars, st2: &StationVars) -> IntervalEquations;
+    fn interval(
+        &self,
+        regime: Regime,
+        st1: &StationVars,
+        st2: &StationVars,
+    ) -> Result<IntervalEquations, ViscousError>;
 
     /// Transition check of a laminar interval (XFOIL TRCHEK2 + TRDIF): `Some` if free (N reaches
     /// Ncrit) or forced transition (`xi_forced`) happens inside, whichever is earlier.
@@ -121,7 +128,7 @@ pub trait BoundaryLayerModel {
         st1: &StationVars,
         st2: &StationVars,
         xi_forced: Option<f64>,
-    ) -> Option<TransitionInterval>;
+    ) -> Result<Option<TransitionInterval>, ViscousError>;
 
     /// Trailing-edge junction equations for the first wake station (XFOIL TESYS).
     fn junction(
@@ -130,13 +137,17 @@ pub trait BoundaryLayerModel {
         lower: &StationVars,
         wake: &StationVars,
         ante: f64,
-    ) -> JunctionEquations;
+    ) -> Result<JunctionEquations, ViscousError>;
 
     /// Post-processing quantities of one station.
-    fn properties(&self, regime: Regime, st: &StationVars) -> StationProperties;
+    fn properties(
+        &self,
+        regime: Regime,
+        st: &StationVars,
+    ) -> Result<StationProperties, ViscousError>;
 
     /// Squire–Young drag coefficient from the last wake station (XFOIL CDCALC).
-    fn squire_young(&self, last: &StationVars) -> f64;
+    fn squire_young(&self, last: &StationVars) -> Result<f64, ViscousError>;
 
     /// Shape factor limits for the initial march: (laminar, turbulent) Hk above which the
     /// march switches to inverse mode (XFOIL MRCHUE HLMAX = 3.8, HTMAX = 2.5).

@@ -33,6 +33,14 @@ pub enum ViscousError {
     /// The inviscid panel solution could not be built.
     #[error("inviscid solution failed: {0}")]
     Inviscid(String),
+    /// The boundary-layer equations rejected a station state.
+    #[error("boundary layer at station {station}: {message}")]
+    BoundaryLayer {
+        /// System station index (usize::MAX if not tied to one station).
+        station: usize,
+        /// The boundary-layer module's message.
+        message: String,
+    },
     /// A non-finite number appeared in the boundary-layer state.
     #[error("non-finite boundary-layer state at station {station}")]
     NonFinite {

@@ -143,7 +143,7 @@ pub fn march(
             };
             let eq: IntervalEquations = match kind {
                 LocalEq::Similarity => {
-                    let e = model.similarity(&v2);
+                    let Ok(e) = model.similarity(&v2) else { break };
                     IntervalEquations {
                         res: e.res,
                         d1: [[0.0; 5]; 3],
@@ -152,8 +152,10 @@ pub fn march(
                 }
                 LocalEq::Junction => {
                     let (ku, kl) = (layout.upper_te(), layout.lower_te());
-                    let j =
-                        model.junction(&state.vars(layout, ku), &state.vars(layout, kl), &v2, ante);
+                    let (vu, vl) = (state.vars(layout, ku), state.vars(layout, kl));
+                    let Ok(j) = model.junction(&vu, &vl, &v2, ante) else {
+                        break;
+                    };
                     IntervalEquations {
                         res: j.res,
                         d1: [[0.0; 5]; 3],
@@ -168,7 +170,10 @@ pub fn march(
                         if !transitioned {
                             v2t.s = params.ctau_sqrt_initial;
                         }
-                        match model.transition(&v1, &v2t, xi_forced[side]) {
+                        let Ok(tr) = model.transition(&v1, &v2t, xi_forced[side]) else {
+                            break;
+                        };
+                        match tr {
                             Some(t) => {
                                 if !transitioned {
                                     s = params.ctau_sqrt_initial;
@@ -185,11 +190,17 @@ pub fn march(
                                     s = v1.s;
                                     continue;
                                 }
-                                model.interval(Regime::Laminar, &v1, &v2)
+                                let Ok(e) = model.interval(Regime::Laminar, &v1, &v2) else {
+                                    break;
+                                };
+                                e
                             }
                         }
                     } else {
-                        model.interval(regime, &v1, &v2)
+                        let Ok(e) = model.interval(regime, &v1, &v2) else {
+                            break;
+                        };
+                        e
                     }
                 }
             };
@@ -200,7 +211,9 @@ pub fn march(
             } else {
                 Regime::Laminar
             };
-            let props = model.properties(regime, &v2);
+            let Ok(props) = model.properties(regime, &v2) else {
+                break;
+            };
             let mut a = [[0.0; 4]; 4];
             let mut b = [0.0; 4];
             for r in 0..3 {
@@ -254,7 +267,7 @@ pub fn march(
                     s,
                     dw: st.wake_gap,
                 };
-                let hk = model.properties(regime, &v).hk;
+                let hk = model.properties(regime, &v).map(|p| p.hk).unwrap_or(0.0);
                 if hk > hmax {
                     inverse = true;
                     htarget = hmax;

@@ -7,8 +7,11 @@ pub mod error;
 pub mod forces;
 pub mod march;
 pub mod newton;
+pub mod solver;
 pub mod state;
 pub mod stations;
 pub mod update;
+pub mod xfoil_bl;
 
 pub use error::ViscousError;
+pub use solver::{BlStation, PanelModel, ViscousParams, ViscousSolution, ViscousSolver};

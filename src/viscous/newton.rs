@@ -10,6 +10,7 @@
 
 use super::bl_model::{BoundaryLayerModel, Regime, StationVars};
 use super::block_solver::BlockSystem;
+use super::error::ViscousError;
 use super::state::BlState;
 use super::stations::{StationKind, StationLayout, Surface};
 
@@ -131,7 +132,7 @@ pub fn assemble(
     model: &dyn BoundaryLayerModel,
     coupling: &Coupling<'_>,
     state: &mut BlState,
-) -> Assembly {
+) -> Result<Assembly, ViscousError> {
     let layout = coupling.layout;
     let n = layout.len();
     let mut sys = BlockSystem::zeros(n);
@@ -155,7 +156,7 @@ pub fn assemble(
             if st.kind == StationKind::Similarity {
                 state.turbulent[k] = false;
                 let v = state.vars(layout, k);
-                let e = model.similarity(&v);
+                let e = model.similarity(&v).map_err(at(k))?;
                 let d = e.combined_jacobian();
                 add_terms(&mut sys, k, k, &d, state, coupling, &mismatch);
                 eq = e.res;
@@ -167,7 +168,9 @@ pub fn assemble(
                     if !state.turbulent[k] {
                         v2.s = s_turb_ref;
                     }
-                    let tr = model.transition(&v1, &v2, coupling.xi_forced[side]);
+                    let tr = model
+                        .transition(&v1, &v2, coupling.xi_forced[side])
+                        .map_err(at(k))?;
                     match tr {
                         Some(t) => {
                             if !state.turbulent[k] {
@@ -191,7 +194,7 @@ pub fn assemble(
                                 state.s[k] = state.s[p].max(0.0);
                             }
                             let v2 = state.vars(layout, k);
-                            let e = model.interval(Regime::Laminar, &v1, &v2);
+                            let e = model.interval(Regime::Laminar, &v1, &v2).map_err(at(k))?;
                             sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
                             add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
                             add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
@@ -205,7 +208,7 @@ pub fn assemble(
                     }
                     let v1 = state.vars(layout, p);
                     let v2 = state.vars(layout, k);
-                    let e = model.interval(Regime::Turbulent, &v1, &v2);
+                    let e = model.interval(Regime::Turbulent, &v1, &v2).map_err(at(k))?;
                     sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
                     add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
                     add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
@@ -229,7 +232,9 @@ pub fn assemble(
             let vu = state.vars(layout, ku);
             let vl = state.vars(layout, kl);
             let vw = state.vars(layout, k);
-            let e = model.junction(&vu, &vl, &vw, coupling.ante);
+            let e = model
+                .junction(&vu, &vl, &vw, coupling.ante)
+                .map_err(at(k))?;
             sys.upstream[k] = Some((kl, [[0.0; 3]; 3]));
             sys.upstream2[k] = Some((ku, [[0.0; 3]; 3]));
             add_terms(&mut sys, k, kl, &e.d_lower, state, coupling, &mismatch);
@@ -240,7 +245,7 @@ pub fn assemble(
             let p = st.upstream.unwrap_or(k - 1);
             let v1: StationVars = state.vars(layout, p);
             let v2 = state.vars(layout, k);
-            let e = model.interval(Regime::Wake, &v1, &v2);
+            let e = model.interval(Regime::Wake, &v1, &v2).map_err(at(k))?;
             sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
             add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
             add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
@@ -252,10 +257,20 @@ pub fn assemble(
         sumsq += eq.iter().map(|r| r * r).sum::<f64>();
     }
 
-    Assembly {
+    Ok(Assembly {
         system: sys,
         mismatch,
         rms_residual: (sumsq / (3 * n.max(1)) as f64).sqrt(),
         transition,
+    })
+}
+
+/// Attaches the system station index to a boundary-layer error.
+pub fn at(station: usize) -> impl Fn(ViscousError) -> ViscousError {
+    move |e| match e {
+        ViscousError::BoundaryLayer { message, .. } => {
+            ViscousError::BoundaryLayer { station, message }
+        }
+        other => other,
     }
 }

@@ -127,7 +127,7 @@ pub fn apply_update(
             limits.hk_min_airfoil
         };
         let v = state.vars(layout, k);
-        let props = model.properties(regime, &v);
+        let props = model.properties(regime, &v).map_err(super::newton::at(k))?;
         if props.hk < hk_min && props.hk_d[1] > 0.0 {
             let new_dstar = v.dstar + (hk_min - props.hk) / props.hk_d[1];
             state.mass[k] = new_dstar * state.ue[k];
