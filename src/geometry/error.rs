@@ -1,0 +1,152 @@
+//! Errors of the geometry layer: coordinate files, NACA designations, the name registry,
+//! splines and paneling. Every message is one line naming the problem (and for files the
+//! file name and line number).
+
+use thiserror::Error;
+
+/// Everything that can go wrong while building, reading or paneling an airfoil.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum GeometryError {
+    /// The file could not be opened or read.
+    #[error("{file}: cannot read file: {reason}")]
+    Io {
+        /// File name as given.
+        file: String,
+        /// Operating-system reason.
+        reason: String,
+    },
+    /// The file is not UTF-8 text.
+    #[error("{file}: not a text file (invalid UTF-8 at byte {offset})")]
+    NotUtf8 {
+        /// File name as given.
+        file: String,
+        /// Byte offset of the first invalid byte.
+        offset: usize,
+    },
+    /// The file contains control characters typical of binary data.
+    #[error("{file}:{line}: binary data (control character 0x{byte:02x}) in a coordinate file")]
+    Binary {
+        /// File name as given.
+        file: String,
+        /// 1-based line number.
+        line: usize,
+        /// The offending byte.
+        byte: u8,
+    },
+    /// The file has no coordinate data at all.
+    #[error("{file}: empty file, no coordinates found")]
+    Empty {
+        /// File name as given.
+        file: String,
+    },
+    /// A token that should be a number is not one.
+    #[error("{file}:{line}: cannot parse '{token}' as a number")]
+    BadNumber {
+        /// File name as given.
+        file: String,
+        /// 1-based line number.
+        line: usize,
+        /// The token.
+        token: String,
+    },
+    /// A coordinate is NaN or infinite.
+    #[error("{file}:{line}: coordinate '{token}' is not finite")]
+    NonFinite {
+        /// File name as given.
+        file: String,
+        /// 1-based line number.
+        line: usize,
+        /// The token.
+        token: String,
+    },
+    /// A data line does not have exactly two columns.
+    #[error("{file}:{line}: expected 2 columns (x y), found {found}")]
+    ColumnCount {
+        /// File name as given.
+        file: String,
+        /// 1-based line number.
+        line: usize,
+        /// Number of columns found.
+        found: usize,
+    },
+    /// Too few points to describe an airfoil.
+    #[error("{file}: only {found} points, at least {min} are needed")]
+    TooFewPoints {
+        /// File name (or airfoil name).
+        file: String,
+        /// Points found.
+        found: usize,
+        /// Minimum accepted.
+        min: usize,
+    },
+    /// Two consecutive points coincide.
+    #[error("{file}:{line}: point ({x}, {y}) duplicates the previous point")]
+    DuplicatePoint {
+        /// File name (or airfoil name).
+        file: String,
+        /// 1-based line number (point number for in-memory airfoils).
+        line: usize,
+        /// x of the point.
+        x: f64,
+        /// y of the point.
+        y: f64,
+    },
+    /// Two non-adjacent contour segments cross.
+    #[error("{file}:{line_a}: surfaces cross: segment at line {line_a} intersects segment at line {line_b} near ({x:.5}, {y:.5})")]
+    SelfIntersecting {
+        /// File name (or airfoil name).
+        file: String,
+        /// Line (or point number) starting the first segment.
+        line_a: usize,
+        /// Line (or point number) starting the second segment.
+        line_b: usize,
+        /// Approximate x of the crossing.
+        x: f64,
+        /// Approximate y of the crossing.
+        y: f64,
+    },
+    /// A Lednicer header announces point counts that the file does not contain.
+    #[error("{file}:{line}: Lednicer header announces {upper} upper + {lower} lower points but {found} were read")]
+    LednicerCount {
+        /// File name.
+        file: String,
+        /// Line of the count header.
+        line: usize,
+        /// Announced upper-surface points.
+        upper: usize,
+        /// Announced lower-surface points.
+        lower: usize,
+        /// Points actually read.
+        found: usize,
+    },
+    /// x and y arrays of an airfoil differ in length.
+    #[error("{name}: x has {nx} values but y has {ny}")]
+    LengthMismatch {
+        /// Airfoil name.
+        name: String,
+        /// Length of x.
+        nx: usize,
+        /// Length of y.
+        ny: usize,
+    },
+    /// A NACA designation that is not a supported 4- or 5-digit section.
+    #[error("invalid NACA designation '{designation}': {reason}")]
+    NacaDesignation {
+        /// The designation as given.
+        designation: String,
+        /// Why it is rejected.
+        reason: String,
+    },
+    /// Neither a known airfoil name nor an existing file.
+    #[error("unknown airfoil '{name}': not a known name and no such file (accepted: naca8h12, naca23012, nacaDDDD, nacaDDDDD, 'NACA 2412', or a path to a Selig/Lednicer/plain coordinate file)")]
+    UnknownAirfoil {
+        /// The name as given.
+        name: String,
+    },
+    /// A spline could not be built or evaluated.
+    #[error("spline: {0}")]
+    Spline(String),
+    /// Paneling failed.
+    #[error("paneling: {0}")]
+    Paneling(String),
+}

@@ -1,0 +1,56 @@
+//! Airfoil name registry: resolves a user-supplied string to an airfoil — a built-in name,
+//! any NACA 4/5-digit designation, or a path to a coordinate file.
+
+use std::path::Path;
+
+use super::coordinates::{parse_airfoil_text, read_airfoil_file};
+use super::error::GeometryError;
+use super::naca::{naca, NacaOptions};
+use super::Airfoil;
+
+/// NACA 8-H-12 ordinates (NACA TN 1998, Table I), embedded so they are found from any
+/// working directory. Provenance: `geometry/README.md`.
+const NACA8H12_DAT: &str = include_str!("../../geometry/naca8h12.dat");
+
+/// The embedded NACA 8-H-12 rotor section (Selig file, 51 points, sparse LE).
+pub fn naca8h12() -> Result<Airfoil, GeometryError> {
+    parse_airfoil_text(NACA8H12_DAT, "naca8h12 (embedded)", "NACA 8-H-12").map(|(a, _)| a)
+}
+
+/// Resolves `s` to an airfoil:
+/// * `naca8h12` (also `NACA 8-H-12`, any case) → embedded 8-H-12 ordinates;
+/// * `nacaDDDD` / `nacaDDDDD` / `NACA 2412` (any case, spaces allowed) → NACA generator with
+///   XFOIL's conventions ([`NacaOptions::default`]), e.g. `naca23012`;
+/// * otherwise an existing file path → coordinate-file reader.
+///
+/// A NACA-looking name with an invalid designation reports why; anything else that is not
+/// a file gives [`GeometryError::UnknownAirfoil`] listing what is accepted.
+pub fn airfoil_by_name_or_path(s: &str) -> Result<Airfoil, GeometryError> {
+    let trimmed = s.trim();
+    let key: String = trimmed
+        .to_ascii_lowercase()
+        .chars()
+        .filter(|c| !c.is_whitespace() && *c != '-' && *c != '_')
+        .collect();
+    if key == "naca8h12" {
+        return naca8h12();
+    }
+    let path = Path::new(trimmed);
+    if let Some(digits) = key.strip_prefix("naca") {
+        if !digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit()) && !path.is_file() {
+            return naca(digits, &NacaOptions::default()).map_err(|e| match e {
+                GeometryError::NacaDesignation { reason, .. } => GeometryError::NacaDesignation {
+                    designation: trimmed.to_string(),
+                    reason,
+                },
+                other => other,
+            });
+        }
+    }
+    if !trimmed.is_empty() && path.is_file() {
+        return read_airfoil_file(path);
+    }
+    Err(GeometryError::UnknownAirfoil {
+        name: trimmed.to_string(),
+    })
+}

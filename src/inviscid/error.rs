@@ -1,0 +1,61 @@
+//! Errors of the inviscid panel method.
+
+use thiserror::Error;
+
+/// Everything that can go wrong when building or solving the panel system.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum InviscidError {
+    /// The contour has too few nodes to form a closed panel system.
+    #[error("airfoil has {got} nodes; the panel method needs at least {min}")]
+    TooFewNodes {
+        /// Number of nodes given.
+        got: usize,
+        /// Minimum accepted.
+        min: usize,
+    },
+    /// x and y arrays differ in length.
+    #[error("airfoil x has {x} entries but y has {y}")]
+    LengthMismatch {
+        /// Length of x.
+        x: usize,
+        /// Length of y.
+        y: usize,
+    },
+    /// A coordinate is NaN or infinite.
+    #[error("airfoil node {0} has a non-finite coordinate")]
+    NonFiniteNode(usize),
+    /// Two consecutive nodes coincide, giving a zero-length panel.
+    #[error("airfoil node {0} coincides with the next node (zero-length panel)")]
+    DuplicateNode(usize),
+    /// The influence matrix could not be factorised into a usable solution.
+    #[error("panel influence matrix is singular (self-intersecting or degenerate contour?)")]
+    SingularSystem,
+    /// Mach number outside the subsonic range [0, 1).
+    #[error("freestream Mach number {0} is outside [0, 1)")]
+    InvalidMach(f64),
+    /// Angle of attack is NaN or infinite.
+    #[error("angle of attack {0} deg is not finite")]
+    InvalidAlpha(f64),
+    /// Karman–Tsien denominator β + λ(1+β)Cp/2 became non-positive somewhere on the surface.
+    #[error("local speed too large for the Karman-Tsien correction at Mach {mach} (alpha {alpha_deg} deg)")]
+    CompressibilityBreakdown {
+        /// Freestream Mach number.
+        mach: f64,
+        /// Angle of attack in degrees.
+        alpha_deg: f64,
+    },
+    /// A source (mass-defect) vector has the wrong length.
+    #[error("source vector has {got} entries, expected {expected}")]
+    SourceLength {
+        /// Length given.
+        got: usize,
+        /// Length expected (airfoil nodes + wake nodes).
+        expected: usize,
+    },
+    /// Wake parameters cannot produce a wake.
+    #[error("invalid wake parameters: {0}")]
+    InvalidWake(&'static str),
+    /// The streamline tracing of the wake met a stagnation point (zero velocity).
+    #[error("wake tracing met zero velocity at wake node {0}")]
+    WakeStagnation(usize),
+}

@@ -1,0 +1,652 @@
+//! Panel geometry and influence coefficients of XFOIL's linear-vorticity / linear-source panels
+//! on the stream function ψ and on its normal derivative ∂ψ/∂n (Drela 1989, "XFOIL: An
+//! analysis and design system for low Reynolds number airfoils", §2; XFOIL xpanel.f PSILIN
+//! and PSWLIN, TE panel from TECALC).
+//!
+//! Conventions (identical to XFOIL):
+//! * nodes in XFOIL order (upper TE → LE → lower TE), panel `j` runs from node `j` to `j+1`,
+//!   the trailing-edge panel runs from the last node back to node 0;
+//! * vorticity γ is linear over each panel; on the body γ equals the surface speed with the sign
+//!   of `−u·ŝ` (ŝ = panel direction), i.e. positive on the upper surface, negative below;
+//! * the source strength of the viscous coupling is `dm/ds`, where `m = Ue·δ*` is the nodal
+//!   mass defect; it is linear over each half panel, with slopes taken from the nodal `m`
+//!   values (PSILIN "SIG" terms);
+//! * ψ of a panel is normalised by 1/(4π) (QOPI) and the TE panel by 1/(2π) (HOPI), so that
+//!   γ, σ are in units of V∞ and ψ in V∞·c.
+
+use std::f64::consts::PI;
+
+use super::error::InviscidError;
+
+/// 1/(4π): normalisation of a linear panel's ψ integral (XFOIL QOPI).
+const QOPI: f64 = 0.25 / PI;
+/// 1/(2π): normalisation of the trailing-edge panel's ψ integral (XFOIL HOPI).
+const HOPI: f64 = 0.5 / PI;
+
+/// Tunable constants of the panel geometry (XFOIL defaults).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PanelParams {
+    /// A trailing-edge gap smaller than this fraction of the chord is treated as sharp
+    /// (XFOIL TECALC: `SHARP = DSTE < 0.0001*CHORD`).
+    pub sharp_te_gap: f64,
+    /// Distance of the sharp-TE control point ahead of the TE along the bisector, as a fraction
+    /// of the shorter TE-adjacent panel (XFOIL GGCALC `BWT = 0.1`).
+    pub sharp_te_bisector_fraction: f64,
+    /// Moment reference point x (chord units); XFOIL uses the quarter chord.
+    pub moment_ref_x: f64,
+    /// Moment reference point y (chord units).
+    pub moment_ref_y: f64,
+}
+
+impl Default for PanelParams {
+    fn default() -> Self {
+        Self {
+            sharp_te_gap: 1.0e-4,
+            sharp_te_bisector_fraction: 0.1,
+            moment_ref_x: 0.25,
+            moment_ref_y: 0.0,
+        }
+    }
+}
+
+/// Trailing-edge gap geometry and TE-panel strength factors (XFOIL TECALC).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TrailingEdge {
+    /// TE midpoint x, `(x₀ + x_{N−1})/2`.
+    pub x: f64,
+    /// TE midpoint y.
+    pub y: f64,
+    /// Total TE gap |r₀ − r_{N−1}| (XFOIL DSTE).
+    pub gap: f64,
+    /// Gap projected normal to the TE bisector (XFOIL ANTE, signed).
+    pub gap_normal: f64,
+    /// Gap projected along the TE bisector (XFOIL ASTE, signed).
+    pub gap_streamwise: f64,
+    /// `true` if the gap is below `PanelParams::sharp_te_gap`·chord.
+    pub sharp: bool,
+    /// TE-panel source factor: σ_TE = ½·scs·(γ₀ − γ_{N−1}) (XFOIL SCS = ANTE/DSTE, 1 if sharp).
+    pub scs: f64,
+    /// TE-panel vortex factor: γ_TE = −½·sds·(γ₀ − γ_{N−1}) (XFOIL SDS = ASTE/DSTE, 0 if sharp).
+    pub sds: f64,
+    /// `true` when first and last node coincide, so the TE panel is dropped (PSILIN SEPS test).
+    pub closed: bool,
+}
+
+/// An airfoil contour prepared for the panel method: nodes, arc length, spline tangents,
+/// outward normals, panel angles and the trailing-edge description.
+#[derive(Clone, Debug)]
+pub struct PanelGeometry {
+    /// Node x (XFOIL order).
+    pub x: Vec<f64>,
+    /// Node y.
+    pub y: Vec<f64>,
+    /// Cumulative chord-length arc length, s₀ = 0 (XFOIL SCALC).
+    pub s: Vec<f64>,
+    /// Spline derivative dx/ds at each node (XFOIL SPLIND with zero-third-derivative ends).
+    pub xp: Vec<f64>,
+    /// Spline derivative dy/ds at each node.
+    pub yp: Vec<f64>,
+    /// Outward unit normal x, `(dy/ds, −dx/ds)/|·|` (XFOIL NCALC).
+    pub nx: Vec<f64>,
+    /// Outward unit normal y.
+    pub ny: Vec<f64>,
+    /// Panel angles (XFOIL APCALC): `atan2(Δx, −Δy)` for panel j → j+1, last entry the TE panel.
+    pub apanel: Vec<f64>,
+    /// Chord: largest distance from the TE midpoint to a node.
+    pub chord: f64,
+    /// Trailing-edge data.
+    pub te: TrailingEdge,
+}
+
+impl PanelGeometry {
+    /// Prepares the contour `x`, `y` (XFOIL order, used as given) for the panel method.
+    pub fn new(x: &[f64], y: &[f64], params: &PanelParams) -> Result<Self, InviscidError> {
+        const MIN_NODES: usize = 5;
+        if x.len() != y.len() {
+            return Err(InviscidError::LengthMismatch {
+                x: x.len(),
+                y: y.len(),
+            });
+        }
+        let n = x.len();
+        if n < MIN_NODES {
+            return Err(InviscidError::TooFewNodes {
+                got: n,
+                min: MIN_NODES,
+            });
+        }
+        if let Some(i) = (0..n).find(|&i| !x[i].is_finite() || !y[i].is_finite()) {
+            return Err(InviscidError::NonFiniteNode(i));
+        }
+        let mut s = vec![0.0; n];
+        for i in 1..n {
+            let ds = (x[i] - x[i - 1]).hypot(y[i] - y[i - 1]);
+            if ds == 0.0 {
+                return Err(InviscidError::DuplicateNode(i - 1));
+            }
+            s[i] = s[i - 1] + ds;
+        }
+        let xp = spline_slopes(x, &s);
+        let yp = spline_slopes(y, &s);
+        let mut nx = vec![0.0; n];
+        let mut ny = vec![0.0; n];
+        for i in 0..n {
+            let m = xp[i].hypot(yp[i]);
+            nx[i] = yp[i] / m;
+            ny[i] = -xp[i] / m;
+        }
+
+        let xte = 0.5 * (x[0] + x[n - 1]);
+        let yte = 0.5 * (y[0] + y[n - 1]);
+        let chord = (0..n)
+            .map(|i| (x[i] - xte).hypot(y[i] - yte))
+            .fold(0.0, f64::max);
+
+        // XFOIL TECALC: TE base vector, bisector from the spline tangents, gap projections.
+        let dxte = x[0] - x[n - 1];
+        let dyte = y[0] - y[n - 1];
+        let dxs = 0.5 * (-xp[0] + xp[n - 1]);
+        let dys = 0.5 * (-yp[0] + yp[n - 1]);
+        let gap_normal = dxs * dyte - dys * dxte;
+        let gap_streamwise = dxs * dxte + dys * dyte;
+        let gap = dxte.hypot(dyte);
+        let sharp = gap < params.sharp_te_gap * chord;
+        let (scs, sds) = if sharp {
+            (1.0, 0.0)
+        } else {
+            (gap_normal / gap, gap_streamwise / gap)
+        };
+        // PSILIN: TE panel skipped when the end nodes coincide within 1e-5 of the perimeter.
+        let seps = s[n - 1] * 1.0e-5;
+        let closed = gap * gap < seps * seps;
+
+        // XFOIL APCALC panel angles.
+        let mut apanel = vec![0.0; n];
+        for i in 0..n - 1 {
+            apanel[i] = (x[i + 1] - x[i]).atan2(-(y[i + 1] - y[i]));
+        }
+        apanel[n - 1] = if sharp {
+            PI
+        } else {
+            (-(x[0] - x[n - 1])).atan2(y[0] - y[n - 1]) + PI
+        };
+
+        Ok(Self {
+            x: x.to_vec(),
+            y: y.to_vec(),
+            s,
+            xp,
+            yp,
+            nx,
+            ny,
+            apanel,
+            chord,
+            te: TrailingEdge {
+                x: xte,
+                y: yte,
+                gap,
+                gap_normal,
+                gap_streamwise,
+                sharp,
+                scs,
+                sds,
+                closed,
+            },
+        })
+    }
+
+    /// Number of nodes N.
+    pub fn len(&self) -> usize {
+        self.x.len()
+    }
+
+    /// Always false (a geometry has at least 5 nodes); present for API symmetry with `len`.
+    pub fn is_empty(&self) -> bool {
+        self.x.is_empty()
+    }
+}
+
+/// Cubic-spline first derivatives dX/ds at the nodes with zero third derivative at both ends
+/// (XFOIL spline.f SPLIND with XS1 = XS2 = −999), solved with the Thomas algorithm.
+pub fn spline_slopes(v: &[f64], s: &[f64]) -> Vec<f64> {
+    let n = v.len();
+    let mut a = vec![0.0; n]; // diagonal
+    let mut b = vec![0.0; n]; // sub-diagonal
+    let mut c = vec![0.0; n]; // super-diagonal
+    let mut d = vec![0.0; n];
+    for i in 1..n - 1 {
+        let dsm = s[i] - s[i - 1];
+        let dsp = s[i + 1] - s[i];
+        b[i] = dsp;
+        a[i] = 2.0 * (dsm + dsp);
+        c[i] = dsm;
+        d[i] = 3.0 * ((v[i + 1] - v[i]) * dsm / dsp + (v[i] - v[i - 1]) * dsp / dsm);
+    }
+    a[0] = 1.0;
+    c[0] = 1.0;
+    d[0] = 2.0 * (v[1] - v[0]) / (s[1] - s[0]);
+    b[n - 1] = 1.0;
+    a[n - 1] = 1.0;
+    d[n - 1] = 2.0 * (v[n - 1] - v[n - 2]) / (s[n - 1] - s[n - 2]);
+    // Forward elimination, back substitution.
+    for i in 1..n {
+        let w = b[i] / a[i - 1];
+        a[i] -= w * c[i - 1];
+        d[i] -= w * d[i - 1];
+    }
+    d[n - 1] /= a[n - 1];
+    for i in (0..n - 1).rev() {
+        d[i] = (d[i] - c[i] * d[i + 1]) / a[i];
+    }
+    d
+}
+
+/// Local frame of one straight panel seen from a field point (PSILIN/PSWLIN geometry block):
+/// panel-aligned coordinates of both ends, log r² and arctan terms with XFOIL's reflection
+/// rule, and the derivatives of the coordinates with respect to the field normal direction.
+#[derive(Clone, Copy, Debug)]
+struct PanelFrame {
+    x1: f64,
+    x2: f64,
+    yy: f64,
+    rs1: f64,
+    rs2: f64,
+    g1: f64,
+    g2: f64,
+    t1: f64,
+    t2: f64,
+    /// d(x1)/dn = d(x2)/dn at the field point.
+    xi: f64,
+    /// d(yy)/dn at the field point.
+    yyi: f64,
+    /// Reflection flag SGN.
+    sgn: f64,
+    /// Branch offset added to every arctan (±(½ − ½·SGN)π).
+    branch: f64,
+}
+
+/// Field point of an influence evaluation: decides the arctan branch and which singular
+/// panel-end terms are dropped (XFOIL's node index IO in PSILIN/PSWLIN).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FieldPoint {
+    /// Airfoil node with this 0-based index.
+    Airfoil(usize),
+    /// Wake node with this 0-based index (0 = first wake node behind the TE).
+    Wake(usize),
+    /// Any other point (e.g. the sharp-TE bisector control point).
+    Free,
+}
+
+/// Field point location and normal used by the influence routines.
+#[derive(Clone, Copy, Debug)]
+pub struct Probe {
+    /// Which kind of point this is.
+    pub kind: FieldPoint,
+    /// x coordinate.
+    pub x: f64,
+    /// y coordinate.
+    pub y: f64,
+    /// Normal x component for ∂ψ/∂n.
+    pub nx: f64,
+    /// Normal y component for ∂ψ/∂n.
+    pub ny: f64,
+}
+
+impl PanelFrame {
+    /// Builds the frame of panel (xa,ya)→(xb,yb). `on_line` is true when the field point lies
+    /// on the same panel line family (SGN = 1), `self_a`/`self_b` when it is that end node.
+    /// `branch_sign` is +1 for airfoil panels (PSILIN) and −1 for wake panels (PSWLIN).
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    fn new(
+        p: &Probe,
+        xa: f64,
+        ya: f64,
+        xb: f64,
+        yb: f64,
+        on_line: bool,
+        self_a: bool,
+        self_b: bool,
+        branch_sign: f64,
+    ) -> Self {
+        let dso = (xb - xa).hypot(yb - ya);
+        let sx = (xb - xa) / dso;
+        let sy = (yb - ya) / dso;
+        let rx1 = p.x - xa;
+        let ry1 = p.y - ya;
+        let rx2 = p.x - xb;
+        let ry2 = p.y - yb;
+        let x1 = sx * rx1 + sy * ry1;
+        let x2 = sx * rx2 + sy * ry2;
+        let yy = sx * ry1 - sy * rx1;
+        let rs1 = rx1 * rx1 + ry1 * ry1;
+        let rs2 = rx2 * rx2 + ry2 * ry2;
+        let sgn = if on_line || yy >= 0.0 { 1.0 } else { -1.0 };
+        let branch = branch_sign * (0.5 - 0.5 * sgn) * PI;
+        let (g1, t1) = if !self_a && rs1 > 0.0 {
+            (rs1.ln(), (sgn * x1).atan2(sgn * yy) + branch)
+        } else {
+            (0.0, 0.0)
+        };
+        let (g2, t2) = if !self_b && rs2 > 0.0 {
+            (rs2.ln(), (sgn * x2).atan2(sgn * yy) + branch)
+        } else {
+            (0.0, 0.0)
+        };
+        Self {
+            x1,
+            x2,
+            yy,
+            rs1,
+            rs2,
+            g1,
+            g2,
+            t1,
+            t2,
+            xi: sx * p.nx + sy * p.ny,
+            yyi: sx * p.ny - sy * p.nx,
+            sgn,
+            branch,
+        }
+    }
+
+    /// Linear-vorticity panel (PSILIN vortex block): returns (ψ_sum, ψ_dif, ∂ψ_sum/∂n,
+    /// ∂ψ_dif/∂n); the panel contributes QOPI·(ψ_sum·(γa+γb) + ψ_dif·(γb−γa)).
+    #[inline]
+    fn vortex(&self) -> (f64, f64, f64, f64) {
+        let (x1, x2, yy) = (self.x1, self.x2, self.yy);
+        let (g1, g2, t1, t2) = (self.g1, self.g2, self.t1, self.t2);
+        let dxinv = 1.0 / (x1 - x2);
+        let psis = 0.5 * x1 * g1 - 0.5 * x2 * g2 + x2 - x1 + yy * (t1 - t2);
+        let psid =
+            ((x1 + x2) * psis + 0.5 * (self.rs2 * g2 - self.rs1 * g1 + x1 * x1 - x2 * x2)) * dxinv;
+        let psx1 = 0.5 * g1;
+        let psx2 = -0.5 * g2;
+        let psyy = t1 - t2;
+        let pdx1 = ((x1 + x2) * psx1 + psis - x1 * g1 - psid) * dxinv;
+        let pdx2 = ((x1 + x2) * psx2 + psis + x2 * g2 + psid) * dxinv;
+        let pdyy = ((x1 + x2) * psyy - yy * (g1 - g2)) * dxinv;
+        let psni = (psx1 + psx2) * self.xi + psyy * self.yyi;
+        let pdni = (pdx1 + pdx2) * self.xi + pdyy * self.yyi;
+        (psis, psid, psni, pdni)
+    }
+
+    /// Constant-strength source and vortex integrals of the TE panel (PSILIN label 11):
+    /// returns (ψ_σ, ψ_γ, ∂ψ_σ/∂n, ∂ψ_γ/∂n), to be weighted by HOPI·σ_TE and HOPI·γ_TE.
+    #[inline]
+    fn te_panel(&self, apan: f64) -> (f64, f64, f64, f64) {
+        let (x1, x2, yy) = (self.x1, self.x2, self.yy);
+        let (g1, g2, t1, t2) = (self.g1, self.g2, self.t1, self.t2);
+        let psig = 0.5 * yy * (g1 - g2) + x2 * (t2 - apan) - x1 * (t1 - apan);
+        let pgam = 0.5 * x1 * g1 - 0.5 * x2 * g2 + x2 - x1 + yy * (t1 - t2);
+        let psigni = (-(t1 - apan) + (t2 - apan)) * self.xi + 0.5 * (g1 - g2) * self.yyi;
+        let pgamni = (0.5 * g1 - 0.5 * g2) * self.xi + (t1 - t2) * self.yyi;
+        (psig, pgam, psigni, pgamni)
+    }
+
+    /// Linear-source panel split at its midpoint (PSILIN/PSWLIN "SIGLIN" block). Returns the
+    /// (ψ_sum, ψ_dif, ∂ψ_sum/∂n, ∂ψ_dif/∂n) of the first half (node a → midpoint) and of the
+    /// second half (midpoint → node b).
+    #[inline]
+    fn source_halves(&self, apan: f64) -> ([f64; 4], [f64; 4]) {
+        let x0 = 0.5 * (self.x1 + self.x2);
+        let rs0 = x0 * x0 + self.yy * self.yy;
+        let g0 = rs0.ln();
+        let t0 = (self.sgn * x0).atan2(self.sgn * self.yy) + self.branch;
+        let first = half_source(
+            self.x1, x0, self.yy, self.t1, t0, self.g1, g0, self.rs1, rs0, apan, self.xi, self.yyi,
+        );
+        let second = half_source(
+            x0, self.x2, self.yy, t0, self.t2, g0, self.g2, rs0, self.rs2, apan, self.xi, self.yyi,
+        );
+        (first, second)
+    }
+}
+
+/// Linear source over a half panel from panel coordinate `xa` to `xb` (XFOIL PSILIN PSUM/PDIF
+/// with their normal derivatives); returns [ψ_sum, ψ_dif, ∂ψ_sum/∂n, ∂ψ_dif/∂n].
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn half_source(
+    xa: f64,
+    xb: f64,
+    yy: f64,
+    ta: f64,
+    tb: f64,
+    ga: f64,
+    gb: f64,
+    rsa: f64,
+    rsb: f64,
+    apan: f64,
+    xi: f64,
+    yyi: f64,
+) -> [f64; 4] {
+    let dxinv = 1.0 / (xa - xb);
+    let ta = ta - apan;
+    let tb = tb - apan;
+    let psum = xb * tb - xa * ta + 0.5 * yy * (ga - gb);
+    let pdif = ((xa + xb) * psum + rsa * ta - rsb * tb + (xb - xa) * yy) * dxinv;
+    let psxa = -ta;
+    let psxb = tb;
+    let psyy = 0.5 * (ga - gb);
+    let pdxa = ((xa + xb) * psxa + psum + 2.0 * xa * ta - pdif) * dxinv;
+    let pdxb = ((xa + xb) * psxb + psum - 2.0 * xb * tb + pdif) * dxinv;
+    let pdyy = ((xa + xb) * psyy + 2.0 * (xb - xa + yy * (ta - tb))) * dxinv;
+    let psni = (psxa + psxb) * xi + psyy * yyi;
+    let pdni = (pdxa + pdxb) * xi + pdyy * yyi;
+    [psum, pdif, psni, pdni]
+}
+
+/// Sensitivities of ψ and ∂ψ/∂n at one field point to the airfoil's nodal vorticity and
+/// nodal mass defect (XFOIL DZDG, DQDG, DZDM, DQDM). Freestream terms are not included.
+#[derive(Clone, Debug)]
+pub struct Influence {
+    /// dψ/dγ_j.
+    pub psi_gamma: Vec<f64>,
+    /// d(∂ψ/∂n)/dγ_j.
+    pub qn_gamma: Vec<f64>,
+    /// dψ/dm_j (mass defect m_j = Ue·δ* at node j).
+    pub psi_source: Vec<f64>,
+    /// d(∂ψ/∂n)/dm_j.
+    pub qn_source: Vec<f64>,
+}
+
+impl Influence {
+    /// Zeroed buffers for `n` nodes.
+    pub fn new(n: usize) -> Self {
+        Self {
+            psi_gamma: vec![0.0; n],
+            qn_gamma: vec![0.0; n],
+            psi_source: vec![0.0; n],
+            qn_source: vec![0.0; n],
+        }
+    }
+
+    fn clear(&mut self) {
+        self.psi_gamma.fill(0.0);
+        self.qn_gamma.fill(0.0);
+        self.psi_source.fill(0.0);
+        self.qn_source.fill(0.0);
+    }
+}
+
+/// Neighbour indices (jm, jq) of panel jo→jo+1 on an open line of `n` nodes, used for the
+/// source slopes (PSILIN/PSWLIN: JM = JO at the first panel, JQ = JP at the last).
+#[inline]
+fn source_neighbours(jo: usize, n: usize) -> (usize, usize) {
+    let jm = if jo == 0 { jo } else { jo - 1 };
+    let jq = if jo + 2 >= n { jo + 1 } else { jo + 2 };
+    (jm, jq)
+}
+
+/// Accumulates the source sensitivities of one panel jo→jo+1 of a line (x, y) into
+/// `psi_out`/`qn_out` (XFOIL PSILIN/PSWLIN dPsi/dm and dQ/dm updates).
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn add_source_panel(
+    frame: &PanelFrame,
+    apan: f64,
+    x: &[f64],
+    y: &[f64],
+    jo: usize,
+    psi_out: &mut [f64],
+    qn_out: &mut [f64],
+) {
+    let n = x.len();
+    let jp = jo + 1;
+    let (jm, jq) = source_neighbours(jo, n);
+    let dsio = 1.0 / (x[jp] - x[jo]).hypot(y[jp] - y[jo]);
+    let dsim = 1.0 / (x[jp] - x[jm]).hypot(y[jp] - y[jm]);
+    let dsip = 1.0 / (x[jq] - x[jo]).hypot(y[jq] - y[jo]);
+    let ([psum, pdif, psni, pdni], [psum2, pdif2, psni2, pdni2]) = frame.source_halves(apan);
+    // first half: SSUM = (m_p − m_o)/dso + (m_p − m_m)/dsm, SDIF = (m_p − m_o)/dso − (m_p − m_m)/dsm
+    psi_out[jm] += QOPI * (-psum + pdif) * dsim;
+    psi_out[jo] += QOPI * (-psum - pdif) * dsio;
+    psi_out[jp] += QOPI * (psum * (dsio + dsim) + pdif * (dsio - dsim));
+    qn_out[jm] += QOPI * (-psni + pdni) * dsim;
+    qn_out[jo] += QOPI * (-psni - pdni) * dsio;
+    qn_out[jp] += QOPI * (psni * (dsio + dsim) + pdni * (dsio - dsim));
+    // second half: SSUM = (m_q − m_o)/dsp + (m_p − m_o)/dso, SDIF = (m_q − m_o)/dsp − (m_p − m_o)/dso
+    psi_out[jo] += QOPI * (-psum2 * (dsip + dsio) - pdif2 * (dsip - dsio));
+    psi_out[jp] += QOPI * (psum2 - pdif2) * dsio;
+    psi_out[jq] += QOPI * (psum2 + pdif2) * dsip;
+    qn_out[jo] += QOPI * (-psni2 * (dsip + dsio) - pdni2 * (dsip - dsio));
+    qn_out[jp] += QOPI * (psni2 - pdni2) * dsio;
+    qn_out[jq] += QOPI * (psni2 + pdni2) * dsip;
+}
+
+/// Direct evaluation of (ψ, ∂ψ/∂n) of one source panel jo→jo+1 of a line for given nodal mass
+/// defects `m` (the SSUM/SDIF form of PSILIN, without forming sensitivities).
+#[inline]
+fn source_panel_value(
+    frame: &PanelFrame,
+    apan: f64,
+    x: &[f64],
+    y: &[f64],
+    jo: usize,
+    m: &[f64],
+) -> (f64, f64) {
+    let n = x.len();
+    let jp = jo + 1;
+    let (jm, jq) = source_neighbours(jo, n);
+    let dso = (x[jp] - x[jo]).hypot(y[jp] - y[jo]);
+    let dsm = (x[jp] - x[jm]).hypot(y[jp] - y[jm]);
+    let dsp = (x[jq] - x[jo]).hypot(y[jq] - y[jo]);
+    let slope_o = (m[jp] - m[jo]) / dso;
+    let slope_m = (m[jp] - m[jm]) / dsm;
+    let slope_p = (m[jq] - m[jo]) / dsp;
+    let ([psum, pdif, psni, pdni], [psum2, pdif2, psni2, pdni2]) = frame.source_halves(apan);
+    let (ssum1, sdif1) = (slope_o + slope_m, slope_o - slope_m);
+    let (ssum2, sdif2) = (slope_p + slope_o, slope_p - slope_o);
+    let psi = QOPI * (psum * ssum1 + pdif * sdif1 + psum2 * ssum2 + pdif2 * sdif2);
+    let qn = QOPI * (psni * ssum1 + pdni * sdif1 + psni2 * ssum2 + pdni2 * sdif2);
+    (psi, qn)
+}
+
+/// Builds the frame of airfoil panel jo (jo = N−1 is the TE panel) seen from `p` (PSILIN).
+#[inline]
+fn airfoil_frame(g: &PanelGeometry, p: &Probe, jo: usize) -> PanelFrame {
+    let n = g.len();
+    let jp = if jo + 1 == n { 0 } else { jo + 1 };
+    let (on, sa, sb) = match p.kind {
+        FieldPoint::Airfoil(i) => (true, i == jo, i == jp),
+        _ => (false, false, false),
+    };
+    PanelFrame::new(p, g.x[jo], g.y[jo], g.x[jp], g.y[jp], on, sa, sb, 1.0)
+}
+
+/// XFOIL PSILIN: sensitivities of ψ and ∂ψ/∂n at probe `p` to the nodal vorticity of all
+/// airfoil panels (incl. the TE panel's source/vortex, which are tied to γ₀ − γ_{N−1}) and,
+/// if `with_sources`, to the nodal mass defect of the airfoil source panels. Freestream terms
+/// are excluded (ψ∞ = y·cos α − x·sin α).
+pub fn airfoil_influence(g: &PanelGeometry, p: &Probe, with_sources: bool, out: &mut Influence) {
+    let n = g.len();
+    out.clear();
+    for jo in 0..n - 1 {
+        let f = airfoil_frame(g, p, jo);
+        if with_sources {
+            add_source_panel(
+                &f,
+                g.apanel[jo],
+                &g.x,
+                &g.y,
+                jo,
+                &mut out.psi_source,
+                &mut out.qn_source,
+            );
+        }
+        let (psis, psid, psni, pdni) = f.vortex();
+        out.psi_gamma[jo] += QOPI * (psis - psid);
+        out.psi_gamma[jo + 1] += QOPI * (psis + psid);
+        out.qn_gamma[jo] += QOPI * (psni - pdni);
+        out.qn_gamma[jo + 1] += QOPI * (psni + pdni);
+    }
+    if !g.te.closed {
+        let f = airfoil_frame(g, p, n - 1);
+        let (psig, pgam, psigni, pgamni) = f.te_panel(g.apanel[n - 1]);
+        let (scs, sds) = (g.te.scs, g.te.sds);
+        let dpsi = HOPI * (psig * 0.5 * scs - pgam * 0.5 * sds);
+        let dqn = HOPI * (psigni * 0.5 * scs - pgamni * 0.5 * sds);
+        out.psi_gamma[n - 1] -= dpsi;
+        out.psi_gamma[0] += dpsi;
+        out.qn_gamma[n - 1] -= dqn;
+        out.qn_gamma[0] += dqn;
+    }
+}
+
+/// Direct (ψ, ∂ψ/∂n) at probe `p` of the airfoil source panels for nodal mass defects `m`
+/// (an independent summation path of the PSILIN source terms, used to verify sensitivities).
+pub fn airfoil_source_value(g: &PanelGeometry, p: &Probe, m: &[f64]) -> (f64, f64) {
+    let n = g.len();
+    let mut psi = 0.0;
+    let mut qn = 0.0;
+    for jo in 0..n - 1 {
+        let f = airfoil_frame(g, p, jo);
+        let (a, b) = source_panel_value(&f, g.apanel[jo], &g.x, &g.y, jo, m);
+        psi += a;
+        qn += b;
+    }
+    (psi, qn)
+}
+
+/// Builds the frame of wake panel jo seen from `p` (PSWLIN).
+#[inline]
+fn wake_frame(x: &[f64], y: &[f64], p: &Probe, jo: usize) -> PanelFrame {
+    let (on, sa, sb) = match p.kind {
+        FieldPoint::Wake(i) => (true, i == jo, i == jo + 1),
+        _ => (false, false, false),
+    };
+    PanelFrame::new(p, x[jo], y[jo], x[jo + 1], y[jo + 1], on, sa, sb, -1.0)
+}
+
+/// XFOIL PSWLIN: sensitivities of ψ and ∂ψ/∂n at probe `p` to the nodal mass defect of the
+/// wake source panels (line `x`, `y` with panel angles `apanel`), written into `psi_out`,
+/// `qn_out` (length = number of wake nodes).
+pub fn wake_source_influence(
+    x: &[f64],
+    y: &[f64],
+    apanel: &[f64],
+    p: &Probe,
+    psi_out: &mut [f64],
+    qn_out: &mut [f64],
+) {
+    psi_out.fill(0.0);
+    qn_out.fill(0.0);
+    for (jo, &apan) in apanel.iter().enumerate().take(x.len() - 1) {
+        let f = wake_frame(x, y, p, jo);
+        add_source_panel(&f, apan, x, y, jo, psi_out, qn_out);
+    }
+}
+
+/// Direct (ψ, ∂ψ/∂n) at probe `p` of the wake source panels for nodal mass defects `m`.
+pub fn wake_source_value(x: &[f64], y: &[f64], apanel: &[f64], p: &Probe, m: &[f64]) -> (f64, f64) {
+    let mut psi = 0.0;
+    let mut qn = 0.0;
+    for (jo, &apan) in apanel.iter().enumerate().take(x.len() - 1) {
+        let f = wake_frame(x, y, p, jo);
+        let (a, b) = source_panel_value(&f, apan, x, y, jo, m);
+        psi += a;
+        qn += b;
+    }
+    (psi, qn)
+}
