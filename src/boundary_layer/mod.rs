@@ -1,2 +1,180 @@
 //! Integral boundary layer (Drela & Giles 1987; Drela 1989): closures with their partial
 //! derivatives, e^n amplification and transition, and the discrete equations of one interval.
+//!
+//! The decomposition follows XFOIL 6.99 xblsys.f so the viscous coupling (XFOIL SETBL) can
+//! be assembled from these pieces:
+//! * [`StationVars`] — primary variables of a station (BLPRV): ξ, incompressible Ue, θ, δ*,
+//!   N or √Cτ, wake gap.
+//! * [`BlModel::interval`] / [`BlModel::similarity`] — the three equations of an interval
+//!   (BLSYS/BLDIF) with Jacobians in the column order (s, θ, δ*, u, ξ).
+//! * [`BlModel::amplification_check`] / [`BlModel::transition_interval`] — implicit transition
+//!   inside an interval (TRCHEK2) and the combined laminar + turbulent equations (TRDIF).
+//! * [`BlModel::te_junction`] — first wake station from the two trailing-edge stations (TESYS).
+//! * [`BlModel::squire_young`] — drag from the last wake station (CDCALC).
+//! * [`BlModel::properties`] — Cf, H, Hk, Re_θ, … of a station for output.
+
+pub mod amplification;
+pub mod closures;
+pub mod dual;
+pub mod equations;
+pub mod params;
+pub mod station;
+pub mod trailing_edge;
+pub mod transition;
+
+pub use equations::IntervalEquations;
+pub use params::{BlConditions, BlParams, FlowConstants, Regime};
+pub use station::{StationProperties, StationVars};
+pub use trailing_edge::{SquireYoung, TeJunction};
+pub use transition::{AmplificationCheck, TransitionInterval, TransitionKind};
+
+use equations::{bldif, DiffKind};
+use station::{validate, Station};
+
+/// Errors of the boundary-layer routines.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum BlError {
+    /// The Reynolds number is not a positive finite number.
+    #[error("boundary layer: Reynolds number {0} is not positive and finite")]
+    Reynolds(f64),
+    /// The Mach number is outside [0, 1).
+    #[error("boundary layer: Mach number {0} is outside [0, 1)")]
+    Mach(f64),
+    /// The critical amplification factor is not positive.
+    #[error("boundary layer: Ncrit {0} is not positive and finite")]
+    Ncrit(f64),
+    /// A station variable is out of its valid range.
+    #[error("boundary layer: station {what} = {value} is out of range")]
+    Station {
+        /// Which variable.
+        what: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// The equations produced a non-finite value (variables far outside the closures' range).
+    #[error("boundary layer: non-finite {0} (station variables outside the closures' range)")]
+    NonFinite(&'static str),
+    /// The interval does not advance downstream.
+    #[error("boundary layer: interval xi1 = {x1} to xi2 = {x2} does not advance downstream")]
+    Interval {
+        /// ξ of station 1.
+        x1: f64,
+        /// ξ of station 2.
+        x2: f64,
+    },
+}
+
+/// Checks that station 2 lies strictly downstream of station 1.
+pub(crate) fn check_advance(v1: &StationVars, v2: &StationVars) -> Result<(), BlError> {
+    if v2.x.partial_cmp(&v1.x) == Some(std::cmp::Ordering::Greater) {
+        Ok(())
+    } else {
+        Err(BlError::Interval { x1: v1.x, x2: v2.x })
+    }
+}
+
+/// Rejects equations with non-finite residuals or Jacobian entries.
+pub(crate) fn check_finite(
+    eq: IntervalEquations,
+    what: &'static str,
+) -> Result<IntervalEquations, BlError> {
+    let all = eq
+        .res
+        .iter()
+        .chain(eq.d1.iter().flatten())
+        .chain(eq.d2.iter().flatten());
+    if all.into_iter().all(|v| v.is_finite()) {
+        Ok(eq)
+    } else {
+        Err(BlError::NonFinite(what))
+    }
+}
+
+/// Boundary-layer model for one flow condition: closure constants plus the derived
+/// compressibility constants. Cheap to copy; holds no mutable state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BlModel {
+    /// Closure and shear-lag constants.
+    pub params: BlParams,
+    /// Compressibility/Reynolds constants derived from the flow conditions.
+    pub flow: FlowConstants,
+}
+
+impl BlModel {
+    /// Model for the given flow conditions and constants (validates the conditions).
+    pub fn new(cond: &BlConditions, params: BlParams) -> Result<Self, BlError> {
+        Ok(Self {
+            flow: FlowConstants::new(cond, &params)?,
+            params,
+        })
+    }
+
+    /// Secondary station variables seeded in the slots of station 1 (offset 0) or 2 (5).
+    pub(crate) fn station(
+        &self,
+        v: &StationVars,
+        offset: Option<usize>,
+        regime: Regime,
+    ) -> Station {
+        Station::seeded(v, offset, regime, &self.flow, &self.params)
+    }
+
+    /// Equations of the interval from station 1 to station 2 in the given regime (XFOIL
+    /// BLSYS → BLDIF(1|2|3)): amplification (laminar) or shear-lag (turbulent/wake),
+    /// momentum and shape-parameter equations with Jacobians (see [`IntervalEquations`]).
+    /// Both stations are evaluated with the closures of `regime`. Transition intervals go
+    /// through [`BlModel::transition_interval`] instead.
+    pub fn interval(
+        &self,
+        regime: Regime,
+        v1: &StationVars,
+        v2: &StationVars,
+    ) -> Result<IntervalEquations, BlError> {
+        validate(v1, regime)?;
+        validate(v2, regime)?;
+        check_advance(v1, v2)?;
+        let s1 = self.station(v1, Some(0), regime);
+        let s2 = self.station(v2, Some(5), regime);
+        let kind = match regime {
+            Regime::Laminar => DiffKind::Laminar,
+            Regime::Turbulent => DiffKind::Turbulent,
+            Regime::Wake => DiffKind::Wake,
+        };
+        check_finite(
+            IntervalEquations::from_duals(&bldif(kind, &s1, &s2, &self.flow, &self.params)),
+            "interval equations",
+        )
+    }
+
+    /// Equations of the similarity (stagnation-point) station (XFOIL BLSYS with SIMI,
+    /// BLDIF(0)): stations 1 and 2 coincide, the log-differences are those of stagnation
+    /// flow (d ln Ue/d ln ξ = BULE = 1), and row 0 sets N = 0. The Jacobian is returned in
+    /// `d2` (`d1` is zero), as XFOIL sums VS1 into VS2.
+    pub fn similarity(&self, v: &StationVars) -> Result<IntervalEquations, BlError> {
+        validate(v, Regime::Laminar)?;
+        let s = self.station(v, Some(5), Regime::Laminar);
+        check_finite(
+            IntervalEquations::from_duals(&bldif(
+                DiffKind::Similarity,
+                &s,
+                &s,
+                &self.flow,
+                &self.params,
+            )),
+            "similarity equations",
+        )
+    }
+
+    /// Boundary-layer quantities of one station in the given regime, for output
+    /// (Cf, H, Hk, Re_θ, H*, CD, …; XFOIL BLKIN/BLVAR values).
+    pub fn properties(
+        &self,
+        v: &StationVars,
+        regime: Regime,
+    ) -> Result<StationProperties, BlError> {
+        validate(v, regime)?;
+        Ok(StationProperties::from_station(
+            &self.station(v, None, regime),
+        ))
+    }
+}

@@ -1,0 +1,270 @@
+//! One boundary-layer station: primary variables and the secondary variables derived from
+//! them (XFOIL xblsys.f BLPRV → BLKIN → BLVAR), including the Karman–Tsien edge-speed
+//! correction, the edge Mach number and the Sutherland viscosity.
+
+use super::closures::{
+    bl_thickness_d, cfl_d, cft_d, ctau_eq_sqrt_d, dil_d, dilw_d, dissipation_outer_d,
+    dissipation_turbulent_d, hct_d, hkin_d, hsl_d, hst_d, slip_velocity_d,
+};
+use super::dual::Dual;
+use super::params::{BlParams, FlowConstants, Regime};
+use super::BlError;
+
+/// Primary variables of one station (XFOIL BLPRV arguments).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StationVars {
+    /// ξ: arc length from the stagnation point, chord units (XFOIL XSSI).
+    pub x: f64,
+    /// Incompressible edge speed Ue/V∞ from the panel solution (XFOIL UEDG).
+    pub u: f64,
+    /// Momentum thickness θ (XFOIL THET).
+    pub theta: f64,
+    /// Displacement thickness δ*, including the wake gap in the wake (XFOIL DSTR).
+    pub dstar: f64,
+    /// Amplification factor N (laminar) or √Cτ (turbulent, wake) (XFOIL CTAU).
+    pub s: f64,
+    /// Wake gap thickness (0 on the airfoil; XFOIL DSWAKI / WGAP).
+    pub dw: f64,
+}
+
+/// Secondary variables of a station as derivative numbers (XFOIL COM2 block).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Station {
+    pub x: Dual,
+    /// Compressible edge speed.
+    pub u: Dual,
+    pub t: Dual,
+    /// δ* − wake gap.
+    pub d: Dual,
+    pub s: Dual,
+    pub dw: f64,
+    pub msq: Dual,
+    /// Edge density ρe/ρ∞.
+    pub rho: Dual,
+    pub h: Dual,
+    pub hk: Dual,
+    pub rt: Dual,
+    pub hc: Dual,
+    pub hs: Dual,
+    pub us: Dual,
+    pub cq: Dual,
+    pub cf: Dual,
+    pub di: Dual,
+    pub de: Dual,
+}
+
+/// Checks that a station's primary variables are usable (finite, positive where needed).
+pub(crate) fn validate(v: &StationVars, regime: Regime) -> Result<(), BlError> {
+    let checks: [(&'static str, f64, bool); 5] = [
+        ("xi", v.x, v.x > 0.0),
+        ("edge speed", v.u, v.u > 0.0),
+        ("theta", v.theta, v.theta > 0.0),
+        ("dstar minus wake gap", v.dstar - v.dw, v.dstar - v.dw > 0.0),
+        (
+            "shear variable",
+            v.s,
+            regime == Regime::Laminar || v.s > 0.0,
+        ),
+    ];
+    for (what, value, ok) in checks {
+        if !(value.is_finite() && ok) {
+            return Err(BlError::Station { what, value });
+        }
+    }
+    if !v.dw.is_finite() || v.dw < 0.0 {
+        return Err(BlError::Station {
+            what: "wake gap",
+            value: v.dw,
+        });
+    }
+    Ok(())
+}
+
+/// Karman–Tsien compressible edge speed (XFOIL BLPRV): Ue = Ui(1−λ)/(1−λ(Ui/q∞)²).
+pub(crate) fn compressible_speed_d(ui: Dual, fc: &FlowConstants) -> Dual {
+    let r = ui / fc.qinfbl;
+    ui * (1.0 - fc.tkbl) / (1.0 - r.sq() * fc.tkbl)
+}
+
+impl Station {
+    /// Station from its primary variables, seeded in gradient slots
+    /// `offset..offset+5` in the order (s, θ, δ*, u, ξ); `None` makes all constants.
+    pub fn seeded(
+        v: &StationVars,
+        offset: Option<usize>,
+        regime: Regime,
+        fc: &FlowConstants,
+        p: &BlParams,
+    ) -> Self {
+        let var = |value: f64, k: usize| match offset {
+            Some(o) => Dual::variable(value, o + k),
+            None => Dual::constant(value),
+        };
+        let s = var(v.s, 0);
+        let t = var(v.theta, 1);
+        let d = var(v.dstar, 2) - v.dw;
+        let u = compressible_speed_d(var(v.u, 3), fc);
+        let x = var(v.x, 4);
+        Self::from_primaries(x, u, t, d, s, v.dw, regime, fc, p)
+    }
+
+    /// Secondary variables from primaries given as derivative numbers (compressible `u`,
+    /// `d` = δ* − wake gap): XFOIL BLKIN followed by BLVAR.
+    #[allow(clippy::too_many_arguments)]
+    pub fn from_primaries(
+        x: Dual,
+        u: Dual,
+        t: Dual,
+        d: Dual,
+        s: Dual,
+        dw: f64,
+        regime: Regime,
+        fc: &FlowConstants,
+        p: &BlParams,
+    ) -> Self {
+        // BLKIN: edge Mach², density, viscosity (Sutherland), H, Hk, Re_θ.
+        let u2h = u.sq() * fc.hstinv;
+        let msq = u2h / ((1.0 - u2h * 0.5) * fc.gm1);
+        let tr = msq * (0.5 * fc.gm1) + 1.0;
+        let rho = tr.powf(-1.0 / fc.gm1) * fc.rstbl;
+        let herat = 1.0 - u2h * 0.5;
+        let visc = herat.powf(1.5) * (1.0 + fc.hvrat) / (herat + fc.hvrat) / fc.reybl;
+        let h = d / t;
+        let hk_raw = hkin_d(h, msq);
+        let rt = rho * u * t / visc;
+
+        // BLVAR: clamp Hk, then H**, H*, Us, √Cτ_eq, Cf, 2CD/H*, δ.
+        let hk = match regime {
+            Regime::Wake => hk_raw.max_const(p.hk_min_wake),
+            _ => hk_raw.max_const(p.hk_min_wall),
+        };
+        let hc = hct_d(hk, msq);
+        let hs = match regime {
+            Regime::Laminar => hsl_d(hk),
+            _ => hst_d(hk, rt, msq),
+        };
+        let us_raw = slip_velocity_d(hs, hk, h, p.gbcon);
+        let us = match regime {
+            Regime::Wake if us_raw.v > 0.99995 => Dual::constant(0.99995),
+            Regime::Laminar | Regime::Turbulent if us_raw.v > 0.95 => Dual::constant(0.98),
+            _ => us_raw,
+        };
+        let cq = ctau_eq_sqrt_d(
+            hs,
+            us,
+            hk,
+            h,
+            rt,
+            regime == Regime::Turbulent,
+            p.ctcon(),
+            p.gccon,
+        );
+        let cf = match regime {
+            Regime::Wake => Dual::constant(0.0),
+            Regime::Laminar => cfl_d(hk, rt),
+            Regime::Turbulent => {
+                let ct = cft_d(hk, rt, msq);
+                let cl = cfl_d(hk, rt);
+                if cl.v > ct.v {
+                    cl
+                } else {
+                    ct
+                }
+            }
+        };
+        let di = match regime {
+            Regime::Laminar => dil_d(hk, rt),
+            Regime::Turbulent => {
+                let dt = dissipation_turbulent_d(hs, us, cft_d(hk, rt, msq), s, hk, rt);
+                let dl = dil_d(hk, rt);
+                if dl.v > dt.v {
+                    dl
+                } else {
+                    dt
+                }
+            }
+            Regime::Wake => {
+                let dt = dissipation_outer_d(hs, us, s, rt);
+                let dl = dilw_d(hk, rt);
+                // two wake halves
+                (if dl.v > dt.v { dl } else { dt }) * 2.0
+            }
+        };
+        let de = bl_thickness_d(hk, t, d);
+        Self {
+            x,
+            u,
+            t,
+            d,
+            s,
+            dw,
+            msq,
+            rho,
+            h,
+            hk,
+            rt,
+            hc,
+            hs,
+            us,
+            cq,
+            cf,
+            di,
+            de,
+        }
+    }
+}
+
+/// Boundary-layer quantities of one station for output (distributions, diagnostics).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StationProperties {
+    /// Compressible edge speed Ue/V∞ (Karman–Tsien).
+    pub ue: f64,
+    /// Edge Mach number squared.
+    pub mach_edge_sq: f64,
+    /// Edge density ρe/ρ∞ (isentropic).
+    pub rho_edge: f64,
+    /// Shape parameter H = δ*/θ (δ* without the wake gap).
+    pub h: f64,
+    /// Kinematic shape parameter Hk (after the regime's lower clamp).
+    pub hk: f64,
+    /// Momentum-thickness Reynolds number Re_θ (edge density and viscosity).
+    pub re_theta: f64,
+    /// Kinetic-energy shape parameter H*.
+    pub h_star: f64,
+    /// Skin-friction coefficient Cf based on edge dynamic pressure (0 in the wake).
+    pub cf: f64,
+    /// Dissipation coefficient CD = (2CD/H*)·H*/2.
+    pub cd: f64,
+    /// Equilibrium √Cτ.
+    pub ctau_eq_sqrt: f64,
+    /// Wall shear stress over ρ∞V∞², τw = ½ρe Ue² Cf (XFOIL TAU; Cf based on free-stream
+    /// dynamic pressure is 2τw).
+    pub tau_wall: f64,
+    /// Dissipation integral over ρ∞V∞³, ρe Ue³ CD (XFOIL DIS).
+    pub dissipation: f64,
+    /// Normalised slip velocity Us.
+    pub us: f64,
+    /// Boundary-layer thickness δ (Green's correlation).
+    pub delta: f64,
+}
+
+impl StationProperties {
+    pub(crate) fn from_station(st: &Station) -> Self {
+        Self {
+            ue: st.u.v,
+            mach_edge_sq: st.msq.v,
+            rho_edge: st.rho.v,
+            h: st.h.v,
+            hk: st.hk.v,
+            re_theta: st.rt.v,
+            h_star: st.hs.v,
+            cf: st.cf.v,
+            cd: 0.5 * st.di.v * st.hs.v,
+            ctau_eq_sqrt: st.cq.v,
+            tau_wall: 0.5 * st.rho.v * st.u.v * st.u.v * st.cf.v,
+            dissipation: st.rho.v * st.u.v.powi(3) * 0.5 * st.di.v * st.hs.v,
+            us: st.us.v,
+            delta: st.de.v,
+        }
+    }
+}

@@ -1,0 +1,160 @@
+//! The boundary-layer equations as the coupling sees them: the discrete equations of one
+//! interval, the similarity station, transition intervals, the trailing-edge junction and the
+//! station post-processing (the decomposition of XFOIL xblsys.f BLSYS/TRDIF/TESYS).
+//!
+//! The global Newton solve is written against the [`BoundaryLayerModel`] trait so that it only
+//! depends on this small surface; the XFOIL-class closures of `crate::boundary_layer` implement it
+//! (see `xfoil_bl.rs`).
+//!
+//! Sign convention: every `res` is the residual f(vars) itself (XFOIL's VSREZ is −f); the Newton
+//! step solves `d1·δ1 + d2·δ2 = −res`. Jacobian columns are ordered (s, θ, δ*, u, ξ) as XFOIL's
+//! VS1/VS2 columns 1..5.
+
+use super::error::ViscousError;
+
+/// Primary variables of one station (XFOIL BLPRV arguments).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct StationVars {
+    /// ξ: arc length from the stagnation point [chord].
+    pub x: f64,
+    /// Incompressible edge speed Ue/V∞ (XFOIL UEDG).
+    pub u: f64,
+    /// Momentum thickness θ [chord].
+    pub theta: f64,
+    /// Total displacement thickness δ* = m/Ue including the wake gap [chord].
+    pub dstar: f64,
+    /// √Cτ (turbulent/wake) or amplification N (laminar).
+    pub s: f64,
+    /// Wake gap thickness (0 on the airfoil) [chord].
+    pub dw: f64,
+}
+
+/// Flow regime of an interval or a station.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Regime {
+    /// Laminar: amplification equation for N.
+    Laminar,
+    /// Turbulent attached/separated layer: shear-lag equation for √Cτ.
+    Turbulent,
+    /// Wake: turbulent with zero wall friction.
+    Wake,
+}
+
+/// Residuals of the three equations of one interval and their Jacobians with respect to the
+/// upstream (`d1`) and downstream (`d2`) station variables, columns (s, θ, δ*, u, ξ).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct IntervalEquations {
+    /// Residuals f of (1) amplification or shear lag, (2) momentum, (3) shape parameter.
+    pub res: [f64; 3],
+    /// ∂f/∂(station 1 variables).
+    pub d1: [[f64; 5]; 3],
+    /// ∂f/∂(station 2 variables).
+    pub d2: [[f64; 5]; 3],
+}
+
+impl IntervalEquations {
+    /// d1 + d2: the Jacobian w.r.t. one station when station 1 and station 2 coincide
+    /// (similarity station).
+    pub fn combined_jacobian(&self) -> [[f64; 5]; 3] {
+        let mut d = self.d2;
+        for (row, row1) in d.iter_mut().zip(&self.d1) {
+            for (v, v1) in row.iter_mut().zip(row1) {
+                *v += v1;
+            }
+        }
+        d
+    }
+}
+
+/// An interval in which the layer becomes turbulent.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TransitionInterval {
+    /// Combined laminar-part + turbulent-part equations (XFOIL TRDIF).
+    pub equations: IntervalEquations,
+    /// ξ of the transition point.
+    pub xi_transition: f64,
+    /// True if forced (trip), false if free (e^n).
+    pub forced: bool,
+}
+
+/// Equations of the first wake station from both trailing-edge stations (XFOIL TESYS).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct JunctionEquations {
+    /// Residuals of the √Cτ, θ and δ* junction conditions.
+    pub res: [f64; 3],
+    /// ∂f/∂(upper TE station variables).
+    pub d_upper: [[f64; 5]; 3],
+    /// ∂f/∂(lower TE station variables).
+    pub d_lower: [[f64; 5]; 3],
+    /// ∂f/∂(first wake station variables).
+    pub d_wake: [[f64; 5]; 3],
+}
+
+/// Derived quantities of one station for distributions and force integration.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct StationProperties {
+    /// Skin-friction coefficient based on the edge dynamic pressure.
+    pub cf: f64,
+    /// Shape factor H = δ*/θ (δ* without the wake gap).
+    pub h: f64,
+    /// Kinematic shape factor Hk.
+    pub hk: f64,
+    /// Compressible edge speed / V∞.
+    pub ue_compressible: f64,
+    /// Edge density / ρ∞.
+    pub rho_e: f64,
+    /// Kinematic shape factor sensitivities ∂Hk/∂(θ, δ*, u).
+    pub hk_d: [f64; 3],
+}
+
+/// The boundary-layer physics needed by the viscous–inviscid coupling.
+pub trait BoundaryLayerModel {
+    /// Similarity-station equations (XFOIL SIMI: station 1 = station 2); the Jacobian w.r.t. the
+    /// station is `d1 + d2`.
+    fn similarity(&self, st: &StationVars) -> Result<IntervalEquations, ViscousError>;
+
+    /// Equations of an interval without transition (XFOIL BLDIF).
+    fn interval(
+        &self,
+        regime: Regime,
+        st1: &StationVars,
+        st2: &StationVars,
+    ) -> Result<IntervalEquations, ViscousError>;
+
+    /// Transition check of a laminar interval (XFOIL TRCHEK2 + TRDIF): `Some` if free (N reaches
+    /// Ncrit) or forced transition (`xi_forced`) happens inside, whichever is earlier.
+    fn transition(
+        &self,
+        st1: &StationVars,
+        st2: &StationVars,
+        xi_forced: Option<f64>,
+    ) -> Result<Option<TransitionInterval>, ViscousError>;
+
+    /// Trailing-edge junction equations for the first wake station (XFOIL TESYS).
+    fn junction(
+        &self,
+        upper: &StationVars,
+        lower: &StationVars,
+        wake: &StationVars,
+        ante: f64,
+    ) -> Result<JunctionEquations, ViscousError>;
+
+    /// Post-processing quantities of one station.
+    fn properties(
+        &self,
+        regime: Regime,
+        st: &StationVars,
+    ) -> Result<StationProperties, ViscousError>;
+
+    /// Squire–Young drag coefficient from the last wake station (XFOIL CDCALC).
+    fn squire_young(&self, last: &StationVars) -> Result<f64, ViscousError>;
+
+    /// Shape factor limits for the initial march: (laminar, turbulent) Hk above which the
+    /// march switches to inverse mode (XFOIL MRCHUE HLMAX = 3.8, HTMAX = 2.5).
+    fn march_hk_limits(&self) -> (f64, f64) {
+        (3.8, 2.5)
+    }
+
+    /// Critical amplification ratio.
+    fn ncrit(&self) -> f64;
+}

@@ -1,0 +1,195 @@
+//! Structured linear solve of the global Newton system (the role of XFOIL's BLSOLV,
+//! Drela 1989 §4), done as a block forward substitution plus a dense Schur complement on the
+//! mass-defect unknowns.
+//!
+//! Each boundary-layer station k carries three unknowns w_k = (δs_k, δθ_k, δm_k) (shear/amplification
+//! variable, momentum thickness, mass defect m = Ue·δ*) and three equations:
+//!
+//! ```text
+//! A_k w_k + B_k w_p(k) + C_k w_q(k) + Σ_j V_k,j δm_j = r_k
+//! ```
+//!
+//! with p(k) < k the upstream station along the same surface and q(k) < k an optional second
+//! upstream station (the upper trailing-edge station for the first wake station, XFOIL TESYS).
+//! The 3×n block V carries the dense edge-velocity coupling Ue = Ue_inv + D·m.
+//! Writing the block part as the lower block-triangular operator L, the solution is
+//! `w = L⁻¹(r − V m)` and `m = P w`, hence the n×n Schur system `(I + P L⁻¹ V) m = P L⁻¹ r`.
+//! The cost is O(n²) for the substitutions plus one n×n LU, instead of a 3n×3n dense LU.
+
+use faer::prelude::*;
+use faer::Mat;
+
+use super::error::ViscousError;
+
+/// A 3×3 block, row-major.
+pub type Block3 = [[f64; 3]; 3];
+
+/// The structured Newton system of one viscous iteration.
+#[derive(Clone, Debug)]
+pub struct BlockSystem {
+    /// Number of stations n (3n unknowns).
+    pub n: usize,
+    /// Diagonal blocks A_k (coefficients of the station's own unknowns).
+    pub diag: Vec<Block3>,
+    /// Upstream station p(k) (must be < k) with its block B_k.
+    pub upstream: Vec<Option<(usize, Block3)>>,
+    /// Second upstream station q(k) (< k) with its block C_k (trailing-edge junction).
+    pub upstream2: Vec<Option<(usize, Block3)>>,
+    /// Dense mass columns V, 3n × n stored row-major: entry `[(3k+r)·n + j]` is
+    /// ∂(equation r of station k)/∂m_j.
+    pub dense: Vec<f64>,
+    /// Right-hand sides r_k.
+    pub rhs: Vec<[f64; 3]>,
+}
+
+impl BlockSystem {
+    /// An all-zero system of `n` stations.
+    pub fn zeros(n: usize) -> Self {
+        Self {
+            n,
+            diag: vec![[[0.0; 3]; 3]; n],
+            upstream: vec![None; n],
+            upstream2: vec![None; n],
+            dense: vec![0.0; 3 * n * n],
+            rhs: vec![[0.0; 3]; n],
+        }
+    }
+
+    /// Expands the system into a dense 3n×3n matrix (for tests and diagnostics).
+    pub fn to_dense(&self) -> Mat<f64> {
+        let n = self.n;
+        let mut a = Mat::<f64>::zeros(3 * n, 3 * n);
+        for k in 0..n {
+            for r in 0..3 {
+                for c in 0..3 {
+                    a[(3 * k + r, 3 * k + c)] += self.diag[k][r][c];
+                    if let Some((p, b)) = &self.upstream[k] {
+                        a[(3 * k + r, 3 * p + c)] += b[r][c];
+                    }
+                    if let Some((q, b)) = &self.upstream2[k] {
+                        a[(3 * k + r, 3 * q + c)] += b[r][c];
+                    }
+                }
+                for j in 0..n {
+                    a[(3 * k + r, 3 * j + 2)] += self.dense[(3 * k + r) * n + j];
+                }
+            }
+        }
+        a
+    }
+
+    /// Solves the system; returns w_k = (δs_k, δθ_k, δm_k) for every station.
+    pub fn solve(&self) -> Result<Vec<[f64; 3]>, ViscousError> {
+        let n = self.n;
+        let inv: Vec<Block3> = self
+            .diag
+            .iter()
+            .enumerate()
+            .map(|(k, a)| invert3(a).ok_or(ViscousError::SingularSystem { station: k }))
+            .collect::<Result<_, _>>()?;
+
+        // Forward substitution y = L⁻¹ r and Y = L⁻¹ V (Y row-major like V).
+        let mut y = vec![[0.0; 3]; n];
+        let mut big_y = self.dense.clone();
+        let mut t3 = vec![0.0; 3 * n];
+        for k in 0..n {
+            let mut t = self.rhs[k];
+            t3.copy_from_slice(&big_y[3 * k * n..3 * (k + 1) * n]);
+            for (p, b) in [&self.upstream[k], &self.upstream2[k]]
+                .into_iter()
+                .flatten()
+            {
+                let yp = y[*p];
+                for (r, tr) in t.iter_mut().enumerate() {
+                    *tr -= b[r][0] * yp[0] + b[r][1] * yp[1] + b[r][2] * yp[2];
+                }
+                let (rows_p, _) = big_y.split_at(3 * (p + 1) * n);
+                let p0 = &rows_p[3 * p * n..(3 * p + 1) * n];
+                let p1 = &rows_p[(3 * p + 1) * n..(3 * p + 2) * n];
+                let p2 = &rows_p[(3 * p + 2) * n..(3 * p + 3) * n];
+                for r in 0..3 {
+                    let row = &mut t3[r * n..(r + 1) * n];
+                    let (c0, c1, c2) = (b[r][0], b[r][1], b[r][2]);
+                    for j in 0..n {
+                        row[j] -= c0 * p0[j] + c1 * p1[j] + c2 * p2[j];
+                    }
+                }
+            }
+            let a = &inv[k];
+            y[k] = mul3(a, &t);
+            let out = &mut big_y[3 * k * n..3 * (k + 1) * n];
+            for j in 0..n {
+                let v = [t3[j], t3[n + j], t3[2 * n + j]];
+                out[j] = a[0][0] * v[0] + a[0][1] * v[1] + a[0][2] * v[2];
+                out[n + j] = a[1][0] * v[0] + a[1][1] * v[1] + a[1][2] * v[2];
+                out[2 * n + j] = a[2][0] * v[0] + a[2][1] * v[1] + a[2][2] * v[2];
+            }
+        }
+
+        // Schur complement on the mass unknowns: (I + P Y) m = P y.
+        let schur = Mat::<f64>::from_fn(n, n, |i, j| {
+            big_y[(3 * i + 2) * n + j] + if i == j { 1.0 } else { 0.0 }
+        });
+        let mut m = Mat::<f64>::from_fn(n, 1, |i, _| y[i][2]);
+        let lu = schur.partial_piv_lu();
+        lu.solve_in_place(m.as_mut());
+        if let Some(i) = (0..n).find(|&i| !m[(i, 0)].is_finite()) {
+            return Err(ViscousError::SingularSystem { station: i });
+        }
+
+        let mdense: Vec<f64> = (0..n).map(|j| m[(j, 0)]).collect();
+        // Back substitution w = y − Y m.
+        let mut w = y;
+        for (k, wk) in w.iter_mut().enumerate() {
+            for (r, wr) in wk.iter_mut().enumerate() {
+                let row = &big_y[(3 * k + r) * n..(3 * k + r + 1) * n];
+                let s: f64 = row.iter().zip(&mdense).map(|(a, b)| a * b).sum();
+                *wr -= s;
+            }
+        }
+        Ok(w)
+    }
+}
+
+/// Inverse of a 3×3 matrix by cofactors; `None` if it is (numerically) singular.
+pub fn invert3(a: &Block3) -> Option<Block3> {
+    let c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1];
+    let c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
+    let c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
+    let det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
+    let scale = a
+        .iter()
+        .flatten()
+        .fold(0.0_f64, |s, v| s.max(v.abs()))
+        .max(f64::MIN_POSITIVE);
+    if !det.is_finite() || det.abs() <= 1e-14 * scale * scale * scale {
+        return None;
+    }
+    let d = 1.0 / det;
+    Some([
+        [
+            c00 * d,
+            (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * d,
+            (a[0][1] * a[1][2] - a[0][2] * a[1][1]) * d,
+        ],
+        [
+            c01 * d,
+            (a[0][0] * a[2][2] - a[0][2] * a[2][0]) * d,
+            (a[0][2] * a[1][0] - a[0][0] * a[1][2]) * d,
+        ],
+        [
+            c02 * d,
+            (a[0][1] * a[2][0] - a[0][0] * a[2][1]) * d,
+            (a[0][0] * a[1][1] - a[0][1] * a[1][0]) * d,
+        ],
+    ])
+}
+
+/// Product of a 3×3 block with a 3-vector.
+pub fn mul3(a: &Block3, v: &[f64; 3]) -> [f64; 3] {
+    [
+        a[0][0] * v[0] + a[0][1] * v[1] + a[0][2] * v[2],
+        a[1][0] * v[0] + a[1][1] * v[1] + a[1][2] * v[2],
+        a[2][0] * v[0] + a[2][1] * v[1] + a[2][2] * v[2],
+    ]
+}

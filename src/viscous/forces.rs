@@ -1,0 +1,75 @@
+//! Integrated forces of a viscous solution: Cl and Cm from the viscous surface speed with the
+//! Karman–Tsien pressure correction (XFOIL xfoil.f CPCALC + CLCALC), Cd from Squire–Young at the
+//! wake end (XFOIL CDCALC), the friction drag cdf by integrating the wall shear stress along both
+//! surfaces (XFOIL CDCALC "CDF"), and cdp = cd − cdf.
+
+/// Karman–Tsien compressible pressure coefficient from the incompressible one
+/// (XFOIL CPCALC: Cp = Cp_inc / (β + M²/(2(1+β))·Cp_inc), β = √(1−M²)).
+pub fn karman_tsien_cp(cp_inc: f64, mach: f64) -> f64 {
+    let beta = (1.0 - mach * mach).max(1e-6).sqrt();
+    let bfac = 0.5 * mach * mach / (1.0 + beta);
+    cp_inc / (beta + bfac * cp_inc)
+}
+
+/// Lift and quarter-chord moment coefficients of a closed contour with surface speeds `q`
+/// (|q| = Ue/V∞ at the airfoil nodes), by trapezoidal integration of the Karman–Tsien Cp in
+/// wind axes, including the trailing-edge gap panel (XFOIL CLCALC, XREF = 0.25, YREF = 0).
+pub fn lift_and_moment(x: &[f64], y: &[f64], q: &[f64], alpha_rad: f64, mach: f64) -> (f64, f64) {
+    let n = x.len().min(y.len()).min(q.len());
+    let (sa, ca) = alpha_rad.sin_cos();
+    let cp: Vec<f64> = q[..n]
+        .iter()
+        .map(|qi| karman_tsien_cp(1.0 - qi * qi, mach))
+        .collect();
+    let (xref, yref) = (0.25, 0.0);
+    let mut cl = 0.0;
+    let mut cm = 0.0;
+    for i in 0..n {
+        let ip = if i + 1 == n { 0 } else { i + 1 };
+        let dx = (x[ip] - x[i]) * ca + (y[ip] - y[i]) * sa;
+        let dy = (y[ip] - y[i]) * ca - (x[ip] - x[i]) * sa;
+        let dg = cp[ip] - cp[i];
+        let ag = 0.5 * (cp[ip] + cp[i]);
+        let xm = 0.5 * (x[ip] + x[i]) - xref;
+        let ym = 0.5 * (y[ip] + y[i]) - yref;
+        let ax = xm * ca + ym * sa;
+        let ay = ym * ca - xm * sa;
+        cl += dx * ag;
+        cm -= dx * (ag * ax + dg * dx / 12.0) + dy * (ag * ay + dg * dy / 12.0);
+    }
+    (cl, cm)
+}
+
+/// Friction drag of one surface: Σ ½(τ_i + τ_{i−1})·Δx_wind·2 with the wall shear
+/// τ = ½ ρe Ue,c² Cf normalised by ρ∞V∞² (XFOIL CDCALC). `x`, `y` are the station coordinates
+/// from the stagnation point to the TE; the first (similarity) interval is skipped as in XFOIL.
+pub fn friction_drag(x: &[f64], y: &[f64], tau: &[f64], alpha_rad: f64) -> f64 {
+    let (sa, ca) = alpha_rad.sin_cos();
+    let n = x.len().min(y.len()).min(tau.len());
+    (1..n)
+        .map(|i| {
+            let dx = (x[i] - x[i - 1]) * ca + (y[i] - y[i - 1]) * sa;
+            0.5 * (tau[i] + tau[i - 1]) * dx * 2.0
+        })
+        .sum()
+}
+
+/// x/c of a transition point at ξ_tr, interpolated linearly in ξ between the two stations that
+/// bracket it (XFOIL XOCTR); 1 (or the TE x) if there is no transition.
+pub fn transition_x(xi: &[f64], x: &[f64], xi_tr: Option<f64>) -> f64 {
+    let Some(xt) = xi_tr else {
+        return x.last().copied().unwrap_or(1.0);
+    };
+    for i in 1..xi.len().min(x.len()) {
+        if xt <= xi[i] {
+            let d = xi[i] - xi[i - 1];
+            let f = if d.abs() > 0.0 {
+                (xt - xi[i - 1]) / d
+            } else {
+                1.0
+            };
+            return x[i - 1] + f.clamp(0.0, 1.0) * (x[i] - x[i - 1]);
+        }
+    }
+    x.last().copied().unwrap_or(1.0)
+}

@@ -1,0 +1,299 @@
+//! Initial boundary-layer march with the edge speed prescribed (direct mode) or, where the
+//! layer separates, with the shape factor prescribed and the edge speed solved for (inverse
+//! mode) — the initial condition of the global Newton solve (XFOIL xbl.f MRCHUE,
+//! Drela 1989 §4.2).
+
+use super::bl_model::{BoundaryLayerModel, IntervalEquations, Regime, StationVars};
+use super::state::BlState;
+use super::stations::{StationKind, StationLayout, Surface};
+
+/// Controls of the local station Newton iterations of the march.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MarchParams {
+    /// Maximum Newton iterations per station (XFOIL MRCHUE: 25).
+    pub max_iterations: usize,
+    /// Convergence threshold on the largest relative change (XFOIL: 1e-5).
+    pub tolerance: f64,
+    /// Largest relative change allowed per local iteration (XFOIL DMAX limiting to 0.3).
+    pub max_relative_step: f64,
+    /// Initial √Cτ guessed for the first turbulent station.
+    pub ctau_sqrt_initial: f64,
+}
+
+impl Default for MarchParams {
+    fn default() -> Self {
+        Self {
+            max_iterations: 25,
+            tolerance: 1e-5,
+            max_relative_step: 0.3,
+            ctau_sqrt_initial: 0.03,
+        }
+    }
+}
+
+/// Solves a 4×4 linear system by Gaussian elimination with partial pivoting.
+fn solve4(mut a: [[f64; 4]; 4], mut b: [f64; 4]) -> Option<[f64; 4]> {
+    for c in 0..4 {
+        let p = (c..4).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))?;
+        if a[p][c].abs() < 1e-300 || !a[p][c].is_finite() {
+            return None;
+        }
+        a.swap(c, p);
+        b.swap(c, p);
+        for r in c + 1..4 {
+            let f = a[r][c] / a[c][c];
+            let pivot_row = a[c];
+            for (v, pv) in a[r].iter_mut().zip(&pivot_row).skip(c) {
+                *v -= f * pv;
+            }
+            b[r] -= f * b[c];
+        }
+    }
+    let mut x = [0.0; 4];
+    for r in (0..4).rev() {
+        let s: f64 = (r + 1..4).map(|c| a[r][c] * x[c]).sum();
+        x[r] = (b[r] - s) / a[r][r];
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// Local equations of a station as a function of its own variables.
+enum LocalEq {
+    Similarity,
+    Interval(Regime),
+    Junction,
+}
+
+/// Marches the boundary layer over all stations of `layout` with edge speed `ue_inv`
+/// (XFOIL MRCHUE). Transition is checked in every laminar interval; the wake starts from the
+/// trailing-edge junction. Never fails: a station whose local Newton does not converge keeps its
+/// last iterate (the global Newton corrects it).
+pub fn march(
+    model: &dyn BoundaryLayerModel,
+    layout: &StationLayout,
+    ue_inv: &[f64],
+    reynolds: f64,
+    xi_forced: [Option<f64>; 2],
+    ante: f64,
+    params: &MarchParams,
+) -> BlState {
+    let n = layout.len();
+    let mut state = BlState::zeros(n);
+    let (hk_lam, hk_turb) = model.march_hk_limits();
+    let mut order: Vec<usize> = layout.range(Surface::Upper).collect();
+    order.extend(layout.range(Surface::Lower));
+    order.extend(layout.range(Surface::Wake));
+    let mut surface_turbulent = [false, false];
+    for k in order {
+        let st = layout.stations[k];
+        let side = match st.surface {
+            Surface::Upper => 0,
+            _ => 1,
+        };
+        let u0 = ue_inv[k].max(1e-6);
+        state.ue[k] = u0;
+        // Initial guess for this station.
+        let (mut s, mut th, mut ds) = match st.kind {
+            StationKind::Similarity => {
+                // Thwaites' stagnation-point solution θ² = 0.45 ξ/(6 Ue Re) (XFOIL MRCHUE).
+                let th = (0.45 * st.xi.max(1e-9) / (6.0 * u0 * reynolds)).sqrt();
+                (0.0, th, 2.2 * th)
+            }
+            StationKind::WakeStart => {
+                let (ku, kl) = (layout.upper_te(), layout.lower_te());
+                let th = state.theta[ku] + state.theta[kl];
+                let s = (state.s[ku] * state.theta[ku] + state.s[kl] * state.theta[kl]) / th;
+                (s, th, state.dstar(ku) + state.dstar(kl) + ante)
+            }
+            StationKind::Interval => {
+                let p = st.upstream.unwrap_or(k - 1);
+                (state.s[p], state.theta[p], state.dstar(p))
+            }
+        };
+        let mut turbulent = st.surface == Surface::Wake || surface_turbulent[side];
+        if turbulent && st.kind == StationKind::Interval {
+            let p = st.upstream.unwrap_or(k - 1);
+            if !state.turbulent[p] && st.surface != Surface::Wake {
+                s = params.ctau_sqrt_initial;
+            }
+        }
+        let mut u = u0;
+        let mut inverse = false;
+        let mut htarget = 0.0;
+        let mut transitioned = false;
+        for _ in 0..params.max_iterations {
+            let v2 = StationVars {
+                x: st.xi,
+                u,
+                theta: th,
+                dstar: ds,
+                s,
+                dw: st.wake_gap,
+            };
+            let kind = match st.kind {
+                StationKind::Similarity => LocalEq::Similarity,
+                StationKind::WakeStart => LocalEq::Junction,
+                StationKind::Interval if st.surface == Surface::Wake => {
+                    LocalEq::Interval(Regime::Wake)
+                }
+                StationKind::Interval if turbulent && !transitioned => {
+                    LocalEq::Interval(Regime::Turbulent)
+                }
+                StationKind::Interval => LocalEq::Interval(Regime::Laminar),
+            };
+            let eq: IntervalEquations = match kind {
+                LocalEq::Similarity => {
+                    let Ok(e) = model.similarity(&v2) else { break };
+                    IntervalEquations {
+                        res: e.res,
+                        d1: [[0.0; 5]; 3],
+                        d2: e.combined_jacobian(),
+                    }
+                }
+                LocalEq::Junction => {
+                    let (ku, kl) = (layout.upper_te(), layout.lower_te());
+                    let (vu, vl) = (state.vars(layout, ku), state.vars(layout, kl));
+                    let Ok(j) = model.junction(&vu, &vl, &v2, ante) else {
+                        break;
+                    };
+                    IntervalEquations {
+                        res: j.res,
+                        d1: [[0.0; 5]; 3],
+                        d2: j.d_wake,
+                    }
+                }
+                LocalEq::Interval(regime) => {
+                    let p = st.upstream.unwrap_or(k - 1);
+                    let v1 = state.vars(layout, p);
+                    if regime == Regime::Laminar || transitioned {
+                        let mut v2t = v2;
+                        if !transitioned {
+                            v2t.s = params.ctau_sqrt_initial;
+                        }
+                        let Ok(tr) = model.transition(&v1, &v2t, xi_forced[side]) else {
+                            break;
+                        };
+                        match tr {
+                            Some(t) => {
+                                if !transitioned {
+                                    s = params.ctau_sqrt_initial;
+                                    transitioned = true;
+                                    turbulent = true;
+                                    continue;
+                                }
+                                t.equations
+                            }
+                            None => {
+                                if transitioned {
+                                    transitioned = false;
+                                    turbulent = false;
+                                    s = v1.s;
+                                    continue;
+                                }
+                                let Ok(e) = model.interval(Regime::Laminar, &v1, &v2) else {
+                                    break;
+                                };
+                                e
+                            }
+                        }
+                    } else {
+                        let Ok(e) = model.interval(regime, &v1, &v2) else {
+                            break;
+                        };
+                        e
+                    }
+                }
+            };
+            let regime = if st.surface == Surface::Wake {
+                Regime::Wake
+            } else if turbulent {
+                Regime::Turbulent
+            } else {
+                Regime::Laminar
+            };
+            let Ok(props) = model.properties(regime, &v2) else {
+                break;
+            };
+            let mut a = [[0.0; 4]; 4];
+            let mut b = [0.0; 4];
+            for r in 0..3 {
+                a[r] = [eq.d2[r][0], eq.d2[r][1], eq.d2[r][2], eq.d2[r][3]];
+                b[r] = -eq.res[r];
+            }
+            if inverse {
+                a[3] = [0.0, props.hk_d[0], props.hk_d[1], props.hk_d[2]];
+                b[3] = htarget - props.hk;
+            } else {
+                a[3] = [0.0, 0.0, 0.0, 1.0];
+                b[3] = u0 - u;
+            }
+            let Some(dx) = solve4(a, b) else { break };
+            let rel = [
+                if turbulent {
+                    dx[0] / s.max(1e-7)
+                } else {
+                    dx[0] / 10.0
+                },
+                dx[1] / th,
+                dx[2] / ds,
+                dx[3] / u,
+            ];
+            let dmax = rel.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let rlx = if dmax > params.max_relative_step {
+                params.max_relative_step / dmax
+            } else {
+                1.0
+            };
+            s += rlx * dx[0];
+            th += rlx * dx[1];
+            ds += rlx * dx[2];
+            u += rlx * dx[3];
+            if turbulent {
+                s = s.clamp(1e-7, 0.25);
+            } else {
+                s = s.max(0.0);
+            }
+            th = th.max(1e-12);
+            ds = ds.max(1.0001 * th + st.wake_gap);
+            u = u.max(1e-6);
+            // Switch to inverse mode when the layer separates (XFOIL MRCHUE HLMAX/HTMAX).
+            let hmax = if turbulent { hk_turb } else { hk_lam };
+            if !inverse && st.kind != StationKind::Similarity {
+                let v = StationVars {
+                    x: st.xi,
+                    u,
+                    theta: th,
+                    dstar: ds,
+                    s,
+                    dw: st.wake_gap,
+                };
+                let hk = model.properties(regime, &v).map(|p| p.hk).unwrap_or(0.0);
+                if hk > hmax {
+                    inverse = true;
+                    htarget = hmax;
+                    continue;
+                }
+            }
+            if dmax < params.tolerance {
+                break;
+            }
+        }
+        if !(s.is_finite() && th.is_finite() && ds.is_finite() && u.is_finite()) {
+            // Fall back to the upstream station so the global Newton starts from finite values.
+            let p = st.upstream.unwrap_or(k.saturating_sub(1));
+            s = state.s[p];
+            th = state.theta[p].max(1e-6);
+            ds = state.dstar(p).max(2.0 * th);
+            u = u0;
+        }
+        if turbulent && st.surface != Surface::Wake {
+            surface_turbulent[side] = true;
+        }
+        state.s[k] = s;
+        state.theta[k] = th;
+        state.ue[k] = u;
+        state.mass[k] = ds * u;
+        state.turbulent[k] = turbulent || st.surface == Surface::Wake;
+    }
+    state
+}

@@ -1,0 +1,276 @@
+//! Assembly of the global Newton system (XFOIL SETBL, Drela 1989 §4): the boundary-layer
+//! equations of every station linearised in (√Cτ or N, θ, m) of all stations, with the edge speed
+//! eliminated through Ue = Ue_inv + D·m and δ* = m/Ue.
+//!
+//! For an equation f with partials f_δ*, f_u at station j the chain rule gives
+//! `∂f/∂m_j(local) = f_δ*/Ue_j` (block part) and the dense part
+//! `(f_u − f_δ*·δ*_j/Ue_j)·D_j,·` (mass influence on the edge speed). The stored edge speed may
+//! differ from Ue_inv + D·m (after an inverse march or a relaxed step); that mismatch e_j enters
+//! the right-hand side like XFOIL's DUE terms.
+
+use super::bl_model::{BoundaryLayerModel, Regime, StationVars};
+use super::block_solver::BlockSystem;
+use super::error::ViscousError;
+use super::state::BlState;
+use super::stations::{StationKind, StationLayout, Surface};
+
+/// Transition found on one surface during assembly.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TransitionPoint {
+    /// ξ of the transition point.
+    pub xi: f64,
+    /// System index of the first turbulent station.
+    pub station: usize,
+    /// Forced (trip) or free (e^n).
+    pub forced: bool,
+}
+
+/// Inputs of the assembly that do not change within one Newton iteration.
+pub struct Coupling<'a> {
+    /// Station layout.
+    pub layout: &'a StationLayout,
+    /// Inviscid edge speed per station.
+    pub ue_inv: &'a [f64],
+    /// Edge-speed influence of the mass defects in system order, row-major n×n:
+    /// Ue_k = Ue_inv,k + Σ_j dv[k·n + j]·m_j.
+    pub dv: &'a [f64],
+    /// Forced-transition ξ on the upper and lower surface (None = free).
+    pub xi_forced: [Option<f64>; 2],
+    /// Trailing-edge gap normal to the TE bisector (XFOIL ANTE).
+    pub ante: f64,
+}
+
+impl Coupling<'_> {
+    /// Edge speed implied by the mass defects, Ue_inv + D·m.
+    pub fn ue_from_mass(&self, mass: &[f64]) -> Vec<f64> {
+        let n = mass.len();
+        (0..n)
+            .map(|k| {
+                let row = &self.dv[k * n..(k + 1) * n];
+                self.ue_inv[k] + row.iter().zip(mass).map(|(d, m)| d * m).sum::<f64>()
+            })
+            .collect()
+    }
+}
+
+/// The assembled system and what was learnt while assembling it.
+pub struct Assembly {
+    /// The linear system for (δs, δθ, δm).
+    pub system: BlockSystem,
+    /// Edge-speed mismatch e = (Ue_inv + D·m) − Ue per station.
+    pub mismatch: Vec<f64>,
+    /// RMS of all equation residuals.
+    pub rms_residual: f64,
+    /// Transition on the upper and lower surface.
+    pub transition: [Option<TransitionPoint>; 2],
+}
+
+/// Adds the linearisation of 3 equations of station `k` with respect to station `j`'s
+/// variables (Jacobian columns (s, θ, δ*, u, ξ)) to the system.
+fn add_terms(
+    sys: &mut BlockSystem,
+    k: usize,
+    j: usize,
+    d: &[[f64; 5]; 3],
+    state: &BlState,
+    coupling: &Coupling<'_>,
+    mismatch: &[f64],
+) {
+    let n = sys.n;
+    let uj = state.ue[j];
+    let dsj = state.dstar(j);
+    let mut block = [[0.0; 3]; 3];
+    for r in 0..3 {
+        block[r][0] = d[r][0];
+        block[r][1] = d[r][1];
+        block[r][2] = d[r][2] / uj;
+        let cu = d[r][3] - d[r][2] * dsj / uj;
+        if cu != 0.0 {
+            let row = &mut sys.dense[(3 * k + r) * n..(3 * k + r + 1) * n];
+            let drow = &coupling.dv[j * n..(j + 1) * n];
+            for (a, b) in row.iter_mut().zip(drow) {
+                *a += cu * b;
+            }
+            sys.rhs[k][r] -= cu * mismatch[j];
+        }
+    }
+    let add = |target: &mut [[f64; 3]; 3]| {
+        for r in 0..3 {
+            for c in 0..3 {
+                target[r][c] += block[r][c];
+            }
+        }
+    };
+    if j == k {
+        add(&mut sys.diag[k]);
+    } else if sys.upstream[k].map(|(p, _)| p) == Some(j) {
+        if let Some((_, b)) = sys.upstream[k].as_mut() {
+            add(b);
+        }
+    } else if sys.upstream2[k].map(|(p, _)| p) == Some(j) {
+        if let Some((_, b)) = sys.upstream2[k].as_mut() {
+            add(b);
+        }
+    } else if sys.upstream[k].is_none() {
+        let mut b = [[0.0; 3]; 3];
+        add(&mut b);
+        sys.upstream[k] = Some((j, b));
+    } else {
+        let mut b = [[0.0; 3]; 3];
+        add(&mut b);
+        sys.upstream2[k] = Some((j, b));
+    }
+}
+
+/// Initial √Cτ given to a station that just became turbulent and has no turbulent history.
+pub const CTAU_SQRT_INITIAL: f64 = 0.03;
+
+/// Assembles the Newton system. Regimes are decided here, station by station downstream, by
+/// the transition check of each laminar interval (XFOIL SETBL with TRCHEK); a station whose regime
+/// changes gets its `s` variable re-initialised.
+pub fn assemble(
+    model: &dyn BoundaryLayerModel,
+    coupling: &Coupling<'_>,
+    state: &mut BlState,
+) -> Result<Assembly, ViscousError> {
+    let layout = coupling.layout;
+    let n = layout.len();
+    let mut sys = BlockSystem::zeros(n);
+    let ue_calc = coupling.ue_from_mass(&state.mass);
+    let mismatch: Vec<f64> = ue_calc.iter().zip(&state.ue).map(|(c, u)| c - u).collect();
+    let mut transition = [None, None];
+    let mut sumsq = 0.0;
+
+    for (side, surface) in [Surface::Upper, Surface::Lower].into_iter().enumerate() {
+        let range = layout.range(surface);
+        // Shear-stress value to give stations that switch from laminar to turbulent.
+        let s_turb_ref = range
+            .clone()
+            .find(|&k| state.turbulent[k])
+            .map(|k| state.s[k].clamp(1e-4, 0.25))
+            .unwrap_or(CTAU_SQRT_INITIAL);
+        let mut turbulent = false;
+        for k in range {
+            let st = layout.stations[k];
+            let eq;
+            if st.kind == StationKind::Similarity {
+                state.turbulent[k] = false;
+                let v = state.vars(layout, k);
+                let e = model.similarity(&v).map_err(at(k))?;
+                let d = e.combined_jacobian();
+                add_terms(&mut sys, k, k, &d, state, coupling, &mismatch);
+                eq = e.res;
+            } else {
+                let p = st.upstream.unwrap_or(k - 1);
+                if !turbulent {
+                    let v1 = state.vars(layout, p);
+                    let mut v2 = state.vars(layout, k);
+                    if !state.turbulent[k] {
+                        v2.s = s_turb_ref;
+                    }
+                    let tr = model
+                        .transition(&v1, &v2, coupling.xi_forced[side])
+                        .map_err(at(k))?;
+                    match tr {
+                        Some(t) => {
+                            if !state.turbulent[k] {
+                                state.s[k] = s_turb_ref;
+                                state.turbulent[k] = true;
+                            }
+                            turbulent = true;
+                            transition[side] = Some(TransitionPoint {
+                                xi: t.xi_transition,
+                                station: k,
+                                forced: t.forced,
+                            });
+                            sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
+                            add_terms(&mut sys, k, p, &t.equations.d1, state, coupling, &mismatch);
+                            add_terms(&mut sys, k, k, &t.equations.d2, state, coupling, &mismatch);
+                            eq = t.equations.res;
+                        }
+                        None => {
+                            if state.turbulent[k] {
+                                state.turbulent[k] = false;
+                                state.s[k] = state.s[p].max(0.0);
+                            }
+                            let v2 = state.vars(layout, k);
+                            let e = model.interval(Regime::Laminar, &v1, &v2).map_err(at(k))?;
+                            sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
+                            add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
+                            add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
+                            eq = e.res;
+                        }
+                    }
+                } else {
+                    if !state.turbulent[k] {
+                        state.turbulent[k] = true;
+                        state.s[k] = state.s[p].clamp(1e-4, 0.25);
+                    }
+                    let v1 = state.vars(layout, p);
+                    let v2 = state.vars(layout, k);
+                    let e = model.interval(Regime::Turbulent, &v1, &v2).map_err(at(k))?;
+                    sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
+                    add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
+                    add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
+                    eq = e.res;
+                }
+            }
+            sys.rhs[k][0] -= eq[0];
+            sys.rhs[k][1] -= eq[1];
+            sys.rhs[k][2] -= eq[2];
+            sumsq += eq.iter().map(|r| r * r).sum::<f64>();
+        }
+    }
+
+    // Wake: junction of both trailing-edge layers, then wake intervals.
+    for k in layout.range(Surface::Wake) {
+        state.turbulent[k] = true;
+        let st = layout.stations[k];
+        let eq;
+        if st.kind == StationKind::WakeStart {
+            let (ku, kl) = (layout.upper_te(), layout.lower_te());
+            let vu = state.vars(layout, ku);
+            let vl = state.vars(layout, kl);
+            let vw = state.vars(layout, k);
+            let e = model
+                .junction(&vu, &vl, &vw, coupling.ante)
+                .map_err(at(k))?;
+            sys.upstream[k] = Some((kl, [[0.0; 3]; 3]));
+            sys.upstream2[k] = Some((ku, [[0.0; 3]; 3]));
+            add_terms(&mut sys, k, kl, &e.d_lower, state, coupling, &mismatch);
+            add_terms(&mut sys, k, ku, &e.d_upper, state, coupling, &mismatch);
+            add_terms(&mut sys, k, k, &e.d_wake, state, coupling, &mismatch);
+            eq = e.res;
+        } else {
+            let p = st.upstream.unwrap_or(k - 1);
+            let v1: StationVars = state.vars(layout, p);
+            let v2 = state.vars(layout, k);
+            let e = model.interval(Regime::Wake, &v1, &v2).map_err(at(k))?;
+            sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
+            add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
+            add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
+            eq = e.res;
+        }
+        sys.rhs[k][0] -= eq[0];
+        sys.rhs[k][1] -= eq[1];
+        sys.rhs[k][2] -= eq[2];
+        sumsq += eq.iter().map(|r| r * r).sum::<f64>();
+    }
+
+    Ok(Assembly {
+        system: sys,
+        mismatch,
+        rms_residual: (sumsq / (3 * n.max(1)) as f64).sqrt(),
+        transition,
+    })
+}
+
+/// Attaches the system station index to a boundary-layer error.
+pub fn at(station: usize) -> impl Fn(ViscousError) -> ViscousError {
+    move |e| match e {
+        ViscousError::BoundaryLayer { message, .. } => {
+            ViscousError::BoundaryLayer { station, message }
+        }
+        other => other,
+    }
+}

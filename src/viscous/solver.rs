@@ -1,0 +1,493 @@
+//! The viscous–inviscid solver of one airfoil at one flow condition (XFOIL VISCAL,
+//! Drela 1989): initial march, global Newton iterations with relaxation and stagnation-point
+//! moves, retry from a fresh march on failure, and the integrated results.
+
+use crate::polar::PolarPoint;
+
+use super::bl_model::{BoundaryLayerModel, Regime};
+use super::error::ViscousError;
+use super::forces::{friction_drag, lift_and_moment, transition_x};
+use super::march::{march, MarchParams};
+use super::newton::{assemble, Coupling};
+use super::state::BlState;
+use super::stations::{PanelGeometry, StationLayout, Surface};
+use super::update::{apply_update, UpdateLimits};
+use super::xfoil_bl::XfoilBoundaryLayer;
+
+/// Parameters of a viscous solution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ViscousParams {
+    /// Chord Reynolds number V∞c/ν.
+    pub reynolds: f64,
+    /// Free-stream Mach number (Karman–Tsien compressibility).
+    pub mach: f64,
+    /// Critical amplification ratio of the e^n method (XFOIL default 9).
+    pub ncrit: f64,
+    /// Forced transition x/c on the upper surface (≥ 1 = free transition).
+    pub xtr_top: f64,
+    /// Forced transition x/c on the lower surface (≥ 1 = free transition).
+    pub xtr_bot: f64,
+    /// Newton iteration cap per attempt.
+    pub max_iterations: u32,
+    /// Convergence threshold on the RMS relative Newton change (XFOIL EPS1 = 1e-4).
+    pub tolerance: f64,
+    /// Relaxation and clipping limits of the update (XFOIL UPDATE).
+    pub limits: UpdateLimits,
+    /// Controls of the initial march (XFOIL MRCHUE).
+    pub march: MarchParams,
+}
+
+impl Default for ViscousParams {
+    fn default() -> Self {
+        Self {
+            reynolds: 1.0e6,
+            mach: 0.0,
+            ncrit: 9.0,
+            xtr_top: 1.0,
+            xtr_bot: 1.0,
+            max_iterations: 100,
+            tolerance: 1e-4,
+            limits: UpdateLimits::default(),
+            march: MarchParams::default(),
+        }
+    }
+}
+
+/// Inviscid data the coupling needs (XFOIL QINVU, DIJ): node geometry including the wake,
+/// surface speeds of the α = 0° and 90° unit solutions, and the source influence matrix.
+#[derive(Clone, Debug)]
+pub struct PanelModel {
+    /// Node geometry (airfoil nodes, then wake nodes) and airfoil arc length.
+    pub geometry: PanelGeometry,
+    /// Surface speed at all nodes for α = 0° and α = 90° (XFOIL QINVU, positive on the upper
+    /// surface in XFOIL's orientation).
+    pub q_unit: [Vec<f64>; 2],
+    /// Row-major (n+nw)² influence matrix: change of the surface speed q_i per unit mass defect
+    /// m_j = Ue_j·δ*_j at node j (XFOIL DIJ; the edge speed then changes by −vti_i·vti_j·DIJ_ij·m_j,
+    /// XFOIL UESET).
+    pub dij: Vec<f64>,
+}
+
+/// One boundary-layer station of a solution, for plots and debugging.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BlStation {
+    /// ξ: arc length from the stagnation point [chord].
+    pub s: f64,
+    /// x coordinate of the station.
+    pub x: f64,
+    /// Edge speed Ue/V∞ (incompressible, as the panel method sees it).
+    pub ue: f64,
+    /// Displacement thickness δ* (wake: including the wake gap).
+    pub dstar: f64,
+    /// Momentum thickness θ.
+    pub theta: f64,
+    /// Skin-friction coefficient (0 in the wake).
+    pub cf: f64,
+    /// Shape factor H = δ*/θ.
+    pub h: f64,
+    /// Kinematic shape factor Hk.
+    pub hk: f64,
+    /// N (laminar) or Cτ (turbulent).
+    pub n_or_ctau: f64,
+    /// Whether the station is turbulent.
+    pub turbulent: bool,
+}
+
+/// Result of one viscous operating point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ViscousSolution {
+    /// Integrated coefficients and convergence information.
+    pub point: PolarPoint,
+    /// Upper-surface stations, stagnation point → TE.
+    pub upper: Vec<BlStation>,
+    /// Lower-surface stations, stagnation point → TE.
+    pub lower: Vec<BlStation>,
+    /// Wake stations, TE → wake end.
+    pub wake: Vec<BlStation>,
+}
+
+/// Converged state kept for warm starts.
+#[derive(Clone, Debug)]
+struct WarmState {
+    layout: StationLayout,
+    state: BlState,
+}
+
+/// Viscous–inviscid solver for one airfoil and one (Re, M, Ncrit, trip) condition.
+/// Holds its own state; many solvers can run in parallel.
+#[derive(Clone, Debug)]
+pub struct ViscousSolver {
+    params: ViscousParams,
+    panels: PanelModel,
+    bl: XfoilBoundaryLayer,
+    ante: f64,
+    warm: Option<WarmState>,
+}
+
+/// Outcome of one Newton attempt.
+struct Attempt {
+    layout: StationLayout,
+    state: BlState,
+    converged: bool,
+    iterations: u32,
+    residual: f64,
+    transition: [Option<f64>; 2],
+}
+
+impl ViscousSolver {
+    /// Solver from prepared inviscid data (see [`PanelModel`]).
+    pub fn from_panel_model(
+        panels: PanelModel,
+        params: ViscousParams,
+    ) -> Result<Self, ViscousError> {
+        let n_nodes = panels.geometry.x.len();
+        let n = panels.geometry.n_airfoil;
+        if n < 5
+            || panels.geometry.y.len() != n_nodes
+            || panels.geometry.s.len() != n
+            || panels.q_unit.iter().any(|q| q.len() != n_nodes)
+            || panels.dij.len() != n_nodes * n_nodes
+            || n_nodes < n + 2
+        {
+            return Err(ViscousError::BadAirfoil { min: 5, got: n });
+        }
+        for (name, value, ok) in [
+            ("reynolds", params.reynolds, params.reynolds > 0.0),
+            ("mach", params.mach, (0.0..1.0).contains(&params.mach)),
+            ("ncrit", params.ncrit, params.ncrit > 0.0),
+            ("xtr_top", params.xtr_top, params.xtr_top >= 0.0),
+            ("xtr_bot", params.xtr_bot, params.xtr_bot >= 0.0),
+            ("tolerance", params.tolerance, params.tolerance > 0.0),
+        ] {
+            if !(value.is_finite() && ok) {
+                return Err(ViscousError::BadParameter { name, value });
+            }
+        }
+        let bl = XfoilBoundaryLayer::new(params.reynolds, params.mach, params.ncrit)?;
+        let ante = panels.geometry.trailing_edge_gap().0.abs();
+        Ok(Self {
+            params,
+            panels,
+            bl,
+            ante,
+            warm: None,
+        })
+    }
+
+    /// The parameters of this solver.
+    pub fn params(&self) -> &ViscousParams {
+        &self.params
+    }
+
+    /// Forgets the warm-start state; the next point starts from a fresh march.
+    pub fn reset(&mut self) {
+        self.warm = None;
+    }
+
+    /// Inviscid surface speed at all nodes for angle of attack α (XFOIL QISET).
+    fn q_inviscid(&self, alpha_deg: f64) -> Vec<f64> {
+        let (sa, ca) = alpha_deg.to_radians().sin_cos();
+        self.panels.q_unit[0]
+            .iter()
+            .zip(&self.panels.q_unit[1])
+            .map(|(a, b)| ca * a + sa * b)
+            .collect()
+    }
+
+    /// Edge-speed influence matrix in system order: Dv_kj = −vti_k·vti_j·DIJ(node_k, node_j).
+    fn system_influence(&self, layout: &StationLayout) -> Vec<f64> {
+        let nn = self.panels.geometry.x.len();
+        let n = layout.len();
+        let mut dv = vec![0.0; n * n];
+        for (k, sk) in layout.stations.iter().enumerate() {
+            let row = &self.panels.dij[sk.node * nn..(sk.node + 1) * nn];
+            let out = &mut dv[k * n..(k + 1) * n];
+            for (o, sj) in out.iter_mut().zip(&layout.stations) {
+                *o = -sk.vti * sj.vti * row[sj.node];
+            }
+        }
+        dv
+    }
+
+    /// ξ of forced transition on each surface: the trip x/c converted to ξ along that surface
+    /// (XFOIL XIFSET), at most the TE ξ (XFOIL forces transition at the TE at the latest).
+    fn forced_xi(&self, layout: &StationLayout) -> [Option<f64>; 2] {
+        let g = &self.panels.geometry;
+        let mut out = [None, None];
+        for (side, (surface, xtr)) in [
+            (Surface::Upper, self.params.xtr_top),
+            (Surface::Lower, self.params.xtr_bot),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let range = layout.range(surface);
+            let sts = &layout.stations[range];
+            let xi_te = sts.last().map(|s| s.xi).unwrap_or(0.0);
+            let mut xi_trip = xi_te;
+            if xtr < 1.0 {
+                for w in sts.windows(2) {
+                    let (x1, x2) = (g.x[w[0].node], g.x[w[1].node]);
+                    if x1 < xtr && x2 >= xtr {
+                        let f = (xtr - x1) / (x2 - x1);
+                        xi_trip = w[0].xi + f * (w[1].xi - w[0].xi);
+                        break;
+                    }
+                }
+            }
+            out[side] = Some(xi_trip.min(xi_te));
+        }
+        out
+    }
+
+    /// Solves the viscous flow at angle of attack `alpha_deg`, warm-starting from the previous
+    /// converged state if there is one. A failed attempt is retried once from a fresh march; a
+    /// point that still fails is returned with `converged = false`.
+    pub fn solve(&mut self, alpha_deg: f64) -> ViscousSolution {
+        let warm = self.warm.take();
+        let had_warm = warm.is_some();
+        let mut result = self.attempt(alpha_deg, warm);
+        let ok = matches!(&result, Ok(a) if a.converged);
+        if !ok && had_warm {
+            result = self.attempt(alpha_deg, None);
+        }
+        match result {
+            Ok(a) => {
+                let sol = self.solution(alpha_deg, &a);
+                if a.converged && sol.point.cl.is_finite() && sol.point.cd.is_finite() {
+                    self.warm = Some(WarmState {
+                        layout: a.layout,
+                        state: a.state,
+                    });
+                    sol
+                } else {
+                    ViscousSolution {
+                        point: PolarPoint {
+                            converged: false,
+                            ..sol.point
+                        },
+                        ..sol
+                    }
+                }
+            }
+            Err(_) => failed_solution(alpha_deg, self.params.max_iterations),
+        }
+    }
+
+    /// One Newton attempt from a warm state or a fresh march.
+    fn attempt(&self, alpha_deg: f64, warm: Option<WarmState>) -> Result<Attempt, ViscousError> {
+        let n_af = self.panels.geometry.n_airfoil;
+        let q_inv = self.q_inviscid(alpha_deg);
+        let mut layout = StationLayout::new(&self.panels.geometry, &q_inv[..n_af])?;
+        let mut ue_inv = layout.edge_speed(&q_inv);
+        let mut dv = self.system_influence(&layout);
+        let mut xi_forced = self.forced_xi(&layout);
+        let mut state = match warm {
+            Some(w) => {
+                let map = layout.map_from(&w.layout);
+                let mut s = w.state.remap(&map, &w.layout, &layout);
+                fix_crossed(&mut s, &map, &w.layout, &layout, &ue_inv);
+                s
+            }
+            None => march(
+                &self.bl,
+                &layout,
+                &ue_inv,
+                self.params.reynolds,
+                xi_forced,
+                self.ante,
+                &self.params.march,
+            ),
+        };
+        let mut residual = f64::INFINITY;
+        let mut transition = [None, None];
+        for iter in 1..=self.params.max_iterations {
+            let coupling = Coupling {
+                layout: &layout,
+                ue_inv: &ue_inv,
+                dv: &dv,
+                xi_forced,
+                ante: self.ante,
+            };
+            let asm = assemble(&self.bl, &coupling, &mut state)?;
+            transition = [
+                asm.transition[0].map(|t| t.xi),
+                asm.transition[1].map(|t| t.xi),
+            ];
+            let w = asm.system.solve()?;
+            let upd = apply_update(
+                &self.bl,
+                &coupling,
+                &mut state,
+                &w,
+                &asm.mismatch,
+                &self.params.limits,
+            )?;
+            residual = upd.rms_change;
+            // Move the stagnation point with the viscous surface speed (XFOIL STMOVE).
+            let mut q_nodes = q_inv.clone();
+            for (k, st) in layout.stations.iter().enumerate() {
+                q_nodes[st.node] = st.vti * state.ue[k];
+            }
+            if let Ok(new_layout) = StationLayout::new(&self.panels.geometry, &q_nodes[..n_af]) {
+                if new_layout.stagnation.ist != layout.stagnation.ist {
+                    let map = new_layout.map_from(&layout);
+                    let mut s = state.remap(&map, &layout, &new_layout);
+                    let ue_new = new_layout.edge_speed(&q_nodes);
+                    fix_crossed(&mut s, &map, &layout, &new_layout, &ue_new);
+                    state = s;
+                    ue_inv = new_layout.edge_speed(&q_inv);
+                    dv = self.system_influence(&new_layout);
+                }
+                layout = new_layout;
+                xi_forced = self.forced_xi(&layout);
+            }
+            if residual < self.params.tolerance {
+                return Ok(Attempt {
+                    layout,
+                    state,
+                    converged: true,
+                    iterations: iter,
+                    residual,
+                    transition,
+                });
+            }
+        }
+        Ok(Attempt {
+            layout,
+            state,
+            converged: false,
+            iterations: self.params.max_iterations,
+            residual,
+            transition,
+        })
+    }
+
+    /// Integrated coefficients and distributions of an attempt.
+    fn solution(&self, alpha_deg: f64, a: &Attempt) -> ViscousSolution {
+        let g = &self.panels.geometry;
+        let n_af = g.n_airfoil;
+        let alpha = alpha_deg.to_radians();
+        let mut q = vec![0.0; n_af];
+        for (k, st) in a.layout.stations.iter().enumerate() {
+            if st.node < n_af {
+                q[st.node] = st.vti * a.state.ue[k];
+            }
+        }
+        let (cl, cm) = lift_and_moment(&g.x[..n_af], &g.y[..n_af], &q, alpha, self.params.mach);
+        let dist = |surface: Surface| -> Vec<BlStation> {
+            a.layout
+                .range(surface)
+                .map(|k| {
+                    let st = a.layout.stations[k];
+                    let v = a.state.vars(&a.layout, k);
+                    let regime = a.state.regime(&a.layout, k);
+                    let p = self.bl.properties(regime, &v).unwrap_or_default();
+                    let s = a.state.s[k];
+                    BlStation {
+                        s: st.xi,
+                        x: g.x[st.node],
+                        ue: a.state.ue[k],
+                        dstar: v.dstar,
+                        theta: v.theta,
+                        cf: p.cf,
+                        h: p.h,
+                        hk: p.hk,
+                        n_or_ctau: if regime == Regime::Laminar { s } else { s * s },
+                        turbulent: regime != Regime::Laminar,
+                    }
+                })
+                .collect()
+        };
+        let upper = dist(Surface::Upper);
+        let lower = dist(Surface::Lower);
+        let wake = dist(Surface::Wake);
+        // Friction drag from the wall shear τ = ½ρe·Ue,c²·Cf (XFOIL CDCALC).
+        let mut cdf = 0.0;
+        let mut xtr = [1.0, 1.0];
+        for (side, surface) in [Surface::Upper, Surface::Lower].into_iter().enumerate() {
+            let range = a.layout.range(surface);
+            let mut xs = Vec::with_capacity(range.len());
+            let mut ys = Vec::with_capacity(range.len());
+            let mut xis = Vec::with_capacity(range.len());
+            let mut tau = Vec::with_capacity(range.len());
+            for k in range {
+                let st = a.layout.stations[k];
+                let v = a.state.vars(&a.layout, k);
+                let p = self
+                    .bl
+                    .properties(a.state.regime(&a.layout, k), &v)
+                    .unwrap_or_default();
+                xs.push(g.x[st.node]);
+                ys.push(g.y[st.node]);
+                xis.push(st.xi);
+                tau.push(0.5 * p.rho_e * p.ue_compressible * p.ue_compressible * p.cf);
+            }
+            cdf += friction_drag(&xs, &ys, &tau, alpha);
+            xtr[side] = transition_x(&xis, &xs, a.transition[side]);
+        }
+        let last = a.layout.len() - 1;
+        let cd = self
+            .bl
+            .squire_young(&a.state.vars(&a.layout, last))
+            .unwrap_or(f64::NAN);
+        ViscousSolution {
+            point: PolarPoint {
+                alpha: alpha_deg,
+                cl,
+                cd,
+                cdp: cd - cdf,
+                cdf,
+                cm,
+                xtr_top: xtr[0],
+                xtr_bot: xtr[1],
+                converged: a.converged,
+                iterations: a.iterations,
+                residual: a.residual,
+            },
+            upper,
+            lower,
+            wake,
+        }
+    }
+}
+
+/// Gives stations whose node crossed the stagnation point the edge speed of the new layout and a
+/// consistent mass defect.
+fn fix_crossed(
+    state: &mut BlState,
+    map: &[usize],
+    old: &StationLayout,
+    new: &StationLayout,
+    ue_new: &[f64],
+) {
+    for (k, &o) in map.iter().enumerate() {
+        if old.stations[o].node != new.stations[k].node {
+            let dstar = state.dstar(k);
+            state.ue[k] = ue_new[k].max(1e-4);
+            state.mass[k] = dstar * state.ue[k];
+        }
+    }
+}
+
+/// The result reported for a point that could not be solved at all.
+fn failed_solution(alpha_deg: f64, iterations: u32) -> ViscousSolution {
+    ViscousSolution {
+        point: PolarPoint {
+            alpha: alpha_deg,
+            cl: f64::NAN,
+            cd: f64::NAN,
+            cdp: f64::NAN,
+            cdf: f64::NAN,
+            cm: f64::NAN,
+            xtr_top: f64::NAN,
+            xtr_bot: f64::NAN,
+            converged: false,
+            iterations,
+            residual: f64::NAN,
+        },
+        upper: Vec::new(),
+        lower: Vec::new(),
+        wake: Vec::new(),
+    }
+}

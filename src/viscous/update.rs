@@ -1,0 +1,146 @@
+//! Relaxed Newton update of the boundary-layer state (XFOIL xbl.f UPDATE and DSLIM,
+//! Drela 1989 §4): one under-relaxation factor for all stations, chosen so that no relative
+//! change of √Cτ/N, θ, δ* or Ue exceeds the limits, then clipping of √Cτ and of the shape factor.
+
+use super::bl_model::{BoundaryLayerModel, Regime};
+use super::error::ViscousError;
+use super::newton::Coupling;
+use super::state::BlState;
+use super::stations::Surface;
+
+/// Limits of the relaxed update (XFOIL UPDATE/DSLIM constants).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct UpdateLimits {
+    /// Largest allowed relative increase of any variable per iteration (XFOIL DHI = 1.5).
+    pub dhi: f64,
+    /// Largest allowed relative decrease (XFOIL DLO = −0.5).
+    pub dlo: f64,
+    /// Scale of N changes in the laminar region (XFOIL: ΔN/10).
+    pub n_scale: f64,
+    /// Scale of Ue changes (XFOIL: ΔUe/0.25).
+    pub ue_scale: f64,
+    /// Upper clip of √Cτ (XFOIL 0.25).
+    pub ctau_sqrt_max: f64,
+    /// Minimum Hk on the airfoil (XFOIL HKLIM = 1.02).
+    pub hk_min_airfoil: f64,
+    /// Minimum Hk in the wake (XFOIL 1.00005).
+    pub hk_min_wake: f64,
+}
+
+impl Default for UpdateLimits {
+    fn default() -> Self {
+        Self {
+            dhi: 1.5,
+            dlo: -0.5,
+            n_scale: 10.0,
+            ue_scale: 0.25,
+            ctau_sqrt_max: 0.25,
+            hk_min_airfoil: 1.02,
+            hk_min_wake: 1.00005,
+        }
+    }
+}
+
+/// Outcome of one update.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct UpdateResult {
+    /// Relaxation factor used (XFOIL RLX).
+    pub rlx: f64,
+    /// RMS of the relative changes (XFOIL RMSBL), the convergence measure.
+    pub rms_change: f64,
+    /// Largest relative change (XFOIL RMXBL).
+    pub max_change: f64,
+}
+
+/// Applies the Newton step `w` = (δs, δθ, δm) per station with XFOIL's relaxation.
+pub fn apply_update(
+    model: &dyn BoundaryLayerModel,
+    coupling: &Coupling<'_>,
+    state: &mut BlState,
+    w: &[[f64; 3]],
+    mismatch: &[f64],
+    limits: &UpdateLimits,
+) -> Result<UpdateResult, ViscousError> {
+    let n = state.len();
+    let dm: Vec<f64> = w.iter().map(|x| x[2]).collect();
+    let layout = coupling.layout;
+    // δUe = e + D·δm.
+    let due: Vec<f64> = (0..n)
+        .map(|k| {
+            let row = &coupling.dv[k * n..(k + 1) * n];
+            mismatch[k] + row.iter().zip(&dm).map(|(d, m)| d * m).sum::<f64>()
+        })
+        .collect();
+    let mut rlx: f64 = 1.0;
+    let mut sumsq = 0.0;
+    let mut max_change: f64 = 0.0;
+    for k in 0..n {
+        let [ds, dth, dmk] = w[k];
+        let u = state.ue[k];
+        let dstar = state.dstar(k);
+        let ddstar = (dmk - dstar * due[k]) / u;
+        let dn1 = if state.turbulent[k] || layout.stations[k].surface == Surface::Wake {
+            ds / state.s[k].max(1e-7)
+        } else {
+            ds / limits.n_scale
+        };
+        let dn2 = dth / state.theta[k];
+        let dn3 = ddstar / dstar;
+        let dn4 = due[k].abs() / limits.ue_scale;
+        for dn in [dn1, dn2, dn3, dn4] {
+            if !dn.is_finite() {
+                return Err(ViscousError::NonFinite { station: k });
+            }
+            if rlx * dn > limits.dhi {
+                rlx = limits.dhi / dn;
+            }
+            if rlx * dn < limits.dlo {
+                rlx = limits.dlo / dn;
+            }
+            sumsq += dn * dn;
+            max_change = max_change.max(dn.abs());
+        }
+    }
+    for k in 0..n {
+        let [ds, dth, dmk] = w[k];
+        let wake = layout.stations[k].surface == Surface::Wake;
+        state.s[k] += rlx * ds;
+        if state.turbulent[k] || wake {
+            state.s[k] = state.s[k].clamp(1e-7, limits.ctau_sqrt_max);
+        } else {
+            state.s[k] = state.s[k].max(0.0);
+        }
+        state.theta[k] += rlx * dth;
+        state.mass[k] += rlx * dmk;
+        state.ue[k] += rlx * due[k];
+        // Shape-factor floor (XFOIL DSLIM): raise δ* so that Hk ≥ Hk_min.
+        let regime = if wake {
+            Regime::Wake
+        } else if state.turbulent[k] {
+            Regime::Turbulent
+        } else {
+            Regime::Laminar
+        };
+        let hk_min = if wake {
+            limits.hk_min_wake
+        } else {
+            limits.hk_min_airfoil
+        };
+        let v = state.vars(layout, k);
+        let props = model.properties(regime, &v).map_err(super::newton::at(k))?;
+        if props.hk < hk_min && props.hk_d[1] > 0.0 {
+            let new_dstar = v.dstar + (hk_min - props.hk) / props.hk_d[1];
+            state.mass[k] = new_dstar * state.ue[k];
+        }
+        if !(state.theta[k].is_finite() && state.mass[k].is_finite() && state.ue[k].is_finite())
+            || state.theta[k] <= 0.0
+        {
+            return Err(ViscousError::NonFinite { station: k });
+        }
+    }
+    Ok(UpdateResult {
+        rlx,
+        rms_change: (sumsq / (4 * n.max(1)) as f64).sqrt(),
+        max_change,
+    })
+}

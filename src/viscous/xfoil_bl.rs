@@ -1,0 +1,185 @@
+//! [`BoundaryLayerModel`] implemented by the XFOIL-class integral boundary layer of
+//! `crate::boundary_layer` (closures of Drela & Giles 1987 / Drela 1989 as in XFOIL 6.99).
+
+use crate::boundary_layer as bl;
+
+use super::bl_model::{
+    BoundaryLayerModel, IntervalEquations, JunctionEquations, Regime, StationProperties,
+    StationVars, TransitionInterval,
+};
+use super::error::ViscousError;
+
+/// The XFOIL-class boundary layer for one flow condition.
+#[derive(Clone, Copy, Debug)]
+pub struct XfoilBoundaryLayer {
+    /// The boundary-layer model (closure constants + compressibility constants).
+    pub model: bl::BlModel,
+}
+
+impl XfoilBoundaryLayer {
+    /// Model for Reynolds number, Mach number and Ncrit with XFOIL's default closure constants.
+    pub fn new(reynolds: f64, mach: f64, ncrit: f64) -> Result<Self, ViscousError> {
+        let cond = bl::BlConditions {
+            reynolds,
+            mach,
+            ncrit,
+        };
+        let model = bl::BlModel::new(&cond, bl::BlParams::default()).map_err(err(usize::MAX))?;
+        Ok(Self { model })
+    }
+}
+
+fn err(station: usize) -> impl Fn(bl::BlError) -> ViscousError {
+    move |e| ViscousError::BoundaryLayer {
+        station,
+        message: e.to_string(),
+    }
+}
+
+fn to_bl(v: &StationVars) -> bl::StationVars {
+    bl::StationVars {
+        x: v.x,
+        u: v.u,
+        theta: v.theta,
+        dstar: v.dstar,
+        s: v.s,
+        dw: v.dw,
+    }
+}
+
+fn to_regime(r: Regime) -> bl::Regime {
+    match r {
+        Regime::Laminar => bl::Regime::Laminar,
+        Regime::Turbulent => bl::Regime::Turbulent,
+        Regime::Wake => bl::Regime::Wake,
+    }
+}
+
+fn from_eq(e: bl::IntervalEquations) -> IntervalEquations {
+    IntervalEquations {
+        res: e.res,
+        d1: e.d1,
+        d2: e.d2,
+    }
+}
+
+impl BoundaryLayerModel for XfoilBoundaryLayer {
+    fn similarity(&self, st: &StationVars) -> Result<IntervalEquations, ViscousError> {
+        self.model
+            .similarity(&to_bl(st))
+            .map(from_eq)
+            .map_err(err(usize::MAX))
+    }
+
+    fn interval(
+        &self,
+        regime: Regime,
+        st1: &StationVars,
+        st2: &StationVars,
+    ) -> Result<IntervalEquations, ViscousError> {
+        self.model
+            .interval(to_regime(regime), &to_bl(st1), &to_bl(st2))
+            .map(from_eq)
+            .map_err(err(usize::MAX))
+    }
+
+    fn transition(
+        &self,
+        st1: &StationVars,
+        st2: &StationVars,
+        xi_forced: Option<f64>,
+    ) -> Result<Option<TransitionInterval>, ViscousError> {
+        let t = self
+            .model
+            .transition_interval(&to_bl(st1), &to_bl(st2), xi_forced)
+            .map_err(err(usize::MAX))?;
+        Ok(t.map(|t| TransitionInterval {
+            equations: from_eq(t.eqs),
+            xi_transition: t.xi_tr,
+            forced: t.kind == bl::TransitionKind::Forced,
+        }))
+    }
+
+    fn junction(
+        &self,
+        upper: &StationVars,
+        lower: &StationVars,
+        wake: &StationVars,
+        ante: f64,
+    ) -> Result<JunctionEquations, ViscousError> {
+        let j = self
+            .model
+            .te_junction(&to_bl(upper), &to_bl(lower), &to_bl(wake), ante.abs())
+            .map_err(err(usize::MAX))?;
+        Ok(JunctionEquations {
+            res: j.res,
+            d_upper: j.d_upper,
+            d_lower: j.d_lower,
+            d_wake: j.d_wake,
+        })
+    }
+
+    fn properties(
+        &self,
+        regime: Regime,
+        st: &StationVars,
+    ) -> Result<StationProperties, ViscousError> {
+        let r = to_regime(regime);
+        let p = self
+            .model
+            .properties(&to_bl(st), r)
+            .map_err(err(usize::MAX))?;
+        // ∂Hk/∂(θ, δ*, u) by central differences (only used for limiting and the inverse march).
+        let hk_at = |v: bl::StationVars| self.model.properties(&v, r).map(|q| q.hk).ok();
+        let b = to_bl(st);
+        let mut hk_d = [0.0; 3];
+        for (i, d) in hk_d.iter_mut().enumerate() {
+            let (mut vp, mut vm) = (b, b);
+            let h = match i {
+                0 => 1e-6 * b.theta,
+                1 => 1e-6 * b.dstar,
+                _ => 1e-6 * b.u,
+            };
+            match i {
+                0 => {
+                    vp.theta += h;
+                    vm.theta -= h;
+                }
+                1 => {
+                    vp.dstar += h;
+                    vm.dstar -= h;
+                }
+                _ => {
+                    vp.u += h;
+                    vm.u -= h;
+                }
+            }
+            if let (Some(a), Some(c)) = (hk_at(vp), hk_at(vm)) {
+                *d = (a - c) / (2.0 * h);
+            }
+        }
+        // Edge density from the edge Mach number, isentropic (XFOIL BLKIN: R2 = RSTBL·TR2^(−1/γ−1)).
+        let gm1 = self.model.flow.gm1;
+        let tr = 1.0 + 0.5 * gm1 * p.mach_edge_sq;
+        let rho_e = self.model.flow.rstbl * tr.powf(-1.0 / gm1);
+        Ok(StationProperties {
+            cf: p.cf,
+            h: p.h,
+            hk: p.hk,
+            ue_compressible: p.ue,
+            rho_e,
+            hk_d,
+        })
+    }
+
+    fn squire_young(&self, last: &StationVars) -> Result<f64, ViscousError> {
+        self.model
+            .squire_young(&to_bl(last))
+            .map(|s| s.cd)
+            .map_err(err(usize::MAX))
+    }
+
+    fn ncrit(&self) -> f64 {
+        self.model.flow.ncrit
+    }
+}

@@ -1,0 +1,342 @@
+//! "Ping" tests: every Jacobian entry of the interval equations (laminar, turbulent, wake,
+//! similarity, transition, TE junction, Squire–Young) against central finite differences,
+//! for randomised realistic station pairs.
+
+use polargen::boundary_layer::{BlConditions, BlModel, BlParams, Regime, StationVars};
+
+/// Small deterministic generator (64-bit LCG), uniform in [0, 1).
+struct Lcg(u64);
+impl Lcg {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn range(&mut self, a: f64, b: f64) -> f64 {
+        a + (b - a) * self.next()
+    }
+}
+
+fn get(v: &StationVars, k: usize) -> f64 {
+    [v.s, v.theta, v.dstar, v.u, v.x][k]
+}
+
+fn set(v: &mut StationVars, k: usize, val: f64) {
+    match k {
+        0 => v.s = val,
+        1 => v.theta = val,
+        2 => v.dstar = val,
+        3 => v.u = val,
+        _ => v.x = val,
+    }
+}
+
+/// Relative step for the central difference of variable k.
+fn step(v: &StationVars, k: usize) -> f64 {
+    1e-6 * get(v, k).abs().max(if k == 0 { 1e-2 } else { 1e-4 })
+}
+
+/// Compares an analytic Jacobian row-set against central differences of `f` w.r.t. the
+/// variables of `v` (which `f` receives perturbed). Tolerance: relative 1e-5 of the row's
+/// largest entry scale.
+fn ping(
+    label: &str,
+    v: &StationVars,
+    jac: &[[f64; 5]; 3],
+    f: impl Fn(&StationVars) -> [f64; 3],
+    tol: f64,
+) {
+    for k in 0..5 {
+        let h = step(v, k);
+        let mut vp = *v;
+        set(&mut vp, k, get(v, k) + h);
+        let mut vm = *v;
+        set(&mut vm, k, get(v, k) - h);
+        let fp = f(&vp);
+        let fm = f(&vm);
+        for row in 0..3 {
+            let fd = (fp[row] - fm[row]) / (2.0 * h);
+            let an = jac[row][k];
+            let scale = jac[row]
+                .iter()
+                .zip([v.s, v.theta, v.dstar, v.u, v.x])
+                .map(|(j, x)| (j * x).abs())
+                .fold(0.0, f64::max)
+                / get(v, k).abs().max(1e-12);
+            let err = (fd - an).abs() / (an.abs().max(fd.abs()).max(1e-3 * scale).max(1e-12));
+            assert!(
+                err < tol,
+                "{label}: row {row} col {k}: analytic {an:e} vs fd {fd:e} (rel err {err:e})"
+            );
+        }
+    }
+}
+
+fn model(re: f64, mach: f64) -> BlModel {
+    BlModel::new(
+        &BlConditions {
+            reynolds: re,
+            mach,
+            ncrit: 9.0,
+        },
+        BlParams::default(),
+    )
+    .expect("valid conditions")
+}
+
+fn station(x: f64, u: f64, theta: f64, h: f64, s: f64, dw: f64) -> StationVars {
+    StationVars {
+        x,
+        u,
+        theta,
+        dstar: h * theta + dw,
+        s,
+        dw,
+    }
+}
+
+fn check_interval(m: &BlModel, regime: Regime, v1: &StationVars, v2: &StationVars, tol: f64) {
+    let eq = m.interval(regime, v1, v2).expect("valid interval");
+    ping(
+        &format!("{regime:?} st1"),
+        v1,
+        &eq.d1,
+        |p| m.interval(regime, p, v2).unwrap().res,
+        tol,
+    );
+    ping(
+        &format!("{regime:?} st2"),
+        v2,
+        &eq.d2,
+        |p| m.interval(regime, v1, p).unwrap().res,
+        tol,
+    );
+}
+
+#[test]
+fn ping_laminar_intervals() {
+    let mut rng = Lcg(1);
+    for i in 0..40 {
+        let m = model(rng.range(2e5, 5e6), if i % 2 == 0 { 0.0 } else { 0.41 });
+        let x1 = rng.range(0.01, 0.6);
+        let x2 = x1 + rng.range(0.003, 0.03);
+        let th1 = rng.range(5e-5, 4e-4);
+        let v1 = station(
+            x1,
+            rng.range(0.8, 1.6),
+            th1,
+            rng.range(2.2, 3.6),
+            rng.range(0.0, 7.0),
+            0.0,
+        );
+        let v2 = station(
+            x2,
+            v1.u * rng.range(0.97, 1.02),
+            th1 * rng.range(1.0, 1.15),
+            rng.range(2.2, 3.8),
+            v1.s + rng.range(0.0, 1.0),
+            0.0,
+        );
+        check_interval(&m, Regime::Laminar, &v1, &v2, 1e-5);
+    }
+}
+
+#[test]
+fn ping_turbulent_intervals() {
+    let mut rng = Lcg(2);
+    for i in 0..40 {
+        let m = model(rng.range(5e5, 6e6), if i % 2 == 0 { 0.0 } else { 0.41 });
+        let x1 = rng.range(0.1, 1.0);
+        let x2 = x1 + rng.range(0.005, 0.04);
+        let th1 = rng.range(3e-4, 3e-3);
+        let v1 = station(
+            x1,
+            rng.range(0.7, 1.4),
+            th1,
+            rng.range(1.3, 2.5),
+            rng.range(0.03, 0.12),
+            0.0,
+        );
+        let v2 = station(
+            x2,
+            v1.u * rng.range(0.96, 1.01),
+            th1 * rng.range(1.0, 1.1),
+            rng.range(1.3, 2.6),
+            v1.s * rng.range(0.9, 1.1),
+            0.0,
+        );
+        check_interval(&m, Regime::Turbulent, &v1, &v2, 1e-5);
+    }
+}
+
+#[test]
+fn ping_wake_intervals() {
+    let mut rng = Lcg(3);
+    for i in 0..40 {
+        let m = model(rng.range(5e5, 6e6), if i % 2 == 0 { 0.0 } else { 0.41 });
+        let x1 = rng.range(1.0, 2.0);
+        let x2 = x1 + rng.range(0.01, 0.1);
+        let th1 = rng.range(1e-3, 6e-3);
+        let dw1 = rng.range(0.0, 2e-3);
+        let v1 = station(
+            x1,
+            rng.range(0.85, 1.0),
+            th1,
+            rng.range(1.1, 2.5),
+            rng.range(0.02, 0.1),
+            dw1,
+        );
+        let v2 = station(
+            x2,
+            v1.u * rng.range(1.0, 1.01),
+            th1 * rng.range(0.98, 1.0),
+            rng.range(1.05, 2.3),
+            v1.s * rng.range(0.9, 1.0),
+            dw1 * 0.8,
+        );
+        check_interval(&m, Regime::Wake, &v1, &v2, 1e-5);
+    }
+}
+
+#[test]
+fn ping_similarity_station() {
+    let mut rng = Lcg(4);
+    for i in 0..20 {
+        let m = model(rng.range(2e5, 5e6), if i % 2 == 0 { 0.0 } else { 0.41 });
+        let v = station(
+            rng.range(1e-4, 2e-3),
+            rng.range(0.01, 0.2),
+            rng.range(1e-5, 5e-5),
+            rng.range(2.1, 2.4),
+            0.0,
+            0.0,
+        );
+        let eq = m.similarity(&v).expect("valid station");
+        assert!(eq.d1.iter().flatten().all(|&d| d == 0.0));
+        ping(
+            "similarity",
+            &v,
+            &eq.d2,
+            |p| m.similarity(p).unwrap().res,
+            1e-5,
+        );
+    }
+}
+
+#[test]
+fn ping_transition_intervals() {
+    let mut rng = Lcg(5);
+    let mut n_free = 0;
+    let mut n_forced = 0;
+    for i in 0..60 {
+        let m = model(rng.range(1e6, 4e6), if i % 2 == 0 { 0.0 } else { 0.41 });
+        let x1 = rng.range(0.1, 0.5);
+        let x2 = x1 + rng.range(0.01, 0.04);
+        let th1 = rng.range(2e-4, 5e-4);
+        let v1 = station(
+            x1,
+            rng.range(1.0, 1.4),
+            th1,
+            rng.range(2.6, 3.2),
+            rng.range(8.3, 8.99),
+            0.0,
+        );
+        let v2 = station(
+            x2,
+            v1.u * rng.range(0.97, 1.0),
+            th1 * rng.range(1.02, 1.2),
+            rng.range(1.6, 2.6),
+            rng.range(0.02, 0.08),
+            0.0,
+        );
+        let xf = if i % 3 == 0 {
+            Some(x1 + rng.range(0.1, 0.9) * (x2 - x1))
+        } else {
+            None
+        };
+        let Some(tr) = m.transition_interval(&v1, &v2, xf).unwrap() else {
+            continue;
+        };
+        match tr.kind {
+            polargen::boundary_layer::TransitionKind::Free => n_free += 1,
+            polargen::boundary_layer::TransitionKind::Forced => n_forced += 1,
+        }
+        assert!(tr.xi_tr > x1 && tr.xi_tr <= x2);
+        let f1 = |p: &StationVars| m.transition_interval(p, &v2, xf).unwrap().unwrap().eqs.res;
+        let f2 = |p: &StationVars| m.transition_interval(&v1, p, xf).unwrap().unwrap().eqs.res;
+        ping("transition st1", &v1, &tr.eqs.d1, f1, 1e-4);
+        ping("transition st2", &v2, &tr.eqs.d2, f2, 1e-4);
+        // ξ_tr sensitivities
+        for k in 0..5 {
+            let h = step(&v1, k);
+            let (mut p, mut q) = (v1, v1);
+            set(&mut p, k, get(&v1, k) + h);
+            set(&mut q, k, get(&v1, k) - h);
+            let fd = (m.transition_interval(&p, &v2, xf).unwrap().unwrap().xi_tr
+                - m.transition_interval(&q, &v2, xf).unwrap().unwrap().xi_tr)
+                / (2.0 * h);
+            let an = tr.dxi_tr_d1[k];
+            assert!(
+                (fd - an).abs() <= 1e-4 * an.abs().max(1e-3),
+                "dxi_tr/dv1[{k}]: {an:e} vs {fd:e}"
+            );
+        }
+    }
+    assert!(n_free >= 5, "too few free transitions sampled: {n_free}");
+    assert!(
+        n_forced >= 5,
+        "too few forced transitions sampled: {n_forced}"
+    );
+}
+
+#[test]
+fn ping_squire_young() {
+    let m = model(1.9e6, 0.41);
+    let v = station(2.0, 0.99, 3.7e-3, 1.04, 0.03, 1e-5);
+    let sy = m.squire_young(&v).unwrap();
+    for k in 1..4 {
+        let h = step(&v, k);
+        let (mut p, mut q) = (v, v);
+        set(&mut p, k, get(&v, k) + h);
+        set(&mut q, k, get(&v, k) - h);
+        let fd = (m.squire_young(&p).unwrap().cd - m.squire_young(&q).unwrap().cd) / (2.0 * h);
+        assert!(
+            (fd - sy.d[k]).abs() <= 1e-6 * sy.d[k].abs(),
+            "col {k}: {} vs {fd}",
+            sy.d[k]
+        );
+    }
+}
+
+#[test]
+fn ping_te_junction() {
+    let m = model(1e6, 0.0);
+    let up = station(1.0, 0.9, 4e-3, 1.8, 0.09, 0.0);
+    let lo = station(1.01, 0.92, 2e-3, 1.6, 0.07, 0.0);
+    let wk = station(1.0, 0.91, 6.1e-3, 1.75, 0.08, 2.5e-3);
+    let gap = 2.5e-3;
+    let te = m.te_junction(&up, &lo, &wk, gap).unwrap();
+    ping(
+        "te upper",
+        &up,
+        &te.d_upper,
+        |p| m.te_junction(p, &lo, &wk, gap).unwrap().res,
+        1e-6,
+    );
+    ping(
+        "te lower",
+        &lo,
+        &te.d_lower,
+        |p| m.te_junction(&up, p, &wk, gap).unwrap().res,
+        1e-6,
+    );
+    ping(
+        "te wake",
+        &wk,
+        &te.d_wake,
+        |p| m.te_junction(&up, &lo, p, gap).unwrap().res,
+        1e-6,
+    );
+}
