@@ -95,17 +95,26 @@ fn read_cp(name: &str) -> (Vec<f64>, Vec<f64>) {
         .unzip()
 }
 
-/// (y attribute, trimmed content) of every `<text>` element of an SVG document.
-fn svg_texts(svg: &str) -> Vec<(f64, String)> {
+/// (opening tag, trimmed content) of every `<text>` element of an SVG document.
+fn svg_texts(svg: &str) -> Vec<(String, String)> {
     svg.split("<text")
         .skip(1)
         .filter_map(|part| {
             let (tag, rest) = part.split_once('>')?;
-            let y = tag.split("y=\"").nth(1)?.split('"').next()?.parse().ok()?;
             let content = rest.split("</text>").next()?.trim().to_string();
-            Some((y, content))
+            Some((tag.to_string(), content))
         })
         .collect()
+}
+
+/// Numeric attribute `name` of an SVG tag.
+fn attr(tag: &str, name: &str) -> Option<f64> {
+    tag.split(&format!(" {name}=\""))
+        .nth(1)?
+        .split('"')
+        .next()?
+        .parse()
+        .ok()
 }
 
 /// SVG colour string of palette index `i` as plotters writes it.
@@ -326,17 +335,17 @@ fn pressure_and_boundary_layer_distributions() {
         &["Cp [-]", "x/c [-]", "free transition"],
         &[0, 1],
     );
-    // Inverted axis: the most negative Cp tick label is printed above (smaller SVG y) zero.
-    let label_y = |label: &str| -> f64 {
-        svg_texts(&svg)
-            .into_iter()
-            .find(|(_, text)| text == label)
-            .unwrap_or_else(|| panic!("tick {label} missing"))
-            .0
-    };
+    // Inverted axis: y tick labels (right-aligned text) sorted by value run down the page.
+    let mut y_ticks: Vec<(f64, f64)> = svg_texts(&svg)
+        .into_iter()
+        .filter(|(tag, _)| tag.contains("text-anchor=\"end\""))
+        .filter_map(|(tag, text)| Some((text.parse::<f64>().ok()?, attr(&tag, "y")?)))
+        .collect();
+    assert!(y_ticks.len() >= 4, "too few Cp tick labels: {y_ticks:?}");
+    y_ticks.sort_by(|a, b| a.0.total_cmp(&b.0));
     assert!(
-        label_y("-1") < label_y("0"),
-        "Cp axis is not inverted in the SVG"
+        y_ticks.windows(2).all(|w| w[1].1 > w[0].1),
+        "Cp axis is not inverted in the SVG: {y_ticks:?}"
     );
 
     render_and_check(
@@ -346,7 +355,7 @@ fn pressure_and_boundary_layer_distributions() {
             "H [-]",
             "Cf [-]",
             "N [-]",
-            "transition, free transition (x/c = 0.399)",
+            "transition x/c = 0.399 (free transition)",
             "Ncrit = 9",
         ],
         &[0, 1],
@@ -401,12 +410,20 @@ fn rotor_alpha_vs_azimuth() {
     // The maximum must be on the retreating side (ψ = 270°) for μ > 0.
     let max_label = &fig.panels[0].markers[0].label;
     assert!(max_label.contains("ψ = 270°"), "{max_label}");
-    render_and_check(
+    let svg = render_and_check(
         &fig,
         "alpha_azimuth",
         &["azimuth ψ [deg] (0 = rear)", "local α [deg]", "max clean"],
         &[0, 1],
     );
+    // Azimuth ticks every 45°.
+    let texts: Vec<String> = svg_texts(&svg).into_iter().map(|(_, t)| t).collect();
+    for tick in ["0", "90", "180", "270", "360"] {
+        assert!(
+            texts.iter().any(|t| t == tick),
+            "azimuth tick {tick} missing"
+        );
+    }
 }
 
 #[test]

@@ -47,6 +47,16 @@ pub enum PlotError {
         /// Requested upper limit.
         max: f64,
     },
+    /// A tick step is zero, negative or not finite.
+    #[error("panel \"{panel}\": invalid {axis} tick step {step}")]
+    InvalidTickStep {
+        /// Panel title.
+        panel: String,
+        /// `"x"` or `"y"`.
+        axis: &'static str,
+        /// Requested step.
+        step: f64,
+    },
     /// The shipped font could not be parsed.
     #[error("the shipped font could not be loaded")]
     Font,

@@ -194,6 +194,10 @@ pub struct Panel {
     pub x_range: AxisRange,
     /// y-axis range.
     pub y_range: AxisRange,
+    /// Spacing of labelled x ticks (e.g. 90° for azimuth); `None` picks a 1-2-2.5-5 step.
+    pub x_tick_step: Option<f64>,
+    /// Spacing of labelled y ticks; `None` picks a 1-2-2.5-5 step.
+    pub y_tick_step: Option<f64>,
     /// Draw the y axis increasing downwards (as for pressure coefficients, −Cp up).
     pub y_inverted: bool,
 }
@@ -213,6 +217,8 @@ impl Panel {
             markers: Vec::new(),
             x_range: AxisRange::Auto,
             y_range: AxisRange::Auto,
+            x_tick_step: None,
+            y_tick_step: None,
             y_inverted: false,
         }
     }
@@ -238,6 +244,18 @@ impl Panel {
     /// Fixes the y range to `[min, max]` (data units, also when inverted).
     pub fn with_y_range(mut self, min: f64, max: f64) -> Self {
         self.y_range = AxisRange::Fixed { min, max };
+        self
+    }
+
+    /// Labels x ticks at multiples of `step`.
+    pub fn with_x_tick_step(mut self, step: f64) -> Self {
+        self.x_tick_step = Some(step);
+        self
+    }
+
+    /// Labels y ticks at multiples of `step`.
+    pub fn with_y_tick_step(mut self, step: f64) -> Self {
+        self.y_tick_step = Some(step);
         self
     }
 

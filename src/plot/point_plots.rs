@@ -4,6 +4,9 @@
 
 use super::figure::{Figure, Marker, Panel, Series, Style};
 
+/// x/c axis limits of all point panels: the chord with a small margin, same for every panel.
+const X_LIMITS: (f64, f64) = (-0.02, 1.02);
+
 /// One case (e.g. one transition setting, one surface) at one α. Each distribution is a pair
 /// of equally long slices (x/c, value); empty slices mean "not available" and draw nothing.
 #[derive(Clone, Copy, Debug, Default)]
@@ -25,6 +28,7 @@ pub struct PointCase<'a> {
 }
 
 /// Pressure distribution Cp(x/c) of all cases in one panel, y axis inverted (suction up).
+/// All point panels show x/c ∈ [−0.02, 1.02]; wake points beyond are clipped.
 pub fn cp_figure(cases: &[PointCase], title: &str) -> Figure {
     Figure::new(title).with_panel(cp_panel(cases))
 }
@@ -51,7 +55,9 @@ pub fn point_figure(cases: &[PointCase], title: &str, ncrit: Option<f64>) -> Fig
 
 /// The Cp panel (inverted y axis).
 fn cp_panel(cases: &[PointCase]) -> Panel {
-    let mut panel = Panel::new("Pressure distribution", "x/c [-]", "Cp [-]").with_y_inverted();
+    let mut panel = Panel::new("Pressure distribution", "x/c [-]", "Cp [-]")
+        .with_y_inverted()
+        .with_x_range(X_LIMITS.0, X_LIMITS.1);
     for c in cases {
         panel
             .series
@@ -62,9 +68,10 @@ fn cp_panel(cases: &[PointCase]) -> Panel {
 
 /// The H, Cf and N panels with transition markers.
 fn bl_panels(cases: &[PointCase], ncrit: Option<f64>) -> [Panel; 3] {
-    let mut h = Panel::new("Shape factor", "x/c [-]", "H [-]");
-    let mut cf = Panel::new("Skin friction", "x/c [-]", "Cf [-]");
-    let mut n = Panel::new("Amplification", "x/c [-]", "N [-]");
+    let chord = |p: Panel| p.with_x_range(X_LIMITS.0, X_LIMITS.1);
+    let mut h = chord(Panel::new("Shape factor", "x/c [-]", "H [-]"));
+    let mut cf = chord(Panel::new("Skin friction", "x/c [-]", "Cf [-]"));
+    let mut n = chord(Panel::new("Amplification", "x/c [-]", "N [-]"));
     for c in cases {
         for (panel, data) in [(&mut h, c.h), (&mut cf, c.cf), (&mut n, c.n)] {
             panel
@@ -73,7 +80,7 @@ fn bl_panels(cases: &[PointCase], ncrit: Option<f64>) -> [Panel; 3] {
             if let Some(xtr) = c.x_transition {
                 panel.markers.push(Marker::vline(
                     xtr,
-                    format!("transition, {} (x/c = {xtr:.3})", c.label),
+                    format!("transition x/c = {xtr:.3} ({})", c.label),
                     c.style.color,
                 ));
             }

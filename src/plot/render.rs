@@ -9,6 +9,7 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -254,6 +255,17 @@ fn validate(figure: &Figure) -> Result<(), PlotError> {
                 });
             }
         }
+        for (axis, step) in [("x", panel.x_tick_step), ("y", panel.y_tick_step)] {
+            if let Some(step) = step {
+                if !(step.is_finite() && step > 0.0) {
+                    return Err(PlotError::InvalidTickStep {
+                        panel: panel.title.clone(),
+                        axis,
+                        step,
+                    });
+                }
+            }
+        }
         for (axis, range) in [("x", panel.x_range), ("y", panel.y_range)] {
             if let AxisRange::Fixed { min, max } = range {
                 if !(min.is_finite() && max.is_finite() && min < max) {
@@ -441,26 +453,120 @@ pub fn axis_limits(range: AxisRange, values: &[f64], padding: f64) -> (f64, f64)
     (lo - pad, hi + pad)
 }
 
-/// Number of decimals for tick labels on an axis of span `span` with up to `ticks` labels:
-/// one more than the order of magnitude of the tick spacing needs.
-fn tick_decimals(span: f64, ticks: usize) -> usize {
-    let step = span / ticks.max(1) as f64;
-    if !(step.is_finite() && step > 0.0) {
-        return 2;
-    }
-    (1.0 - step.log10().floor()).clamp(0.0, 8.0) as usize
+/// Tick positions of one axis: labelled (major) and grid-only (minor) values and the number
+/// of decimals that prints every major tick exactly.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Ticks {
+    /// Labelled tick values, ascending.
+    pub major: Vec<f64>,
+    /// Minor grid values, ascending.
+    pub minor: Vec<f64>,
+    /// Decimals for the tick labels.
+    pub decimals: usize,
 }
 
-/// Formats a tick value with `decimals` decimals, dropping trailing zeros and "-0".
+/// Ticks for the axis `[lo, hi]`: multiples of `step` if given, else of the smallest
+/// "nice" step {1, 2, 2.5, 5} × 10^k giving at most `max_ticks` labels.
+pub fn ticks(lo: f64, hi: f64, max_ticks: usize, step: Option<f64>) -> Ticks {
+    let span = hi - lo;
+    let (step, minor_div) = match step {
+        // Given steps get minor lines at thirds (e.g. 15° for 45°) when that divides evenly,
+        // else at fifths.
+        Some(s) => {
+            let thirds = (s / 3.0) * 1e6;
+            (
+                s,
+                if (thirds - thirds.round()).abs() < 1e-6 {
+                    3.0
+                } else {
+                    5.0
+                },
+            )
+        }
+        None => {
+            let raw = span / max_ticks.max(1) as f64;
+            let mag = 10f64.powf(raw.log10().floor());
+            [(1.0, 5.0), (2.0, 4.0), (2.5, 5.0), (5.0, 5.0), (10.0, 5.0)]
+                .into_iter()
+                .map(|(m, d)| (m * mag, d))
+                .find(|(s, _)| *s >= raw * (1.0 - 1e-9))
+                .unwrap_or((10.0 * mag, 5.0))
+        }
+    };
+    let multiples = |h: f64| -> Vec<f64> {
+        let k0 = (lo / h - 1e-9).ceil() as i64;
+        let k1 = (hi / h + 1e-9).floor() as i64;
+        (k0..=k1)
+            .map(|k| {
+                let v = k as f64 * h;
+                if v.abs() < 1e-12 * h {
+                    0.0
+                } else {
+                    v
+                }
+            })
+            .collect()
+    };
+    let decimals = (0..=8)
+        .find(|&d| {
+            let scaled = step * 10f64.powi(d as i32);
+            (scaled - scaled.round()).abs() < 1e-6 * scaled.max(1.0)
+        })
+        .unwrap_or(8);
+    Ticks {
+        major: multiples(step),
+        minor: multiples(step / minor_div),
+        decimals,
+    }
+}
+
+/// A linear f64 axis whose grid and labels sit at precomputed [`Ticks`] (plotters' own f64
+/// axis chooses its ticks itself and cannot take a given spacing).
+#[derive(Clone, Debug)]
+struct TickedAxis {
+    /// Axis limits.
+    lo: f64,
+    hi: f64,
+    /// Tick positions.
+    ticks: Ticks,
+}
+
+impl TickedAxis {
+    fn new((lo, hi): (f64, f64), ticks: Ticks) -> Self {
+        Self { lo, hi, ticks }
+    }
+}
+
+impl Ranged for TickedAxis {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    /// Linear map of `value` onto the pixel interval `limit`.
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        let f = (value - self.lo) / (self.hi - self.lo);
+        let px = limit.0 as f64 + f * (limit.1 - limit.0) as f64;
+        px.round().clamp(-1e6, 1e6) as i32
+    }
+
+    /// Major ticks for labels and bold grid lines, minor ticks for light grid lines.
+    fn key_points<Hint: KeyPointHint>(&self, hint: Hint) -> Vec<f64> {
+        if hint.weight().allow_light_points() {
+            self.ticks.minor.clone()
+        } else {
+            self.ticks.major.clone()
+        }
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.lo..self.hi
+    }
+}
+
+/// Formats a tick value with `decimals` decimals (no "-0").
 fn format_tick(v: f64, decimals: usize) -> String {
     let s = format!("{v:.decimals$}");
-    let s = if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
-    };
-    if s == "-0" {
-        "0".to_string()
+    if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
+        s[1..].to_string()
     } else {
         s
     }
@@ -596,6 +702,12 @@ where
     let xlim = axis_limits(panel.x_range, &xs, p.padding);
     let ylim = axis_limits(y_range, &ys, p.padding);
 
+    let x_ticks = ticks(xlim.0, xlim.1, p.max_ticks, panel.x_tick_step);
+    let y_ticks = ticks(ylim.0, ylim.1, p.max_ticks, panel.y_tick_step);
+    let (x_dec, y_dec) = (x_ticks.decimals, y_ticks.decimals);
+    let x_coord = TickedAxis::new(xlim, x_ticks);
+    let y_coord = TickedAxis::new(ylim, y_ticks);
+
     let mut builder = ChartBuilder::on(area);
     if !panel.title.is_empty() {
         builder.caption(&panel.title, (FONT_FAMILY, p.panel_title_font));
@@ -604,11 +716,9 @@ where
         .margin(p.margin)
         .x_label_area_size(p.x_label_area)
         .y_label_area_size(p.y_label_area)
-        .build_cartesian_2d(xlim.0..xlim.1, ylim.0..ylim.1)
+        .build_cartesian_2d(x_coord, y_coord)
         .map_err(draw_err)?;
 
-    let x_dec = tick_decimals(xlim.1 - xlim.0, p.max_ticks);
-    let y_dec = tick_decimals(ylim.1 - ylim.0, p.max_ticks);
     let x_fmt = |v: &f64| format_tick(*v, x_dec);
     let y_fmt = |v: &f64| format_tick(sign * *v, y_dec);
     chart
@@ -812,11 +922,19 @@ mod tests {
     }
 
     #[test]
-    fn tick_labels_are_short() {
-        assert_eq!(format_tick(0.5, tick_decimals(2.0, 8)), "0.5");
-        assert_eq!(format_tick(-0.0001, tick_decimals(2.0, 8)), "0");
-        assert_eq!(format_tick(0.0125, tick_decimals(0.03, 8)), "0.0125");
-        assert_eq!(format_tick(350.0, tick_decimals(400.0, 8)), "350");
+    fn nice_ticks() {
+        let t = ticks(-0.6, 1.3, 9, None);
+        assert_eq!(t.major, vec![-0.5, -0.25, 0.0, 0.25, 0.5, 0.75, 1.0, 1.25]);
+        assert_eq!(t.decimals, 2);
+        assert_eq!(t.minor.len(), 39);
+        let t = ticks(0.0, 360.0, 9, Some(45.0));
+        assert_eq!(t.major.len(), 9);
+        assert_eq!((t.major[2], t.decimals), (90.0, 0));
+        assert_eq!(t.minor[1], 15.0);
+        let t = ticks(0.0, 0.012, 9, None);
+        assert_eq!((t.major[1], t.decimals), (0.002, 3));
+        assert_eq!(format_tick(-0.0001, 2), "0.00");
+        assert_eq!(format_tick(0.0125, 4), "0.0125");
     }
 
     #[test]

@@ -23,8 +23,9 @@ pub struct AzimuthCase<'a> {
 /// Local α vs azimuth ψ ∈ [0°, 360°] (the paper's Fig. 10), the maximum of each case marked
 /// and labelled with its value and azimuth.
 pub fn alpha_azimuth_figure(cases: &[AzimuthCase], title: &str) -> Figure {
-    let mut panel =
-        Panel::new("", "azimuth ψ [deg] (0 = rear)", "local α [deg]").with_x_range(0.0, 360.0);
+    let mut panel = Panel::new("", "azimuth ψ [deg] (0 = rear)", "local α [deg]")
+        .with_x_range(0.0, 360.0)
+        .with_x_tick_step(45.0);
     for c in cases {
         panel.series.push(Series::from_slices(
             c.label,
