@@ -326,7 +326,7 @@ fn pressure_and_boundary_layer_distributions() {
             x_transition: Some(0.07),
         },
     ];
-    let title = "NACA 8-H-12, α = 4°, Re = 1.9e6, M = 0.41, upper surface";
+    let title = "NACA 8-H-12, α = 4°, Re = 1.9e6, M = 0.41 (BL: upper surface)";
     let cp = cp_figure(&cases, title);
     assert!(cp.panels[0].y_inverted, "Cp axis must be inverted");
     let svg = render_and_check(
