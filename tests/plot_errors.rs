@@ -194,3 +194,31 @@ fn degenerate_data_still_renders() {
         );
     }
 }
+
+#[test]
+fn parallel_renders_do_not_interfere() {
+    let dir = fresh_dir("parallel");
+    std::thread::scope(|scope| {
+        for k in 0..6 {
+            let dir = &dir;
+            scope.spawn(move || {
+                // Threads k and k + 3 write the same file: both must leave a complete plot.
+                let file = k % 3;
+                let ext = if file == 1 { "png" } else { "svg" };
+                render(
+                    &parabola(&format!("figure {file}")),
+                    dir.join(format!("p{file}.{ext}")),
+                )
+                .expect("parallel render");
+            });
+        }
+    });
+    assert_eq!(listing(&dir), vec!["p0.svg", "p1.png", "p2.svg"]);
+    for name in ["p0.svg", "p2.svg"] {
+        let svg = std::fs::read_to_string(dir.join(name)).expect("svg");
+        assert!(svg.trim_end().ends_with("</svg>"), "{name} incomplete");
+    }
+    let png = std::fs::read(dir.join("p1.png")).expect("png");
+    assert_eq!(&png[1..4], b"PNG");
+    assert!(png.len() > 5_000);
+}

@@ -186,8 +186,8 @@ pub fn render_svg_string(figure: &Figure) -> Result<String, PlotError> {
     svg_string_of(figure, &params, &layout)
 }
 
-/// Temporary sibling of `path` (same directory, hidden, keeping the real extension because the
-/// PNG encoder picks its format from it).
+/// Temporary sibling of `path` (same directory, hidden, unique per process and thread, keeping
+/// the real extension because the PNG encoder picks its format from it).
 fn temp_path(path: &Path, format: Format) -> PathBuf {
     let name = path
         .file_name()
@@ -197,7 +197,11 @@ fn temp_path(path: &Path, format: Format) -> PathBuf {
         Format::Svg => "svg",
         Format::Png => "png",
     };
-    path.with_file_name(format!(".{name}.{}.tmp.{ext}", std::process::id()))
+    let thread: String = format!("{:?}", std::thread::current().id())
+        .chars()
+        .filter(char::is_ascii_digit)
+        .collect();
+    path.with_file_name(format!(".{name}.{}-{thread}.tmp.{ext}", std::process::id()))
 }
 
 /// Draws the figure into an SVG string.
