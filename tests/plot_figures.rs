@@ -10,7 +10,9 @@ use std::f64::consts::PI;
 use std::path::PathBuf;
 
 use polargen::plot::point_plots::{bl_figure, cp_figure, point_figure, PointCase};
-use polargen::plot::polar_plots::{polar_figure, polar_figure_styled, PolarCurve};
+use polargen::plot::polar_plots::{
+    mark_lift_coefficient, polar_figure, polar_figure_styled, PolarCurve,
+};
 use polargen::plot::rotor_plots::{
     alpha_azimuth_figure, power_required_figure, takeoff_figure, AzimuthCase, PowerCase,
     TakeoffCase,
@@ -269,11 +271,20 @@ fn polar_overlay_with_reference_points_and_dashes() {
             style: Style::points(2),
         },
     ];
-    let fig = polar_figure_styled(&curves, "Styles: solid, dashed, points");
+    let fig = mark_lift_coefficient(
+        polar_figure_styled(&curves, "Styles: solid, dashed, points"),
+        0.8,
+    );
+    let marked: Vec<usize> = fig.panels.iter().map(|p| p.markers.len()).collect();
+    assert_eq!(
+        marked,
+        vec![1, 1, 0, 0],
+        "Cl = 0.8 line only on the Cl panels"
+    );
     let svg = render_and_check(
         &fig,
         "polars_styled",
-        &["fixed 7 %", "XFOIL free (points)"],
+        &["fixed 7 %", "XFOIL free (points)", "Cl = 0.8"],
         &[0, 1],
     );
     // Points are drawn as circles: 47 per panel for the reference-point series (Cl/Cd all > 0).

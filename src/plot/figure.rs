@@ -3,7 +3,7 @@
 //! A [`Figure`] is a title and a list of [`Panel`]s (laid out in a grid by the renderer); each
 //! panel holds [`Series`] (polylines and/or point sets) and [`Marker`]s (vertical/horizontal
 //! reference lines, single highlighted points). Nothing here knows about plotters: the
-//! description is plain data that [`render`](super::render) turns into SVG or PNG.
+//! description is plain data that [`render`](fn@super::render) turns into SVG or PNG.
 
 /// How a series' line is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -69,7 +69,7 @@ impl Style {
     }
 }
 
-/// One data series: a labelled polyline through (x[i], y[i]).
+/// One data series: a labelled polyline through (`x[i]`, `y[i]`).
 ///
 /// Non-finite values (NaN, ±∞) break the line into separate pieces, so gaps in the data show
 /// as gaps in the plot. `x` and `y` must have the same length (checked when rendering).

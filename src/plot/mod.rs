@@ -1,7 +1,7 @@
 //! SVG/PNG plots of polars, point distributions and rotor results (plotters, shipped font).
 //!
 //! * [`figure`] — solver-independent description of a multi-panel line plot.
-//! * [`render`] — draws a [`Figure`] to SVG or PNG (chosen by the file extension).
+//! * [`render`](mod@render) — draws a [`Figure`] to SVG or PNG (chosen by the file extension).
 //! * [`font`] — the embedded DejaVu Sans font used for all text.
 //! * [`polar_plots`] — Cl–α, Cd–Cl, Cl/Cd–α, Cm–α overlays of polars.
 //! * [`point_plots`] — Cp(x) and boundary-layer distributions (H, Cf, N) at one α.

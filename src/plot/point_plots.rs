@@ -28,7 +28,7 @@ pub struct PointCase<'a> {
 }
 
 /// Pressure distribution Cp(x/c) of all cases in one panel, y axis inverted (suction up).
-/// All point panels show x/c ∈ [−0.02, 1.02]; wake points beyond are clipped.
+/// All point panels show x/c ∈ \[−0.02, 1.02\]; wake points beyond are clipped.
 pub fn cp_figure(cases: &[PointCase], title: &str) -> Figure {
     Figure::new(title).with_panel(cp_panel(cases))
 }

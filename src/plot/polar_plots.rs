@@ -1,8 +1,14 @@
 //! Polar overlays: the four classic panels Cl–α, Cd–Cl (drag polar), Cl/Cd–α and Cm–α for one
 //! or more polars (e.g. clean vs fixed transition, or ours vs XFOIL).
 
-use super::figure::{Figure, Panel, Series, Style};
+use super::figure::{Figure, Marker, Panel, Series, Style};
 use crate::polar::PolarPoint;
+
+/// y-axis label of the panels that plot the lift coefficient.
+const CL_LABEL: &str = "Cl [-]";
+
+/// Palette index of case-independent reference lines (grey).
+const REFERENCE_COLOR: usize = 7;
 
 /// One polar to overlay: legend label, points (any order) and line style.
 #[derive(Clone, Copy, Debug)]
@@ -34,8 +40,8 @@ pub fn polar_figure(polars: &[(&str, &[PolarPoint])], title: &str) -> Figure {
 
 /// Four-panel polar overlay with the styles given per curve (see [`polar_figure`]).
 pub fn polar_figure_styled(curves: &[PolarCurve], title: &str) -> Figure {
-    let mut lift = Panel::new("Lift", "α [deg]", "Cl [-]");
-    let mut drag = Panel::new("Drag polar", "Cd [-]", "Cl [-]");
+    let mut lift = Panel::new("Lift", "α [deg]", CL_LABEL);
+    let mut drag = Panel::new("Drag polar", "Cd [-]", CL_LABEL);
     let mut ratio = Panel::new("Lift-to-drag ratio", "α [deg]", "Cl/Cd [-]");
     let mut moment = Panel::new("Pitching moment", "α [deg]", "Cm (c/4) [-]");
     for c in curves {
@@ -55,6 +61,17 @@ pub fn polar_figure_styled(curves: &[PolarCurve], title: &str) -> Figure {
         .with_panel(drag)
         .with_panel(ratio)
         .with_panel(moment)
+}
+
+/// Adds a horizontal reference line at lift coefficient `cl` (e.g. the paper's Table 5 compares
+/// Cd at Cl = 0.8) to every panel whose y axis is Cl, labelled "Cl = …".
+pub fn mark_lift_coefficient(mut figure: Figure, cl: f64) -> Figure {
+    for panel in figure.panels.iter_mut().filter(|p| p.y_label == CL_LABEL) {
+        panel
+            .markers
+            .push(Marker::hline(cl, format!("Cl = {cl}"), REFERENCE_COLOR));
+    }
+    figure
 }
 
 /// Converged points with finite α, Cl, Cd, Cm, sorted by α (sweeps may run 0 → up, 0 → down).

@@ -41,43 +41,43 @@ fn palette(i: usize) -> RGBColor {
 /// Sizes (pixels), fonts (pixel heights) and spacing of rendered figures.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RenderParams {
-    /// Width of one panel cell [px].
+    /// Width of one panel cell (px).
     pub panel_width: u32,
-    /// Height of one panel cell [px].
+    /// Height of one panel cell (px).
     pub panel_height: u32,
-    /// Height of the strip holding the figure title [px].
+    /// Height of the strip holding the figure title (px).
     pub title_height: u32,
-    /// Figure title font size [px].
+    /// Figure title font size (px).
     pub title_font: f64,
-    /// Panel caption font size [px].
+    /// Panel caption font size (px).
     pub panel_title_font: f64,
-    /// Axis label font size [px].
+    /// Axis label font size (px).
     pub axis_label_font: f64,
-    /// Tick label font size [px].
+    /// Tick label font size (px).
     pub tick_font: f64,
-    /// Legend text font size [px].
+    /// Legend text font size (px).
     pub legend_font: f64,
-    /// Height of one legend row [px].
+    /// Height of one legend row (px).
     pub legend_row_height: u32,
-    /// Length of the line sample in front of a legend entry [px].
+    /// Length of the line sample in front of a legend entry (px).
     pub legend_sample_length: u32,
-    /// Horizontal gap between legend entries [px].
+    /// Horizontal gap between legend entries (px).
     pub legend_gap: u32,
-    /// Stroke width of series lines [px].
+    /// Stroke width of series lines (px).
     pub line_width: u32,
-    /// Radius of series point symbols [px]; highlighted marker points use twice this.
+    /// Radius of series point symbols (px); highlighted marker points use twice this.
     pub point_radius: u32,
-    /// Dash length of dashed lines [px].
+    /// Dash length of dashed lines (px).
     pub dash_length: u32,
-    /// Gap between dashes [px].
+    /// Gap between dashes (px).
     pub dash_gap: u32,
     /// Fraction of the data span added on each side of automatic axis ranges.
     pub padding: f64,
-    /// Margin around each panel [px].
+    /// Margin around each panel (px).
     pub margin: u32,
-    /// Height reserved below each panel for x tick labels and the x-axis label [px].
+    /// Height reserved below each panel for x tick labels and the x-axis label (px).
     pub x_label_area: u32,
-    /// Width reserved left of each panel for y tick labels and the y-axis label [px].
+    /// Width reserved left of each panel for y tick labels and the y-axis label (px).
     pub y_label_area: u32,
     /// Maximum number of tick labels per axis.
     pub max_ticks: usize,
@@ -327,11 +327,11 @@ impl LegendEntry {
 /// Pixel layout of a figure: canvas size, grid and legend rows.
 #[derive(Clone, Debug)]
 struct Layout {
-    /// Canvas size [px].
+    /// Canvas size (px).
     size: (u32, u32),
     /// Panel grid (rows, columns).
     grid: (usize, usize),
-    /// Height of the title strip [px] (0 without a title).
+    /// Height of the title strip (px) (0 without a title).
     title_height: u32,
     /// Legend entries, by row.
     legend_rows: Vec<Vec<(LegendEntry, u32)>>,

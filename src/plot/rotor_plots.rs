@@ -13,14 +13,14 @@ pub struct AzimuthCase<'a> {
     pub label: &'a str,
     /// Colour and line kind.
     pub style: Style,
-    /// Azimuth ψ [deg], ψ = 0 with the blade pointing to the rear, increasing in the direction
+    /// Azimuth ψ \[deg\], ψ = 0 with the blade pointing to the rear, increasing in the direction
     /// of rotation (ψ = 90° advancing, 270° retreating).
     pub psi_deg: &'a [f64],
-    /// Local angle of attack [deg].
+    /// Local angle of attack \[deg\].
     pub alpha_deg: &'a [f64],
 }
 
-/// Local α vs azimuth ψ ∈ [0°, 360°] (the paper's Fig. 10), the maximum of each case marked
+/// Local α vs azimuth ψ ∈ \[0°, 360°\] (the paper's Fig. 10), the maximum of each case marked
 /// and labelled with its value and azimuth.
 pub fn alpha_azimuth_figure(cases: &[AzimuthCase], title: &str) -> Figure {
     let mut panel = Panel::new("", "azimuth ψ [deg] (0 = rear)", "local α [deg]")
@@ -58,17 +58,17 @@ pub struct TakeoffCase<'a> {
     pub label: &'a str,
     /// Colour and line kind.
     pub style: Style,
-    /// Time [s].
+    /// Time \[s\].
     pub t: &'a [f64],
-    /// Speed [kt].
+    /// Speed \[kt\].
     pub speed_kt: &'a [f64],
-    /// Height above ground [m].
+    /// Height above ground \[m\].
     pub height_m: &'a [f64],
-    /// Rotor speed [rpm].
+    /// Rotor speed \[rpm\].
     pub rotor_rpm: &'a [f64],
-    /// Blade flapping angle [deg].
+    /// Blade flapping angle \[deg\].
     pub flapping_deg: &'a [f64],
-    /// Lift-off time [s], marked by a vertical line.
+    /// Lift-off time \[s\], marked by a vertical line.
     pub liftoff_t: Option<f64>,
 }
 
@@ -116,15 +116,15 @@ pub struct PowerCase<'a> {
     pub label: &'a str,
     /// Colour and line kind.
     pub style: Style,
-    /// Airspeed [kt].
+    /// Airspeed \[kt\].
     pub speed_kt: &'a [f64],
-    /// Power required [kW] (empty if not computed).
+    /// Power required \[kW\] (empty if not computed).
     pub power_kw: &'a [f64],
-    /// Propeller thrust required [N] (empty if not computed).
+    /// Propeller thrust required \[N\] (empty if not computed).
     pub thrust_n: &'a [f64],
 }
 
-/// Power-required curves: power [kW] and propeller thrust [N] vs airspeed, side by side.
+/// Power-required curves: power \[kW\] and propeller thrust \[N\] vs airspeed, side by side.
 pub fn power_required_figure(cases: &[PowerCase], title: &str) -> Figure {
     let mut power = Panel::new("Power required", "airspeed [kt]", "power [kW]");
     let mut thrust = Panel::new("Thrust required", "airspeed [kt]", "propeller thrust [N]");
