@@ -465,14 +465,17 @@ pub struct Ticks {
     pub major: Vec<f64>,
     /// Minor grid values, ascending.
     pub minor: Vec<f64>,
-    /// Decimals for the tick labels.
-    pub decimals: usize,
+    /// Decimals for the tick labels; `None` (steps below 1e-8) prints in scientific notation.
+    pub decimals: Option<usize>,
 }
 
-/// Ticks for the axis `[lo, hi]`: multiples of `step` if given, else of the smallest
-/// "nice" step {1, 2, 2.5, 5} × 10^k giving at most `max_ticks` labels.
+/// Ticks for the axis `[lo, hi]`: multiples of `step` if given (and not absurdly fine), else
+/// of the smallest "nice" step {1, 2, 2.5, 5} × 10^k giving at most `max_ticks` labels.
 pub fn ticks(lo: f64, hi: f64, max_ticks: usize, step: Option<f64>) -> Ticks {
     let span = hi - lo;
+    // A given step that would put more than this many ticks on the axis is ignored.
+    const MAX_GIVEN_TICKS: f64 = 1000.0;
+    let step = step.filter(|s| span / s <= MAX_GIVEN_TICKS);
     let (step, minor_div) = match step {
         // Given steps get minor lines at thirds (e.g. 15° for 45°) when that divides evenly,
         // else at fifths.
@@ -497,29 +500,31 @@ pub fn ticks(lo: f64, hi: f64, max_ticks: usize, step: Option<f64>) -> Ticks {
                 .unwrap_or((10.0 * mag, 5.0))
         }
     };
-    let multiples = |h: f64| -> Vec<f64> {
+    let decimals = (0..=8).find(|&d| {
+        let scaled = step * 10f64.powi(d as i32);
+        scaled.round() >= 1.0 && (scaled - scaled.round()).abs() < 1e-6 * scaled
+    });
+    // Multiples of h in [lo, hi], rounded to `d` decimals (if any) so that 3 × 0.2 is 0.6.
+    let multiples = |h: f64, d: Option<usize>| -> Vec<f64> {
         let k0 = (lo / h - 1e-9).ceil() as i64;
         let k1 = (hi / h + 1e-9).floor() as i64;
         (k0..=k1)
             .map(|k| {
                 let v = k as f64 * h;
-                if v.abs() < 1e-12 * h {
-                    0.0
-                } else {
-                    v
-                }
+                let v = match d {
+                    Some(d) => {
+                        let scale = 10f64.powi(d as i32);
+                        (v * scale).round() / scale
+                    }
+                    None => v,
+                };
+                v + 0.0
             })
             .collect()
     };
-    let decimals = (0..=8)
-        .find(|&d| {
-            let scaled = step * 10f64.powi(d as i32);
-            (scaled - scaled.round()).abs() < 1e-6 * scaled.max(1.0)
-        })
-        .unwrap_or(8);
     Ticks {
-        major: multiples(step),
-        minor: multiples(step / minor_div),
+        major: multiples(step, decimals),
+        minor: multiples(step / minor_div, decimals.map(|d| d + 2)),
         decimals,
     }
 }
@@ -566,9 +571,13 @@ impl Ranged for TickedAxis {
     }
 }
 
-/// Formats a tick value with `decimals` decimals (no "-0").
-fn format_tick(v: f64, decimals: usize) -> String {
-    let s = format!("{v:.decimals$}");
+/// Formats a tick value with `decimals` decimals, or in scientific notation for `None`
+/// (no "-0").
+fn format_tick(v: f64, decimals: Option<usize>) -> String {
+    let s = match decimals {
+        Some(d) => format!("{v:.d$}"),
+        None => format!("{v:.3e}"),
+    };
     if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
         s[1..].to_string()
     } else {
@@ -929,16 +938,25 @@ mod tests {
     fn nice_ticks() {
         let t = ticks(-0.6, 1.3, 9, None);
         assert_eq!(t.major, vec![-0.5, -0.25, 0.0, 0.25, 0.5, 0.75, 1.0, 1.25]);
-        assert_eq!(t.decimals, 2);
+        assert_eq!(t.decimals, Some(2));
         assert_eq!(t.minor.len(), 39);
         let t = ticks(0.0, 360.0, 9, Some(45.0));
         assert_eq!(t.major.len(), 9);
-        assert_eq!((t.major[2], t.decimals), (90.0, 0));
+        assert_eq!((t.major[2], t.decimals), (90.0, Some(0)));
         assert_eq!(t.minor[1], 15.0);
+        let t = ticks(0.0, 1.0, 9, Some(1e-9));
+        assert_eq!(
+            t.major,
+            vec![0.0, 0.2, 0.4, 0.6, 0.8, 1.0],
+            "automatic ticks"
+        );
         let t = ticks(0.0, 0.012, 9, None);
-        assert_eq!((t.major[1], t.decimals), (0.002, 3));
-        assert_eq!(format_tick(-0.0001, 2), "0.00");
-        assert_eq!(format_tick(0.0125, 4), "0.0125");
+        assert_eq!((t.major[1], t.decimals), (0.002, Some(3)));
+        assert_eq!(format_tick(-0.0001, Some(2)), "0.00");
+        assert_eq!(format_tick(0.0125, Some(4)), "0.0125");
+        let t = ticks(1e-10, 5e-10, 9, None);
+        assert_eq!((t.major.len(), t.decimals), (9, None));
+        assert_eq!(format_tick(t.major[0], t.decimals), "1.000e-10");
     }
 
     #[test]
