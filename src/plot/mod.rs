@@ -1,1 +1,36 @@
 //! SVG/PNG plots of polars, point distributions and rotor results (plotters, shipped font).
+//!
+//! * [`figure`] — solver-independent description of a multi-panel line plot.
+//! * [`render`](mod@render) — draws a [`Figure`] to SVG or PNG (chosen by the file extension).
+//! * [`font`] — the embedded DejaVu Sans font used for all text.
+//! * [`polar_plots`] — Cl–α, Cd–Cl, Cl/Cd–α, Cm–α overlays of polars.
+//! * [`point_plots`] — Cp(x) and boundary-layer distributions (H, Cf, N) at one α.
+//! * [`rotor_plots`] — blade α vs azimuth, takeoff time histories, power required.
+//!
+//! ```
+//! use polargen::plot::{render, Figure, Panel, Series, Style};
+//!
+//! // Thin-airfoil lift, Cl = 2π α, drawn to SVG (a `.png` path gives a PNG).
+//! let alpha: Vec<f64> = (-4..=8).map(f64::from).collect();
+//! let cl: Vec<f64> = alpha.iter().map(|a| 2.0 * std::f64::consts::PI * a.to_radians()).collect();
+//! let figure = Figure::new("Thin airfoil").with_panel(
+//!     Panel::new("Lift", "α [deg]", "Cl [-]")
+//!         .with_series(Series::new("Cl = 2πα", alpha, cl, Style::solid(0))),
+//! );
+//! let path = std::env::temp_dir().join("polargen_doc_thin_airfoil.svg");
+//! render(&figure, &path)?;
+//! # std::fs::remove_file(&path).ok();
+//! # Ok::<(), polargen::plot::PlotError>(())
+//! ```
+
+pub mod error;
+pub mod figure;
+pub mod font;
+pub mod point_plots;
+pub mod polar_plots;
+pub mod render;
+pub mod rotor_plots;
+
+pub use error::PlotError;
+pub use figure::{AxisRange, Figure, Line, Marker, MarkerKind, Panel, Series, Style};
+pub use render::{render, render_svg_string, render_with, RenderParams};

@@ -1,0 +1,94 @@
+//! Distributions at one operating point: pressure coefficient Cp(x/c) and boundary-layer
+//! quantities (shape factor H, skin friction Cf, amplification factor N) along a surface, with
+//! the transition location marked, for several cases overlaid (e.g. clean vs fixed transition).
+
+use super::figure::{Figure, Marker, Panel, Series, Style};
+
+/// x/c axis limits of all point panels: the chord with a small margin, same for every panel.
+const X_LIMITS: (f64, f64) = (-0.02, 1.02);
+
+/// One case (e.g. one transition setting, one surface) at one α. Each distribution is a pair
+/// of equally long slices (x/c, value); empty slices mean "not available" and draw nothing.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct PointCase<'a> {
+    /// Legend label, e.g. `"free transition, upper"`.
+    pub label: &'a str,
+    /// Colour and line kind.
+    pub style: Style,
+    /// Pressure coefficient Cp(x/c).
+    pub cp: (&'a [f64], &'a [f64]),
+    /// Kinematic shape factor H = δ*/θ.
+    pub h: (&'a [f64], &'a [f64]),
+    /// Skin-friction coefficient as given by the solver (XFOIL normalises τw by ½ ρ V∞²).
+    pub cf: (&'a [f64], &'a [f64]),
+    /// Amplification factor N of the e^n method.
+    pub n: (&'a [f64], &'a [f64]),
+    /// Transition location x/c, marked by a vertical line in the boundary-layer panels.
+    pub x_transition: Option<f64>,
+}
+
+/// Pressure distribution Cp(x/c) of all cases in one panel, y axis inverted (suction up).
+/// All point panels show x/c ∈ \[−0.02, 1.02\]; wake points beyond are clipped.
+pub fn cp_figure(cases: &[PointCase], title: &str) -> Figure {
+    Figure::new(title).with_panel(cp_panel(cases))
+}
+
+/// Boundary-layer panels H, Cf and N (three in a row) with the transition locations marked and,
+/// if given, the critical amplification factor `ncrit` as a horizontal line in the N panel.
+pub fn bl_figure(cases: &[PointCase], title: &str, ncrit: Option<f64>) -> Figure {
+    let [h, cf, n] = bl_panels(cases, ncrit);
+    Figure::new(title)
+        .with_panel(h)
+        .with_panel(cf)
+        .with_panel(n)
+}
+
+/// All four distributions (2 × 2): Cp, H, Cf and N, transition locations marked.
+pub fn point_figure(cases: &[PointCase], title: &str, ncrit: Option<f64>) -> Figure {
+    let [h, cf, n] = bl_panels(cases, ncrit);
+    Figure::new(title)
+        .with_panel(cp_panel(cases))
+        .with_panel(h)
+        .with_panel(cf)
+        .with_panel(n)
+}
+
+/// The Cp panel (inverted y axis).
+fn cp_panel(cases: &[PointCase]) -> Panel {
+    let mut panel = Panel::new("Pressure distribution", "x/c [-]", "Cp [-]")
+        .with_y_inverted()
+        .with_x_range(X_LIMITS.0, X_LIMITS.1);
+    for c in cases {
+        panel
+            .series
+            .push(Series::from_slices(c.label, c.cp.0, c.cp.1, c.style));
+    }
+    panel
+}
+
+/// The H, Cf and N panels with transition markers.
+fn bl_panels(cases: &[PointCase], ncrit: Option<f64>) -> [Panel; 3] {
+    let chord = |p: Panel| p.with_x_range(X_LIMITS.0, X_LIMITS.1);
+    let mut h = chord(Panel::new("Shape factor", "x/c [-]", "H [-]"));
+    let mut cf = chord(Panel::new("Skin friction", "x/c [-]", "Cf [-]"));
+    let mut n = chord(Panel::new("Amplification", "x/c [-]", "N [-]"));
+    for c in cases {
+        for (panel, data) in [(&mut h, c.h), (&mut cf, c.cf), (&mut n, c.n)] {
+            panel
+                .series
+                .push(Series::from_slices(c.label, data.0, data.1, c.style));
+            if let Some(xtr) = c.x_transition {
+                panel.markers.push(Marker::vline(
+                    xtr,
+                    format!("transition x/c = {xtr:.3} ({})", c.label),
+                    c.style.color,
+                ));
+            }
+        }
+    }
+    if let Some(ncrit) = ncrit {
+        n.markers
+            .push(Marker::hline(ncrit, format!("Ncrit = {ncrit}"), 7));
+    }
+    [h, cf, n]
+}
