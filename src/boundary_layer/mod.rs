@@ -51,6 +51,9 @@ pub enum BlError {
         /// Its value.
         value: f64,
     },
+    /// The equations produced a non-finite value (variables far outside the closures' range).
+    #[error("boundary layer: non-finite {0} (station variables outside the closures' range)")]
+    NonFinite(&'static str),
     /// The interval does not advance downstream.
     #[error("boundary layer: interval xi1 = {x1} to xi2 = {x2} does not advance downstream")]
     Interval {
@@ -67,6 +70,23 @@ pub(crate) fn check_advance(v1: &StationVars, v2: &StationVars) -> Result<(), Bl
         Ok(())
     } else {
         Err(BlError::Interval { x1: v1.x, x2: v2.x })
+    }
+}
+
+/// Rejects equations with non-finite residuals or Jacobian entries.
+pub(crate) fn check_finite(
+    eq: IntervalEquations,
+    what: &'static str,
+) -> Result<IntervalEquations, BlError> {
+    let all = eq
+        .res
+        .iter()
+        .chain(eq.d1.iter().flatten())
+        .chain(eq.d2.iter().flatten());
+    if all.into_iter().all(|v| v.is_finite()) {
+        Ok(eq)
+    } else {
+        Err(BlError::NonFinite(what))
     }
 }
 
@@ -120,13 +140,10 @@ impl BlModel {
             Regime::Turbulent => DiffKind::Turbulent,
             Regime::Wake => DiffKind::Wake,
         };
-        Ok(IntervalEquations::from_duals(&bldif(
-            kind,
-            &s1,
-            &s2,
-            &self.flow,
-            &self.params,
-        )))
+        check_finite(
+            IntervalEquations::from_duals(&bldif(kind, &s1, &s2, &self.flow, &self.params)),
+            "interval equations",
+        )
     }
 
     /// Equations of the similarity (stagnation-point) station (XFOIL BLSYS with SIMI,
@@ -136,13 +153,16 @@ impl BlModel {
     pub fn similarity(&self, v: &StationVars) -> Result<IntervalEquations, BlError> {
         validate(v, Regime::Laminar)?;
         let s = self.station(v, Some(5), Regime::Laminar);
-        Ok(IntervalEquations::from_duals(&bldif(
-            DiffKind::Similarity,
-            &s,
-            &s,
-            &self.flow,
-            &self.params,
-        )))
+        check_finite(
+            IntervalEquations::from_duals(&bldif(
+                DiffKind::Similarity,
+                &s,
+                &s,
+                &self.flow,
+                &self.params,
+            )),
+            "similarity equations",
+        )
     }
 
     /// Boundary-layer quantities of one station in the given regime, for output

@@ -39,6 +39,8 @@ pub(crate) struct Station {
     pub s: Dual,
     pub dw: f64,
     pub msq: Dual,
+    /// Edge density ρe/ρ∞.
+    pub rho: Dual,
     pub h: Dual,
     pub hk: Dual,
     pub rt: Dual,
@@ -197,6 +199,7 @@ impl Station {
             s,
             dw,
             msq,
+            rho,
             h,
             hk,
             rt,
@@ -218,6 +221,8 @@ pub struct StationProperties {
     pub ue: f64,
     /// Edge Mach number squared.
     pub mach_edge_sq: f64,
+    /// Edge density ρe/ρ∞ (isentropic).
+    pub rho_edge: f64,
     /// Shape parameter H = δ*/θ (δ* without the wake gap).
     pub h: f64,
     /// Kinematic shape parameter Hk (after the regime's lower clamp).
@@ -232,6 +237,11 @@ pub struct StationProperties {
     pub cd: f64,
     /// Equilibrium √Cτ.
     pub ctau_eq_sqrt: f64,
+    /// Wall shear stress over ρ∞V∞², τw = ½ρe Ue² Cf (XFOIL TAU; Cf based on free-stream
+    /// dynamic pressure is 2τw).
+    pub tau_wall: f64,
+    /// Dissipation integral over ρ∞V∞³, ρe Ue³ CD (XFOIL DIS).
+    pub dissipation: f64,
     /// Normalised slip velocity Us.
     pub us: f64,
     /// Boundary-layer thickness δ (Green's correlation).
@@ -243,6 +253,7 @@ impl StationProperties {
         Self {
             ue: st.u.v,
             mach_edge_sq: st.msq.v,
+            rho_edge: st.rho.v,
             h: st.h.v,
             hk: st.hk.v,
             re_theta: st.rt.v,
@@ -250,6 +261,8 @@ impl StationProperties {
             cf: st.cf.v,
             cd: 0.5 * st.di.v * st.hs.v,
             ctau_eq_sqrt: st.cq.v,
+            tau_wall: 0.5 * st.rho.v * st.u.v * st.u.v * st.cf.v,
+            dissipation: st.rho.v * st.u.v.powi(3) * 0.5 * st.di.v * st.hs.v,
             us: st.us.v,
             delta: st.de.v,
         }

@@ -14,7 +14,7 @@ use super::dual::Dual;
 use super::equations::{bldif, DiffKind, IntervalEquations};
 use super::params::Regime;
 use super::station::{compressible_speed_d, validate, Station, StationVars};
-use super::{check_advance, BlError, BlModel};
+use super::{check_advance, check_finite, BlError, BlModel};
 
 /// Whether transition in an interval is free (e^n) or forced (trip).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -151,7 +151,12 @@ impl BlModel {
         check_advance(v1, v2)?;
         let s1 = self.station(v1, None, Regime::Laminar);
         let p2 = Primaries::new(v2, None, self);
-        Ok(self.solve_n2(&s1, &p2, v1, v2, xi_forced))
+        let check = self.solve_n2(&s1, &p2, v1, v2, xi_forced);
+        if check.n2.is_finite() {
+            Ok(check)
+        } else {
+            Err(BlError::NonFinite("amplification factor"))
+        }
     }
 
     fn solve_n2(
@@ -177,6 +182,9 @@ impl BlModel {
             }
             let res_a2 = res.g[0];
             let da2 = -res.v / res_a2;
+            if !da2.is_finite() {
+                break;
+            }
             let dxt = xt.g[0] * da2;
             let mut rlx: f64 = 1.0;
             if rlx * (dxt / dx).abs() > 0.05 {
@@ -300,8 +308,11 @@ impl BlModel {
         let bt = bldif(DiffKind::Turbulent, &stt, &s2, fc, pp);
 
         let rows = [bt[0], bl[1] + bt[1], bl[2] + bt[2]];
+        if !xt.g.iter().all(|g| g.is_finite()) {
+            return Err(BlError::NonFinite("transition point sensitivities"));
+        }
         Ok(Some(TransitionInterval {
-            eqs: IntervalEquations::from_duals(&rows),
+            eqs: check_finite(IntervalEquations::from_duals(&rows), "transition equations")?,
             xi_tr: xt.v,
             dxi_tr_d1: xt.station_grad(0),
             dxi_tr_d2: xt.station_grad(5),

@@ -92,7 +92,10 @@ pub struct PanelGeometry {
     pub ny: Vec<f64>,
     /// Panel angles (XFOIL APCALC): `atan2(Δx, −Δy)` for panel j → j+1, last entry the TE panel.
     pub apanel: Vec<f64>,
-    /// Chord: largest distance from the TE midpoint to a node.
+    /// Arc length of the leading edge, the spline point farthest from the TE midpoint
+    /// (XFOIL LEFIND: (r(s) − r_TE)·r'(s) = 0).
+    pub s_le: f64,
+    /// Chord: distance from the TE midpoint to the leading edge (XFOIL CHORD).
     pub chord: f64,
     /// Trailing-edge data.
     pub te: TrailingEdge,
@@ -138,9 +141,7 @@ impl PanelGeometry {
 
         let xte = 0.5 * (x[0] + x[n - 1]);
         let yte = 0.5 * (y[0] + y[n - 1]);
-        let chord = (0..n)
-            .map(|i| (x[i] - xte).hypot(y[i] - yte))
-            .fold(0.0, f64::max);
+        let (s_le, chord) = leading_edge(x, y, &s, &xp, &yp, xte, yte);
 
         // XFOIL TECALC: TE base vector, bisector from the spline tangents, gap projections.
         let dxte = x[0] - x[n - 1];
@@ -180,6 +181,7 @@ impl PanelGeometry {
             nx,
             ny,
             apanel,
+            s_le,
             chord,
             te: TrailingEdge {
                 x: xte,
@@ -204,6 +206,77 @@ impl PanelGeometry {
     pub fn is_empty(&self) -> bool {
         self.x.is_empty()
     }
+}
+
+/// Value and slope at arc length `s` of the cubic Hermite spline through (`s`, `v`, `vp`)
+/// on interval `i` (`s[i] ≤ s ≤ s[i+1]`); the same cubic as XFOIL SEVAL/DEVAL.
+fn hermite(v: &[f64], vp: &[f64], sn: &[f64], i: usize, s: f64) -> (f64, f64) {
+    let h = sn[i + 1] - sn[i];
+    let t = (s - sn[i]) / h;
+    let (t2, t3) = (t * t, t * t * t);
+    let value = (2.0 * t3 - 3.0 * t2 + 1.0) * v[i]
+        + (t3 - 2.0 * t2 + t) * h * vp[i]
+        + (-2.0 * t3 + 3.0 * t2) * v[i + 1]
+        + (t3 - t2) * h * vp[i + 1];
+    let slope = ((6.0 * t2 - 6.0 * t) * v[i] + (-6.0 * t2 + 6.0 * t) * v[i + 1]) / h
+        + (3.0 * t2 - 4.0 * t + 1.0) * vp[i]
+        + (3.0 * t2 - 2.0 * t) * vp[i + 1];
+    (value, slope)
+}
+
+/// Leading edge as the spline point farthest from the TE midpoint (XFOIL LEFIND): the root of
+/// (r(s) − r_TE)·r'(s) next to the farthest node, by bisection. Returns (s_LE, chord).
+fn leading_edge(
+    x: &[f64],
+    y: &[f64],
+    s: &[f64],
+    xp: &[f64],
+    yp: &[f64],
+    xte: f64,
+    yte: f64,
+) -> (f64, f64) {
+    let n = x.len();
+    let far = (0..n)
+        .max_by(|&a, &b| {
+            let da = (x[a] - xte).hypot(y[a] - yte);
+            let db = (x[b] - xte).hypot(y[b] - yte);
+            da.total_cmp(&db)
+        })
+        .unwrap_or(0);
+    let f = |i: usize, sv: f64| -> (f64, f64) {
+        let (xv, xs) = hermite(x, xp, s, i, sv);
+        let (yv, ys) = hermite(y, yp, s, i, sv);
+        (
+            (xv - xte) * xs + (yv - yte) * ys,
+            (xv - xte).hypot(yv - yte),
+        )
+    };
+    let mut best = (s[far], (x[far] - xte).hypot(y[far] - yte));
+    for i in [far.wrapping_sub(1), far] {
+        if i + 1 >= n {
+            continue;
+        }
+        let (mut a, mut b) = (s[i], s[i + 1]);
+        let (fa, fb) = (f(i, a).0, f(i, b).0);
+        if fa.signum() == fb.signum() {
+            continue;
+        }
+        let fa_sign = fa.signum();
+        for _ in 0..60 {
+            let m = 0.5 * (a + b);
+            if f(i, m).0.signum() == fa_sign {
+                a = m;
+            } else {
+                b = m;
+            }
+        }
+        let sm = 0.5 * (a + b);
+        let d = f(i, sm).1;
+        if d > best.1 {
+            best = (sm, d);
+        }
+    }
+    best
 }
 
 /// Cubic-spline first derivatives dX/ds at the nodes with zero third derivative at both ends

@@ -12,6 +12,7 @@
 
 use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::Mat;
+use std::sync::OnceLock;
 
 use super::compressibility::KarmanTsien;
 use super::error::InviscidError;
@@ -37,6 +38,9 @@ pub struct PanelSystem {
     psi0_unit: [f64; 2],
     /// Sharp-TE bisector control point (x, y, cos, sin of the bisector angle), if sharp.
     bisector: Option<(f64, f64, f64, f64)>,
+    /// dγ_i/dσ_j for the airfoil sources, N × N, computed on first use (XFOIL DIJ airfoil
+    /// block, cached like XFOIL's LADIJ flag).
+    airfoil_dij: OnceLock<Mat<f64>>,
 }
 
 /// Inviscid solution at one angle of attack and Mach number.
@@ -151,6 +155,7 @@ impl PanelSystem {
             gamma_unit,
             psi0_unit,
             bisector,
+            airfoil_dij: OnceLock::new(),
         })
     }
 
@@ -192,6 +197,16 @@ impl PanelSystem {
             .iter()
             .zip(&self.gamma_unit[1])
             .map(|(g0, g90)| ca * g0 + sa * g90)
+            .collect()
+    }
+
+    /// dγ/dα (per radian) at `alpha_deg`: −sin α·γ⁰ + cos α·γ⁹⁰ (XFOIL QINV_A).
+    pub fn gamma_alpha_derivative(&self, alpha_deg: f64) -> Vec<f64> {
+        let (sa, ca) = alpha_deg.to_radians().sin_cos();
+        self.gamma_unit[0]
+            .iter()
+            .zip(&self.gamma_unit[1])
+            .map(|(g0, g90)| -sa * g0 + ca * g90)
             .collect()
     }
 
@@ -269,6 +284,20 @@ impl PanelSystem {
     /// place; row N of the result is ψ₀.
     pub fn back_substitute(&self, rhs: faer::MatMut<'_, f64>) {
         self.lu.solve_in_place(rhs);
+    }
+
+    /// Sensitivity of the nodal vorticity (surface speed) to the airfoil nodal sources,
+    /// dγ_i/dσ_j (N × N), from back-substituting the source right-hand sides through the
+    /// factorised system (XFOIL QDCALC airfoil block). Computed once, then cached.
+    pub fn airfoil_source_sensitivity(&self) -> faer::MatRef<'_, f64> {
+        self.airfoil_dij
+            .get_or_init(|| {
+                let n = self.n_nodes();
+                let mut b = self.source_rhs.clone();
+                self.lu.solve_in_place(b.as_mut());
+                b.subrows(0, n).to_owned()
+            })
+            .as_ref()
     }
 
     /// System right-hand side of the airfoil sources: entry (i, j) is −dψ_i/dm_j (−d(q_bis)/dm_j

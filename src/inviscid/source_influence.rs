@@ -1,0 +1,209 @@
+//! Source (mass-defect) influence matrix of the viscous–inviscid coupling (XFOIL xpanel.f
+//! QDCALC, Drela 1989 §4): the tangential speed at every airfoil and wake node is
+//! `q = q_inv(α) + D·σ`.
+//!
+//! # Conventions and units
+//! * Node order: the N airfoil nodes (XFOIL order) followed by the NW wake nodes.
+//! * `q` is the tangential speed per V∞ with XFOIL's sign: on the airfoil it is γ (positive
+//!   on the upper surface, negative on the lower), on the wake it continues the lower-surface
+//!   sign (negative for downstream flow), see [`Wake`].
+//! * `σ_j` is XFOIL's nodal source variable (per V∞·c): the panels carry the source density
+//!   dσ/ds, linear over half panels. With the boundary-layer mass defect `m = Ue·δ*` (Ue > 0)
+//!   it is `σ = −m` on the upper surface and `σ = +m` on the lower surface and the wake, i.e.
+//!   `σ = −VTI·m` with XFOIL's VTI = ±1. Hence `dUe_i/dm_j = −VTI_i·VTI_j·D_ij` (XFOIL UESET).
+//! * `D_ij = ∂q_i/∂σ_j` (units 1/c). Airfoil rows come from back-substituting −dψ/dσ through
+//!   the factorised panel system (the vorticity adjusts to keep the body a streamline and to
+//!   satisfy the Kutta condition); wake rows are the direct source-panel speeds plus the
+//!   effect of those vorticity changes. The first wake row copies the last airfoil row (XFOIL).
+//! * As in XFOIL, wake sources do not enter the Kutta row nor, for a sharp TE, the bisector
+//!   row of the panel system.
+
+use faer::linalg::matmul::matmul;
+use faer::{Accum, Mat, Par};
+
+use super::error::InviscidError;
+use super::panels::{
+    airfoil_influence, airfoil_source_value, wake_source_influence, wake_source_value, FieldPoint,
+    Influence, Probe,
+};
+use super::system::PanelSystem;
+use super::wake::{dot, Wake};
+
+/// The source influence matrix D for one airfoil and wake.
+#[derive(Clone, Debug)]
+pub struct SourceInfluence {
+    /// Number of airfoil nodes N.
+    pub n_airfoil: usize,
+    /// Number of wake nodes NW.
+    pub n_wake: usize,
+    /// D, (N+NW) × (N+NW): `d[(i, j)] = ∂q_i/∂σ_j`.
+    pub d: Mat<f64>,
+}
+
+impl SourceInfluence {
+    /// Builds D for `system` and `wake` (XFOIL QDCALC), O((N+NW)²) kernel evaluations plus
+    /// one back-substitution per wake node and an NW×N by N×(N+NW) product.
+    pub fn new(system: &PanelSystem, wake: &Wake) -> Self {
+        let g = system.geometry();
+        let n = g.len();
+        let nw = wake.len();
+        let nt = n + nw;
+        let mut d = Mat::<f64>::zeros(nt, nt);
+
+        // Airfoil rows, airfoil sources: cached dγ/dσ.
+        d.as_mut()
+            .submatrix_mut(0, 0, n, n)
+            .copy_from(system.airfoil_source_sensitivity());
+
+        // Airfoil rows, wake sources: −dψ/dσ_w on each node row, back-substituted.
+        let mut bw = Mat::<f64>::zeros(n + 1, nw);
+        let mut psi_w = vec![0.0; nw];
+        let mut qn_w = vec![0.0; nw];
+        let last_row = if g.te.sharp { n - 1 } else { n };
+        for i in 0..last_row {
+            let probe = Probe {
+                kind: FieldPoint::Airfoil(i),
+                x: g.x[i],
+                y: g.y[i],
+                nx: g.nx[i],
+                ny: g.ny[i],
+            };
+            wake_source_influence(
+                &wake.x,
+                &wake.y,
+                &wake.apanel,
+                &probe,
+                &mut psi_w,
+                &mut qn_w,
+            );
+            for j in 0..nw {
+                bw[(i, j)] = -psi_w[j];
+            }
+        }
+        system.back_substitute(bw.as_mut());
+        d.as_mut()
+            .submatrix_mut(0, n, n, nw)
+            .copy_from(bw.as_ref().subrows(0, n));
+
+        // Wake rows: direct source speeds, and dq/dγ for the chain through the airfoil.
+        let mut c = Mat::<f64>::zeros(nw, n);
+        let mut inf = Influence::new(n);
+        for iw in 1..nw {
+            let probe = Probe {
+                kind: FieldPoint::Wake(iw),
+                x: wake.x[iw],
+                y: wake.y[iw],
+                nx: wake.nx[iw],
+                ny: wake.ny[iw],
+            };
+            airfoil_influence(g, &probe, true, &mut inf);
+            wake_source_influence(
+                &wake.x,
+                &wake.y,
+                &wake.apanel,
+                &probe,
+                &mut psi_w,
+                &mut qn_w,
+            );
+            for j in 0..n {
+                c[(iw, j)] = inf.qn_gamma[j];
+                d[(n + iw, j)] = inf.qn_source[j];
+            }
+            for j in 0..nw {
+                d[(n + iw, n + j)] = qn_w[j];
+            }
+        }
+        let top = d.as_ref().subrows(0, n).to_owned();
+        matmul(
+            d.as_mut().subrows_mut(n, nw),
+            Accum::Add,
+            c.as_ref(),
+            top.as_ref(),
+            1.0,
+            Par::Seq,
+        );
+        // First wake node carries the TE speed.
+        for j in 0..nt {
+            d[(n, j)] = d[(n - 1, j)];
+        }
+        Self {
+            n_airfoil: n,
+            n_wake: nw,
+            d,
+        }
+    }
+
+    /// Total number of nodes N + NW.
+    pub fn n_total(&self) -> usize {
+        self.n_airfoil + self.n_wake
+    }
+
+    /// D·σ: speed change at every node for sources `sigma` (length N + NW).
+    pub fn apply(&self, sigma: &[f64]) -> Result<Vec<f64>, InviscidError> {
+        let nt = self.n_total();
+        if sigma.len() != nt {
+            return Err(InviscidError::SourceLength {
+                got: sigma.len(),
+                expected: nt,
+            });
+        }
+        Ok((0..nt)
+            .map(|i| (0..nt).map(|j| self.d[(i, j)] * sigma[j]).sum())
+            .collect())
+    }
+}
+
+/// Tangential speeds at all airfoil and wake nodes for `alpha_deg` with nodal sources
+/// `sigma` (length N + NW, conventions as in the module docs), by summing the source panels
+/// directly and re-solving the panel system — the non-linearised counterpart of
+/// `q_inv + D·σ`, used to verify D.
+pub fn speeds_with_sources(
+    system: &PanelSystem,
+    wake: &Wake,
+    alpha_deg: f64,
+    sigma: &[f64],
+) -> Result<Vec<f64>, InviscidError> {
+    let g = system.geometry();
+    let n = g.len();
+    let nw = wake.len();
+    if sigma.len() != n + nw {
+        return Err(InviscidError::SourceLength {
+            got: sigma.len(),
+            expected: n + nw,
+        });
+    }
+    let (sig_a, sig_w) = sigma.split_at(n);
+    let mut extra = vec![0.0; n];
+    let last_row = if g.te.sharp { n - 1 } else { n };
+    for (i, e) in extra.iter_mut().enumerate().take(last_row) {
+        let probe = Probe {
+            kind: FieldPoint::Airfoil(i),
+            x: g.x[i],
+            y: g.y[i],
+            nx: g.nx[i],
+            ny: g.ny[i],
+        };
+        *e = wake_source_value(&wake.x, &wake.y, &wake.apanel, &probe, sig_w).0;
+    }
+    let gamma = system.gamma_with_sources(alpha_deg, sig_a, &extra)?;
+    let (sa, ca) = alpha_deg.to_radians().sin_cos();
+    let mut q = gamma.clone();
+    q.push(gamma[n - 1]);
+    let mut inf = Influence::new(n);
+    for iw in 1..nw {
+        let probe = Probe {
+            kind: FieldPoint::Wake(iw),
+            x: wake.x[iw],
+            y: wake.y[iw],
+            nx: wake.nx[iw],
+            ny: wake.ny[iw],
+        };
+        airfoil_influence(g, &probe, false, &mut inf);
+        let q_vortex = dot(&inf.qn_gamma, &gamma);
+        let q_free = ca * wake.ny[iw] - sa * wake.nx[iw];
+        let q_air = airfoil_source_value(g, &probe, sig_a).1;
+        let q_wake = wake_source_value(&wake.x, &wake.y, &wake.apanel, &probe, sig_w).1;
+        q.push(q_vortex + q_free + q_air + q_wake);
+    }
+    Ok(q)
+}

@@ -1,0 +1,45 @@
+//! Shared helpers of the inviscid tests: reading the reference files in tests/data/inviscid.
+
+#![allow(dead_code)]
+
+use polargen::geometry::Airfoil;
+
+/// Directory of the inviscid test data.
+pub const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/inviscid");
+
+/// Reads XFOIL's paneled nodes `<name>_xfoil_paneled.dat` (plain `x y`, E-notation allowed).
+pub fn xfoil_nodes(name: &str) -> Airfoil {
+    let text = std::fs::read_to_string(format!("{DATA}/{name}_xfoil_paneled.dat")).unwrap();
+    let (mut x, mut y) = (Vec::new(), Vec::new());
+    for line in text.lines() {
+        let v: Vec<f64> = line
+            .split_whitespace()
+            .map(|t| t.parse().unwrap())
+            .collect();
+        if v.len() == 2 {
+            x.push(v[0]);
+            y.push(v[1]);
+        }
+    }
+    Airfoil {
+        name: name.to_string(),
+        x,
+        y,
+    }
+}
+
+/// Reads the wake rows (x, y) of an XFOIL `DUMP` file: the rows with at most 9 columns
+/// (airfoil rows carry 12).
+pub fn xfoil_dump_wake(file: &str) -> Vec<(f64, f64)> {
+    let text = std::fs::read_to_string(format!("{DATA}/{file}")).unwrap();
+    text.lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| {
+            l.split_whitespace()
+                .map(|t| t.parse::<f64>().unwrap())
+                .collect::<Vec<_>>()
+        })
+        .filter(|v| v.len() <= 9)
+        .map(|v| (v[1], v[2]))
+        .collect()
+}
