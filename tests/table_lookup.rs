@@ -42,6 +42,30 @@ fn exact_between_nodes_in_alpha_log_re_and_mach() {
 }
 
 #[test]
+fn non_uniform_alpha_spacing_is_exact() {
+    // Clustered and sparse nodes (spacings from 1e-6° to 7°) exercise the interval index.
+    let alphas = [
+        -12.0, -5.0, -4.9, 0.0, 1e-6, 0.5, 0.75, 3.0, 10.0, 10.001, 17.0,
+    ];
+    let t = PolarTable::new(
+        meta("uneven"),
+        vec![1e6],
+        vec![0.0],
+        vec![analytic_polar(1e6, 0.0, &alphas)],
+    )
+    .unwrap();
+    for k in 0..=2900 {
+        let a = -12.0 + k as f64 * 0.01;
+        let l = t.lookup(a, 1e6, 0.0);
+        assert!((l.cl - cl_model(a, 1e6, 0.0)).abs() < 1e-12, "cl at {a}");
+        assert!(!l.post_stall);
+    }
+    for &a in &alphas {
+        assert_eq!(t.lookup(a, 1e6, 0.0).cl, cl_model(a, 1e6, 0.0), "node {a}");
+    }
+}
+
+#[test]
 fn re_interpolation_is_linear_in_log_re() {
     // Two polars differing only by a constant cl offset: at the geometric mean of the two Re
     // values the offset is exactly halfway (linear in ln Re), not at the arithmetic mean.

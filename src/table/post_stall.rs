@@ -60,6 +60,11 @@ impl PostStallParams {
     /// Flat-plate coefficients (cl, cd, cm about c/4) at `alpha` [rad]; see the module docs.
     pub fn flat_plate(&self, alpha: f64) -> [f64; 3] {
         let (s, c) = alpha.sin_cos();
+        self.flat_plate_sc(s, c)
+    }
+
+    /// Flat-plate coefficients from `(sin α, cos α)`.
+    fn flat_plate_sc(&self, s: f64, c: f64) -> [f64; 3] {
         let cn = self.cd_max * s;
         [
             cn * c,
@@ -117,13 +122,20 @@ impl Extension360 {
     /// (cl, cd, cm) at `alpha_deg`, which must lie outside the computed range, in
     /// [−180°, lower α_s) or (upper α_s, 180°].
     pub fn eval(&self, alpha_deg: f64) -> [f64; 3] {
+        let (s, c) = alpha_deg.to_radians().sin_cos();
+        self.eval_sc(alpha_deg, s, c)
+    }
+
+    /// As [`eval`](Self::eval), with `(sin α, cos α)` already known (shared by the four
+    /// polars of one table lookup).
+    pub fn eval_sc(&self, alpha_deg: f64, sin_a: f64, cos_a: f64) -> [f64; 3] {
         let a = alpha_deg.to_radians();
         let side = if a > self.upper.a_s {
             &self.upper
         } else {
             &self.lower
         };
-        side.eval(&self.params, a)
+        side.eval(&self.params, a, sin_a, cos_a)
     }
 }
 
@@ -145,26 +157,23 @@ impl Side {
         Self { a_s, v_s, end, vc }
     }
 
-    /// Coefficients at `a` [rad] beyond this side's junction.
-    fn eval(&self, p: &PostStallParams, a: f64) -> [f64; 3] {
+    /// Coefficients at `a` [rad] (with sine `s` and cosine `c`) beyond this side's junction.
+    fn eval(&self, p: &PostStallParams, a: f64, s: f64, c: f64) -> [f64; 3] {
         let t = (a - self.a_s) / (self.end - self.a_s);
+        let fp = p.flat_plate_sc(s, c);
         if t >= 1.0 {
-            return p.flat_plate(a);
+            return fp;
         }
         let t = t.max(0.0);
         let w = (FRAC_PI_2 * t).cos().powi(2);
-        let fp = p.flat_plate(a);
         let blend = |k: usize| w * self.v_s[k] + (1.0 - w) * fp[k];
         let cm = blend(2);
         match self.vc {
-            Some((a2, b2)) => {
-                let (s, c) = a.sin_cos();
-                [
-                    p.cd_max * s * c + a2 * c * c / s,
-                    p.cd_max * s * s + b2 * c,
-                    cm,
-                ]
-            }
+            Some((a2, b2)) => [
+                p.cd_max * s * c + a2 * c * c / s,
+                p.cd_max * s * s + b2 * c,
+                cm,
+            ],
             None => [blend(0), blend(1), cm],
         }
     }
