@@ -141,3 +141,22 @@ fn points_are_validated() {
         "empty table: no polar has at least 2 converged points"
     );
 }
+
+#[test]
+fn tables_can_be_shared_across_threads() {
+    fn shareable<T: Send + Sync>(_: &T) -> bool {
+        true
+    }
+    let t = analytic_table();
+    assert!(shareable(&t));
+    let cl: Vec<f64> = std::thread::scope(|s| {
+        let h: Vec<_> = (0..2)
+            .map(|k| {
+                let t = &t;
+                s.spawn(move || polargen::table::SectionAero::lookup(t, k as f64, 1e6, 0.2).cl)
+            })
+            .collect();
+        h.into_iter().map(|h| h.join().unwrap()).collect()
+    });
+    assert!((cl[1] - cl[0] - 0.11).abs() < 1e-12);
+}

@@ -292,6 +292,7 @@ fn c81_structure() {
     let path = dir.join("deep/er/t.c81");
     assert_eq!(write_table(&t, &path, None).unwrap(), vec![path.clone()]);
     let text = std::fs::read_to_string(&path).unwrap();
+    assert!(!text.contains("-0.000"));
     let lines: Vec<&str> = text.lines().collect();
     let head = lines[0];
     assert_eq!(head.len(), 42);

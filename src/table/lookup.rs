@@ -246,7 +246,8 @@ pub fn wrap_deg(a: f64) -> f64 {
 impl SectionAero for PolarTable {
     /// Table lookup: PCHIP in α over converged points, 360° extension outside the computed
     /// range, bilinear in (ln Re, M) between the four neighbouring polars, clamped (and
-    /// flagged) outside the Re and Mach axes. Allocation-free; O(log n) per polar.
+    /// flagged) outside the Re and Mach axes. Allocation-free; O(1) per polar (interval
+    /// index, no binary search in α).
     fn lookup(&self, alpha_deg: f64, re: f64, mach: f64) -> Lookup {
         let a = wrap_deg(alpha_deg);
         let ln_re = if re > 0.0 { re.ln() } else { f64::NEG_INFINITY };
