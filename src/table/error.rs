@@ -112,6 +112,14 @@ pub enum TableError {
         /// What is wrong.
         message: String,
     },
+    /// An XFOIL polar file could not be parsed.
+    #[error("XFOIL polar line {line}: {message}")]
+    Polar {
+        /// 1-based line number.
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
     /// The output format cannot be inferred from a file name.
     #[error("cannot infer table format from '{0}' (use .csv, .json, .pol or .c81)")]
     UnknownExtension(String),
@@ -119,7 +127,7 @@ pub enum TableError {
     #[error("unknown table format '{0}' (expected csv, json, xfoil or c81)")]
     UnknownFormat(String),
     /// The format has no reader.
-    #[error("{0} files cannot be read back as tables (only CSV and JSON)")]
+    #[error("{0} files cannot be read back as tables (only CSV, JSON and XFOIL polar)")]
     NotReadable(&'static str),
     /// A C81 table would exceed the format's 2-digit counts.
     #[error("C81 table needs {count} {what} but the format allows at most 99")]
