@@ -61,7 +61,7 @@ pub enum TableError {
         re: f64,
         /// Mach number.
         mach: f64,
-        /// Repeated α [deg].
+        /// Repeated α (deg).
         alpha: f64,
     },
     /// A converged point (or any α) holds NaN or infinity, or α is outside ±180°.
@@ -75,7 +75,7 @@ pub enum TableError {
         re: f64,
         /// Mach number.
         mach: f64,
-        /// α [deg].
+        /// α (deg).
         alpha: f64,
     },
     /// α outside [−180°, 180°].
@@ -85,7 +85,7 @@ pub enum TableError {
         re: f64,
         /// Mach number.
         mach: f64,
-        /// α [deg].
+        /// α (deg).
         alpha: f64,
     },
     /// No polar of the table has the two converged points a lookup needs.

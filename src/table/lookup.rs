@@ -25,11 +25,11 @@ use crate::polar::PolarPoint;
 /// intervals and the 360° extension.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct AlphaCurve {
-    /// α of the converged points [deg], strictly increasing.
+    /// α of the converged points (deg), strictly increasing.
     alpha: Vec<f64>,
     /// (cl, cd, cm) at each converged point.
     value: Vec<[f64; 3]>,
-    /// d(cl, cd, cm)/dα [1/deg] at each converged point.
+    /// d(cl, cd, cm)/dα (1/deg) at each converged point.
     slope: Vec<[f64; 3]>,
     /// Interval k (between converged points k and k+1) spans unconverged points.
     bridged: Vec<bool>,
@@ -102,12 +102,12 @@ impl AlphaCurve {
         })
     }
 
-    /// First and last converged α [deg].
+    /// First and last converged α (deg).
     pub(crate) fn alpha_range(&self) -> (f64, f64) {
         (self.alpha[0], self.alpha[self.alpha.len() - 1])
     }
 
-    /// (cl, cd, cm) at `a` [deg, within ±180°]: cubic Hermite inside the converged range
+    /// (cl, cd, cm) at `a` (deg, within ±180°): cubic Hermite inside the converged range
     /// (Fritsch & Carlson 1980, eq. 2 basis), the 360° extension outside.
     /// `trig` caches (sin α, cos α) across the polars of one lookup.
     pub(crate) fn eval(&self, a: f64, trig: &mut Option<(f64, f64)>) -> CurveValue {
@@ -233,7 +233,7 @@ pub(crate) fn bracket(axis: &[f64], x: f64) -> (usize, f64, bool) {
     (i, (x - axis[i]) / (axis[i + 1] - axis[i]), false)
 }
 
-/// Wrap an angle [deg] into [−180°, 180°]; values already inside are returned unchanged.
+/// Wrap an angle (deg) into [−180°, 180°]; values already inside are returned unchanged.
 #[inline]
 pub fn wrap_deg(a: f64) -> f64 {
     if (-180.0..=180.0).contains(&a) {

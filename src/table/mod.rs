@@ -92,7 +92,7 @@ impl Lookup {
     }
 }
 
-/// Anything that gives section coefficients at (α [deg], Re, M): the interface the rotor
+/// Anything that gives section coefficients at (α (deg), Re, M): the interface the rotor
 /// model consumes. [`PolarTable`] implements it; tests may use analytic sections.
 pub trait SectionAero {
     /// Coefficients at angle of attack `alpha_deg` (any value, wrapped to ±180°), Reynolds

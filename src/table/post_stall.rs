@@ -40,7 +40,7 @@ pub struct PostStallParams {
     /// hundredths, the order measured on a reversed NACA 0012 (Critzos, Heyson & Boswinkle
     /// 1955, NACA TN 3361).
     pub cd_reverse: f64,
-    /// Smallest |α_s| [deg] at the junction for which Viterna–Corrigan is used; below it (or
+    /// Smallest |α_s| (deg) at the junction for which Viterna–Corrigan is used; below it (or
     /// with α_s on the wrong side of 0°) the cos² blend to the flat plate is used instead,
     /// because the A2 term ∝ 1/sin α would blow up.
     pub vc_min_junction_deg: f64,
@@ -57,7 +57,7 @@ impl Default for PostStallParams {
 }
 
 impl PostStallParams {
-    /// Flat-plate coefficients (cl, cd, cm about c/4) at `alpha` [rad]; see the module docs.
+    /// Flat-plate coefficients (cl, cd, cm about c/4) at `alpha` (rad); see the module docs.
     pub fn flat_plate(&self, alpha: f64) -> [f64; 3] {
         let (s, c) = alpha.sin_cos();
         self.flat_plate_sc(s, c)
@@ -77,7 +77,7 @@ impl PostStallParams {
 /// The coefficients at the junction between computed data and the extension.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Junction {
-    /// α_s [deg]: the first (lower side) or last (upper side) converged α.
+    /// α_s (deg): the first (lower side) or last (upper side) converged α.
     pub alpha_deg: f64,
     /// Lift coefficient at α_s.
     pub cl: f64,
@@ -90,11 +90,11 @@ pub struct Junction {
 /// The extension on one side of the computed range.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Side {
-    /// Junction angle [rad].
+    /// Junction angle (rad).
     a_s: f64,
     /// Junction values (cl, cd, cm).
     v_s: [f64; 3],
-    /// End of the blended segment [rad]: ±π/2, or ±π when the data pass ±90°.
+    /// End of the blended segment (rad): ±π/2, or ±π when the data pass ±90°.
     end: f64,
     /// Viterna–Corrigan coefficients (A2, B2) when it applies.
     vc: Option<(f64, f64)>,
@@ -157,7 +157,7 @@ impl Side {
         Self { a_s, v_s, end, vc }
     }
 
-    /// Coefficients at `a` [rad] (with sine `s` and cosine `c`) beyond this side's junction.
+    /// Coefficients at `a` (rad) (with sine `s` and cosine `c`) beyond this side's junction.
     fn eval(&self, p: &PostStallParams, a: f64, s: f64, c: f64) -> [f64; 3] {
         let t = (a - self.a_s) / (self.end - self.a_s);
         let fp = p.flat_plate_sc(s, c);

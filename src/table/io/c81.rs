@@ -44,7 +44,7 @@ pub const MAX_COUNT: usize = 99;
 pub struct C81Options {
     /// Write one table at this Re instead of one per Re of the grid.
     pub re: Option<f64>,
-    /// α spacing [deg] of the rows outside the computed range.
+    /// α spacing (deg) of the rows outside the computed range.
     pub outer_step_deg: f64,
 }
 
