@@ -77,6 +77,10 @@ fn ragged_and_duplicate_grids_are_rejected() {
     ];
     let e = PolarTable::from_polars(meta("x"), list.clone()).unwrap_err();
     assert_eq!(e.to_string(), "ragged grid: no polar at Re 2000000, M 0.2");
+    let mut nan = list.clone();
+    nan[2].1 = f64::NAN;
+    let e = PolarTable::from_polars(meta("x"), nan).unwrap_err();
+    assert_eq!(e.to_string(), "Mach must be in [0, 1), got NaN");
     let mut dup = list;
     dup.push(dup[0].clone());
     let e = PolarTable::from_polars(meta("x"), dup).unwrap_err();

@@ -333,3 +333,16 @@ fn custom_post_stall_parameters_are_used() {
     assert!((t.lookup(90.0, 1e6, 0.0).cd - 1.8).abs() < 1e-12);
     assert!((t.lookup(-180.0, 1e6, 0.0).cd - 0.05).abs() < 1e-12);
 }
+
+#[test]
+fn non_finite_queries_do_not_panic() {
+    let t = analytic_table();
+    let l = t.lookup(f64::NAN, 1e6, 0.2);
+    assert!(l.cl.is_nan() && l.post_stall);
+    assert!(t.lookup(f64::INFINITY, 1e6, 0.2).cl.is_nan());
+    let l = t.lookup(3.0, f64::INFINITY, f64::NEG_INFINITY);
+    assert!(l.re_clamped && l.mach_clamped);
+    assert!((l.cl - cl_model(3.0, 2e6, 0.0)).abs() < 1e-12);
+    let l = t.lookup(1e300, 0.0, 0.2);
+    assert!(l.re_clamped && l.cl.is_finite());
+}

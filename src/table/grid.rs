@@ -119,10 +119,11 @@ impl PolarTable {
     ) -> Result<Self, TableError> {
         let mut re: Vec<f64> = polars.iter().map(|p| p.0).collect();
         let mut mach: Vec<f64> = polars.iter().map(|p| p.1).collect();
-        for v in re.iter().chain(mach.iter()) {
-            if v.is_nan() {
-                return Err(TableError::BadRe(*v));
-            }
+        if let Some(&r) = re.iter().find(|r| r.is_nan()) {
+            return Err(TableError::BadRe(r));
+        }
+        if let Some(&m) = mach.iter().find(|m| m.is_nan()) {
+            return Err(TableError::BadMach(m));
         }
         re.sort_by(f64::total_cmp);
         re.dedup();
