@@ -522,3 +522,36 @@ fn xfoil_polar_reader_handles_extra_columns_and_repeats() {
         "XFOIL polar line 14: '0.47x0' is not a number"
     );
 }
+
+#[test]
+fn output_does_not_depend_on_polar_order() {
+    // Polars collected from parallel workers arrive in any order: the files are identical.
+    let alphas = alpha_range(-3.0, 6.0, 1.0);
+    let mut list = Vec::new();
+    for &re in &[5e5, 1e6, 2e6] {
+        for &m in &[0.0, 0.3] {
+            list.push((re, m, analytic_polar(re, m, &alphas)));
+        }
+    }
+    let a = PolarTable::from_polars(meta("order"), list.clone()).unwrap();
+    list.reverse();
+    list.swap(1, 4);
+    for (_, _, pts) in list.iter_mut() {
+        pts.reverse();
+    }
+    let b = PolarTable::from_polars(meta("order"), list).unwrap();
+    let dir = scratch("order");
+    for ext in ["csv", "json", "c81"] {
+        let (pa, pb) = (dir.join(format!("a.{ext}")), dir.join(format!("b.{ext}")));
+        let fa = write_table(&a, &pa, None).unwrap();
+        let fb = write_table(&b, &pb, None).unwrap();
+        for (x, y) in fa.iter().zip(&fb) {
+            assert_eq!(
+                std::fs::read(x).unwrap(),
+                std::fs::read(y).unwrap(),
+                "{ext}"
+            );
+        }
+    }
+    std::fs::remove_dir_all(dir).unwrap();
+}

@@ -332,6 +332,22 @@ fn custom_post_stall_parameters_are_used() {
     let t = analytic_table().with_post_stall(p).unwrap();
     assert!((t.lookup(90.0, 1e6, 0.0).cd - 1.8).abs() < 1e-12);
     assert!((t.lookup(-180.0, 1e6, 0.0).cd - 0.05).abs() < 1e-12);
+    let bad = PostStallParams {
+        cd_max: -1.0,
+        ..PostStallParams::default()
+    };
+    assert_eq!(
+        t.clone().with_post_stall(bad).unwrap_err().to_string(),
+        "post-stall parameter cd_max = -1 is invalid (must be positive)"
+    );
+    let bad = PostStallParams {
+        vc_min_junction_deg: f64::NAN,
+        ..PostStallParams::default()
+    };
+    assert_eq!(
+        t.with_post_stall(bad).unwrap_err().to_string(),
+        "post-stall parameter vc_min_junction_deg = NaN is invalid (must be in [0, 90))"
+    );
 }
 
 #[test]

@@ -88,6 +88,16 @@ pub enum TableError {
         /// α (deg).
         alpha: f64,
     },
+    /// A 360°-extension parameter is out of its range.
+    #[error("post-stall parameter {name} = {value} is invalid (must be {rule})")]
+    BadPostStall {
+        /// Field name.
+        name: &'static str,
+        /// The value.
+        value: f64,
+        /// The allowed range.
+        rule: &'static str,
+    },
     /// No polar of the table has the two converged points a lookup needs.
     #[error("empty table: no polar has at least 2 converged points")]
     Empty,

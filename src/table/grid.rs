@@ -77,6 +77,7 @@ impl PolarTable {
         mut polars: Vec<Vec<PolarPoint>>,
         params: PostStallParams,
     ) -> Result<Self, TableError> {
+        params.validate()?;
         check_axis("Re", &re)?;
         check_axis("Mach", &mach)?;
         if let Some(&r) = re.iter().find(|r| !(r.is_finite() && **r > 0.0)) {

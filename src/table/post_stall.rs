@@ -26,6 +26,7 @@
 //! past ±90°. All pieces meet continuously (cl, cd, cm) at α_s and ±90°, and both sides end at
 //! the same flat-plate values at ±180°, so the extension is periodic.
 
+use super::TableError;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -57,6 +58,32 @@ impl Default for PostStallParams {
 }
 
 impl PostStallParams {
+    /// Check the ranges: `cd_max` > 0, `cd_reverse` ≥ 0, 0 ≤ `vc_min_junction_deg` < 90, all
+    /// finite.
+    pub fn validate(&self) -> Result<(), TableError> {
+        let checks = [
+            ("cd_max", self.cd_max, self.cd_max > 0.0, "positive"),
+            (
+                "cd_reverse",
+                self.cd_reverse,
+                self.cd_reverse >= 0.0,
+                "non-negative",
+            ),
+            (
+                "vc_min_junction_deg",
+                self.vc_min_junction_deg,
+                (0.0..90.0).contains(&self.vc_min_junction_deg),
+                "in [0, 90)",
+            ),
+        ];
+        for (name, value, ok, rule) in checks {
+            if !(ok && value.is_finite()) {
+                return Err(TableError::BadPostStall { name, value, rule });
+            }
+        }
+        Ok(())
+    }
+
     /// Flat-plate coefficients (cl, cd, cm about c/4) at `alpha` (rad); see the module docs.
     pub fn flat_plate(&self, alpha: f64) -> [f64; 3] {
         let (s, c) = alpha.sin_cos();
