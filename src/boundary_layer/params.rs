@@ -38,7 +38,8 @@ pub struct BlParams {
     pub ctrcex: f64,
     /// Multiplier on the dUe/dx term of the shear-lag equation (XFOIL DUXCON = 1.0).
     pub duxcon: f64,
-    /// Skin-friction multiplier in the shear-lag equilibrium term (XFOIL CFFAC = 1.0).
+    /// Multiplier on Cf/2 in the equilibrium dUe/dξ term Q of the shear-lag equation
+    /// (1 reproduces XFOIL 6.99; kept as a tuning knob).
     pub cffac: f64,
     /// Ratio of specific heats (XFOIL GAMMA = 1.4).
     pub gamma: f64,

@@ -182,6 +182,9 @@ impl BlModel {
             }
             let res_a2 = res.g[0];
             let da2 = -res.v / res_a2;
+            if !da2.is_finite() {
+                break;
+            }
             let dxt = xt.g[0] * da2;
             let mut rlx: f64 = 1.0;
             if rlx * (dxt / dx).abs() > 0.05 {

@@ -200,6 +200,16 @@ impl PanelSystem {
             .collect()
     }
 
+    /// dγ/dα (per radian) at `alpha_deg`: −sin α·γ⁰ + cos α·γ⁹⁰ (XFOIL QINV_A).
+    pub fn gamma_alpha_derivative(&self, alpha_deg: f64) -> Vec<f64> {
+        let (sa, ca) = alpha_deg.to_radians().sin_cos();
+        self.gamma_unit[0]
+            .iter()
+            .zip(&self.gamma_unit[1])
+            .map(|(g0, g90)| -sa * g0 + ca * g90)
+            .collect()
+    }
+
     /// Solves the inviscid flow at `alpha_deg` and Mach `mach` (0 ≤ M < 1): γ, Karman–Tsien
     /// Cp, Cl, Cm and Cdp exactly as XFOIL's SPECAL → CPCALC → CLCALC.
     pub fn solve(&self, alpha_deg: f64, mach: f64) -> Result<InviscidSolution, InviscidError> {

@@ -187,6 +187,16 @@ impl Wake {
         self.x.is_empty()
     }
 
+    /// d(q_inv)/dα (per radian) on the wake at `alpha_deg` (XFOIL QINV_A).
+    pub fn qinv_alpha_derivative(&self, alpha_deg: f64) -> Vec<f64> {
+        let (sa, ca) = alpha_deg.to_radians().sin_cos();
+        self.qinv_unit[0]
+            .iter()
+            .zip(&self.qinv_unit[1])
+            .map(|(a, b)| -sa * a + ca * b)
+            .collect()
+    }
+
     /// Inviscid wake speeds at `alpha_deg`, `cos α·q⁰ + sin α·q⁹⁰` (signed as described on
     /// [`Wake`]; the geometry stays the one traced at `self.alpha_deg`).
     pub fn qinv(&self, alpha_deg: f64) -> Vec<f64> {

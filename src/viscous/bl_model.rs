@@ -103,6 +103,8 @@ pub struct StationProperties {
     pub ue_compressible: f64,
     /// Edge density / ρ∞.
     pub rho_e: f64,
+    /// Edge Mach number squared.
+    pub mach_edge_sq: f64,
     /// Kinematic shape factor sensitivities ∂Hk/∂(θ, δ*, u).
     pub hk_d: [f64; 3],
 }
@@ -145,6 +147,10 @@ pub trait BoundaryLayerModel {
         regime: Regime,
         st: &StationVars,
     ) -> Result<StationProperties, ViscousError>;
+
+    /// Unclamped kinematic shape factor Hk = (H − 0.29 Me²)/(1 + 0.113 Me²) (Whitfield; XFOIL
+    /// HKIN) with H = (δ* − dw)/θ, and its derivatives with respect to (θ, δ*, u).
+    fn kinematic_shape_factor(&self, st: &StationVars) -> (f64, [f64; 3]);
 
     /// Squire–Young drag coefficient from the last wake station (XFOIL CDCALC).
     fn squire_young(&self, last: &StationVars) -> Result<f64, ViscousError>;

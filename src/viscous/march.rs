@@ -297,3 +297,238 @@ pub fn march(
     }
     state
 }
+
+/// Weight of the prescribed Ue–Hk combination of the mixed-mode march (XFOIL MRCHDU SENSWT).
+pub const MIXED_MODE_WEIGHT: f64 = 1000.0;
+
+/// Convergence threshold of the mixed-mode local iterations (XFOIL MRCHDU DEPS).
+pub const MIXED_MODE_TOLERANCE: f64 = 5.0e-6;
+
+/// Re-marches the boundary layer in mixed mode from the current state (XFOIL xbl.f MRCHDU):
+/// at every station the three interval equations are solved together with a prescribed
+/// combination of Ue and Hk that lies quasi-normal to the local Ue–Hk characteristic, so that
+/// separation does not make the march singular. Transition is re-located on the way, which
+/// keeps the state consistent with the equations before each global Newton iteration.
+/// Stations whose local iteration fails keep an extrapolated state (XFOIL's fallback).
+pub fn remarch_mixed(
+    model: &dyn BoundaryLayerModel,
+    layout: &StationLayout,
+    state: &mut BlState,
+    xi_forced: [Option<f64>; 2],
+    ante: f64,
+    params: &MarchParams,
+) {
+    let old_turbulent = state.turbulent.clone();
+    let mut order: Vec<usize> = layout.range(Surface::Upper).collect();
+    order.extend(layout.range(Surface::Lower));
+    order.extend(layout.range(Surface::Wake));
+    let mut surface_turbulent = [false, false];
+    let mut sens = 0.0;
+    for k in order {
+        let st = layout.stations[k];
+        let side = usize::from(st.surface != Surface::Upper);
+        let wake = st.surface == Surface::Wake;
+        let was_turbulent = old_turbulent[k];
+        let mut u = state.ue[k].max(1e-6);
+        let mut th = state.theta[k].max(1e-12);
+        let hk_floor = if wake { 1.00005 } else { 1.02 };
+        let mut ds = (state.dstar(k) - st.wake_gap).max(hk_floor * th) + st.wake_gap;
+        let (mut n_amp, mut cti) = if was_turbulent || wake {
+            (0.0, if state.s[k] > 0.0 { state.s[k] } else { 0.03 })
+        } else {
+            (state.s[k], 0.03)
+        };
+        let mut turbulent = wake || surface_turbulent[side];
+        if turbulent && !was_turbulent && !wake {
+            let p = st.upstream.unwrap_or(k - 1);
+            cti = state.s[p].clamp(1e-7, 0.25);
+        }
+        let mut transitioned = false;
+        let mut ueref = u;
+        let mut hkref = 0.0;
+        let mut converged = false;
+        let mut last_dmax = f64::INFINITY;
+        for itbl in 0..params.max_iterations {
+            let s_now = if turbulent { cti } else { n_amp };
+            let v2 = StationVars {
+                x: st.xi,
+                u,
+                theta: th,
+                dstar: ds,
+                s: s_now,
+                dw: st.wake_gap,
+            };
+            let eq = match st.kind {
+                StationKind::Similarity => model.similarity(&v2).map(|e| IntervalEquations {
+                    res: e.res,
+                    d1: [[0.0; 5]; 3],
+                    d2: e.combined_jacobian(),
+                }),
+                StationKind::WakeStart => {
+                    let (ku, kl) = (layout.upper_te(), layout.lower_te());
+                    let (vu, vl) = (state.vars(layout, ku), state.vars(layout, kl));
+                    model
+                        .junction(&vu, &vl, &v2, ante)
+                        .map(|j| IntervalEquations {
+                            res: j.res,
+                            d1: [[0.0; 5]; 3],
+                            d2: j.d_wake,
+                        })
+                }
+                StationKind::Interval => {
+                    let p = st.upstream.unwrap_or(k - 1);
+                    let v1 = state.vars(layout, p);
+                    if wake {
+                        model.interval(Regime::Wake, &v1, &v2)
+                    } else if surface_turbulent[side] {
+                        model.interval(Regime::Turbulent, &v1, &v2)
+                    } else {
+                        // Laminar surface so far: check this interval for transition.
+                        let v2t = StationVars { s: cti, ..v2 };
+                        match model.transition(&v1, &v2t, xi_forced[side]) {
+                            Ok(Some(t)) => {
+                                if !transitioned {
+                                    transitioned = true;
+                                    turbulent = true;
+                                    if !was_turbulent {
+                                        cti = 0.03;
+                                    }
+                                }
+                                Ok(t.equations)
+                            }
+                            Ok(None) => {
+                                if transitioned {
+                                    transitioned = false;
+                                    turbulent = false;
+                                }
+                                model.interval(
+                                    Regime::Laminar,
+                                    &v1,
+                                    &StationVars { s: n_amp, ..v2 },
+                                )
+                            }
+                            Err(e) => Err(e),
+                        }
+                    }
+                }
+            };
+            let Ok(eq) = eq else { break };
+            let v2 = StationVars {
+                s: if turbulent { cti } else { n_amp },
+                ..v2
+            };
+            let (hk, hk_d) = model.kinematic_shape_factor(&v2);
+            if itbl == 0 {
+                ueref = u;
+                hkref = hk;
+                // A station that was turbulent and is laminar now: extrapolate the reference
+                // Hk from upstream (XFOIL MRCHDU).
+                if !turbulent && was_turbulent && st.kind == StationKind::Interval {
+                    let p = st.upstream.unwrap_or(k - 1);
+                    hkref = model.kinematic_shape_factor(&state.vars(layout, p)).0;
+                }
+            }
+            let mut a = [[0.0; 4]; 4];
+            let mut b = [0.0; 4];
+            for r in 0..3 {
+                a[r] = [eq.d2[r][0], eq.d2[r][1], eq.d2[r][2], eq.d2[r][3]];
+                b[r] = -eq.res[r];
+            }
+            if matches!(st.kind, StationKind::Similarity | StationKind::WakeStart) {
+                a[3] = [0.0, 0.0, 0.0, 1.0];
+                b[3] = ueref - u;
+            } else {
+                // Ue–Hk characteristic slope: response of Ue to a unit Hk change.
+                let mut at = a;
+                let mut bt = b;
+                at[3] = [0.0, hk_d[0], hk_d[1], hk_d[2]];
+                bt[3] = 1.0;
+                if let Some(z) = solve4(at, bt) {
+                    let sennew = MIXED_MODE_WEIGHT * z[3] * hkref / ueref;
+                    if itbl < 5 {
+                        sens = sennew;
+                    } else if itbl < 15 {
+                        sens = 0.5 * (sens + sennew);
+                    }
+                }
+                a[3] = [
+                    0.0,
+                    hk_d[0] * hkref,
+                    hk_d[1] * hkref,
+                    hk_d[2] * hkref + sens / ueref,
+                ];
+                b[3] = -(hkref * hkref * (hk / hkref - 1.0) + sens * (u / ueref - 1.0));
+            }
+            let Some(dx) = solve4(a, b) else { break };
+            let mut dmax = (dx[1] / th)
+                .abs()
+                .max((dx[2] / ds).abs())
+                .max((dx[3] / u).abs());
+            if turbulent {
+                dmax = dmax.max((dx[0] / (10.0 * cti)).abs());
+            }
+            last_dmax = dmax;
+            let rlx = if dmax > params.max_relative_step {
+                params.max_relative_step / dmax
+            } else {
+                1.0
+            };
+            if turbulent {
+                cti = (cti + rlx * dx[0]).clamp(1e-7, 0.30);
+            } else {
+                n_amp += rlx * dx[0];
+            }
+            th += rlx * dx[1];
+            ds += rlx * dx[2];
+            u += rlx * dx[3];
+            if !(th > 0.0 && u > 0.0 && ds.is_finite()) {
+                break;
+            }
+            // Shape-factor floor (XFOIL DSLIM).
+            let (hk_new, hk_d_new) = model.kinematic_shape_factor(&StationVars {
+                x: st.xi,
+                u,
+                theta: th,
+                dstar: ds,
+                s: 0.0,
+                dw: st.wake_gap,
+            });
+            if hk_new < hk_floor && hk_d_new[1] > 0.0 {
+                ds += (hk_floor - hk_new) / hk_d_new[1];
+            }
+            if dmax <= MIXED_MODE_TOLERANCE {
+                converged = true;
+                break;
+            }
+        }
+        let sane = th > 0.0 && u > 0.0 && ds.is_finite() && th.is_finite() && u.is_finite();
+        if !converged && (!sane || last_dmax > 0.1) && st.kind == StationKind::Interval {
+            // Garbage: extrapolate from upstream (XFOIL MRCHDU fallback).
+            let p = st.upstream.unwrap_or(k.saturating_sub(1));
+            let xp = layout.stations[p].xi.max(1e-12);
+            u = state.ue[p];
+            if wake {
+                th = state.theta[p];
+                let ratlen = (st.xi - xp) / (10.0 * state.dstar(p));
+                ds = (state.dstar(p) + th * ratlen) / (1.0 + ratlen);
+            } else {
+                let f = (st.xi / xp).sqrt();
+                th = state.theta[p] * f;
+                ds = state.dstar(p) * f;
+            }
+            if transitioned {
+                cti = 0.05;
+            } else if turbulent {
+                cti = state.s[p].clamp(1e-7, 0.25);
+            }
+        }
+        if turbulent && !wake {
+            surface_turbulent[side] = true;
+        }
+        state.s[k] = if turbulent { cti } else { n_amp.max(0.0) };
+        state.theta[k] = th;
+        state.ue[k] = u;
+        state.mass[k] = ds * u;
+        state.turbulent[k] = turbulent || wake;
+    }
+}

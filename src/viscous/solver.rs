@@ -2,12 +2,14 @@
 //! Drela 1989): initial march, global Newton iterations with relaxation and stagnation-point
 //! moves, retry from a fresh march on failure, and the integrated results.
 
+use crate::geometry::Airfoil;
+use crate::inviscid::{PanelSystem, SourceInfluence, Wake};
 use crate::polar::PolarPoint;
 
 use super::bl_model::{BoundaryLayerModel, Regime};
 use super::error::ViscousError;
 use super::forces::{friction_drag, lift_and_moment, transition_x};
-use super::march::{march, MarchParams};
+use super::march::{march, remarch_mixed, MarchParams};
 use super::newton::{assemble, Coupling};
 use super::state::BlState;
 use super::stations::{PanelGeometry, StationLayout, Surface};
@@ -113,12 +115,26 @@ struct WarmState {
     state: BlState,
 }
 
+/// Where the inviscid data come from.
+#[derive(Debug)]
+enum PanelSource {
+    /// Fixed data, independent of α (prepared by the caller).
+    Fixed,
+    /// A panel system; wake and source influence are rebuilt for every new α (XFOIL re-traces
+    /// the wake when α changes: LWAKE, QDCALC).
+    Airfoil(Box<PanelSystem>),
+}
+
 /// Viscous–inviscid solver for one airfoil and one (Re, M, Ncrit, trip) condition.
 /// Holds its own state; many solvers can run in parallel.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct ViscousSolver {
     params: ViscousParams,
+    source: PanelSource,
+    /// Inviscid data of the current α (or the fixed data).
     panels: PanelModel,
+    /// α of `panels` for an airfoil source.
+    panels_alpha: Option<f64>,
     bl: XfoilBoundaryLayer,
     ante: f64,
     warm: Option<WarmState>,
@@ -151,6 +167,48 @@ impl ViscousSolver {
         {
             return Err(ViscousError::BadAirfoil { min: 5, got: n });
         }
+        Self::check_params(&params)?;
+        let bl = XfoilBoundaryLayer::new(params.reynolds, params.mach, params.ncrit)?;
+        let ante = panels.geometry.trailing_edge_gap().0.abs();
+        Ok(Self {
+            params,
+            source: PanelSource::Fixed,
+            panels,
+            panels_alpha: None,
+            bl,
+            ante,
+            warm: None,
+        })
+    }
+
+    /// Solver for an already paneled airfoil (XFOIL order, e.g. from the geometry module's
+    /// repaneling): builds the panel system and its unit solutions once.
+    pub fn new(airfoil: &Airfoil, params: ViscousParams) -> Result<Self, ViscousError> {
+        if airfoil.x.len() != airfoil.y.len() || airfoil.x.len() < 5 {
+            return Err(ViscousError::BadAirfoil {
+                min: 5,
+                got: airfoil.x.len().min(airfoil.y.len()),
+            });
+        }
+        Self::check_params(&params)?;
+        let system =
+            PanelSystem::new(airfoil).map_err(|e| ViscousError::Inviscid(e.to_string()))?;
+        let panels = panel_model(&system, 0.0)?;
+        let bl = XfoilBoundaryLayer::new(params.reynolds, params.mach, params.ncrit)?;
+        let ante = system.geometry().te.gap_normal.abs();
+        Ok(Self {
+            params,
+            source: PanelSource::Airfoil(Box::new(system)),
+            panels,
+            panels_alpha: Some(0.0),
+            bl,
+            ante,
+            warm: None,
+        })
+    }
+
+    /// Rejects non-physical parameters.
+    fn check_params(params: &ViscousParams) -> Result<(), ViscousError> {
         for (name, value, ok) in [
             ("reynolds", params.reynolds, params.reynolds > 0.0),
             ("mach", params.mach, (0.0..1.0).contains(&params.mach)),
@@ -163,15 +221,7 @@ impl ViscousSolver {
                 return Err(ViscousError::BadParameter { name, value });
             }
         }
-        let bl = XfoilBoundaryLayer::new(params.reynolds, params.mach, params.ncrit)?;
-        let ante = panels.geometry.trailing_edge_gap().0.abs();
-        Ok(Self {
-            params,
-            panels,
-            bl,
-            ante,
-            warm: None,
-        })
+        Ok(())
     }
 
     /// The parameters of this solver.
@@ -244,6 +294,20 @@ impl ViscousSolver {
     /// converged state if there is one. A failed attempt is retried once from a fresh march; a
     /// point that still fails is returned with `converged = false`.
     pub fn solve(&mut self, alpha_deg: f64) -> ViscousSolution {
+        if !alpha_deg.is_finite() {
+            return failed_solution(alpha_deg, 0);
+        }
+        if let PanelSource::Airfoil(system) = &self.source {
+            if self.panels_alpha != Some(alpha_deg) {
+                match panel_model(system, alpha_deg) {
+                    Ok(p) => {
+                        self.panels = p;
+                        self.panels_alpha = Some(alpha_deg);
+                    }
+                    Err(_) => return failed_solution(alpha_deg, 0),
+                }
+            }
+        }
         let warm = self.warm.take();
         let had_warm = warm.is_some();
         let mut result = self.attempt(alpha_deg, warm);
@@ -309,6 +373,14 @@ impl ViscousSolver {
                 xi_forced,
                 ante: self.ante,
             };
+            remarch_mixed(
+                &self.bl,
+                &layout,
+                &mut state,
+                xi_forced,
+                self.ante,
+                &self.params.march,
+            );
             let asm = assemble(&self.bl, &coupling, &mut state)?;
             transition = [
                 asm.transition[0].map(|t| t.xi),
@@ -450,6 +522,41 @@ impl ViscousSolver {
             wake,
         }
     }
+}
+
+/// Inviscid data for one α from a panel system: wake traced at α, unit speeds at airfoil and
+/// wake nodes, and the source influence matrix (XFOIL XYWAKE, QWCALC, QDCALC).
+fn panel_model(system: &PanelSystem, alpha_deg: f64) -> Result<PanelModel, ViscousError> {
+    let inv = |e: crate::inviscid::InviscidError| ViscousError::Inviscid(e.to_string());
+    let wake = Wake::new(system, alpha_deg).map_err(inv)?;
+    let d = SourceInfluence::new(system, &wake);
+    let g = system.geometry();
+    let mut x = g.x.clone();
+    let mut y = g.y.clone();
+    x.extend_from_slice(&wake.x);
+    y.extend_from_slice(&wake.y);
+    let q_unit = [0, 1].map(|k| {
+        let mut q = system.gamma_unit(k).to_vec();
+        q.extend_from_slice(&wake.qinv_unit[k]);
+        q
+    });
+    let nt = x.len();
+    let mut dij = vec![0.0; nt * nt];
+    for (i, row) in dij.chunks_mut(nt).enumerate() {
+        for (j, v) in row.iter_mut().enumerate() {
+            *v = d.d[(i, j)];
+        }
+    }
+    Ok(PanelModel {
+        geometry: PanelGeometry {
+            x,
+            y,
+            s: g.s.clone(),
+            n_airfoil: g.len(),
+        },
+        q_unit,
+        dij,
+    })
 }
 
 /// Gives stations whose node crossed the stagnation point the edge speed of the new layout and a

@@ -2,7 +2,7 @@
 //! Drela 1989 §4): one under-relaxation factor for all stations, chosen so that no relative
 //! change of √Cτ/N, θ, δ* or Ue exceeds the limits, then clipping of √Cτ and of the shape factor.
 
-use super::bl_model::{BoundaryLayerModel, Regime};
+use super::bl_model::BoundaryLayerModel;
 use super::error::ViscousError;
 use super::newton::Coupling;
 use super::state::BlState;
@@ -113,24 +113,17 @@ pub fn apply_update(
         state.theta[k] += rlx * dth;
         state.mass[k] += rlx * dmk;
         state.ue[k] += rlx * due[k];
-        // Shape-factor floor (XFOIL DSLIM): raise δ* so that Hk ≥ Hk_min.
-        let regime = if wake {
-            Regime::Wake
-        } else if state.turbulent[k] {
-            Regime::Turbulent
-        } else {
-            Regime::Laminar
-        };
+        // Shape-factor floor (XFOIL DSLIM): raise δ* so that the unclamped
+        // Hk = (H − 0.29 Me²)/(1 + 0.113 Me²) (Whitfield, XFOIL HKIN) is at least Hk_min.
         let hk_min = if wake {
             limits.hk_min_wake
         } else {
             limits.hk_min_airfoil
         };
         let v = state.vars(layout, k);
-        let props = model.properties(regime, &v).map_err(super::newton::at(k))?;
-        if props.hk < hk_min && props.hk_d[1] > 0.0 {
-            let new_dstar = v.dstar + (hk_min - props.hk) / props.hk_d[1];
-            state.mass[k] = new_dstar * state.ue[k];
+        let (hk, hk_d) = model.kinematic_shape_factor(&v);
+        if hk < hk_min && hk_d[1] > 0.0 {
+            state.mass[k] = (v.dstar + (hk_min - hk) / hk_d[1]) * state.ue[k];
         }
         if !(state.theta[k].is_finite() && state.mass[k].is_finite() && state.ue[k].is_finite())
             || state.theta[k] <= 0.0

@@ -129,35 +129,7 @@ impl BoundaryLayerModel for XfoilBoundaryLayer {
             .model
             .properties(&to_bl(st), r)
             .map_err(err(usize::MAX))?;
-        // ∂Hk/∂(θ, δ*, u) by central differences (only used for limiting and the inverse march).
-        let hk_at = |v: bl::StationVars| self.model.properties(&v, r).map(|q| q.hk).ok();
-        let b = to_bl(st);
-        let mut hk_d = [0.0; 3];
-        for (i, d) in hk_d.iter_mut().enumerate() {
-            let (mut vp, mut vm) = (b, b);
-            let h = match i {
-                0 => 1e-6 * b.theta,
-                1 => 1e-6 * b.dstar,
-                _ => 1e-6 * b.u,
-            };
-            match i {
-                0 => {
-                    vp.theta += h;
-                    vm.theta -= h;
-                }
-                1 => {
-                    vp.dstar += h;
-                    vm.dstar -= h;
-                }
-                _ => {
-                    vp.u += h;
-                    vm.u -= h;
-                }
-            }
-            if let (Some(a), Some(c)) = (hk_at(vp), hk_at(vm)) {
-                *d = (a - c) / (2.0 * h);
-            }
-        }
+        let (_, hk_d) = self.kinematic_shape_factor(st);
         // Edge density from the edge Mach number, isentropic (XFOIL BLKIN: R2 = RSTBL·TR2^(−1/γ−1)).
         let gm1 = self.model.flow.gm1;
         let tr = 1.0 + 0.5 * gm1 * p.mach_edge_sq;
@@ -168,6 +140,7 @@ impl BoundaryLayerModel for XfoilBoundaryLayer {
             hk: p.hk,
             ue_compressible: p.ue,
             rho_e,
+            mach_edge_sq: p.mach_edge_sq,
             hk_d,
         })
     }
@@ -177,6 +150,26 @@ impl BoundaryLayerModel for XfoilBoundaryLayer {
             .squire_young(&to_bl(last))
             .map(|s| s.cd)
             .map_err(err(usize::MAX))
+    }
+
+    fn kinematic_shape_factor(&self, st: &StationVars) -> (f64, [f64; 3]) {
+        let f = &self.model.flow;
+        let (t, q) = (f.tkbl, f.qinfbl);
+        // Karman–Tsien compressible edge speed and its derivative (XFOIL BLPRV).
+        let r = st.u / q;
+        let den = 1.0 - t * r * r;
+        let uc = st.u * (1.0 - t) / den;
+        let uc_u = (1.0 - t) * (1.0 + t * r * r) / (den * den);
+        // Edge Mach number squared (XFOIL BLKIN).
+        let a = uc * uc * f.hstinv;
+        let msq = a / (f.gm1 * (1.0 - 0.5 * a));
+        let msq_u = 2.0 * uc * f.hstinv * uc_u / (f.gm1 * (1.0 - 0.5 * a) * (1.0 - 0.5 * a));
+        let h = (st.dstar - st.dw) / st.theta;
+        let d = 1.0 + 0.113 * msq;
+        let hk = (h - 0.29 * msq) / d;
+        let hk_h = 1.0 / d;
+        let hk_msq = (-0.29 * d - 0.113 * (h - 0.29 * msq)) / (d * d);
+        (hk, [-hk_h * h / st.theta, hk_h / st.theta, hk_msq * msq_u])
     }
 
     fn ncrit(&self) -> f64 {

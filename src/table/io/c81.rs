@@ -44,7 +44,7 @@ pub const MAX_COUNT: usize = 99;
 pub struct C81Options {
     /// Write one table at this Re instead of one per Re of the grid.
     pub re: Option<f64>,
-    /// α spacing [deg] of the rows outside the computed range.
+    /// α spacing (deg) of the rows outside the computed range.
     pub outer_step_deg: f64,
 }
 
@@ -106,6 +106,12 @@ pub fn c81_alphas(table: &PolarTable, i_re: usize, outer_step_deg: f64) -> Vec<f
 fn field(v: f64, max_dec: usize, blank: bool) -> Result<String, TableError> {
     let limit = if blank { FIELD - 1 } else { FIELD };
     for d in (0..=max_dec).rev() {
+        // A value that rounds to zero is written as 0 (never "-0.000").
+        let v = if (v * 10f64.powi(d as i32)).round() == 0.0 {
+            0.0
+        } else {
+            v
+        };
         let s = format!("{v:.d$}");
         if s.len() <= limit {
             return Ok(format!("{s:>FIELD$}"));

@@ -1,0 +1,336 @@
+//! Direct march of the boundary-layer equations along an XFOIL 6.99 edge-velocity
+//! distribution (tests/data/bl DUMP files, α = 4°): starting from the similarity station,
+//! laminar with the e^n check, through the transition interval (free or forced), then
+//! turbulent with the shear-lag equation. Because XFOIL's converged solution satisfies the
+//! same discrete equations with that Ue, the marched θ and Hk must reproduce the dumped
+//! ones (up to the dump's printed digits), which checks every equation of every regime,
+//! the transition interval and the compressibility corrections together.
+
+use polargen::boundary_layer::{
+    BlConditions, BlModel, BlParams, IntervalEquations, Regime, StationVars, TransitionKind,
+};
+
+/// One dumped station: (ξ, x, Ue compressible, θ, Hk; wake rows carry H in the last slot).
+type Row = (f64, f64, f64, f64, f64);
+
+/// Upper surface (stagnation point → TE), lower surface (stagnation point → TE) and wake
+/// (TE → end) of a dump, with ξ measured from the interpolated stagnation point.
+fn surfaces(name: &str) -> (Vec<Row>, Vec<Row>, Vec<Row>) {
+    let path = format!("{}/tests/data/bl/{name}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(path).expect("dump file present");
+    let all: Vec<Vec<f64>> = text
+        .lines()
+        .filter(|l| !l.trim_start().starts_with('#'))
+        .map(|l| {
+            l.split_whitespace()
+                .map(|t| t.parse().expect("number"))
+                .collect()
+        })
+        .collect();
+    let rows: Vec<&Vec<f64>> = all.iter().filter(|v| v.len() >= 12).collect();
+    let k = rows
+        .windows(2)
+        .position(|w| w[0][3] > 0.0 && w[1][3] <= 0.0)
+        .expect("stagnation point");
+    let (a, b) = (rows[k], rows[k + 1]);
+    let s_stag = a[0] + (b[0] - a[0]) * a[3] / (a[3] - b[3]);
+    let upper = rows[..=k]
+        .iter()
+        .rev()
+        .map(|r| (s_stag - r[0], r[1], r[3], r[5], r[7]))
+        .collect();
+    let lower = rows[k + 1..]
+        .iter()
+        .map(|r| (r[0] - s_stag, r[1], -r[3], r[5], r[7]))
+        .collect();
+    let wake = all
+        .iter()
+        .filter(|v| v.len() < 12)
+        .map(|r| (r[0] - s_stag, r[1], r[3], r[5], r[4] / r[5]))
+        .collect();
+    (upper, lower, wake)
+}
+
+/// Upper surface only.
+fn upper_surface(name: &str) -> Vec<Row> {
+    surfaces(name).0
+}
+
+fn model(re: f64, mach: f64) -> BlModel {
+    BlModel::new(
+        &BlConditions {
+            reynolds: re,
+            mach,
+            ncrit: 9.0,
+        },
+        BlParams::default(),
+    )
+    .expect("valid conditions")
+}
+
+/// Incompressible speed from the compressible one (inverse Karman–Tsien).
+fn incompressible(m: &BlModel, ue: f64) -> f64 {
+    let l = m.flow.tkbl;
+    if l == 0.0 {
+        return ue;
+    }
+    let (a, b, c) = (l * ue, 1.0 - l, -ue);
+    (-b + (b * b - 4.0 * a * c).sqrt()) / (2.0 * a)
+}
+
+fn solve3(a: [[f64; 3]; 3], b: [f64; 3]) -> [f64; 3] {
+    let det = |m: [[f64; 3]; 3]| {
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+    };
+    let d = det(a);
+    std::array::from_fn(|k| {
+        let mut m = a;
+        for i in 0..3 {
+            m[i][k] = b[i];
+        }
+        det(m) / d
+    })
+}
+
+/// Newton on (s, θ, δ*) of station 2 (XFOIL MRCHUE direct mode, no Hk limiting needed here).
+fn newton(mut v: StationVars, eqs: impl Fn(&StationVars) -> IntervalEquations) -> StationVars {
+    for _ in 0..60 {
+        let e = eqs(&v);
+        let a = std::array::from_fn(|i| [e.d2[i][0], e.d2[i][1], e.d2[i][2]]);
+        let dx = solve3(a, [-e.res[0], -e.res[1], -e.res[2]]);
+        let mut rlx: f64 = 1.0;
+        for (d, x) in [(dx[1], v.theta), (dx[2], v.dstar)] {
+            rlx = rlx.min(0.3 * x / d.abs().max(1e-30));
+        }
+        if v.s > 0.0 && dx[0] < 0.0 {
+            rlx = rlx.min(0.5 * v.s / -dx[0]);
+        }
+        v.s += rlx * dx[0];
+        v.theta += rlx * dx[1];
+        v.dstar += rlx * dx[2];
+        if dx[1].abs() < 1e-11 * v.theta && dx[2].abs() < 1e-11 * v.dstar {
+            return v;
+        }
+    }
+    panic!("station at xi = {} did not converge", v.x);
+}
+
+/// Marches the upper surface; returns (x, θ, Hk, regime) per station and the transition x.
+fn march(
+    m: &BlModel,
+    surf: &[Row],
+    xi_forced: Option<f64>,
+) -> (Vec<(f64, f64, f64)>, f64, TransitionKind, StationVars) {
+    let st = |k: usize, th: f64, h: f64, s: f64| StationVars {
+        x: surf[k].0,
+        u: incompressible(m, surf[k].2),
+        theta: th,
+        dstar: h * th,
+        s,
+        dw: 0.0,
+    };
+    // similarity station: stagnation-point flow guess θ ≈ 0.29 √(ξ/(Re·Ue))
+    let th0 = 0.29 * (surf[0].0 / (m.flow.reybl * surf[0].2)).sqrt();
+    let mut v1 = newton(st(0, th0, 2.2, 0.0), |v| m.similarity(v).unwrap());
+    let mut out = vec![(
+        surf[0].1,
+        v1.theta,
+        m.properties(&v1, Regime::Laminar).unwrap().hk,
+    )];
+    let mut turbulent = false;
+    let mut x_tr = f64::NAN;
+    let mut kind = TransitionKind::Free;
+    for k in 1..surf.len() {
+        let guess = st(k, v1.theta, v1.dstar / v1.theta, v1.s);
+        let v2 = if turbulent {
+            newton(guess, |v| m.interval(Regime::Turbulent, &v1, v).unwrap())
+        } else {
+            let lam = newton(guess, |v| m.interval(Regime::Laminar, &v1, v).unwrap());
+            let chk = m.amplification_check(&v1, &lam, xi_forced).unwrap();
+            match chk.transition {
+                None => StationVars { s: chk.n2, ..lam },
+                Some(_) => {
+                    // transition interval: station 2 turbulent, √Cτ from the equilibrium value
+                    let cq = m
+                        .properties(&lam, Regime::Turbulent)
+                        .map(|p| p.ctau_eq_sqrt);
+                    let g2 = StationVars {
+                        s: 0.7 * cq.unwrap_or(0.03),
+                        ..lam
+                    };
+                    let v2 = newton(g2, |v| {
+                        m.transition_interval(&v1, v, xi_forced)
+                            .unwrap()
+                            .expect("interval keeps transitioning")
+                            .eqs
+                    });
+                    let tr = m.transition_interval(&v1, &v2, xi_forced).unwrap().unwrap();
+                    let f = (tr.xi_tr - surf[k - 1].0) / (surf[k].0 - surf[k - 1].0);
+                    x_tr = surf[k - 1].1 + f * (surf[k].1 - surf[k - 1].1);
+                    kind = tr.kind;
+                    turbulent = true;
+                    v2
+                }
+            }
+        };
+        let regime = if turbulent {
+            Regime::Turbulent
+        } else {
+            Regime::Laminar
+        };
+        out.push((surf[k].1, v2.theta, m.properties(&v2, regime).unwrap().hk));
+        v1 = v2;
+    }
+    (out, x_tr, kind, v1)
+}
+
+/// ξ of the trip at x/c = xf, by linear interpolation between the dumped stations.
+fn trip_xi(surf: &[Row], xf: f64) -> f64 {
+    let k = surf
+        .iter()
+        .position(|p| p.1 >= xf)
+        .expect("trip on the surface");
+    let (a, b) = (surf[k - 1], surf[k]);
+    a.0 + (b.0 - a.0) * (xf - a.1) / (b.1 - a.1)
+}
+
+fn compare(
+    name: &str,
+    re: f64,
+    mach: f64,
+    xf_x: Option<f64>,
+    xtr_ref: f64,
+    kind_ref: TransitionKind,
+) {
+    let m = model(re, mach);
+    let surf = upper_surface(name);
+    // forced transition: ξ at the trip's x/c
+    let xi_forced = xf_x.map(|xf| {
+        let k = surf
+            .iter()
+            .position(|p| p.1 >= xf)
+            .expect("trip on the surface");
+        let (a, b) = (surf[k - 1], surf[k]);
+        a.0 + (b.0 - a.0) * (xf - a.1) / (b.1 - a.1)
+    });
+    let (out, x_tr, kind, _) = march(&m, &surf, xi_forced);
+    assert_eq!(kind, kind_ref, "{name}: transition kind");
+    assert!(
+        (x_tr - xtr_ref).abs() < 0.002,
+        "{name}: x_tr {x_tr} vs XFOIL {xtr_ref}"
+    );
+    let mut worst_t: f64 = 0.0;
+    let mut worst_h: f64 = 0.0;
+    for (o, r) in out.iter().zip(&surf) {
+        // skip the first stations (start-up from the rounded stagnation point) and the TE
+        if r.1 < 0.02 || r.1 > 0.99 || r.0 < 0.03 {
+            continue;
+        }
+        worst_t = worst_t.max((o.1 - r.3).abs() / r.3);
+        worst_h = worst_h.max((o.2 - r.4).abs() / r.4);
+    }
+    assert!(
+        worst_t < 0.015,
+        "{name}: θ differs from XFOIL by up to {worst_t}"
+    );
+    assert!(
+        worst_h < 0.02,
+        "{name}: Hk differs from XFOIL by up to {worst_h}"
+    );
+}
+
+#[test]
+fn march_naca0012_free_transition_reproduces_xfoil() {
+    compare(
+        "naca0012_Re1e6_M0_free_bl_a4.txt",
+        1e6,
+        0.0,
+        None,
+        0.2537,
+        TransitionKind::Free,
+    );
+}
+
+#[test]
+fn march_naca8h12_forced_transition_m041_reproduces_xfoil() {
+    compare(
+        "naca8h12_Re1.9e6_M0.41_xtr0.07_bl_a4.txt",
+        1.9e6,
+        0.41,
+        Some(0.07),
+        0.07,
+        TransitionKind::Forced,
+    );
+}
+
+/// Both surfaces of the tripped NACA 8-H-12 case (the paper's "insects" configuration,
+/// Re 1.9e6, M 0.41), the trailing-edge junction and the wake march on XFOIL's wake
+/// velocities: wake θ and H against the dump and Squire–Young CD against XFOIL's polar.
+#[test]
+fn march_naca8h12_tripped_wake_and_drag_reproduce_xfoil() {
+    let name = "naca8h12_Re1.9e6_M0.41_xtr0.07_bl_a4.txt";
+    let m = model(1.9e6, 0.41);
+    let (upper, lower, wake) = surfaces(name);
+    let (_, _, ku, te_u) = march(&m, &upper, Some(trip_xi(&upper, 0.07)));
+    let (_, _, kl, te_l) = march(&m, &lower, Some(trip_xi(&lower, 0.07)));
+    assert_eq!((ku, kl), (TransitionKind::Forced, TransitionKind::Forced));
+    // first wake station from the junction equations (sharp TE: no gap); they are linear
+    // with identity wake Jacobian, so one Newton step solves them
+    let w0 = StationVars {
+        x: wake[0].0,
+        u: incompressible(&m, wake[0].2),
+        theta: 1e-3,
+        dstar: 1e-3,
+        s: 0.05,
+        dw: 0.0,
+    };
+    let te = m.te_junction(&te_u, &te_l, &w0, 0.0).unwrap();
+    let mut v1 = StationVars {
+        s: w0.s - te.res[0],
+        theta: w0.theta - te.res[1],
+        dstar: w0.dstar - te.res[2],
+        ..w0
+    };
+    assert!(m
+        .te_junction(&te_u, &te_l, &v1, 0.0)
+        .unwrap()
+        .res
+        .iter()
+        .all(|r| r.abs() < 1e-15));
+    assert!(
+        (v1.theta - wake[0].3).abs() < 0.015 * wake[0].3,
+        "TE θ {} vs {}",
+        v1.theta,
+        wake[0].3
+    );
+    for r in &wake[1..] {
+        let g = StationVars {
+            x: r.0,
+            u: incompressible(&m, r.2),
+            ..v1
+        };
+        let v2 = newton(g, |v| m.interval(Regime::Wake, &v1, v).unwrap());
+        assert!(
+            (v2.theta - r.3).abs() < 0.01 * r.3,
+            "wake x = {}: θ {} vs {}",
+            r.1,
+            v2.theta,
+            r.3
+        );
+        let h = v2.dstar / v2.theta;
+        assert!(
+            (h - r.4).abs() < 0.02 * r.4,
+            "wake x = {}: H {h} vs {}",
+            r.1,
+            r.4
+        );
+        v1 = v2;
+    }
+    let cd = m.squire_young(&v1).unwrap().cd;
+    assert!(
+        (cd - 0.0109).abs() < 0.005 * 0.0109,
+        "CD {cd} vs XFOIL polar 0.0109"
+    );
+}

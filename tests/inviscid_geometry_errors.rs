@@ -1,0 +1,69 @@
+//! Bad contours are rejected with errors, never panics; sharp/blunt TE detection.
+
+mod inviscid_support;
+
+use inviscid_support::xfoil_nodes;
+use polargen::geometry::Airfoil;
+use polargen::inviscid::{InviscidError, PanelSystem};
+
+fn foil(x: Vec<f64>, y: Vec<f64>) -> Airfoil {
+    Airfoil {
+        name: "test".into(),
+        x,
+        y,
+    }
+}
+
+#[test]
+fn bad_contours_are_errors() {
+    let e = PanelSystem::new(&foil(vec![1.0, 0.0, 1.0], vec![0.0, 0.0, 0.0])).unwrap_err();
+    assert_eq!(e, InviscidError::TooFewNodes { got: 3, min: 5 });
+    let e = PanelSystem::new(&foil(vec![0.0; 6], vec![0.0; 5])).unwrap_err();
+    assert_eq!(e, InviscidError::LengthMismatch { x: 6, y: 5 });
+
+    let mut a = xfoil_nodes("naca0012");
+    a.y[7] = f64::NAN;
+    assert_eq!(
+        PanelSystem::new(&a).unwrap_err(),
+        InviscidError::NonFiniteNode(7)
+    );
+    let mut a = xfoil_nodes("naca0012");
+    a.x[11] = a.x[10];
+    a.y[11] = a.y[10];
+    assert_eq!(
+        PanelSystem::new(&a).unwrap_err(),
+        InviscidError::DuplicateNode(10)
+    );
+}
+
+/// NACA 4/5-digit XFOIL geometry has a 0.00252 c TE gap (blunt); the 8-H-12 file closes at
+/// (1, 0) (sharp, TE panel dropped). Chord comes out as ≈ 1 from the spline leading edge.
+#[test]
+fn trailing_edge_classification() {
+    let blunt = PanelSystem::new(&xfoil_nodes("naca0012")).unwrap();
+    let te = blunt.geometry().te;
+    assert!(!te.sharp && !te.closed);
+    assert!((te.gap - 0.00252).abs() < 1e-6, "gap {}", te.gap);
+    assert!((blunt.geometry().chord - 1.0).abs() < 1e-5);
+    assert!(blunt.bisector().is_none());
+
+    let sharp = PanelSystem::new(&xfoil_nodes("naca8h12")).unwrap();
+    let te = sharp.geometry().te;
+    assert!(te.sharp && te.closed);
+    assert!(sharp.bisector().is_some());
+    // The paneled 8-H-12 spline leading edge lies ~0.00075 c ahead of x = 0.
+    assert!((sharp.geometry().chord - 1.0).abs() < 2e-3);
+}
+
+/// Kutta condition γ₀ + γ_{N−1} = 0 holds for both unit solutions.
+#[test]
+fn kutta_condition_holds() {
+    for name in ["naca2412", "naca8h12"] {
+        let sys = PanelSystem::new(&xfoil_nodes(name)).unwrap();
+        let n = sys.n_nodes();
+        for k in 0..2 {
+            let g = sys.gamma_unit(k);
+            assert!((g[0] + g[n - 1]).abs() < 1e-12, "{name} unit {k}");
+        }
+    }
+}
