@@ -1,28 +1,42 @@
-//! `polargen` — airfoil polars from the command line.
+//! `polargen` — airfoil polars and Re × Mach × α tables from the command line.
 //!
-//! `polargen --airfoil <NAME|PATH> --inviscid [--mach M] [--alpha A0:A1:DA] [--panels N]
-//! [--out FILE]` writes an inviscid polar as CSV (`alpha,cl,cd,cm,converged`).
+//! * `polargen --airfoil naca8h12 --xtr 0.07` — the default rotor grid (Re 0.25…2.5·10⁶ ×
+//!   M 0…0.5 × α −10…20°) as a long-form CSV table;
+//! * `--re`, `--mach` (comma lists) and `--alpha A0:A1:DA` override each axis; one value each
+//!   gives a single polar;
+//! * `--inviscid` — the panel solution only (`alpha,cl,cd,cm,converged`).
 //!
 //! Every error is one line on stderr with a non-zero exit status; no output file is left
 //! half-written (files are written to a temporary name and renamed).
 
-use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::io::{IsTerminal, Write};
+use std::path::PathBuf;
 use std::process::ExitCode;
+use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 use clap::Parser;
 
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
 use polargen::inviscid::PanelSystem;
-use polargen::polar::parse_alpha_range;
-use polargen::table::io::write_atomic;
-use polargen::table::TableError;
+use polargen::polar::{parse_alpha_range, run_grid, SweepParams, ViscousSweep};
+use polargen::table::io::csv::write_csv_to;
+use polargen::table::io::json::write_json_to;
+use polargen::table::io::{write_atomic, write_table, TableFormat};
+use polargen::table::{PolarTable, TableError, TableMeta};
+use polargen::viscous::ViscousParams;
 
 /// Smallest and largest panel-node counts accepted by `--panels`.
 const PANEL_RANGE: (usize, usize) = (20, 1000);
 
-/// Airfoil polars with an XFOIL-class panel method.
+/// Reynolds numbers of the default rotor grid.
+const DEFAULT_RE: [f64; 6] = [0.25e6, 0.5e6, 1.0e6, 1.5e6, 2.0e6, 2.5e6];
+/// Mach numbers of the default rotor grid.
+const DEFAULT_MACH: [f64; 5] = [0.0, 0.2, 0.3, 0.4, 0.5];
+/// α range of the default rotor grid.
+const DEFAULT_ALPHA: &str = "-10:20:0.5";
+
+/// Airfoil polars and Re × Mach × α tables with an XFOIL-class viscous–inviscid solver.
 #[derive(Parser, Debug)]
 #[command(name = "polargen", version, about)]
 struct Cli {
@@ -31,23 +45,52 @@ struct Cli {
     #[arg(long, value_name = "NAME|PATH")]
     airfoil: String,
 
-    /// Inviscid panel solution only (cd = 0).
+    /// Inviscid panel solution only (cd = 0); output `alpha,cl,cd,cm,converged`.
     #[arg(long)]
     inviscid: bool,
 
-    /// Freestream Mach number (Karman–Tsien), 0 ≤ M < 1 and below the critical Mach.
-    #[arg(long, default_value = "0", allow_hyphen_values = true)]
-    mach: String,
+    /// Chord Reynolds numbers, comma-separated (default: the rotor grid 0.25e6,…,2.5e6).
+    #[arg(long, value_name = "LIST")]
+    re: Option<String>,
 
-    /// Angles of attack in degrees: A0:A1:DA (inclusive) or a single value.
-    #[arg(long, default_value = "-10:20:0.5", allow_hyphen_values = true)]
-    alpha: String,
+    /// Mach numbers, comma-separated, 0 ≤ M < 1 (default: 0,0.2,0.3,0.4,0.5; inviscid: 0).
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    mach: Option<String>,
+
+    /// Angles of attack in degrees: A0:A1:DA (inclusive) or one value (default −10:20:0.5).
+    #[arg(long, allow_hyphen_values = true)]
+    alpha: Option<String>,
+
+    /// Forced transition x/c on both surfaces (1 = free transition, e^n).
+    #[arg(long, value_name = "X", conflicts_with_all = ["xtr_top", "xtr_bot"])]
+    xtr: Option<f64>,
+
+    /// Forced transition x/c on the upper surface (1 = free).
+    #[arg(long, value_name = "X")]
+    xtr_top: Option<f64>,
+
+    /// Forced transition x/c on the lower surface (1 = free).
+    #[arg(long, value_name = "X")]
+    xtr_bot: Option<f64>,
+
+    /// Critical amplification ratio N of the e^n transition criterion.
+    #[arg(long, default_value_t = 9.0)]
+    ncrit: f64,
 
     /// Number of panel nodes after curvature-based repaneling (XFOIL PANE).
     #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES)]
     panels: usize,
 
-    /// Output file (CSV); standard output when absent.
+    /// Worker threads for independent polars (0 = all cores).
+    #[arg(long, default_value_t = 0)]
+    threads: usize,
+
+    /// Output format: csv, json, xfoil (one .pol per Re, M) or c81 (one file per Re);
+    /// default: from --out's extension, else csv.
+    #[arg(long)]
+    format: Option<String>,
+
+    /// Output file; standard output when absent (csv and json only).
     #[arg(long, value_name = "FILE")]
     out: Option<PathBuf>,
 }
@@ -73,7 +116,12 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    match run(&cli) {
+    let result = if cli.inviscid {
+        run_inviscid(&cli)
+    } else {
+        run_viscous(&cli)
+    };
+    match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("polargen: error: {}", one_line(&e));
@@ -99,20 +147,35 @@ fn one_line(e: &anyhow::Error) -> String {
     line.replace('\n', " ")
 }
 
-/// Parse a number option, naming the flag in the error.
-fn parse_number(flag: &str, text: &str) -> Result<f64> {
-    match text.trim().parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        _ => bail!("--{flag} '{text}' is not a finite number"),
+/// Parse a comma-separated list of finite numbers, naming the flag in the error.
+fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>> {
+    let mut out = Vec::new();
+    for item in text.split(',') {
+        match item.trim().parse::<f64>() {
+            Ok(v) if v.is_finite() => out.push(v),
+            _ => bail!(
+                "--{flag} '{text}': '{}' is not a finite number",
+                item.trim()
+            ),
+        }
     }
+    Ok(out)
 }
 
-fn run(cli: &Cli) -> Result<()> {
-    let mach = parse_number("mach", &cli.mach)?;
-    if !(0.0..1.0).contains(&mach) {
-        bail!("--mach {mach}: the Mach number must be in [0, 1)");
+/// Mach numbers from `--mach` (or `default`), each checked to lie in [0, 1).
+fn mach_list(cli: &Cli, default: &[f64]) -> Result<Vec<f64>> {
+    let list = match &cli.mach {
+        Some(t) => parse_list("mach", t)?,
+        None => default.to_vec(),
+    };
+    if let Some(m) = list.iter().find(|m| !(0.0..1.0).contains(*m)) {
+        bail!("--mach {m}: the Mach number must be in [0, 1)");
     }
-    let alphas = parse_alpha_range(&cli.alpha).context("--alpha")?;
+    Ok(list)
+}
+
+/// Check the panel count and load + repanel the airfoil.
+fn load_airfoil(cli: &Cli) -> Result<Airfoil> {
     if !(PANEL_RANGE.0..=PANEL_RANGE.1).contains(&cli.panels) {
         bail!(
             "--panels {}: must be between {} and {}",
@@ -121,10 +184,22 @@ fn run(cli: &Cli) -> Result<()> {
             PANEL_RANGE.1
         );
     }
-    if !cli.inviscid {
-        bail!("the viscous solver is not available yet: use --inviscid");
-    }
-    let foil = load_airfoil(&cli.airfoil, cli.panels)?;
+    let raw = airfoil_by_name_or_path(&cli.airfoil)?;
+    let foil = raw
+        .repanel(cli.panels, &PanelingParams::default())
+        .with_context(|| format!("paneling {}", raw.name))?;
+    Ok(foil)
+}
+
+/// `--inviscid`: the panel solution at one Mach number.
+fn run_inviscid(cli: &Cli) -> Result<()> {
+    let mach = match mach_list(cli, &[0.0])?.as_slice() {
+        [m] => *m,
+        _ => bail!("--mach: --inviscid takes one Mach number"),
+    };
+    let alphas =
+        parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA)).context("--alpha")?;
+    let foil = load_airfoil(cli)?;
     let system = PanelSystem::new(&foil).context("panel system")?;
     let mut csv = String::from("alpha,cl,cd,cm,converged\n");
     for &alpha in &alphas {
@@ -137,7 +212,145 @@ fn run(cli: &Cli) -> Result<()> {
             fixed6(sol.cm)
         ));
     }
-    emit(cli.out.as_deref(), &csv)
+    match &cli.out {
+        Some(path) => write_atomic(path, |w| {
+            w.write_all(csv.as_bytes())
+                .map_err(|e| TableError::io(path, e))
+        })?,
+        None => write_stdout(csv.as_bytes())?,
+    }
+    Ok(())
+}
+
+/// The viscous polar(s) or table.
+fn run_viscous(cli: &Cli) -> Result<()> {
+    let re = match &cli.re {
+        Some(t) => parse_list("re", t)?,
+        None => DEFAULT_RE.to_vec(),
+    };
+    if let Some(r) = re.iter().find(|r| **r <= 0.0) {
+        bail!("--re {r}: the Reynolds number must be positive");
+    }
+    let mach = mach_list(cli, &DEFAULT_MACH)?;
+    let alphas =
+        parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA)).context("--alpha")?;
+    let (xtr_top, xtr_bot) = match cli.xtr {
+        Some(x) => (x, x),
+        None => (cli.xtr_top.unwrap_or(1.0), cli.xtr_bot.unwrap_or(1.0)),
+    };
+    for (flag, x) in [("xtr", xtr_top), ("xtr", xtr_bot)] {
+        if !(0.0..=1.0).contains(&x) {
+            bail!("--{flag} {x}: the transition location must be in [0, 1] (1 = free)");
+        }
+    }
+    if !(cli.ncrit.is_finite() && cli.ncrit > 0.0) {
+        bail!("--ncrit {}: must be a positive number", cli.ncrit);
+    }
+    let format = match (&cli.format, &cli.out) {
+        (Some(f), _) => f.parse::<TableFormat>().context("--format")?,
+        (None, Some(path)) => TableFormat::from_path(path).context("--out")?,
+        (None, None) => TableFormat::Csv,
+    };
+    if cli.out.is_none() && matches!(format, TableFormat::XfoilPolar | TableFormat::C81) {
+        bail!("--format {}: needs --out (it writes files)", format.name());
+    }
+    let foil = load_airfoil(cli)?;
+
+    let nodes: Vec<(f64, f64)> = re
+        .iter()
+        .flat_map(|&r| mach.iter().map(move |&m| (r, m)))
+        .collect();
+    let total = nodes.len() * alphas.len();
+    let bar = progress_bar(total as u64);
+    let start = Instant::now();
+    let base = ViscousParams {
+        ncrit: cli.ncrit,
+        xtr_top,
+        xtr_bot,
+        ..ViscousParams::default()
+    };
+    let polars = run_grid(
+        &nodes,
+        &alphas,
+        cli.threads,
+        &SweepParams::default(),
+        |reynolds, mach| {
+            ViscousSweep::new(
+                &foil,
+                ViscousParams {
+                    reynolds,
+                    mach,
+                    ..base
+                },
+            )
+        },
+        |p| {
+            if let Some(b) = &bar {
+                b.inc(p.points.len() as u64);
+            }
+        },
+    )
+    .context("viscous solver")?;
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let converged: usize = polars
+        .iter()
+        .map(|p| p.points.iter().filter(|q| q.converged).count())
+        .sum();
+    eprintln!(
+        "polargen: {converged} of {total} points converged ({:.1} %) in {:.1} s",
+        100.0 * converged as f64 / total.max(1) as f64,
+        start.elapsed().as_secs_f64()
+    );
+
+    let meta = TableMeta {
+        airfoil: foil.name.clone(),
+        ncrit: cli.ncrit,
+        xtr_top_set: xtr_top,
+        xtr_bot_set: xtr_bot,
+        panels: cli.panels,
+        solver: format!("polargen {}", env!("CARGO_PKG_VERSION")),
+    };
+    let table = PolarTable::from_polars(
+        meta,
+        polars
+            .into_iter()
+            .map(|p| (p.re, p.mach, p.points))
+            .collect(),
+    )
+    .context("building the table (too few converged points?)")?;
+    match &cli.out {
+        Some(path) => {
+            let files = write_table(&table, path, Some(format))?;
+            if files.len() > 1 {
+                eprintln!("polargen: wrote {} files", files.len());
+            }
+        }
+        None => {
+            let mut buf = Vec::new();
+            match format {
+                TableFormat::Json => write_json_to(&table, &mut buf)?,
+                _ => write_csv_to(&table, &mut buf)?,
+            }
+            write_stdout(&buf)?;
+        }
+    }
+    Ok(())
+}
+
+/// A progress bar on stderr when stderr is a terminal; nothing otherwise.
+fn progress_bar(total: u64) -> Option<indicatif::ProgressBar> {
+    if !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let bar = indicatif::ProgressBar::new(total);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} points, eta {eta}")
+    {
+        bar.set_style(style);
+    }
+    Some(bar)
 }
 
 /// `v` with 6 decimals, without the sign of a value that rounds to zero.
@@ -150,29 +363,10 @@ fn fixed6(v: f64) -> String {
     }
 }
 
-/// Load an airfoil by name or path and repanel it to `panels` nodes.
-fn load_airfoil(spec: &str, panels: usize) -> Result<Airfoil> {
-    let raw = airfoil_by_name_or_path(spec)?;
-    let foil = raw
-        .repanel(panels, &PanelingParams::default())
-        .with_context(|| format!("paneling {}", raw.name))?;
-    Ok(foil)
-}
-
-/// Write `text` to `out` atomically, or to standard output.
-fn emit(out: Option<&Path>, text: &str) -> Result<()> {
-    match out {
-        Some(path) => {
-            write_atomic(path, |w| {
-                w.write_all(text.as_bytes())
-                    .map_err(|e| TableError::io(path, e))
-            })?;
-        }
-        None => {
-            let mut stdout = std::io::stdout().lock();
-            stdout.write_all(text.as_bytes())?;
-            stdout.flush()?;
-        }
-    }
+/// Write bytes to standard output.
+fn write_stdout(bytes: &[u8]) -> Result<()> {
+    let mut stdout = std::io::stdout().lock();
+    stdout.write_all(bytes)?;
+    stdout.flush()?;
     Ok(())
 }

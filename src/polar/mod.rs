@@ -1,11 +1,15 @@
 //! Polars: α sweeps of a point solver with warm starts and recovery of failed points.
 
+pub mod grid;
 pub mod range;
 pub mod sweep;
+pub mod viscous_sweep;
 
+pub use grid::{run_grid, GridPolar};
 pub use range::{march_order, parse_alpha_range, RangeError};
 use serde::{Deserialize, Serialize};
 pub use sweep::{sweep, SweepParams, WarmStartSolver};
+pub use viscous_sweep::ViscousSweep;
 
 /// One operating point of a polar: the result of the solver at one (Re, M, α).
 ///

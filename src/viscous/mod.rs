@@ -14,4 +14,4 @@ pub mod update;
 pub mod xfoil_bl;
 
 pub use error::ViscousError;
-pub use solver::{BlStation, PanelModel, ViscousParams, ViscousSolution, ViscousSolver};
+pub use solver::{BlStation, PanelModel, ViscousParams, ViscousSolution, ViscousSolver, WarmStart};

@@ -108,6 +108,10 @@ pub struct ViscousSolution {
     pub wake: Vec<BlStation>,
 }
 
+/// Opaque snapshot of a solver's warm-start state (see [`ViscousSolver::warm_start`]).
+#[derive(Clone, Debug)]
+pub struct WarmStart(Option<WarmState>);
+
 /// Converged state kept for warm starts.
 #[derive(Clone, Debug)]
 struct WarmState {
@@ -227,6 +231,17 @@ impl ViscousSolver {
     /// The parameters of this solver.
     pub fn params(&self) -> &ViscousParams {
         &self.params
+    }
+
+    /// Snapshot of the warm-start state (the converged boundary layer of the last point), for
+    /// sweeps that branch from a saved point.
+    pub fn warm_start(&self) -> WarmStart {
+        WarmStart(self.warm.clone())
+    }
+
+    /// Return to a snapshot taken with [`warm_start`](Self::warm_start).
+    pub fn set_warm_start(&mut self, snapshot: &WarmStart) {
+        self.warm = snapshot.0.clone();
     }
 
     /// Forgets the warm-start state; the next point starts from a fresh march.

@@ -1,0 +1,42 @@
+//! The viscous solver as a [`WarmStartSolver`] for sweeps and grids.
+
+use super::sweep::WarmStartSolver;
+use super::PolarPoint;
+use crate::geometry::Airfoil;
+use crate::viscous::{ViscousError, ViscousParams, ViscousSolver, WarmStart};
+
+/// A [`ViscousSolver`] driven point by point by [`sweep`](super::sweep()).
+#[derive(Debug)]
+pub struct ViscousSweep {
+    /// The solver of one (Re, M, Ncrit, trip) condition.
+    pub solver: ViscousSolver,
+}
+
+impl ViscousSweep {
+    /// Solver for an already paneled airfoil at the given condition.
+    pub fn new(airfoil: &Airfoil, params: ViscousParams) -> Result<Self, ViscousError> {
+        Ok(Self {
+            solver: ViscousSolver::new(airfoil, params)?,
+        })
+    }
+}
+
+impl WarmStartSolver for ViscousSweep {
+    type State = WarmStart;
+
+    fn solve(&mut self, alpha_deg: f64) -> PolarPoint {
+        self.solver.solve(alpha_deg).point
+    }
+
+    fn reset(&mut self) {
+        self.solver.reset();
+    }
+
+    fn save(&self) -> WarmStart {
+        self.solver.warm_start()
+    }
+
+    fn restore(&mut self, state: &WarmStart) {
+        self.solver.set_warm_start(state);
+    }
+}
