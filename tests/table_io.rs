@@ -304,8 +304,8 @@ fn c81_structure() {
     assert_eq!(counts, vec![nm, na, nm, na, nm, na]);
     assert_eq!(nm, 11);
     // α rows: −180…−20 every 10° (−10 is within half a step of −8), the 45 computed α,
-    // 20…180 every 10°.
-    assert_eq!(na, 17 + 45 + 17);
+    // 20…180 every 10°, and 20 more that split the widest extension gaps.
+    assert_eq!(na, 99);
     assert_eq!(lines.len(), 1 + 3 * (2 + 2 * na));
     let mut k = 1;
     let mut alpha_seen = Vec::new();
@@ -359,6 +359,14 @@ fn c81_structure() {
     assert_eq!(alpha_seen[0], -180.0);
     assert_eq!(*alpha_seen.last().unwrap(), 180.0);
     assert!(alpha_seen.windows(2).all(|w| w[1] > w[0]));
+    for a in &alphas {
+        assert!(alpha_seen.contains(a), "computed α {a} missing");
+    }
+    // The extension is sampled at most every 10°, and more finely next to the computed range.
+    let gaps: Vec<f64> = alpha_seen.windows(2).map(|w| w[1] - w[0]).collect();
+    assert!(gaps.iter().all(|&g| g <= 10.0 + 1e-9));
+    let k = alpha_seen.iter().position(|&a| a == -8.0).unwrap();
+    assert!(alpha_seen[k] - alpha_seen[k - 1] < 5.0);
     std::fs::remove_dir_all(dir).unwrap();
 }
 
