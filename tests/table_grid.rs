@@ -3,7 +3,7 @@
 mod table_support;
 
 use polargen::polar::PolarPoint;
-use polargen::table::{PolarTable, TableError};
+use polargen::table::{PolarTable, SectionAero, TableError};
 use table_support::*;
 
 fn small(re: Vec<f64>, mach: Vec<f64>) -> Result<PolarTable, TableError> {
@@ -139,11 +139,16 @@ fn points_are_validated() {
         one(pts),
         "alpha 190 outside [-180, 180] in polar Re 1000000, M 0.3"
     );
+    // Too few converged points for a lookup: the table is a valid record, but unusable for
+    // lookups, which say so.
     let pts = vec![failed(0.0), failed(1.0), point(2.0, 0.1, 0.01, 0.0)];
+    let t = PolarTable::new(meta("x"), vec![1e6], vec![0.3], vec![pts]).unwrap();
+    assert!(!t.has_lookup());
     assert_eq!(
-        one(pts),
+        t.require_lookup().unwrap_err().to_string(),
         "empty table: no polar has at least 2 converged points"
     );
+    assert!(t.lookup(1.0, 1e6, 0.3).cl.is_nan());
 }
 
 #[test]

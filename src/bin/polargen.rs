@@ -50,7 +50,7 @@ struct Cli {
     inviscid: bool,
 
     /// Chord Reynolds numbers, comma-separated (default: the rotor grid 0.25e6,…,2.5e6).
-    #[arg(long, value_name = "LIST")]
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     re: Option<String>,
 
     /// Mach numbers, comma-separated, 0 ≤ M < 1 (default: 0,0.2,0.3,0.4,0.5; inviscid: 0).
@@ -62,19 +62,19 @@ struct Cli {
     alpha: Option<String>,
 
     /// Forced transition x/c on both surfaces (1 = free transition, e^n).
-    #[arg(long, value_name = "X", conflicts_with_all = ["xtr_top", "xtr_bot"])]
+    #[arg(long, value_name = "X", allow_hyphen_values = true, conflicts_with_all = ["xtr_top", "xtr_bot"])]
     xtr: Option<f64>,
 
     /// Forced transition x/c on the upper surface (1 = free).
-    #[arg(long, value_name = "X")]
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
     xtr_top: Option<f64>,
 
     /// Forced transition x/c on the lower surface (1 = free).
-    #[arg(long, value_name = "X")]
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
     xtr_bot: Option<f64>,
 
     /// Critical amplification ratio N of the e^n transition criterion.
-    #[arg(long, default_value_t = 9.0)]
+    #[arg(long, default_value_t = 9.0, allow_hyphen_values = true)]
     ncrit: f64,
 
     /// Number of panel nodes after curvature-based repaneling (XFOIL PANE).

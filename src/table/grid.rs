@@ -59,7 +59,8 @@ impl PolarTable {
     ///
     /// Validates: non-empty, strictly increasing axes; Re > 0 and finite; 0 ≤ M < 1; finite
     /// α within ±180°, unique within each polar; finite coefficients at converged points; at
-    /// least one polar with two converged points. Points are sorted by α.
+    /// Points are sorted by α. A table in which no polar has two converged points
+    /// is accepted (see [`has_lookup`](Self::has_lookup)).
     pub fn new(
         meta: TableMeta,
         re: Vec<f64>,
@@ -253,8 +254,26 @@ impl PolarTable {
     /// First and last converged α (deg) of the curve used at node (`i_re`, `i_mach`) (that of
     /// the nearest usable neighbour if the node's own polar has < 2 converged points).
     pub fn alpha_range(&self, i_re: usize, i_mach: usize) -> Option<(f64, f64)> {
-        (i_re < self.re.len() && i_mach < self.mach.len())
+        (i_re < self.re.len() && i_mach < self.mach.len() && self.has_lookup())
             .then(|| self.curves[i_re * self.mach.len() + i_mach].alpha_range())
+    }
+
+    /// Whether lookups are possible: at least one polar has two converged points. A table
+    /// without (e.g. a single-α polar, or a grid where everything failed) is still a valid
+    /// record of what was computed and can be written, but [`lookup`](super::SectionAero::lookup)
+    /// returns NaN coefficients on it.
+    pub fn has_lookup(&self) -> bool {
+        !self.curves.is_empty()
+    }
+
+    /// `Ok` when lookups are possible, else [`TableError::Empty`] (for consumers such as the
+    /// rotor model and the C81 writer).
+    pub fn require_lookup(&self) -> Result<(), TableError> {
+        if self.has_lookup() {
+            Ok(())
+        } else {
+            Err(TableError::Empty)
+        }
     }
 
     /// Prepared α curve of a node.
@@ -340,7 +359,9 @@ fn build_curves(
     let nm = mach.len();
     let own: Vec<Option<AlphaCurve>> = polars.iter().map(|p| AlphaCurve::new(p, params)).collect();
     if own.iter().all(Option::is_none) {
-        return Err(TableError::Empty);
+        // Kept as a record of what was computed (all points flagged); lookups need
+        // `require_lookup` to pass first.
+        return Ok(Vec::new());
     }
     let ln_re: Vec<f64> = re.iter().map(|r| r.ln()).collect();
     // Distance in grid-normalised units; a step along Re counts SAME_RE_PREFERENCE times a

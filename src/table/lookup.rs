@@ -249,6 +249,14 @@ impl SectionAero for PolarTable {
     /// flagged) outside the Re and Mach axes. Allocation-free; O(1) per polar (interval
     /// index, no binary search in α).
     fn lookup(&self, alpha_deg: f64, re: f64, mach: f64) -> Lookup {
+        if !self.has_lookup() {
+            return Lookup {
+                cl: f64::NAN,
+                cd: f64::NAN,
+                cm: f64::NAN,
+                ..Lookup::default()
+            };
+        }
         let a = wrap_deg(alpha_deg);
         let ln_re = if re > 0.0 { re.ln() } else { f64::NEG_INFINITY };
         let (ir, wr, re_clamped) = bracket(self.ln_re(), ln_re);

@@ -172,6 +172,7 @@ pub fn write_c81_to(
     outer_step_deg: f64,
     w: &mut dyn Write,
 ) -> Result<(), TableError> {
+    table.require_lookup()?;
     let ln = re.ln();
     let i_re = (0..table.re().len())
         .min_by(|&a, &b| {

@@ -1,0 +1,223 @@
+//! The `polargen` binary in viscous mode: single polars, small grids, formats, thread-count
+//! determinism and input errors.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn polargen(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_polargen"))
+        .args(args)
+        .output()
+        .expect("run polargen")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).to_string()
+}
+
+fn temp_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("polargen-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+/// Column index by name in a CSV header.
+fn col(header: &str, name: &str) -> usize {
+    header
+        .split(',')
+        .position(|c| c == name)
+        .unwrap_or_else(|| panic!("no column {name} in {header}"))
+}
+
+#[test]
+fn single_polar_matches_xfoil_and_has_required_columns() {
+    let o = polargen(&[
+        "--airfoil",
+        "naca0012",
+        "--re",
+        "1e6",
+        "--mach",
+        "0",
+        "--alpha",
+        "0:4:2",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("3 of 3 points converged"),
+        "{}",
+        stderr(&o)
+    );
+    let text = String::from_utf8(o.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    let h = lines[0];
+    for c in [
+        "airfoil",
+        "re",
+        "mach",
+        "ncrit",
+        "xtr_top_set",
+        "xtr_bot_set",
+        "alpha",
+        "cl",
+        "cd",
+        "cdp",
+        "cm",
+        "xtr_top",
+        "xtr_bot",
+        "converged",
+    ] {
+        col(h, c);
+    }
+    assert_eq!(lines.len(), 4);
+    // XFOIL 6.99, NACA 0012, Re 1e6, M 0, α = 4°: CL 0.4278, CD 0.00728 (tests/data/viscous).
+    let row: Vec<&str> = lines[3].split(',').collect();
+    let cl: f64 = row[col(h, "cl")].parse().unwrap();
+    let cd: f64 = row[col(h, "cd")].parse().unwrap();
+    assert_eq!(row[col(h, "converged")], "true");
+    assert!((cl - 0.4278).abs() < 0.01, "cl {cl}");
+    assert!((cd / 0.00728 - 1.0).abs() < 0.05, "cd {cd}");
+}
+
+#[test]
+fn forced_transition_is_reported() {
+    let o = polargen(&[
+        "--airfoil",
+        "naca8h12",
+        "--re",
+        "1.9e6",
+        "--mach",
+        "0.41",
+        "--alpha",
+        "2",
+        "--xtr-top",
+        "0.07",
+        "--xtr-bot",
+        "0.5",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    let h = lines[0];
+    let row: Vec<&str> = lines[1].split(',').collect();
+    let xt: f64 = row[col(h, "xtr_top")].parse().unwrap();
+    let xb: f64 = row[col(h, "xtr_bot")].parse().unwrap();
+    assert_eq!(row[col(h, "xtr_top_set")], "0.07");
+    assert_eq!(row[col(h, "xtr_bot_set")], "0.5");
+    assert!(xt <= 0.0701, "xtr_top {xt}");
+    assert!(xb <= 0.5001, "xtr_bot {xb}");
+}
+
+#[test]
+fn grid_output_is_identical_for_any_thread_count() {
+    let args = |threads: &'static str| {
+        polargen(&[
+            "--airfoil",
+            "naca2412",
+            "--re",
+            "5e5,1e6",
+            "--mach",
+            "0,0.3",
+            "--alpha",
+            "-2:4:2",
+            "--threads",
+            threads,
+        ])
+    };
+    let one = args("1");
+    let two = args("2");
+    assert!(one.status.success(), "{}", stderr(&one));
+    assert_eq!(one.stdout, two.stdout);
+    let text = String::from_utf8(one.stdout.clone()).unwrap();
+    // 2 Re × 2 M × 4 α rows plus the header.
+    assert_eq!(text.lines().count(), 17);
+    assert!(stderr(&one).contains("of 16 points converged"));
+}
+
+#[test]
+fn formats_by_extension_and_flag() {
+    let dir = temp_dir("formats");
+    let common = [
+        "--airfoil",
+        "naca0012",
+        "--re",
+        "1e6,2e6",
+        "--mach",
+        "0.2",
+        "--alpha",
+        "0:2:1",
+    ];
+    let run = |extra: &[&str]| {
+        let mut a: Vec<&str> = common.to_vec();
+        a.extend_from_slice(extra);
+        let o = polargen(&a);
+        assert!(o.status.success(), "{extra:?}: {}", stderr(&o));
+        o
+    };
+    let json = dir.join("sub/t.json");
+    run(&["--out", json.to_str().unwrap()]);
+    let table = polargen::table::io::read_table(&json).unwrap();
+    assert_eq!(table.re(), &[1e6, 2e6]);
+    assert_eq!(table.point_count(), 6);
+
+    let csv = dir.join("t.csv");
+    run(&["--out", csv.to_str().unwrap()]);
+    let back = polargen::table::io::read_table(&csv).unwrap();
+    assert_eq!(back, table);
+
+    run(&[
+        "--format",
+        "xfoil",
+        "--out",
+        dir.join("p.pol").to_str().unwrap(),
+    ]);
+    let pols: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().to_string())
+        .filter(|n| n.ends_with(".pol"))
+        .collect();
+    assert_eq!(pols.len(), 2, "{pols:?}");
+
+    run(&["--out", dir.join("t.c81").to_str().unwrap()]);
+    let c81: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().to_string())
+        .filter(|n| n.ends_with(".c81"))
+        .collect();
+    assert_eq!(c81.len(), 2, "one C81 per Re: {c81:?}");
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// Each bad input gives exactly one line on stderr naming the flag and value, and a non-zero
+/// exit, before any solving.
+#[test]
+fn errors_name_the_flag() {
+    let base = ["--airfoil", "naca0012"];
+    let cases: &[(&[&str], &str)] = &[
+        (&["--re", "0"], "--re 0"),
+        (&["--re", "-1e6"], "--re -1000000"),
+        (&["--re", "1e6,abc"], "'abc'"),
+        (&["--re", "1e6,,2e6"], "--re"),
+        (&["--mach", "1"], "--mach 1"),
+        (&["--mach", "0,-0.2"], "--mach -0.2"),
+        (&["--xtr", "1.5"], "--xtr 1.5"),
+        (&["--xtr-top", "-0.1"], "--xtr -0.1"),
+        (&["--xtr", "0.1", "--xtr-top", "0.2"], "--xtr"),
+        (&["--ncrit", "0"], "--ncrit 0"),
+        (&["--ncrit", "-3"], "--ncrit -3"),
+        (&["--alpha", "0:4:0"], "step is 0"),
+        (&["--alpha", "4:0:1"], "empty"),
+        (&["--format", "xls"], "xls"),
+        (&["--format", "c81"], "needs --out"),
+        (&["--out", "/tmp/x.unknown"], "x.unknown"),
+        (&["--threads", "x"], "--threads"),
+    ];
+    for (extra, needle) in cases {
+        let mut a: Vec<&str> = base.to_vec();
+        a.extend_from_slice(extra);
+        let o = polargen(&a);
+        let err = stderr(&o);
+        assert!(!o.status.success(), "{extra:?} succeeded");
+        assert_eq!(err.lines().count(), 1, "{extra:?}: {err}");
+        assert!(err.contains(needle), "{extra:?}: {err}");
+    }
+}
