@@ -35,8 +35,7 @@ fn max_cp_error(nodes: &str, cp_file: &str, alpha: f64, mach: f64) -> f64 {
 }
 
 /// Cp printed by XFOIL to 5 decimals: agreement within 5e-5 everywhere (measured 1-3e-5),
-/// including the
-/// suction peak and, for the sharp 8-H-12, the trailing-edge node.
+/// including the suction peak and, for the sharp 8-H-12, the trailing-edge node.
 #[test]
 fn cp_matches_xfoil_naca2412_incompressible() {
     let e = max_cp_error("naca2412", "naca2412_inviscid_cp_a6_M0.txt", 6.0, 0.0);

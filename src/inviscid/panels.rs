@@ -129,6 +129,16 @@ impl PanelGeometry {
             }
             s[i] = s[i - 1] + ds;
         }
+        // Shoelace area of the closed polygon: positive for XFOIL's counter-clockwise order.
+        let area2: f64 = (0..n)
+            .map(|i| {
+                let j = (i + 1) % n;
+                x[i] * y[j] - x[j] * y[i]
+            })
+            .sum();
+        if area2 < 0.0 {
+            return Err(InviscidError::ClockwiseContour);
+        }
         let xp = spline_slopes(x, &s);
         let yp = spline_slopes(y, &s);
         let mut nx = vec![0.0; n];
