@@ -32,6 +32,9 @@ pub struct PanelParams {
     /// Distance of the sharp-TE control point ahead of the TE along the bisector, as a fraction
     /// of the shorter TE-adjacent panel (XFOIL GGCALC `BWT = 0.1`).
     pub sharp_te_bisector_fraction: f64,
+    /// End nodes closer than this fraction of the perimeter count as coincident and the TE
+    /// panel is dropped (XFOIL PSILIN `SEPS = (S(N) − S(1))·1e-5`).
+    pub coincident_te_fraction: f64,
     /// Moment reference point x (chord units); XFOIL uses the quarter chord.
     pub moment_ref_x: f64,
     /// Moment reference point y (chord units).
@@ -43,6 +46,7 @@ impl Default for PanelParams {
         Self {
             sharp_te_gap: 1.0e-4,
             sharp_te_bisector_fraction: 0.1,
+            coincident_te_fraction: 1.0e-5,
             moment_ref_x: 0.25,
             moment_ref_y: 0.0,
         }
@@ -167,8 +171,8 @@ impl PanelGeometry {
         } else {
             (gap_normal / gap, gap_streamwise / gap)
         };
-        // PSILIN: TE panel skipped when the end nodes coincide within 1e-5 of the perimeter.
-        let seps = s[n - 1] * 1.0e-5;
+        // PSILIN: TE panel skipped when the end nodes coincide within SEPS.
+        let seps = s[n - 1] * params.coincident_te_fraction;
         let closed = gap * gap < seps * seps;
 
         // XFOIL APCALC panel angles.
