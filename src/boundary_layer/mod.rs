@@ -12,6 +12,27 @@
 //! * [`BlModel::te_junction`] — first wake station from the two trailing-edge stations (TESYS).
 //! * [`BlModel::squire_young`] — drag from the last wake station (CDCALC).
 //! * [`BlModel::properties`] — Cf, H, Hk, Re_θ, … of a station for output.
+//! * [`BlModel::kinematic_shape`] — Hk with its sensitivities (inverse march).
+//!
+//! Residual convention: R itself (XFOIL's VSREZ is −R); Newton solves J·Δ = −R.
+//!
+//! ```
+//! use polargen::boundary_layer::{BlConditions, BlModel, BlParams, Regime, StationVars};
+//!
+//! let model = BlModel::new(
+//!     &BlConditions { reynolds: 1.9e6, mach: 0.41, ncrit: 9.0 },
+//!     BlParams::default(),
+//! )?;
+//! // two turbulent stations: ξ, incompressible Ue, θ, δ*, √Cτ, wake gap
+//! let st1 = StationVars { x: 0.50, u: 1.10, theta: 1.0e-3, dstar: 1.5e-3, s: 0.07, dw: 0.0 };
+//! let st2 = StationVars { x: 0.52, u: 1.09, theta: 1.05e-3, dstar: 1.6e-3, s: 0.07, dw: 0.0 };
+//! let eq = model.interval(Regime::Turbulent, &st1, &st2)?;
+//! // rows: shear-lag, momentum, shape; columns (s, θ, δ*, u, ξ)
+//! assert!(eq.d2[1][1] > 0.0); // momentum residual grows with θ2
+//! let cf = model.properties(&st2, Regime::Turbulent)?.cf;
+//! assert!(cf > 0.002 && cf < 0.005);
+//! # Ok::<(), polargen::boundary_layer::BlError>(())
+//! ```
 
 pub mod amplification;
 pub mod closures;
