@@ -131,9 +131,17 @@ fn march(
         s,
         dw: 0.0,
     };
-    // similarity station: stagnation-point flow guess θ ≈ 0.29 √(ξ/(Re·Ue))
-    let th0 = 0.29 * (surf[0].0 / (m.flow.reybl * surf[0].2)).sqrt();
-    let mut v1 = newton(st(0, th0, 2.2, 0.0), |v| m.similarity(v).unwrap());
+    // similarity station from Thwaites' starting values (XFOIL MRCHUE)
+    let (th0, ds0) = m
+        .stagnation_guess(surf[0].0, incompressible(m, surf[0].2))
+        .unwrap();
+    let mut v1 = newton(st(0, th0, ds0 / th0, 0.0), |v| m.similarity(v).unwrap());
+    // Thwaites and the closures' stagnation-point solution agree to a few per cent
+    assert!(
+        (v1.theta - th0).abs() < 0.1 * th0,
+        "similarity θ {} vs Thwaites {th0}",
+        v1.theta
+    );
     let mut out = vec![(
         surf[0].1,
         v1.theta,
