@@ -353,3 +353,15 @@ fn tripped_wake_and_drag(name: &str, cd_ref: f64) {
         "{name}: CD {cd} vs XFOIL polar {cd_ref}"
     );
 }
+
+#[test]
+fn march_naca0012_alpha0_late_free_transition_reproduces_xfoil() {
+    compare(
+        "naca0012_Re1e6_M0_free_bl_a0.txt",
+        1e6,
+        0.0,
+        None,
+        0.687,
+        TransitionKind::Free,
+    );
+}
