@@ -184,3 +184,36 @@ fn naca23012_re19e5_m041_xtr007() {
         0.07,
     ));
 }
+
+#[test]
+fn naca2412_re1e6_m0_free() {
+    assert_targets(&run_case(
+        "naca2412",
+        "naca2412_Re1e6_M0_free.csv",
+        1e6,
+        0.0,
+        1.0,
+    ));
+}
+
+#[test]
+fn naca8h12_re19e5_m041_free() {
+    assert_targets(&run_case(
+        "naca8h12",
+        "naca8h12_Re1.9e6_M0.41_free.csv",
+        1.9e6,
+        0.41,
+        1.0,
+    ));
+}
+
+#[test]
+fn naca8h12_re19e5_m041_xtr007() {
+    assert_targets(&run_case(
+        "naca8h12",
+        "naca8h12_Re1.9e6_M0.41_xtr0.07.csv",
+        1.9e6,
+        0.41,
+        0.07,
+    ));
+}

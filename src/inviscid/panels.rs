@@ -32,6 +32,9 @@ pub struct PanelParams {
     /// Distance of the sharp-TE control point ahead of the TE along the bisector, as a fraction
     /// of the shorter TE-adjacent panel (XFOIL GGCALC `BWT = 0.1`).
     pub sharp_te_bisector_fraction: f64,
+    /// End nodes closer than this fraction of the perimeter count as coincident and the TE
+    /// panel is dropped (XFOIL PSILIN `SEPS = (S(N) − S(1))·1e-5`).
+    pub coincident_te_fraction: f64,
     /// Moment reference point x (chord units); XFOIL uses the quarter chord.
     pub moment_ref_x: f64,
     /// Moment reference point y (chord units).
@@ -43,6 +46,7 @@ impl Default for PanelParams {
         Self {
             sharp_te_gap: 1.0e-4,
             sharp_te_bisector_fraction: 0.1,
+            coincident_te_fraction: 1.0e-5,
             moment_ref_x: 0.25,
             moment_ref_y: 0.0,
         }
@@ -129,6 +133,16 @@ impl PanelGeometry {
             }
             s[i] = s[i - 1] + ds;
         }
+        // Shoelace area of the closed polygon: positive for XFOIL's counter-clockwise order.
+        let area2: f64 = (0..n)
+            .map(|i| {
+                let j = (i + 1) % n;
+                x[i] * y[j] - x[j] * y[i]
+            })
+            .sum();
+        if area2 < 0.0 {
+            return Err(InviscidError::ClockwiseContour);
+        }
         let xp = spline_slopes(x, &s);
         let yp = spline_slopes(y, &s);
         let mut nx = vec![0.0; n];
@@ -157,8 +171,8 @@ impl PanelGeometry {
         } else {
             (gap_normal / gap, gap_streamwise / gap)
         };
-        // PSILIN: TE panel skipped when the end nodes coincide within 1e-5 of the perimeter.
-        let seps = s[n - 1] * 1.0e-5;
+        // PSILIN: TE panel skipped when the end nodes coincide within SEPS.
+        let seps = s[n - 1] * params.coincident_te_fraction;
         let closed = gap * gap < seps * seps;
 
         // XFOIL APCALC panel angles.
@@ -314,6 +328,12 @@ pub fn spline_slopes(v: &[f64], s: &[f64]) -> Vec<f64> {
     d
 }
 
+/// Distance between two points (plain square root, as XFOIL; faster than `hypot`).
+#[inline]
+fn dist(ax: f64, ay: f64, bx: f64, by: f64) -> f64 {
+    ((bx - ax) * (bx - ax) + (by - ay) * (by - ay)).sqrt()
+}
+
 /// Local frame of one straight panel seen from a field point (PSILIN/PSWLIN geometry block):
 /// panel-aligned coordinates of both ends, log r² and arctan terms with XFOIL's reflection
 /// rule, and the derivatives of the coordinates with respect to the field normal direction.
@@ -382,7 +402,7 @@ impl PanelFrame {
         self_b: bool,
         branch_sign: f64,
     ) -> Self {
-        let dso = (xb - xa).hypot(yb - ya);
+        let dso = dist(xa, ya, xb, yb);
         let sx = (xb - xa) / dso;
         let sy = (yb - ya) / dso;
         let rx1 = p.x - xa;
@@ -568,9 +588,9 @@ fn add_source_panel(
     let n = x.len();
     let jp = jo + 1;
     let (jm, jq) = source_neighbours(jo, n);
-    let dsio = 1.0 / (x[jp] - x[jo]).hypot(y[jp] - y[jo]);
-    let dsim = 1.0 / (x[jp] - x[jm]).hypot(y[jp] - y[jm]);
-    let dsip = 1.0 / (x[jq] - x[jo]).hypot(y[jq] - y[jo]);
+    let dsio = 1.0 / dist(x[jo], y[jo], x[jp], y[jp]);
+    let dsim = 1.0 / dist(x[jm], y[jm], x[jp], y[jp]);
+    let dsip = 1.0 / dist(x[jo], y[jo], x[jq], y[jq]);
     let ([psum, pdif, psni, pdni], [psum2, pdif2, psni2, pdni2]) = frame.source_halves(apan);
     // first half: SSUM = (m_p − m_o)/dso + (m_p − m_m)/dsm, SDIF = (m_p − m_o)/dso − (m_p − m_m)/dsm
     psi_out[jm] += QOPI * (-psum + pdif) * dsim;
@@ -602,9 +622,9 @@ fn source_panel_value(
     let n = x.len();
     let jp = jo + 1;
     let (jm, jq) = source_neighbours(jo, n);
-    let dso = (x[jp] - x[jo]).hypot(y[jp] - y[jo]);
-    let dsm = (x[jp] - x[jm]).hypot(y[jp] - y[jm]);
-    let dsp = (x[jq] - x[jo]).hypot(y[jq] - y[jo]);
+    let dso = dist(x[jo], y[jo], x[jp], y[jp]);
+    let dsm = dist(x[jm], y[jm], x[jp], y[jp]);
+    let dsp = dist(x[jo], y[jo], x[jq], y[jq]);
     let slope_o = (m[jp] - m[jo]) / dso;
     let slope_m = (m[jp] - m[jm]) / dsm;
     let slope_p = (m[jq] - m[jo]) / dsp;

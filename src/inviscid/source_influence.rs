@@ -50,11 +50,6 @@ impl SourceInfluence {
         let nt = n + nw;
         let mut d = Mat::<f64>::zeros(nt, nt);
 
-        // Airfoil rows, airfoil sources: cached dγ/dσ.
-        d.as_mut()
-            .submatrix_mut(0, 0, n, n)
-            .copy_from(system.airfoil_source_sensitivity());
-
         // Airfoil rows, wake sources: −dψ/dσ_w on each node row, back-substituted.
         let mut bw = Mat::<f64>::zeros(n + 1, nw);
         let mut psi_w = vec![0.0; nw];
@@ -80,11 +75,6 @@ impl SourceInfluence {
                 bw[(i, j)] = -psi_w[j];
             }
         }
-        system.back_substitute(bw.as_mut());
-        d.as_mut()
-            .submatrix_mut(0, n, n, nw)
-            .copy_from(bw.as_ref().subrows(0, n));
-
         // Wake rows: direct source speeds, and dq/dγ for the chain through the airfoil.
         let mut c = Mat::<f64>::zeros(nw, n);
         let mut inf = Influence::new(n);
@@ -113,6 +103,14 @@ impl SourceInfluence {
                 d[(n + iw, n + j)] = qn_w[j];
             }
         }
+        // Dense linear algebra last: airfoil rows of D from the factorised system.
+        system.back_substitute(bw.as_mut());
+        d.as_mut()
+            .submatrix_mut(0, 0, n, n)
+            .copy_from(system.airfoil_source_sensitivity());
+        d.as_mut()
+            .submatrix_mut(0, n, n, nw)
+            .copy_from(bw.as_ref().subrows(0, n));
         let top = d.as_ref().subrows(0, n).to_owned();
         matmul(
             d.as_mut().subrows_mut(n, nw),

@@ -317,11 +317,13 @@ impl PanelSystem {
         extra_psi: &[f64],
     ) -> Result<Vec<f64>, InviscidError> {
         let n = self.n_nodes();
-        if m_airfoil.len() != n || extra_psi.len() != n {
-            return Err(InviscidError::SourceLength {
-                got: m_airfoil.len().min(extra_psi.len()),
-                expected: n,
-            });
+        for len in [m_airfoil.len(), extra_psi.len()] {
+            if len != n {
+                return Err(InviscidError::SourceLength {
+                    got: len,
+                    expected: n,
+                });
+            }
         }
         let (sa, ca) = alpha_deg.to_radians().sin_cos();
         let g = &self.geom;

@@ -16,8 +16,9 @@
 //! `w = L⁻¹(r − V m)` and `m = P w`, hence the n×n Schur system `(I + P L⁻¹ V) m = P L⁻¹ r`.
 //! The cost is O(n²) for the substitutions plus one n×n LU, instead of a 3n×3n dense LU.
 
-use faer::prelude::*;
-use faer::Mat;
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::linalg::lu::partial_pivoting::{factor, solve};
+use faer::{Mat, Par};
 
 use super::error::ViscousError;
 
@@ -131,8 +132,30 @@ impl BlockSystem {
             big_y[(3 * i + 2) * n + j] + if i == j { 1.0 } else { 0.0 }
         });
         let mut m = Mat::<f64>::from_fn(n, 1, |i, _| y[i][2]);
-        let lu = schur.partial_piv_lu();
-        lu.solve_in_place(m.as_mut());
+        // Sequential LU: the solver runs inside parallel sweeps, so no nested parallelism.
+        let mut schur = schur;
+        let mut perm = vec![0usize; n];
+        let mut perm_inv = vec![0usize; n];
+        let req = factor::lu_in_place_scratch::<usize, f64>(n, n, Par::Seq, Default::default())
+            .or(solve::solve_in_place_scratch::<usize, f64>(n, 1, Par::Seq));
+        let mut buf = MemBuffer::new(req);
+        let stack = MemStack::new(&mut buf);
+        let (_, p) = factor::lu_in_place(
+            schur.as_mut(),
+            &mut perm,
+            &mut perm_inv,
+            Par::Seq,
+            stack,
+            Default::default(),
+        );
+        solve::solve_in_place(
+            schur.as_ref(),
+            schur.as_ref(),
+            p,
+            m.as_mut(),
+            Par::Seq,
+            stack,
+        );
         if let Some(i) = (0..n).find(|&i| !m[(i, 0)].is_finite()) {
             return Err(ViscousError::SingularSystem { station: i });
         }
