@@ -1,1 +1,607 @@
-fn main() {}
+//! `gyro` — gyroplane rotor performance from airfoil polar tables: cruise trim, takeoff,
+//! clean-versus-contaminated comparison (paper Tables 3 and 4) and power-required sweeps.
+
+use anyhow::{bail, Context, Result};
+use clap::{Parser, Subcommand};
+use polargen::rotor::trim::{trim_aircraft, TrimParams, TrimResult};
+use polargen::rotor::{simulate_takeoff, Aircraft, Atmosphere, Rotor, TakeoffResult, KT_TO_MS};
+use polargen::table::{Lookup, SectionAero};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+
+#[derive(Parser)]
+#[command(
+    name = "gyro",
+    version,
+    about = "Gyroplane rotor strip model driven by airfoil polar tables"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Level-cruise trim: rotor rpm, rotor AoA, drags, propeller thrust, engine rpm, L/D.
+    Trim {
+        /// Aircraft preset (TOML).
+        #[arg(long)]
+        aircraft: PathBuf,
+        /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
+        #[arg(long)]
+        table: PathBuf,
+        /// Airspeed [kt].
+        #[arg(long, default_value_t = 60.0)]
+        speed_kt: f64,
+        /// Mass [kg] (default: the preset's).
+        #[arg(long)]
+        mass: Option<f64>,
+        /// ISA altitude [m].
+        #[arg(long, default_value_t = 0.0)]
+        altitude_m: f64,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Takeoff from brake release to the screen height: s_TO, s_15, β_max.
+    Takeoff {
+        /// Aircraft preset (TOML).
+        #[arg(long)]
+        aircraft: PathBuf,
+        /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
+        #[arg(long)]
+        table: PathBuf,
+        /// Mass [kg] (default: the preset's).
+        #[arg(long)]
+        mass: Option<f64>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        /// Write the time history (t, x, h, v, rotor_rpm, alpha_r_deg, beta_deg) to this CSV.
+        #[arg(long)]
+        history: Option<PathBuf>,
+    },
+    /// Clean versus contaminated rotor: paper Tables 3 and 4 side by side with ours.
+    Compare {
+        /// Aircraft preset (TOML).
+        #[arg(long)]
+        aircraft: PathBuf,
+        /// Table of the clean blade section.
+        #[arg(long)]
+        clean: PathBuf,
+        /// Table of the contaminated blade section.
+        #[arg(long)]
+        contaminated: PathBuf,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Trim over a speed range: power-required curve.
+    Sweep {
+        /// Aircraft preset (TOML).
+        #[arg(long)]
+        aircraft: PathBuf,
+        /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
+        #[arg(long)]
+        table: PathBuf,
+        /// Lowest airspeed [kt].
+        #[arg(long, default_value_t = 30.0)]
+        from_kt: f64,
+        /// Highest airspeed [kt].
+        #[arg(long, default_value_t = 90.0)]
+        to_kt: f64,
+        /// Speed step [kt].
+        #[arg(long, default_value_t = 5.0)]
+        step_kt: f64,
+        /// Mass [kg] (default: the preset's).
+        #[arg(long)]
+        mass: Option<f64>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Blade angle of attack α(ψ) at one radius in trimmed cruise (paper Fig. 10; ψ = 0 rear).
+    Alpha {
+        /// Aircraft preset (TOML).
+        #[arg(long)]
+        aircraft: PathBuf,
+        /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
+        #[arg(long)]
+        table: PathBuf,
+        /// Airspeed [kt].
+        #[arg(long, default_value_t = 60.0)]
+        speed_kt: f64,
+        /// Radius as a fraction of R.
+        #[arg(long, default_value_t = 0.9)]
+        radius: f64,
+        /// Azimuth samples per revolution.
+        #[arg(long, default_value_t = 36)]
+        samples: usize,
+    },
+}
+
+/// Paper Table 3 (clean, contaminated) at 60 kt, 450 kg, ISA.
+const PAPER_TRIM: [(&str, f64, f64); 7] = [
+    ("rotor rpm n_R", 347.0, 348.0),
+    ("rotor AoA alpha_R [deg]", 6.2, 8.1),
+    ("engine rpm", 4401.0, 4596.0),
+    ("rotor drag D_R [N]", 478.0, 624.0),
+    ("parasitic drag D_P [N]", 573.0, 573.0),
+    ("prop thrust F_prop [N]", 1051.0, 1197.0),
+    ("L/D", 4.2, 3.7),
+];
+
+/// Paper Table 4 (clean, contaminated).
+const PAPER_TAKEOFF: [(&str, f64, f64); 3] = [
+    ("takeoff roll s_TO [m]", 121.0, 144.0),
+    ("distance to 15 m s_15 [m]", 218.0, 253.0),
+    ("max flapping beta_max [deg]", 3.5, 4.2),
+];
+
+/// A single section polar from a CSV file (XFOIL-style columns alpha, cl, cd[, cm]) with a
+/// flat-plate extension outside the tabulated α range. This is the stand-in for the `table`
+/// module's `PolarTable` reader until that branch provides one; it ignores Re and Mach.
+struct CsvPolar {
+    alpha: Vec<f64>,
+    cl: Vec<f64>,
+    cd: Vec<f64>,
+    cm: Vec<f64>,
+}
+
+/// Width of the exponential blend from the table edge into the flat-plate model [deg].
+const BLEND_DEG: f64 = 8.0;
+
+impl CsvPolar {
+    fn from_csv(path: &Path) -> Result<Self> {
+        let mut rd = csv::ReaderBuilder::new()
+            .trim(csv::Trim::All)
+            .from_path(path)
+            .with_context(|| format!("cannot read table {}", path.display()))?;
+        let headers = rd.headers()?.clone();
+        let col = |name: &str| headers.iter().position(|h| h.eq_ignore_ascii_case(name));
+        let (Some(ia), Some(il), Some(id)) = (col("alpha"), col("cl"), col("cd")) else {
+            bail!("table {} needs columns alpha, cl, cd", path.display());
+        };
+        let im = col("cm");
+        let mut rows: Vec<[f64; 4]> = Vec::new();
+        for (n, rec) in rd.records().enumerate() {
+            let rec = rec.with_context(|| format!("table {} row {}", path.display(), n + 2))?;
+            let get = |i: usize| -> Result<f64> {
+                let s = rec.get(i).unwrap_or("");
+                s.parse::<f64>()
+                    .ok()
+                    .filter(|v| v.is_finite())
+                    .with_context(|| {
+                        format!("table {} row {}: bad number '{s}'", path.display(), n + 2)
+                    })
+            };
+            rows.push([
+                get(ia)?,
+                get(il)?,
+                get(id)?,
+                im.map(get).transpose()?.unwrap_or(0.0),
+            ]);
+        }
+        rows.sort_by(|a, b| a[0].total_cmp(&b[0]));
+        rows.dedup_by(|a, b| a[0] == b[0]);
+        if rows.len() < 2 {
+            bail!("table {} has fewer than two alpha rows", path.display());
+        }
+        Ok(Self {
+            alpha: rows.iter().map(|r| r[0]).collect(),
+            cl: rows.iter().map(|r| r[1]).collect(),
+            cd: rows.iter().map(|r| r[2]).collect(),
+            cm: rows.iter().map(|r| r[3]).collect(),
+        })
+    }
+
+    fn interpolate(&self, a: f64) -> (f64, f64, f64) {
+        let i = self
+            .alpha
+            .partition_point(|&x| x <= a)
+            .clamp(1, self.alpha.len() - 1);
+        let t = (a - self.alpha[i - 1]) / (self.alpha[i] - self.alpha[i - 1]);
+        let lerp = |v: &[f64]| v[i - 1] + t * (v[i] - v[i - 1]);
+        (lerp(&self.cl), lerp(&self.cd), lerp(&self.cm))
+    }
+}
+
+impl SectionAero for CsvPolar {
+    fn lookup(&self, alpha_deg: f64, _re: f64, _mach: f64) -> Lookup {
+        let a = (alpha_deg + 180.0).rem_euclid(360.0) - 180.0;
+        let (lo, hi) = (self.alpha[0], self.alpha[self.alpha.len() - 1]);
+        let edge = a.clamp(lo, hi);
+        let (cl, cd, cm) = self.interpolate(edge);
+        if a == edge {
+            return Lookup {
+                cl,
+                cd,
+                cm,
+                re_clamped: false,
+                mach_clamped: false,
+                post_stall: false,
+            };
+        }
+        // Flat plate (Hoerner, Fluid-Dynamic Lift/Drag): cl = 1.1 sin 2α, cd = 1.9 sin²α.
+        let w = (-(a - edge).abs() / BLEND_DEG).exp();
+        let r = a.to_radians();
+        let cd_min = self.cd.iter().cloned().fold(f64::INFINITY, f64::min);
+        Lookup {
+            cl: w * cl + (1.0 - w) * 1.1 * (2.0 * r).sin(),
+            cd: w * cd + (1.0 - w) * (cd_min + 1.9 * r.sin().powi(2)),
+            cm: w * cm + (1.0 - w) * (-0.5 * r.sin()),
+            re_clamped: false,
+            mach_clamped: false,
+            post_stall: true,
+        }
+    }
+}
+
+/// Loads the section table given with `--table`.
+fn load_section(path: &Path) -> Result<CsvPolar> {
+    CsvPolar::from_csv(path)
+}
+
+fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
+    let mut ac = Aircraft::from_toml_file(path)?;
+    if let Some(m) = mass {
+        if !(m.is_finite() && m > 0.0) {
+            bail!("--mass must be a positive number of kg, got {m}");
+        }
+        ac.mass_kg = m;
+    }
+    Ok(ac)
+}
+
+fn check_speed(kt: f64) -> Result<()> {
+    if !(kt.is_finite() && kt > 0.0 && kt < 300.0) {
+        bail!("--speed-kt must be between 0 and 300 kt, got {kt}");
+    }
+    Ok(())
+}
+
+#[derive(Serialize)]
+struct TrimJson {
+    rotor_rpm: f64,
+    rotor_aoa_deg: f64,
+    engine_rpm: Option<f64>,
+    rotor_drag_n: f64,
+    parasitic_drag_n: f64,
+    prop_thrust_n: f64,
+    lift_to_drag: f64,
+    hub_aoa_deg: f64,
+    power_required_kw: f64,
+    beta1c_deg: f64,
+    beta1s_deg: f64,
+    speed_kt: f64,
+}
+
+impl From<&TrimResult> for TrimJson {
+    fn from(t: &TrimResult) -> Self {
+        Self {
+            rotor_rpm: t.rotor_rpm,
+            rotor_aoa_deg: t.rotor_aoa_deg,
+            engine_rpm: t.engine_rpm,
+            rotor_drag_n: t.rotor_drag_n,
+            parasitic_drag_n: t.parasitic_drag_n,
+            prop_thrust_n: t.prop_thrust_n,
+            lift_to_drag: t.lift_to_drag,
+            hub_aoa_deg: t.hub_aoa_deg,
+            power_required_kw: t.power_required_kw,
+            beta1c_deg: t.beta1c_deg,
+            beta1s_deg: t.beta1s_deg,
+            speed_kt: t.airspeed_kt,
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct TakeoffJson {
+    takeoff_roll_m: f64,
+    distance_15m_m: f64,
+    max_flapping_deg: f64,
+    liftoff_speed_kt: f64,
+    screen_speed_kt: f64,
+    liftoff_rotor_rpm: f64,
+    screen_time_s: f64,
+}
+
+impl From<&TakeoffResult> for TakeoffJson {
+    fn from(t: &TakeoffResult) -> Self {
+        Self {
+            takeoff_roll_m: t.takeoff_roll_m,
+            distance_15m_m: t.distance_15m_m,
+            max_flapping_deg: t.max_flapping_deg,
+            liftoff_speed_kt: t.liftoff_speed_kt,
+            screen_speed_kt: t.screen_speed_kt,
+            liftoff_rotor_rpm: t.liftoff_rotor_rpm,
+            screen_time_s: t.screen_time_s,
+        }
+    }
+}
+
+fn engine_text(e: Option<f64>) -> String {
+    e.map_or_else(|| "above max".to_string(), |v| format!("{v:.0}"))
+}
+
+fn print_trim(t: &TrimResult) {
+    println!("trim at {:.1} kt", t.airspeed_kt);
+    println!("  rotor rpm n_R          {:8.1}", t.rotor_rpm);
+    println!(
+        "  rotor AoA alpha_R [deg]{:8.2}   (hub {:.2})",
+        t.rotor_aoa_deg, t.hub_aoa_deg
+    );
+    println!("  engine rpm             {:>8}", engine_text(t.engine_rpm));
+    println!("  rotor drag D_R [N]     {:8.1}", t.rotor_drag_n);
+    println!("  parasitic D_P [N]      {:8.1}", t.parasitic_drag_n);
+    println!("  prop thrust F_prop [N] {:8.1}", t.prop_thrust_n);
+    println!("  L/D                    {:8.2}", t.lift_to_drag);
+    println!("  power required [kW]    {:8.1}", t.power_required_kw);
+    println!(
+        "  flapping b1c, b1s [deg]{:8.2} {:.2}",
+        t.beta1c_deg, t.beta1s_deg
+    );
+}
+
+fn print_takeoff(t: &TakeoffResult) {
+    println!("takeoff");
+    println!("  takeoff roll s_TO [m]      {:7.1}", t.takeoff_roll_m);
+    println!("  distance to 15 m s_15 [m]  {:7.1}", t.distance_15m_m);
+    println!(
+        "  max flapping beta_max [deg]{:7.2}{}",
+        t.max_flapping_deg,
+        if t.flap_stops_reached {
+            "  (on the stops)"
+        } else {
+            ""
+        }
+    );
+    println!(
+        "  lift-off speed [kt]        {:7.1}  at {:.1} s, rotor {:.0} rpm",
+        t.liftoff_speed_kt, t.liftoff_time_s, t.liftoff_rotor_rpm
+    );
+    println!(
+        "  speed at 15 m [kt]         {:7.1}  at {:.1} s",
+        t.screen_speed_kt, t.screen_time_s
+    );
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    100.0 * (b - a) / a
+}
+
+fn compare(ac: &Aircraft, clean: &CsvPolar, dirty: &CsvPolar, json: bool) -> Result<()> {
+    let p = TrimParams::default();
+    let tc = trim_aircraft(ac, clean, 60.0, ac.mass_kg, 0.0, &p).context("clean trim")?;
+    let td = trim_aircraft(ac, dirty, 60.0, ac.mass_kg, 0.0, &p).context("contaminated trim")?;
+    let oc = simulate_takeoff(ac, clean).context("clean takeoff")?;
+    let od = simulate_takeoff(ac, dirty).context("contaminated takeoff")?;
+    let ours_trim = |t: &TrimResult| {
+        [
+            t.rotor_rpm,
+            t.rotor_aoa_deg,
+            t.engine_rpm.unwrap_or(f64::NAN),
+            t.rotor_drag_n,
+            t.parasitic_drag_n,
+            t.prop_thrust_n,
+            t.lift_to_drag,
+        ]
+    };
+    let ours_to = |t: &TakeoffResult| [t.takeoff_roll_m, t.distance_15m_m, t.max_flapping_deg];
+    if json {
+        #[derive(Serialize)]
+        struct Row {
+            quantity: &'static str,
+            paper_clean: f64,
+            paper_contaminated: f64,
+            ours_clean: f64,
+            ours_contaminated: f64,
+        }
+        let rows = |paper: &[(&'static str, f64, f64)], c: &[f64], d: &[f64]| -> Vec<Row> {
+            paper
+                .iter()
+                .zip(c.iter().zip(d))
+                .map(|(&(q, pc, pd), (&oc, &od))| Row {
+                    quantity: q,
+                    paper_clean: pc,
+                    paper_contaminated: pd,
+                    ours_clean: oc,
+                    ours_contaminated: od,
+                })
+                .collect()
+        };
+        let out = serde_json::json!({
+            "trim": rows(&PAPER_TRIM, &ours_trim(&tc), &ours_trim(&td)),
+            "takeoff": rows(&PAPER_TAKEOFF, &ours_to(&oc), &ours_to(&od)),
+        });
+        println!("{}", serde_json::to_string_pretty(&out)?);
+        return Ok(());
+    }
+    let table = |title: &str, paper: &[(&str, f64, f64)], c: &[f64], d: &[f64]| {
+        println!("{title}");
+        println!(
+            "  {:<28} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>8}",
+            "", "paper", "paper", "paper", "ours", "ours", "ours"
+        );
+        println!(
+            "  {:<28} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>8}",
+            "quantity", "clean", "contam.", "change", "clean", "contam.", "change"
+        );
+        for (&(q, pc, pd), (&oc, &od)) in paper.iter().zip(c.iter().zip(d)) {
+            println!(
+                "  {q:<28} {pc:>9.1} {pd:>9.1} {:>+7.1}% | {oc:>9.1} {od:>9.1} {:>+7.1}%",
+                rel(pc, pd),
+                rel(oc, od)
+            );
+        }
+    };
+    table(
+        "Table 3 — trim at 60 kt, ISA sea level",
+        &PAPER_TRIM,
+        &ours_trim(&tc),
+        &ours_trim(&td),
+    );
+    println!();
+    table(
+        "Table 4 — takeoff, ISA sea level, no wind",
+        &PAPER_TAKEOFF,
+        &ours_to(&oc),
+        &ours_to(&od),
+    );
+    Ok(())
+}
+
+fn run(cli: Cli) -> Result<()> {
+    match cli.command {
+        Command::Trim {
+            aircraft,
+            table,
+            speed_kt,
+            mass,
+            altitude_m,
+            json,
+        } => {
+            check_speed(speed_kt)?;
+            let ac = load_aircraft(&aircraft, mass)?;
+            let section = load_section(&table)?;
+            let t = trim_aircraft(
+                &ac,
+                &section,
+                speed_kt,
+                ac.mass_kg,
+                altitude_m,
+                &TrimParams::default(),
+            )?;
+            if json {
+                println!("{}", serde_json::to_string_pretty(&TrimJson::from(&t))?);
+            } else {
+                print_trim(&t);
+            }
+        }
+        Command::Takeoff {
+            aircraft,
+            table,
+            mass,
+            json,
+            history,
+        } => {
+            let ac = load_aircraft(&aircraft, mass)?;
+            let section = load_section(&table)?;
+            let t = simulate_takeoff(&ac, &section)?;
+            if let Some(path) = history {
+                let f = std::fs::File::create(&path)
+                    .with_context(|| format!("cannot write history {}", path.display()))?;
+                t.write_history_csv(std::io::BufWriter::new(f))
+                    .with_context(|| format!("cannot write history {}", path.display()))?;
+            }
+            if json {
+                println!("{}", serde_json::to_string_pretty(&TakeoffJson::from(&t))?);
+            } else {
+                print_takeoff(&t);
+            }
+        }
+        Command::Compare {
+            aircraft,
+            clean,
+            contaminated,
+            json,
+        } => {
+            let ac = load_aircraft(&aircraft, None)?;
+            let c = load_section(&clean)?;
+            let d = load_section(&contaminated)?;
+            compare(&ac, &c, &d, json)?;
+        }
+        Command::Sweep {
+            aircraft,
+            table,
+            from_kt,
+            to_kt,
+            step_kt,
+            mass,
+            json,
+        } => {
+            check_speed(from_kt)?;
+            check_speed(to_kt)?;
+            if !(step_kt.is_finite() && step_kt > 0.0) || to_kt < from_kt {
+                bail!("sweep needs --from-kt <= --to-kt and a positive --step-kt");
+            }
+            let ac = load_aircraft(&aircraft, mass)?;
+            let section = load_section(&table)?;
+            let n = ((to_kt - from_kt) / step_kt).floor() as usize + 1;
+            let mut rows = Vec::new();
+            for k in 0..n {
+                let v = from_kt + k as f64 * step_kt;
+                match trim_aircraft(&ac, &section, v, ac.mass_kg, 0.0, &TrimParams::default()) {
+                    Ok(t) => rows.push(TrimJson::from(&t)),
+                    Err(e) => eprintln!("gyro: no trim at {v:.1} kt: {e}"),
+                }
+            }
+            if rows.is_empty() {
+                bail!("no trim point in the speed range");
+            }
+            if json {
+                println!("{}", serde_json::to_string_pretty(&rows)?);
+            } else {
+                println!(
+                    "{:>7} {:>7} {:>7} {:>8} {:>8} {:>8} {:>8} {:>6} {:>7}",
+                    "V[kt]", "n_R", "a_R", "engine", "D_R[N]", "D_P[N]", "F_P[N]", "L/D", "P[kW]"
+                );
+                for r in &rows {
+                    println!(
+                        "{:7.1} {:7.1} {:7.2} {:>8} {:8.1} {:8.1} {:8.1} {:6.2} {:7.1}",
+                        r.speed_kt,
+                        r.rotor_rpm,
+                        r.rotor_aoa_deg,
+                        engine_text(r.engine_rpm),
+                        r.rotor_drag_n,
+                        r.parasitic_drag_n,
+                        r.prop_thrust_n,
+                        r.lift_to_drag,
+                        r.power_required_kw
+                    );
+                }
+            }
+        }
+        Command::Alpha {
+            aircraft,
+            table,
+            speed_kt,
+            radius,
+            samples,
+        } => {
+            check_speed(speed_kt)?;
+            if !(radius > 0.0 && radius <= 1.0) {
+                bail!("--radius must be a fraction of R in (0, 1], got {radius}");
+            }
+            if !(4..=3600).contains(&samples) {
+                bail!("--samples must be between 4 and 3600, got {samples}");
+            }
+            let ac = load_aircraft(&aircraft, None)?;
+            let section = load_section(&table)?;
+            let rotor = Rotor::from_params(&ac.rotor);
+            let atm = Atmosphere::isa(0.0);
+            let s = polargen::rotor::trim::trim_rotor(
+                &rotor,
+                &section,
+                speed_kt * KT_TO_MS,
+                ac.weight_n(),
+                &atm,
+                &TrimParams::default(),
+            )?;
+            println!("psi_deg,alpha_deg");
+            for (psi, a) in rotor.alpha_at_radius(&s, radius, samples) {
+                println!("{psi:.1},{a:.3}");
+            }
+        }
+    }
+    Ok(())
+}
+
+fn main() {
+    let cli = Cli::parse();
+    if let Err(e) = run(cli) {
+        let msg = format!("{e:#}").replace('\n', " ");
+        eprintln!("gyro: {msg}");
+        std::process::exit(1);
+    }
+}

@@ -30,6 +30,7 @@ pub use aircraft::{Aircraft, AircraftError};
 pub use atmosphere::Atmosphere;
 pub use rotor::{FlightCondition, InflowModel, Rotor, RotorError, RotorSolution};
 
+pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
 pub use trim::{TrimError, TrimResult};
 
 /// Knots to metres per second (1 kt = 1852 m / 3600 s, exact by definition).
