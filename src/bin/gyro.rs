@@ -598,7 +598,24 @@ fn run(cli: Cli) -> Result<()> {
 }
 
 fn main() {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if !e.use_stderr() => e.exit(),
+        Err(e) => {
+            let text = e.to_string();
+            let message: Vec<&str> = text
+                .lines()
+                .take_while(|l| !l.starts_with("Usage:"))
+                .map(str::trim)
+                .filter(|l| !l.is_empty())
+                .collect();
+            eprintln!(
+                "gyro: {} (see gyro --help)",
+                message.join(" ").trim_start_matches("error: ")
+            );
+            std::process::exit(2);
+        }
+    };
     if let Err(e) = run(cli) {
         let msg = format!("{e:#}").replace('\n', " ");
         eprintln!("gyro: {msg}");

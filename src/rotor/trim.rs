@@ -272,6 +272,9 @@ pub fn trim_rotor<S: SectionAero + ?Sized>(
                 },
                 Ok((f, _)) => below = Some((aoa, f)),
                 Err(TrimError::NoAutorotation { .. }) if below.is_none() => {}
+                Err(TrimError::NoAutorotation { .. }) => return Err(no_trim(
+                    "the rotor leaves the rpm range searched before its lift reaches the weight",
+                )),
                 Err(e) => return Err(e),
             }
             aoa += params.aoa_scan_step_deg;
