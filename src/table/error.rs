@@ -1,0 +1,158 @@
+//! Errors of table construction, lookup setup and file input/output.
+
+use std::path::PathBuf;
+use thiserror::Error;
+
+/// Why a table could not be built, read or written. Every message is one line naming the
+/// problem.
+#[derive(Debug, Error)]
+pub enum TableError {
+    /// An axis (Re or Mach) has no values.
+    #[error("table has no {0} values")]
+    EmptyAxis(&'static str),
+    /// An axis is not strictly increasing.
+    #[error("{axis} axis is not strictly increasing: {value} follows {previous}")]
+    AxisOrder {
+        /// `Re` or `Mach`.
+        axis: &'static str,
+        /// The earlier value.
+        previous: f64,
+        /// The value that is not larger.
+        value: f64,
+    },
+    /// A Reynolds number is not a positive finite number.
+    #[error("Re must be positive and finite, got {0}")]
+    BadRe(f64),
+    /// A Mach number is outside [0, 1).
+    #[error("Mach must be in [0, 1), got {0}")]
+    BadMach(f64),
+    /// The number of polars does not match the Re × Mach grid.
+    #[error("ragged grid: {n_re} Re × {n_mach} Mach needs {expected} polars, got {got}")]
+    Ragged {
+        /// Re count.
+        n_re: usize,
+        /// Mach count.
+        n_mach: usize,
+        /// n_re · n_mach.
+        expected: usize,
+        /// Polars supplied.
+        got: usize,
+    },
+    /// A (Re, M) node of the grid has no polar.
+    #[error("ragged grid: no polar at Re {re}, M {mach}")]
+    MissingPolar {
+        /// Reynolds number of the empty node.
+        re: f64,
+        /// Mach number of the empty node.
+        mach: f64,
+    },
+    /// The same (Re, M) node was given twice.
+    #[error("duplicate polar at Re {re}, M {mach}")]
+    DuplicatePolar {
+        /// Reynolds number.
+        re: f64,
+        /// Mach number.
+        mach: f64,
+    },
+    /// The same α appears twice in one polar.
+    #[error("duplicate alpha {alpha} in polar Re {re}, M {mach}")]
+    DuplicateAlpha {
+        /// Reynolds number.
+        re: f64,
+        /// Mach number.
+        mach: f64,
+        /// Repeated α [deg].
+        alpha: f64,
+    },
+    /// A converged point (or any α) holds NaN or infinity, or α is outside ±180°.
+    #[error("{field} is {value} at Re {re}, M {mach}, alpha {alpha} (must be finite)")]
+    NotFinite {
+        /// Column name.
+        field: &'static str,
+        /// The bad value.
+        value: f64,
+        /// Reynolds number.
+        re: f64,
+        /// Mach number.
+        mach: f64,
+        /// α [deg].
+        alpha: f64,
+    },
+    /// α outside [−180°, 180°].
+    #[error("alpha {alpha} outside [-180, 180] in polar Re {re}, M {mach}")]
+    AlphaRange {
+        /// Reynolds number.
+        re: f64,
+        /// Mach number.
+        mach: f64,
+        /// α [deg].
+        alpha: f64,
+    },
+    /// No polar of the table has the two converged points a lookup needs.
+    #[error("empty table: no polar has at least 2 converged points")]
+    Empty,
+    /// A CSV record could not be parsed.
+    #[error("CSV line {line}: {message}")]
+    Csv {
+        /// 1-based line number in the file.
+        line: u64,
+        /// What is wrong.
+        message: String,
+    },
+    /// The CSV header lacks a required column.
+    #[error("CSV header lacks column '{0}'")]
+    MissingColumn(String),
+    /// The JSON text is malformed or does not describe a valid table.
+    #[error("JSON line {line}, column {column}: {message}")]
+    Json {
+        /// 1-based line.
+        line: usize,
+        /// 1-based column.
+        column: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// The output format cannot be inferred from a file name.
+    #[error("cannot infer table format from '{0}' (use .csv, .json, .pol or .c81)")]
+    UnknownExtension(String),
+    /// An explicit format name is not known.
+    #[error("unknown table format '{0}' (expected csv, json, xfoil or c81)")]
+    UnknownFormat(String),
+    /// The format has no reader.
+    #[error("{0} files cannot be read back as tables (only CSV and JSON)")]
+    NotReadable(&'static str),
+    /// A C81 table would exceed the format's 2-digit counts.
+    #[error("C81 table needs {count} {what} but the format allows at most 99")]
+    C81TooLarge {
+        /// `alpha rows` or `Mach columns`.
+        what: &'static str,
+        /// Count needed.
+        count: usize,
+    },
+    /// A value does not fit a fixed-width field of a text format.
+    #[error("value {value} does not fit a {width}-character field")]
+    FieldOverflow {
+        /// The value.
+        value: f64,
+        /// Field width.
+        width: usize,
+    },
+    /// Reading or writing a file failed.
+    #[error("{path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The operating-system error.
+        source: std::io::Error,
+    },
+}
+
+impl TableError {
+    /// Wrap an I/O error with the path it concerns.
+    pub fn io(path: impl Into<PathBuf>, source: std::io::Error) -> Self {
+        Self::Io {
+            path: path.into(),
+            source,
+        }
+    }
+}

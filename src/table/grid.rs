@@ -1,0 +1,516 @@
+//! [`PolarTable`]: one polar per node of a Reynolds × Mach grid, with metadata.
+
+use super::error::TableError;
+use super::lookup::{bracket, AlphaCurve};
+use super::post_stall::PostStallParams;
+use crate::polar::PolarPoint;
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+/// How a table was made: the airfoil and the solver settings shared by all its polars.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct TableMeta {
+    /// Airfoil display name.
+    pub airfoil: String,
+    /// e^n transition criterion N_crit.
+    pub ncrit: f64,
+    /// Forced transition x/c on the upper surface (1 = free transition).
+    pub xtr_top_set: f64,
+    /// Forced transition x/c on the lower surface (1 = free transition).
+    pub xtr_bot_set: f64,
+    /// Number of panel nodes on the airfoil.
+    pub panels: usize,
+    /// Solver name and version that produced the polars.
+    pub solver: String,
+}
+
+/// A Re × Mach × α table of section coefficients: one polar (list of solved points, converged
+/// or not) per (Re, M) node.
+///
+/// Axes are strictly increasing; polars are stored Re-major (`index = i_re·n_mach + i_mach`)
+/// with their points sorted by α. Unconverged points are kept (and written to CSV/JSON) but
+/// never used by [`lookup`](super::SectionAero::lookup).
+#[derive(Clone, Debug)]
+pub struct PolarTable {
+    meta: TableMeta,
+    re: Vec<f64>,
+    mach: Vec<f64>,
+    polars: Vec<Vec<PolarPoint>>,
+    params: PostStallParams,
+    /// ln of the Re axis (lookups interpolate linearly in ln Re).
+    ln_re: Vec<f64>,
+    /// Prepared α curve per node; a node with < 2 converged points holds a copy of its
+    /// nearest usable neighbour's curve, flagged as a substitute.
+    curves: Vec<AlphaCurve>,
+}
+
+impl PartialEq for PolarTable {
+    /// Tables are equal when their metadata, axes, polars and post-stall settings are.
+    fn eq(&self, other: &Self) -> bool {
+        self.meta == other.meta
+            && self.re == other.re
+            && self.mach == other.mach
+            && self.polars == other.polars
+            && self.params == other.params
+    }
+}
+
+impl PolarTable {
+    /// Build a table from its axes and `re.len()·mach.len()` polars in Re-major order.
+    ///
+    /// Validates: non-empty, strictly increasing axes; Re > 0 and finite; 0 ≤ M < 1; finite
+    /// α within ±180°, unique within each polar; finite coefficients at converged points; at
+    /// least one polar with two converged points. Points are sorted by α.
+    pub fn new(
+        meta: TableMeta,
+        re: Vec<f64>,
+        mach: Vec<f64>,
+        polars: Vec<Vec<PolarPoint>>,
+    ) -> Result<Self, TableError> {
+        Self::with_params(meta, re, mach, polars, PostStallParams::default())
+    }
+
+    /// As [`new`](Self::new), with explicit 360°-extension parameters.
+    pub fn with_params(
+        meta: TableMeta,
+        re: Vec<f64>,
+        mach: Vec<f64>,
+        mut polars: Vec<Vec<PolarPoint>>,
+        params: PostStallParams,
+    ) -> Result<Self, TableError> {
+        check_axis("Re", &re)?;
+        check_axis("Mach", &mach)?;
+        if let Some(&r) = re.iter().find(|r| !(r.is_finite() && **r > 0.0)) {
+            return Err(TableError::BadRe(r));
+        }
+        if let Some(&m) = mach.iter().find(|m| !((0.0..1.0).contains(*m))) {
+            return Err(TableError::BadMach(m));
+        }
+        let expected = re.len() * mach.len();
+        if polars.len() != expected {
+            return Err(TableError::Ragged {
+                n_re: re.len(),
+                n_mach: mach.len(),
+                expected,
+                got: polars.len(),
+            });
+        }
+        for (k, polar) in polars.iter_mut().enumerate() {
+            let (r, m) = (re[k / mach.len()], mach[k % mach.len()]);
+            check_polar(r, m, polar)?;
+        }
+        let ln_re = re.iter().map(|r| r.ln()).collect();
+        let curves = build_curves(&re, &mach, &polars, params)?;
+        Ok(Self {
+            meta,
+            re,
+            mach,
+            polars,
+            params,
+            ln_re,
+            curves,
+        })
+    }
+
+    /// Build a table from `(re, mach, points)` polars in any order; the axes are the sorted
+    /// distinct Re and M values, and every (Re, M) pair must appear exactly once.
+    pub fn from_polars(
+        meta: TableMeta,
+        polars: Vec<(f64, f64, Vec<PolarPoint>)>,
+    ) -> Result<Self, TableError> {
+        let mut re: Vec<f64> = polars.iter().map(|p| p.0).collect();
+        let mut mach: Vec<f64> = polars.iter().map(|p| p.1).collect();
+        for v in re.iter().chain(mach.iter()) {
+            if v.is_nan() {
+                return Err(TableError::BadRe(*v));
+            }
+        }
+        re.sort_by(f64::total_cmp);
+        re.dedup();
+        mach.sort_by(f64::total_cmp);
+        mach.dedup();
+        if re.is_empty() {
+            return Err(TableError::EmptyAxis("Re"));
+        }
+        let mut slots: Vec<Option<Vec<PolarPoint>>> = vec![None; re.len() * mach.len()];
+        for (r, m, pts) in polars {
+            let i = re.partition_point(|&v| v < r);
+            let j = mach.partition_point(|&v| v < m);
+            let slot = &mut slots[i * mach.len() + j];
+            if slot.is_some() {
+                return Err(TableError::DuplicatePolar { re: r, mach: m });
+            }
+            *slot = Some(pts);
+        }
+        let mut grid = Vec::with_capacity(slots.len());
+        for (k, s) in slots.into_iter().enumerate() {
+            match s {
+                Some(p) => grid.push(p),
+                None => {
+                    return Err(TableError::MissingPolar {
+                        re: re[k / mach.len()],
+                        mach: mach[k % mach.len()],
+                    })
+                }
+            }
+        }
+        Self::new(meta, re, mach, grid)
+    }
+
+    /// The same table with other 360°-extension parameters.
+    pub fn with_post_stall(self, params: PostStallParams) -> Result<Self, TableError> {
+        Self::with_params(self.meta, self.re, self.mach, self.polars, params)
+    }
+
+    /// Metadata.
+    pub fn meta(&self) -> &TableMeta {
+        &self.meta
+    }
+
+    /// Reynolds-number axis (strictly increasing).
+    pub fn re(&self) -> &[f64] {
+        &self.re
+    }
+
+    /// Mach-number axis (strictly increasing).
+    pub fn mach(&self) -> &[f64] {
+        &self.mach
+    }
+
+    /// ln of the Re axis.
+    pub(crate) fn ln_re(&self) -> &[f64] {
+        &self.ln_re
+    }
+
+    /// 360°-extension parameters.
+    pub fn post_stall_params(&self) -> &PostStallParams {
+        &self.params
+    }
+
+    /// The polar at grid indices (`i_re`, `i_mach`), sorted by α; `None` outside the grid.
+    pub fn polar_at(&self, i_re: usize, i_mach: usize) -> Option<&[PolarPoint]> {
+        if i_re < self.re.len() && i_mach < self.mach.len() {
+            Some(&self.polars[i_re * self.mach.len() + i_mach])
+        } else {
+            None
+        }
+    }
+
+    /// The polar at exactly this (Re, M) node (relative tolerance 1e-9), if there is one.
+    pub fn polar(&self, re: f64, mach: f64) -> Option<&[PolarPoint]> {
+        let i = self
+            .re
+            .iter()
+            .position(|&r| (r - re).abs() <= 1e-9 * r.abs())?;
+        let j = self
+            .mach
+            .iter()
+            .position(|&m| (m - mach).abs() <= 1e-9 * m.abs().max(1.0))?;
+        self.polar_at(i, j)
+    }
+
+    /// The node nearest to (Re, M) — nearest in ln Re and in M separately — as
+    /// `(re, mach, points)`.
+    pub fn nearest_polar(&self, re: f64, mach: f64) -> (f64, f64, &[PolarPoint]) {
+        let ln = if re > 0.0 { re.ln() } else { f64::NEG_INFINITY };
+        let nearest = |axis: &[f64], x: f64| {
+            let (i, w, _) = bracket(axis, x);
+            if w > 0.5 {
+                i + 1
+            } else {
+                i
+            }
+        };
+        let i = nearest(&self.ln_re, ln);
+        let j = nearest(&self.mach, mach);
+        (
+            self.re[i],
+            self.mach[j],
+            &self.polars[i * self.mach.len() + j],
+        )
+    }
+
+    /// All polars as `(re, mach, points)`, Re-major.
+    pub fn polars(&self) -> impl Iterator<Item = (f64, f64, &[PolarPoint])> {
+        let nm = self.mach.len();
+        self.polars
+            .iter()
+            .enumerate()
+            .map(move |(k, p)| (self.re[k / nm], self.mach[k % nm], p.as_slice()))
+    }
+
+    /// Total number of points (converged or not).
+    pub fn point_count(&self) -> usize {
+        self.polars.iter().map(Vec::len).sum()
+    }
+
+    /// Number of converged points.
+    pub fn converged_count(&self) -> usize {
+        self.polars.iter().flatten().filter(|p| p.converged).count()
+    }
+
+    /// First and last converged α [deg] of the curve used at node (`i_re`, `i_mach`) (that of
+    /// the nearest usable neighbour if the node's own polar has < 2 converged points).
+    pub fn alpha_range(&self, i_re: usize, i_mach: usize) -> Option<(f64, f64)> {
+        (i_re < self.re.len() && i_mach < self.mach.len())
+            .then(|| self.curves[i_re * self.mach.len() + i_mach].alpha_range())
+    }
+
+    /// Prepared α curve of a node.
+    #[inline]
+    pub(crate) fn curve(&self, i_re: usize, i_mach: usize) -> &AlphaCurve {
+        &self.curves[i_re * self.mach.len() + i_mach]
+    }
+}
+
+/// Non-empty and strictly increasing.
+fn check_axis(name: &'static str, axis: &[f64]) -> Result<(), TableError> {
+    if axis.is_empty() {
+        return Err(TableError::EmptyAxis(name));
+    }
+    for w in axis.windows(2) {
+        if w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater) {
+            return Err(TableError::AxisOrder {
+                axis: name,
+                previous: w[0],
+                value: w[1],
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Sort a polar by α and check α and the converged coefficients.
+fn check_polar(re: f64, mach: f64, polar: &mut [PolarPoint]) -> Result<(), TableError> {
+    for p in polar.iter() {
+        if !p.alpha.is_finite() {
+            return Err(TableError::NotFinite {
+                field: "alpha",
+                value: p.alpha,
+                re,
+                mach,
+                alpha: p.alpha,
+            });
+        }
+        if p.alpha.abs() > 180.0 {
+            return Err(TableError::AlphaRange {
+                re,
+                mach,
+                alpha: p.alpha,
+            });
+        }
+        if p.converged {
+            for (field, value) in [("cl", p.cl), ("cd", p.cd), ("cm", p.cm)] {
+                if !value.is_finite() {
+                    return Err(TableError::NotFinite {
+                        field,
+                        value,
+                        re,
+                        mach,
+                        alpha: p.alpha,
+                    });
+                }
+            }
+        }
+    }
+    polar.sort_by(|a, b| a.alpha.total_cmp(&b.alpha));
+    if let Some(w) = polar.windows(2).find(|w| w[0].alpha == w[1].alpha) {
+        return Err(TableError::DuplicateAlpha {
+            re,
+            mach,
+            alpha: w[0].alpha,
+        });
+    }
+    Ok(())
+}
+
+/// Prepare the α curve of every node; a node without two converged points borrows the curve
+/// of the nearest usable node (first along M in the same Re row, then along Re), flagged.
+fn build_curves(
+    re: &[f64],
+    mach: &[f64],
+    polars: &[Vec<PolarPoint>],
+    params: PostStallParams,
+) -> Result<Vec<AlphaCurve>, TableError> {
+    let nm = mach.len();
+    let own: Vec<Option<AlphaCurve>> = polars.iter().map(|p| AlphaCurve::new(p, params)).collect();
+    if own.iter().all(Option::is_none) {
+        return Err(TableError::Empty);
+    }
+    let ln_re: Vec<f64> = re.iter().map(|r| r.ln()).collect();
+    // Distance in grid-normalised units: M steps count less than Re steps so that a
+    // same-Re neighbour is preferred.
+    let span_re = (ln_re[ln_re.len() - 1] - ln_re[0]).max(1e-300);
+    let span_m = (mach[nm - 1] - mach[0]).max(1e-300);
+    let mut curves = Vec::with_capacity(own.len());
+    for k in 0..own.len() {
+        if let Some(c) = &own[k] {
+            curves.push(c.clone());
+            continue;
+        }
+        let (i, j) = (k / nm, k % nm);
+        let best = (0..own.len())
+            .filter(|&q| own[q].is_some())
+            .min_by(|&p, &q| {
+                let d = |q: usize| {
+                    let dr = (ln_re[q / nm] - ln_re[i]) / span_re;
+                    let dm = (mach[q % nm] - mach[j]) / span_m;
+                    10.0 * dr.abs() + dm.abs()
+                };
+                d(p).total_cmp(&d(q))
+            })
+            .ok_or(TableError::Empty)?;
+        let mut c = own[best].clone().ok_or(TableError::Empty)?;
+        c.substitute = true;
+        curves.push(c);
+    }
+    Ok(curves)
+}
+
+/// Serde form of one point: like [`PolarPoint`] but NaN/∞ (possible in unconverged points)
+/// are written as the strings `"NaN"`, `"inf"`, `"-inf"` so that JSON can hold them.
+#[derive(Serialize, Deserialize)]
+struct PointRecord {
+    #[serde(with = "nonfinite")]
+    alpha: f64,
+    #[serde(with = "nonfinite")]
+    cl: f64,
+    #[serde(with = "nonfinite")]
+    cd: f64,
+    #[serde(with = "nonfinite")]
+    cdp: f64,
+    #[serde(with = "nonfinite")]
+    cdf: f64,
+    #[serde(with = "nonfinite")]
+    cm: f64,
+    #[serde(with = "nonfinite")]
+    xtr_top: f64,
+    #[serde(with = "nonfinite")]
+    xtr_bot: f64,
+    converged: bool,
+    iterations: u32,
+    #[serde(with = "nonfinite")]
+    residual: f64,
+}
+
+impl From<&PolarPoint> for PointRecord {
+    fn from(p: &PolarPoint) -> Self {
+        Self {
+            alpha: p.alpha,
+            cl: p.cl,
+            cd: p.cd,
+            cdp: p.cdp,
+            cdf: p.cdf,
+            cm: p.cm,
+            xtr_top: p.xtr_top,
+            xtr_bot: p.xtr_bot,
+            converged: p.converged,
+            iterations: p.iterations,
+            residual: p.residual,
+        }
+    }
+}
+
+impl From<PointRecord> for PolarPoint {
+    fn from(p: PointRecord) -> Self {
+        Self {
+            alpha: p.alpha,
+            cl: p.cl,
+            cd: p.cd,
+            cdp: p.cdp,
+            cdf: p.cdf,
+            cm: p.cm,
+            xtr_top: p.xtr_top,
+            xtr_bot: p.xtr_bot,
+            converged: p.converged,
+            iterations: p.iterations,
+            residual: p.residual,
+        }
+    }
+}
+
+/// The serde form of a table (what JSON files hold).
+#[derive(Serialize, Deserialize)]
+struct TableRecord {
+    meta: TableMeta,
+    re: Vec<f64>,
+    mach: Vec<f64>,
+    #[serde(default)]
+    post_stall: Option<PostStallParams>,
+    /// Re-major, one list of points per (Re, M).
+    polars: Vec<Vec<PointRecord>>,
+}
+
+impl Serialize for PolarTable {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        TableRecord {
+            meta: self.meta.clone(),
+            re: self.re.clone(),
+            mach: self.mach.clone(),
+            post_stall: Some(self.params),
+            polars: self
+                .polars
+                .iter()
+                .map(|p| p.iter().map(PointRecord::from).collect())
+                .collect(),
+        }
+        .serialize(s)
+    }
+}
+
+impl<'de> Deserialize<'de> for PolarTable {
+    /// Deserialise and validate (the same checks as [`PolarTable::new`]).
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let r = TableRecord::deserialize(d)?;
+        let polars = r
+            .polars
+            .into_iter()
+            .map(|p| p.into_iter().map(PolarPoint::from).collect())
+            .collect();
+        Self::with_params(
+            r.meta,
+            r.re,
+            r.mach,
+            polars,
+            r.post_stall.unwrap_or_default(),
+        )
+        .map_err(serde::de::Error::custom)
+    }
+}
+
+/// Serde helpers: finite floats as numbers, NaN and ±∞ as strings.
+mod nonfinite {
+    use serde::{de, Deserialize, Deserializer, Serializer};
+
+    /// Write a finite value as a number, otherwise as `"NaN"`, `"inf"` or `"-inf"`.
+    pub fn serialize<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
+        if v.is_finite() {
+            s.serialize_f64(*v)
+        } else if v.is_nan() {
+            s.serialize_str("NaN")
+        } else if *v > 0.0 {
+            s.serialize_str("inf")
+        } else {
+            s.serialize_str("-inf")
+        }
+    }
+
+    #[derive(Deserialize)]
+    #[serde(untagged)]
+    enum NumOrText {
+        Num(f64),
+        Text(String),
+    }
+
+    /// Read a number, or one of the strings written by [`serialize`].
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+        match NumOrText::deserialize(d)? {
+            NumOrText::Num(v) => Ok(v),
+            NumOrText::Text(t) => match t.as_str() {
+                "NaN" => Ok(f64::NAN),
+                "inf" => Ok(f64::INFINITY),
+                "-inf" => Ok(f64::NEG_INFINITY),
+                _ => Err(de::Error::custom(format!("'{t}' is not a number"))),
+            },
+        }
+    }
+}

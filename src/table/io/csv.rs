@@ -1,0 +1,283 @@
+//! CSV, long form: one row per point, the table's metadata repeated on every row.
+//!
+//! Columns: `airfoil,re,mach,ncrit,xtr_top_set,xtr_bot_set,alpha,cl,cd,cdp,cm,xtr_top,xtr_bot,
+//! converged,cdf,iterations,residual,panels,solver`. Floats are written with Rust's shortest
+//! round-trip formatting, so reading a file back gives the identical table. The reader needs
+//! the first fourteen columns (any order); `cdf` (default cd − cdp), `iterations`, `residual`,
+//! `panels` (default 0) and `solver` (default empty) are optional. A (Re, M) node without rows
+//! cannot be represented and reads back as a ragged grid.
+
+use super::atomic::write_atomic;
+use crate::polar::PolarPoint;
+use crate::table::{PolarTable, TableError, TableMeta};
+use std::collections::HashMap;
+use std::io::{Read, Write};
+use std::path::Path;
+
+/// Column names written, in order.
+pub const COLUMNS: [&str; 19] = [
+    "airfoil",
+    "re",
+    "mach",
+    "ncrit",
+    "xtr_top_set",
+    "xtr_bot_set",
+    "alpha",
+    "cl",
+    "cd",
+    "cdp",
+    "cm",
+    "xtr_top",
+    "xtr_bot",
+    "converged",
+    "cdf",
+    "iterations",
+    "residual",
+    "panels",
+    "solver",
+];
+
+/// Columns a CSV file must have.
+pub const REQUIRED: usize = 14;
+
+/// Write `table` as long-form CSV to `w`.
+pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableError> {
+    let werr = |e: csv::Error| TableError::Csv {
+        line: e.position().map_or(0, |p| p.line()),
+        message: e.to_string(),
+    };
+    let mut out = csv::Writer::from_writer(w);
+    out.write_record(COLUMNS).map_err(werr)?;
+    let m = table.meta();
+    let panels = m.panels.to_string();
+    let (ncrit, xt, xb) = (
+        m.ncrit.to_string(),
+        m.xtr_top_set.to_string(),
+        m.xtr_bot_set.to_string(),
+    );
+    for (re, mach, points) in table.polars() {
+        let (re, mach) = (re.to_string(), mach.to_string());
+        for p in points {
+            out.write_record([
+                m.airfoil.as_str(),
+                &re,
+                &mach,
+                &ncrit,
+                &xt,
+                &xb,
+                &p.alpha.to_string(),
+                &p.cl.to_string(),
+                &p.cd.to_string(),
+                &p.cdp.to_string(),
+                &p.cm.to_string(),
+                &p.xtr_top.to_string(),
+                &p.xtr_bot.to_string(),
+                if p.converged { "true" } else { "false" },
+                &p.cdf.to_string(),
+                &p.iterations.to_string(),
+                &p.residual.to_string(),
+                &panels,
+                &m.solver,
+            ])
+            .map_err(werr)?;
+        }
+    }
+    out.flush().map_err(|e| TableError::io("<csv writer>", e))
+}
+
+/// Write `table` as CSV to `path` (atomically).
+pub fn write_csv(table: &PolarTable, path: &Path) -> Result<(), TableError> {
+    write_atomic(path, |w| write_csv_to(table, w))
+}
+
+/// Read a table from a CSV file.
+pub fn read_csv(path: &Path) -> Result<PolarTable, TableError> {
+    let f = std::fs::File::open(path).map_err(|e| TableError::io(path, e))?;
+    parse_csv(std::io::BufReader::new(f))
+}
+
+/// Parse a long-form CSV table from `r`.
+pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
+    let mut rd = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .from_reader(r);
+    let header = rd
+        .headers()
+        .map_err(|e| csv_error(&e, 1))?
+        .iter()
+        .map(str::to_string)
+        .collect::<Vec<_>>();
+    let mut col = [usize::MAX; COLUMNS.len()];
+    for (k, name) in COLUMNS.iter().enumerate() {
+        match header.iter().position(|h| h == name) {
+            Some(i) => col[k] = i,
+            None if k < REQUIRED => return Err(TableError::MissingColumn(name.to_string())),
+            None => {}
+        }
+    }
+    let mut meta: Option<(TableMeta, u64)> = None;
+    let mut index: HashMap<(u64, u64), usize> = HashMap::new();
+    let mut polars: Vec<(f64, f64, Vec<PolarPoint>)> = Vec::new();
+    for rec in rd.records() {
+        let rec = rec.map_err(|e| csv_error(&e, 0))?;
+        let line = rec.position().map_or(0, |p| p.line());
+        let row = Row {
+            rec: &rec,
+            col: &col,
+            line,
+        };
+        let this = TableMeta {
+            airfoil: row.text(0)?.to_string(),
+            ncrit: row.num(3)?,
+            xtr_top_set: row.num(4)?,
+            xtr_bot_set: row.num(5)?,
+            panels: row.opt_int(17)?.unwrap_or(0) as usize,
+            solver: row.opt_text(18).unwrap_or("").to_string(),
+        };
+        match &meta {
+            None => meta = Some((this, line)),
+            Some((m, first)) => {
+                if let Some(field) = meta_difference(m, &this) {
+                    return Err(TableError::Csv {
+                        line,
+                        message: format!("{field} differs from line {first}"),
+                    });
+                }
+            }
+        }
+        let (re, mach) = (row.num(1)?, row.num(2)?);
+        if !(re.is_finite() && mach.is_finite()) {
+            return Err(TableError::Csv {
+                line,
+                message: "re and mach must be finite".into(),
+            });
+        }
+        let converged = row.flag(13)?;
+        let cd = row.num(8)?;
+        let cdp = row.num(9)?;
+        let p = PolarPoint {
+            alpha: row.num(6)?,
+            cl: row.num(7)?,
+            cd,
+            cdp,
+            cdf: row.opt_num(14)?.unwrap_or(cd - cdp),
+            cm: row.num(10)?,
+            xtr_top: row.num(11)?,
+            xtr_bot: row.num(12)?,
+            converged,
+            iterations: row.opt_int(15)?.unwrap_or(0) as u32,
+            residual: row.opt_num(16)?.unwrap_or(0.0),
+        };
+        if converged {
+            for (name, v) in [("alpha", p.alpha), ("cl", p.cl), ("cd", p.cd), ("cm", p.cm)] {
+                if !v.is_finite() {
+                    return Err(TableError::Csv {
+                        line,
+                        message: format!("{name} is {v} in a converged point"),
+                    });
+                }
+            }
+        }
+        let key = (re.to_bits(), mach.to_bits());
+        let k = *index.entry(key).or_insert_with(|| {
+            polars.push((re, mach, Vec::new()));
+            polars.len() - 1
+        });
+        polars[k].2.push(p);
+    }
+    let Some((meta, _)) = meta else {
+        return Err(TableError::Csv {
+            line: 2,
+            message: "no data rows (empty table)".into(),
+        });
+    };
+    PolarTable::from_polars(meta, polars)
+}
+
+/// Name of the first metadata field in which `b` differs from `a`.
+fn meta_difference(a: &TableMeta, b: &TableMeta) -> Option<&'static str> {
+    if a.airfoil != b.airfoil {
+        Some("airfoil")
+    } else if a.ncrit.to_bits() != b.ncrit.to_bits() {
+        Some("ncrit")
+    } else if a.xtr_top_set.to_bits() != b.xtr_top_set.to_bits() {
+        Some("xtr_top_set")
+    } else if a.xtr_bot_set.to_bits() != b.xtr_bot_set.to_bits() {
+        Some("xtr_bot_set")
+    } else if a.panels != b.panels {
+        Some("panels")
+    } else if a.solver != b.solver {
+        Some("solver")
+    } else {
+        None
+    }
+}
+
+/// A csv-crate error as a one-line [`TableError::Csv`].
+fn csv_error(e: &csv::Error, fallback_line: u64) -> TableError {
+    let line = e.position().map_or(fallback_line, |p| p.line());
+    let message = match e.kind() {
+        csv::ErrorKind::UnequalLengths {
+            expected_len, len, ..
+        } => format!("{len} fields, expected {expected_len}"),
+        csv::ErrorKind::Utf8 { .. } => "invalid UTF-8".to_string(),
+        _ => e.to_string().replace('\n', " "),
+    };
+    TableError::Csv { line, message }
+}
+
+/// One record with the column map.
+struct Row<'a> {
+    rec: &'a csv::StringRecord,
+    col: &'a [usize; COLUMNS.len()],
+    line: u64,
+}
+
+impl Row<'_> {
+    fn opt_text(&self, k: usize) -> Option<&str> {
+        (self.col[k] != usize::MAX).then(|| self.rec.get(self.col[k]).unwrap_or(""))
+    }
+
+    fn text(&self, k: usize) -> Result<&str, TableError> {
+        self.opt_text(k)
+            .ok_or_else(|| TableError::MissingColumn(COLUMNS[k].to_string()))
+    }
+
+    fn bad(&self, k: usize, s: &str, what: &str) -> TableError {
+        TableError::Csv {
+            line: self.line,
+            message: format!("{} '{s}' is not {what}", COLUMNS[k]),
+        }
+    }
+
+    fn num(&self, k: usize) -> Result<f64, TableError> {
+        let s = self.text(k)?;
+        s.parse().map_err(|_| self.bad(k, s, "a number"))
+    }
+
+    fn opt_num(&self, k: usize) -> Result<Option<f64>, TableError> {
+        match self.opt_text(k) {
+            None => Ok(None),
+            Some(s) => s.parse().map(Some).map_err(|_| self.bad(k, s, "a number")),
+        }
+    }
+
+    fn opt_int(&self, k: usize) -> Result<Option<u64>, TableError> {
+        match self.opt_text(k) {
+            None => Ok(None),
+            Some(s) => s
+                .parse()
+                .map(Some)
+                .map_err(|_| self.bad(k, s, "a non-negative integer")),
+        }
+    }
+
+    fn flag(&self, k: usize) -> Result<bool, TableError> {
+        let s = self.text(k)?;
+        match s.to_ascii_lowercase().as_str() {
+            "true" | "1" | "yes" => Ok(true),
+            "false" | "0" | "no" => Ok(false),
+            _ => Err(self.bad(k, s, "true or false")),
+        }
+    }
+}

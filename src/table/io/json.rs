@@ -1,0 +1,46 @@
+//! JSON: the serde form of a [`PolarTable`] (metadata, axes, Re-major polars, post-stall
+//! parameters), pretty-printed. Non-finite values of unconverged points are written as the
+//! strings `"NaN"`, `"inf"`, `"-inf"`.
+
+use super::atomic::write_atomic;
+use crate::table::{PolarTable, TableError};
+use std::io::Write;
+use std::path::Path;
+
+/// Write `table` as JSON to `w`.
+pub fn write_json_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableError> {
+    serde_json::to_writer_pretty(&mut *w, table).map_err(|e| json_error(&e))?;
+    w.write_all(b"\n")
+        .map_err(|e| TableError::io("<json writer>", e))
+}
+
+/// Write `table` as JSON to `path` (atomically).
+pub fn write_json(table: &PolarTable, path: &Path) -> Result<(), TableError> {
+    write_atomic(path, |w| write_json_to(table, w))
+}
+
+/// Parse a table from JSON text (validated like [`PolarTable::new`]).
+pub fn parse_json(text: &str) -> Result<PolarTable, TableError> {
+    serde_json::from_str(text).map_err(|e| json_error(&e))
+}
+
+/// Read a table from a JSON file.
+pub fn read_json(path: &Path) -> Result<PolarTable, TableError> {
+    let text = std::fs::read_to_string(path).map_err(|e| TableError::io(path, e))?;
+    parse_json(&text)
+}
+
+/// A serde_json error as a one-line [`TableError::Json`].
+fn json_error(e: &serde_json::Error) -> TableError {
+    let full = e.to_string();
+    // serde_json appends " at line L column C"; the position is reported separately.
+    let message = match full.rfind(" at line ") {
+        Some(i) => full[..i].to_string(),
+        None => full,
+    };
+    TableError::Json {
+        line: e.line(),
+        column: e.column(),
+        message: message.replace('\n', " "),
+    }
+}

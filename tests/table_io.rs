@@ -1,0 +1,458 @@
+//! Table files: CSV/JSON round trips, XFOIL polar and C81 structure, atomic writes, format
+//! inference and error messages.
+
+mod table_support;
+
+use polargen::polar::PolarPoint;
+use polargen::table::io::c81::{write_c81, C81Options};
+use polargen::table::io::csv::parse_csv;
+use polargen::table::io::json::parse_json;
+use polargen::table::io::write_atomic;
+use polargen::table::io::xfoil_polar::{polar_file_name, re_label};
+use polargen::table::{read_table, write_table, PolarTable, SectionAero, TableError, TableFormat};
+use std::path::{Path, PathBuf};
+use table_support::*;
+
+/// A fresh, empty scratch folder in the system temporary directory.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("polargen_table_{name}_{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn files_in(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
+/// A table with awkward values: non-terminating binary fractions, tiny and large magnitudes,
+/// unconverged points holding NaN and ±∞, a name with a comma.
+fn awkward_table() -> PolarTable {
+    let alphas = alpha_range(-4.0, 8.0, 0.5);
+    let mut list = Vec::new();
+    for &re in &[2.5e5, 1.9e6] {
+        for &m in &[0.0, 0.41] {
+            let mut pts = analytic_polar(re, m, &alphas);
+            for (k, p) in pts.iter_mut().enumerate() {
+                p.cl += 0.1 / 3.0 + 1e-17 * k as f64;
+                p.cd *= 1.0 + std::f64::consts::PI * 1e-7;
+                p.residual = 1.234e-300 * (k + 1) as f64;
+                p.iterations = k as u32;
+            }
+            pts[3].converged = false;
+            pts[3].cl = f64::NAN;
+            pts[4].converged = false;
+            pts[4].cd = f64::INFINITY;
+            pts[4].cm = f64::NEG_INFINITY;
+            list.push((re, m, pts));
+        }
+    }
+    let mut m = meta("NACA 8-H-12, \"reflexed\"");
+    m.xtr_top_set = 0.07;
+    m.xtr_bot_set = 0.07;
+    PolarTable::from_polars(m, list).unwrap()
+}
+
+#[test]
+fn csv_round_trip_is_exact() {
+    let t = awkward_table();
+    let dir = scratch("csv_rt");
+    let path = dir.join("t.csv");
+    assert_eq!(write_table(&t, &path, None).unwrap(), vec![path.clone()]);
+    let back = read_table(&path).unwrap();
+    assert!(same_bits(&t, &back));
+    let text = std::fs::read_to_string(&path).unwrap();
+    let header = text.lines().next().unwrap();
+    assert!(header.starts_with(
+        "airfoil,re,mach,ncrit,xtr_top_set,xtr_bot_set,alpha,cl,cd,cdp,cm,xtr_top,xtr_bot,converged"
+    ));
+    assert_eq!(text.lines().count(), 1 + t.point_count());
+    // Lookups on the read-back table are identical.
+    for a in [-3.3, 2.0, 40.0, -170.0] {
+        assert_eq!(t.lookup(a, 1e6, 0.2), back.lookup(a, 1e6, 0.2));
+    }
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn json_round_trip_is_exact() {
+    let t = awkward_table();
+    let dir = scratch("json_rt");
+    let path = dir.join("sub/t.json");
+    write_table(&t, &path, None).unwrap();
+    let back = read_table(&path).unwrap();
+    assert!(same_bits(&t, &back));
+    assert_eq!(back.post_stall_params(), t.post_stall_params());
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(text.contains("\"NaN\"") && text.contains("\"-inf\""));
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn csv_reader_accepts_minimal_columns_in_any_order() {
+    let text = "alpha,re,mach,airfoil,ncrit,xtr_top_set,xtr_bot_set,cl,cd,cdp,cm,xtr_top,xtr_bot,converged\n\
+                1,1e6,0,foil,9,1,1,0.11,0.01,0.004,-0.01,0.5,0.9,true\n\
+                0,1e6,0,foil,9,1,1,0,0.009,0.003,-0.012,0.6,0.8,1\n\
+                2,1e6,0,foil,9,1,1,0.22,0.012,0.005,-0.008,0.4,1,false\n";
+    let t = parse_csv(text.as_bytes()).unwrap();
+    assert_eq!(t.meta().airfoil, "foil");
+    assert_eq!(t.meta().panels, 0);
+    let p = t.polar(1e6, 0.0).unwrap();
+    assert_eq!(p.len(), 3);
+    assert_eq!(p[1].alpha, 1.0);
+    assert!((p[1].cdf - 0.006).abs() < 1e-15);
+    assert!(!p[2].converged);
+    assert_eq!(t.converged_count(), 2);
+}
+
+fn csv_err(text: &str) -> String {
+    parse_csv(text.as_bytes()).unwrap_err().to_string()
+}
+
+const HEAD: &str =
+    "airfoil,re,mach,ncrit,xtr_top_set,xtr_bot_set,alpha,cl,cd,cdp,cm,xtr_top,xtr_bot,converged\n";
+
+#[test]
+fn csv_errors_name_the_line_and_problem() {
+    assert_eq!(
+        csv_err("airfoil,re,mach,ncrit,xtr_top_set,xtr_bot_set,alpha,cl,cd,cdp,xtr_top,xtr_bot,converged\n"),
+        "CSV header lacks column 'cm'"
+    );
+    let e = csv_err(&format!(
+        "{HEAD}f,1e6,0,9,1,1,0,0,0.01,0,0,1,1,true\nf,1e6,0,9,1,1,1,abc,0.01,0,0,1,1,true\n"
+    ));
+    assert_eq!(e, "CSV line 3: cl 'abc' is not a number");
+    let e = csv_err(&format!("{HEAD}f,1e6,0,9,1,1,0,0,NaN,0,0,1,1,true\n"));
+    assert_eq!(e, "CSV line 2: cd is NaN in a converged point");
+    let e = csv_err(&format!("{HEAD}f,1e6,0,9,1,1,0,0,0.01,0,0,1,1,maybe\n"));
+    assert_eq!(e, "CSV line 2: converged 'maybe' is not true or false");
+    let e = csv_err(&format!("{HEAD}f,1e6,0,9,1,1,0,0,0.01,0,0,1\n"));
+    assert_eq!(e, "CSV line 2: 12 fields, expected 14");
+    let e = csv_err(&format!(
+        "{HEAD}f,1e6,0,9,1,1,0,0,0.01,0,0,1,1,true\ng,1e6,0,9,1,1,1,0,0.01,0,0,1,1,true\n"
+    ));
+    assert_eq!(e, "CSV line 3: airfoil differs from line 2");
+    assert_eq!(csv_err(HEAD), "CSV line 2: no data rows (empty table)");
+    // Ragged: Re 2e6 has only M 0, Re 1e6 only M 0.2.
+    let e = csv_err(&format!(
+        "{HEAD}f,1e6,0.2,9,1,1,0,0,0.01,0,0,1,1,true\nf,1e6,0.2,9,1,1,1,0,0.01,0,0,1,1,true\n\
+         f,2e6,0,9,1,1,0,0,0.01,0,0,1,1,true\nf,2e6,0,9,1,1,1,0,0.01,0,0,1,1,true\n"
+    ));
+    assert_eq!(e, "ragged grid: no polar at Re 1000000, M 0");
+    let e = csv_err(&format!("{HEAD}f,1e6,1.5,9,1,1,0,0,0.01,0,0,1,1,true\n"));
+    assert_eq!(e, "Mach must be in [0, 1), got 1.5");
+}
+
+#[test]
+fn json_errors_name_the_position_and_problem() {
+    let e = parse_json("{\n  \"meta\": [1,\n").unwrap_err();
+    assert!(matches!(e, TableError::Json { line: 2, .. }), "{e}");
+    let t = awkward_table();
+    let text = serde_json::to_string_pretty(&t)
+        .unwrap()
+        .replacen("0.41", "1.41", 1);
+    let e = parse_json(&text).unwrap_err().to_string();
+    assert!(
+        e.starts_with("JSON line") && e.contains("Mach must be in [0, 1), got 1.41"),
+        "{e}"
+    );
+    assert!(!e.contains('\n'));
+    let e = parse_json("{\"meta\": 3}").unwrap_err().to_string();
+    assert!(
+        e.starts_with("JSON line 1, column") && e.contains("invalid type"),
+        "{e}"
+    );
+}
+
+#[test]
+fn format_inference_and_names() {
+    let f = |p: &str| TableFormat::from_path(Path::new(p));
+    assert_eq!(f("a/b.csv").unwrap(), TableFormat::Csv);
+    assert_eq!(f("b.JSON").unwrap(), TableFormat::Json);
+    assert_eq!(f("b.pol").unwrap(), TableFormat::XfoilPolar);
+    assert_eq!(f("b.c81").unwrap(), TableFormat::C81);
+    assert_eq!(
+        f("out/b.txt").unwrap_err().to_string(),
+        "cannot infer table format from 'out/b.txt' (use .csv, .json, .pol or .c81)"
+    );
+    assert_eq!(
+        "xfoil".parse::<TableFormat>().unwrap(),
+        TableFormat::XfoilPolar
+    );
+    assert_eq!("C81".parse::<TableFormat>().unwrap(), TableFormat::C81);
+    assert_eq!(
+        "xls".parse::<TableFormat>().unwrap_err().to_string(),
+        "unknown table format 'xls' (expected csv, json, xfoil or c81)"
+    );
+    // An explicit format overrides the extension.
+    let dir = scratch("explicit");
+    let path = dir.join("table.txt");
+    write_table(&analytic_table(), &path, Some(TableFormat::Json)).unwrap();
+    assert!(parse_json(&std::fs::read_to_string(&path).unwrap()).is_ok());
+    assert_eq!(
+        read_table(&dir.join("x.c81")).unwrap_err().to_string(),
+        "C81 files cannot be read back as tables (only CSV and JSON)"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn xfoil_polar_files_have_xfoil_layout() {
+    let dir = scratch("pol");
+    let t = awkward_table();
+    let files = write_table(&t, &dir.join("foil.pol"), None).unwrap();
+    let names: Vec<String> = files
+        .iter()
+        .map(|f| f.file_name().unwrap().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(
+        names,
+        vec![
+            "foil_Re2.5e5_M0.pol",
+            "foil_Re2.5e5_M0.41.pol",
+            "foil_Re1.9e6_M0.pol",
+            "foil_Re1.9e6_M0.41.pol"
+        ]
+    );
+    assert_eq!(files_in(&dir), {
+        let mut n = names.clone();
+        n.sort();
+        n
+    });
+    let text = std::fs::read_to_string(&files[3]).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    let pts = t.polar(1.9e6, 0.41).unwrap();
+    let conv: Vec<&PolarPoint> = pts.iter().filter(|p| p.converged).collect();
+    assert_eq!(lines.len(), 12 + conv.len());
+    assert!(lines[3].starts_with(" Calculated polar for: NACA 8-H-12"));
+    assert_eq!(lines[7], " xtrf =   0.070 (top)        0.070 (bottom)  ");
+    assert_eq!(
+        lines[8],
+        " Mach =   0.410     Re =     1.900 e 6     Ncrit =   9.000"
+    );
+    assert_eq!(
+        lines[10],
+        "   alpha    CL        CD       CDp       CM     Top_Xtr  Bot_Xtr"
+    );
+    for (line, p) in lines[12..].iter().zip(&conv) {
+        assert_eq!(line.len(), 8 + 9 + 10 + 10 + 9 + 9 + 9);
+        let v: Vec<f64> = line
+            .split_whitespace()
+            .map(|f| f.parse().unwrap())
+            .collect();
+        assert_eq!(v.len(), 7);
+        assert!((v[0] - p.alpha).abs() <= 5e-4 && (v[1] - p.cl).abs() <= 5e-5);
+        assert!((v[2] - p.cd).abs() <= 5e-6 && (v[4] - p.cm).abs() <= 5e-5);
+    }
+    // A single-polar table goes to the named file itself.
+    let single = PolarTable::new(
+        meta("one"),
+        vec![1e6],
+        vec![0.0],
+        vec![analytic_polar(1e6, 0.0, &[0.0, 1.0])],
+    )
+    .unwrap();
+    let path = dir.join("single.pol");
+    assert_eq!(write_table(&single, &path, None).unwrap(), vec![path]);
+    assert_eq!(re_label(1e6), "1e6");
+    assert_eq!(re_label(999_999.9999999), "1e6");
+    assert_eq!(polar_file_name("x", 2.5e5, 0.3), "x_Re2.5e5_M0.3.pol");
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// Split a C81 line into 7-character fields, checking the layout.
+fn fields(line: &str) -> Vec<&str> {
+    assert_eq!(
+        line.len() % 7,
+        0,
+        "line length {} not a multiple of 7: {line:?}",
+        line.len()
+    );
+    (0..line.len() / 7)
+        .map(|k| &line[7 * k..7 * k + 7])
+        .collect()
+}
+
+#[test]
+fn c81_structure() {
+    // 11 Mach numbers: every block row needs a continuation line (9 values per line).
+    let mach: Vec<f64> = (0..11).map(|k| 0.05 * k as f64).collect();
+    let alphas = alpha_range(-8.0, 14.0, 0.5);
+    let polars = mach
+        .iter()
+        .map(|&m| analytic_polar(1e6, m, &alphas))
+        .collect();
+    let t = PolarTable::new(meta("NACA 8-H-12"), vec![1e6], mach.clone(), polars).unwrap();
+    let dir = scratch("c81");
+    let path = dir.join("deep/er/t.c81");
+    assert_eq!(write_table(&t, &path, None).unwrap(), vec![path.clone()]);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    let head = lines[0];
+    assert_eq!(head.len(), 42);
+    assert_eq!(&head[..30], "NACA 8-H-12 Re1e6             ");
+    let counts: Vec<usize> = (0..6)
+        .map(|k| head[30 + 2 * k..32 + 2 * k].trim().parse().unwrap())
+        .collect();
+    let (nm, na) = (counts[0], counts[1]);
+    assert_eq!(counts, vec![nm, na, nm, na, nm, na]);
+    assert_eq!(nm, 11);
+    // α rows: −180…−20 every 10° (−10 is within half a step of −8), the 45 computed α,
+    // 20…180 every 10°.
+    assert_eq!(na, 17 + 45 + 17);
+    assert_eq!(lines.len(), 1 + 3 * (2 + 2 * na));
+    let mut k = 1;
+    let mut alpha_seen = Vec::new();
+    for block in 0..3 {
+        // Mach row: 7 blanks + 9 Mach numbers, continuation 7 blanks + 2.
+        let f1 = fields(lines[k]);
+        let f2 = fields(lines[k + 1]);
+        assert_eq!((f1.len(), f2.len()), (10, 3));
+        assert!(f1[0].trim().is_empty() && f2[0].trim().is_empty());
+        let m: Vec<f64> = f1[1..]
+            .iter()
+            .chain(&f2[1..])
+            .map(|s| s.trim().parse().unwrap())
+            .collect();
+        assert_eq!(
+            m,
+            mach.iter()
+                .map(|v| (v * 1000.0).round() / 1000.0)
+                .collect::<Vec<_>>()
+        );
+        k += 2;
+        for _ in 0..na {
+            let f1 = fields(lines[k]);
+            let f2 = fields(lines[k + 1]);
+            assert_eq!((f1.len(), f2.len()), (10, 3));
+            assert!(f2[0].trim().is_empty());
+            let a: f64 = f1[0].trim().parse().unwrap();
+            if block == 0 {
+                alpha_seen.push(a);
+            }
+            let vals: Vec<f64> = f1[1..]
+                .iter()
+                .chain(&f2[1..])
+                .map(|s| {
+                    assert!(s.starts_with(' '), "field {s:?} has no leading blank");
+                    s.trim().parse().unwrap()
+                })
+                .collect();
+            for (j, v) in vals.iter().enumerate() {
+                let l = t.lookup(a, 1e6, mach[j]);
+                let expect = [l.cl, l.cd, l.cm][block];
+                assert!(
+                    (v - expect).abs() <= 5e-4,
+                    "block {block} α {a} M {}",
+                    mach[j]
+                );
+            }
+            k += 2;
+        }
+    }
+    assert_eq!(alpha_seen[0], -180.0);
+    assert_eq!(*alpha_seen.last().unwrap(), 180.0);
+    assert!(alpha_seen.windows(2).all(|w| w[1] > w[0]));
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn c81_one_file_per_re_or_at_a_chosen_re() {
+    let t = analytic_table();
+    let dir = scratch("c81re");
+    let files = write_table(&t, &dir.join("foil.c81"), None).unwrap();
+    assert_eq!(
+        files_in(&dir),
+        vec!["foil_Re1e6.c81", "foil_Re2e6.c81", "foil_Re5e5.c81"]
+    );
+    assert_eq!(files.len(), 3);
+    let path = dir.join("at.c81");
+    let opts = C81Options {
+        re: Some(1.4e6),
+        ..C81Options::default()
+    };
+    assert_eq!(write_c81(&t, &path, &opts).unwrap(), vec![path.clone()]);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let first_row = text.lines().nth(2).unwrap();
+    let f = fields(first_row);
+    assert_eq!(f[0].trim(), "-180.00");
+    let bad = C81Options {
+        re: Some(-1.0),
+        ..C81Options::default()
+    };
+    assert_eq!(
+        write_c81(&t, &dir.join("bad.c81"), &bad)
+            .unwrap_err()
+            .to_string(),
+        "Re must be positive and finite, got -1"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn c81_thins_long_alpha_lists_to_99_rows() {
+    let alphas = alpha_range(-20.0, 25.0, 0.25);
+    let t = PolarTable::new(
+        meta("dense"),
+        vec![1e6],
+        vec![0.0, 0.3],
+        vec![
+            analytic_polar(1e6, 0.0, &alphas),
+            analytic_polar(1e6, 0.3, &alphas),
+        ],
+    )
+    .unwrap();
+    let mut buf = Vec::new();
+    polargen::table::io::c81::write_c81_to(&t, 1e6, 10.0, &mut buf).unwrap();
+    let text = String::from_utf8(buf).unwrap();
+    let head = text.lines().next().unwrap();
+    let na: usize = head[32..34].trim().parse().unwrap();
+    assert!(na <= 99 && na > 80, "na {na}");
+    assert_eq!(text.lines().count(), 1 + 3 * (1 + na));
+}
+
+#[test]
+fn atomic_write_creates_folders_and_leaves_no_temp_files() {
+    let dir = scratch("atomic");
+    let path = dir.join("a/b/c.txt");
+    write_atomic(&path, |w| {
+        w.write_all(b"hello").map_err(|e| TableError::io("x", e))
+    })
+    .unwrap();
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "hello");
+    assert_eq!(files_in(&dir.join("a/b")), vec!["c.txt"]);
+    // A failing writer leaves the old content and no temporary file.
+    let e = write_atomic(&path, |w| {
+        w.write_all(b"half a fi")
+            .map_err(|e| TableError::io("x", e))?;
+        Err(TableError::Empty)
+    })
+    .unwrap_err();
+    assert!(matches!(e, TableError::Empty));
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "hello");
+    assert_eq!(files_in(&dir.join("a/b")), vec!["c.txt"]);
+    // …and no target at all when there was none.
+    let fresh = dir.join("a/b/new.csv");
+    assert!(write_atomic(&fresh, |_| Err(TableError::Empty)).is_err());
+    assert!(!fresh.exists());
+    assert_eq!(files_in(&dir.join("a/b")), vec!["c.txt"]);
+    // A C81 that cannot be written (value too wide for 7 characters) leaves nothing behind.
+    let huge = PolarTable::new(
+        meta("huge"),
+        vec![1e6],
+        vec![0.0],
+        vec![vec![point(0.0, 1e9, 0.01, 0.0), point(1.0, 1e9, 0.01, 0.0)]],
+    )
+    .unwrap();
+    let e = write_table(&huge, &dir.join("h.c81"), None).unwrap_err();
+    let msg = e.to_string();
+    assert!(msg.starts_with("value ") && msg.ends_with(" does not fit a 7-character field"));
+    assert!(!dir.join("h.c81").exists());
+    assert_eq!(files_in(&dir), vec!["a"]);
+    std::fs::remove_dir_all(dir).unwrap();
+}
