@@ -17,14 +17,7 @@ struct FlatPlate;
 impl SectionAero for FlatPlate {
     fn lookup(&self, alpha_deg: f64, _re: f64, _mach: f64) -> Lookup {
         let a = alpha_deg.to_radians();
-        Lookup {
-            cl: 1.1 * (2.0 * a).sin(),
-            cd: 0.01 + 1.9 * a.sin().powi(2),
-            cm: 0.0,
-            re_clamped: false,
-            mach_clamped: false,
-            post_stall: false,
-        }
+        Lookup::new(1.1 * (2.0 * a).sin(), 0.01 + 1.9 * a.sin().powi(2), 0.0)
     }
 }
 
@@ -40,14 +33,7 @@ fn normal_flow_triangle() {
     assert!(!f.is_reversed());
     // Upflow and positive lift: the lift vector leans forward and drives the rotor when
     // cl·U_P > cd·U_T (autorotation), and the normal force is upward.
-    let c = Lookup {
-        cl: 0.6,
-        cd: 0.008,
-        cm: 0.0,
-        re_clamped: false,
-        mach_clamped: false,
-        post_stall: false,
-    };
+    let c = Lookup::new(0.6, 0.008, 0.0);
     let l = strip_load(&f, &c, 1.225, 0.2, 1.0);
     let q = 0.5 * 1.225 * f.speed * 0.2;
     assert!((l.tangential - q * (0.6 * 6.0 - 0.008 * 150.0)).abs() < 1e-9);

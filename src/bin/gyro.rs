@@ -3,9 +3,10 @@
 
 use anyhow::{bail, Context, Result};
 use clap::{Parser, Subcommand};
+use polargen::polar::PolarPoint;
 use polargen::rotor::trim::{trim_aircraft, TrimParams, TrimResult};
 use polargen::rotor::{simulate_takeoff, Aircraft, Atmosphere, Rotor, TakeoffResult, KT_TO_MS};
-use polargen::table::{Lookup, SectionAero};
+use polargen::table::{read_table, PolarTable, TableMeta};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -138,108 +139,80 @@ const PAPER_TAKEOFF: [(&str, f64, f64); 3] = [
     ("max flapping beta_max [deg]", 3.5, 4.2),
 ];
 
-/// A single section polar from a CSV file (XFOIL-style columns alpha, cl, cd[, cm]) with a
-/// flat-plate extension outside the tabulated α range. This is the stand-in for the `table`
-/// module's `PolarTable` reader until that branch provides one; it ignores Re and Mach.
-struct CsvPolar {
-    alpha: Vec<f64>,
-    cl: Vec<f64>,
-    cd: Vec<f64>,
-    cm: Vec<f64>,
+/// Reads the section table given with `--table`: a polargen table file (long-form CSV or
+/// JSON, [`read_table`]) or, as a fallback, a single XFOIL-style polar CSV with columns
+/// `alpha, cl, cd[, cdp, cm, xtr_top, xtr_bot]` (the XFOIL reference polars). A single polar
+/// becomes a one-node table at the Re and M parsed from a file name like `…_Re1.9e6_M0.41_…`
+/// (Re 1e6, M 0 if absent); lookups at other Re/M are clamped to that node.
+fn load_section(path: &Path) -> Result<PolarTable> {
+    match read_table(path) {
+        Ok(t) => Ok(t),
+        Err(table_err) => single_polar_table(path)
+            .with_context(|| format!("not a polargen table ({table_err}) nor an XFOIL polar CSV")),
+    }
 }
 
-/// Width of the exponential blend from the table edge into the flat-plate model [deg].
-const BLEND_DEG: f64 = 8.0;
+/// Number after `key` in a file stem such as `naca8h12_Re1.9e6_M0.41_free`.
+fn stem_number(stem: &str, key: &str) -> Option<f64> {
+    stem.split('_')
+        .find_map(|part| part.strip_prefix(key).and_then(|v| v.parse::<f64>().ok()))
+}
 
-impl CsvPolar {
-    fn from_csv(path: &Path) -> Result<Self> {
-        let mut rd = csv::ReaderBuilder::new()
-            .trim(csv::Trim::All)
-            .from_path(path)
-            .with_context(|| format!("cannot read table {}", path.display()))?;
-        let headers = rd.headers()?.clone();
-        let col = |name: &str| headers.iter().position(|h| h.eq_ignore_ascii_case(name));
-        let (Some(ia), Some(il), Some(id)) = (col("alpha"), col("cl"), col("cd")) else {
-            bail!("table {} needs columns alpha, cl, cd", path.display());
+fn single_polar_table(path: &Path) -> Result<PolarTable> {
+    let mut rd = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .from_path(path)
+        .with_context(|| format!("cannot read table {}", path.display()))?;
+    let headers = rd.headers()?.clone();
+    let col = |name: &str| headers.iter().position(|h| h.eq_ignore_ascii_case(name));
+    let (Some(ia), Some(il), Some(id)) = (col("alpha"), col("cl"), col("cd")) else {
+        bail!("table {} needs columns alpha, cl, cd", path.display());
+    };
+    let (icdp, icm, ixt, ixb) = (col("cdp"), col("cm"), col("xtr_top"), col("xtr_bot"));
+    let mut points = Vec::new();
+    for (n, rec) in rd.records().enumerate() {
+        let rec = rec.with_context(|| format!("table {} row {}", path.display(), n + 2))?;
+        let get = |i: usize| -> Result<f64> {
+            let s = rec.get(i).unwrap_or("");
+            s.parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .with_context(|| {
+                    format!("table {} row {}: bad number '{s}'", path.display(), n + 2)
+                })
         };
-        let im = col("cm");
-        let mut rows: Vec<[f64; 4]> = Vec::new();
-        for (n, rec) in rd.records().enumerate() {
-            let rec = rec.with_context(|| format!("table {} row {}", path.display(), n + 2))?;
-            let get = |i: usize| -> Result<f64> {
-                let s = rec.get(i).unwrap_or("");
-                s.parse::<f64>()
-                    .ok()
-                    .filter(|v| v.is_finite())
-                    .with_context(|| {
-                        format!("table {} row {}: bad number '{s}'", path.display(), n + 2)
-                    })
-            };
-            rows.push([
-                get(ia)?,
-                get(il)?,
-                get(id)?,
-                im.map(get).transpose()?.unwrap_or(0.0),
-            ]);
-        }
-        rows.sort_by(|a, b| a[0].total_cmp(&b[0]));
-        rows.dedup_by(|a, b| a[0] == b[0]);
-        if rows.len() < 2 {
-            bail!("table {} has fewer than two alpha rows", path.display());
-        }
-        Ok(Self {
-            alpha: rows.iter().map(|r| r[0]).collect(),
-            cl: rows.iter().map(|r| r[1]).collect(),
-            cd: rows.iter().map(|r| r[2]).collect(),
-            cm: rows.iter().map(|r| r[3]).collect(),
-        })
+        let opt = |i: Option<usize>, default: f64| -> Result<f64> {
+            i.map(get).transpose().map(|v| v.unwrap_or(default))
+        };
+        let cd = get(id)?;
+        let cdp = opt(icdp, 0.0)?;
+        points.push(PolarPoint {
+            alpha: get(ia)?,
+            cl: get(il)?,
+            cd,
+            cdp,
+            cdf: cd - cdp,
+            cm: opt(icm, 0.0)?,
+            xtr_top: opt(ixt, 1.0)?,
+            xtr_bot: opt(ixb, 1.0)?,
+            converged: true,
+            iterations: 0,
+            residual: 0.0,
+        });
     }
-
-    fn interpolate(&self, a: f64) -> (f64, f64, f64) {
-        let i = self
-            .alpha
-            .partition_point(|&x| x <= a)
-            .clamp(1, self.alpha.len() - 1);
-        let t = (a - self.alpha[i - 1]) / (self.alpha[i] - self.alpha[i - 1]);
-        let lerp = |v: &[f64]| v[i - 1] + t * (v[i] - v[i - 1]);
-        (lerp(&self.cl), lerp(&self.cd), lerp(&self.cm))
-    }
-}
-
-impl SectionAero for CsvPolar {
-    fn lookup(&self, alpha_deg: f64, _re: f64, _mach: f64) -> Lookup {
-        let a = (alpha_deg + 180.0).rem_euclid(360.0) - 180.0;
-        let (lo, hi) = (self.alpha[0], self.alpha[self.alpha.len() - 1]);
-        let edge = a.clamp(lo, hi);
-        let (cl, cd, cm) = self.interpolate(edge);
-        if a == edge {
-            return Lookup {
-                cl,
-                cd,
-                cm,
-                re_clamped: false,
-                mach_clamped: false,
-                post_stall: false,
-            };
-        }
-        // Flat plate (Hoerner, Fluid-Dynamic Lift/Drag): cl = 1.1 sin 2α, cd = 1.9 sin²α.
-        let w = (-(a - edge).abs() / BLEND_DEG).exp();
-        let r = a.to_radians();
-        let cd_min = self.cd.iter().cloned().fold(f64::INFINITY, f64::min);
-        Lookup {
-            cl: w * cl + (1.0 - w) * 1.1 * (2.0 * r).sin(),
-            cd: w * cd + (1.0 - w) * (cd_min + 1.9 * r.sin().powi(2)),
-            cm: w * cm + (1.0 - w) * (-0.5 * r.sin()),
-            re_clamped: false,
-            mach_clamped: false,
-            post_stall: true,
-        }
-    }
-}
-
-/// Loads the section table given with `--table`.
-fn load_section(path: &Path) -> Result<CsvPolar> {
-    CsvPolar::from_csv(path)
+    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("");
+    let re = stem_number(stem, "Re").unwrap_or(1e6);
+    let mach = stem_number(stem, "M").unwrap_or(0.0);
+    let meta = TableMeta {
+        airfoil: stem.split('_').next().unwrap_or("polar").to_string(),
+        ncrit: 9.0,
+        xtr_top_set: 1.0,
+        xtr_bot_set: 1.0,
+        panels: 0,
+        solver: "XFOIL polar file".to_string(),
+    };
+    PolarTable::new(meta, vec![re], vec![mach], vec![points])
+        .with_context(|| format!("table {}", path.display()))
 }
 
 fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
@@ -370,7 +343,7 @@ fn rel(a: f64, b: f64) -> f64 {
     100.0 * (b - a) / a
 }
 
-fn compare(ac: &Aircraft, clean: &CsvPolar, dirty: &CsvPolar, json: bool) -> Result<()> {
+fn compare(ac: &Aircraft, clean: &PolarTable, dirty: &PolarTable, json: bool) -> Result<()> {
     let p = TrimParams::default();
     let tc = trim_aircraft(ac, clean, 60.0, ac.mass_kg, 0.0, &p).context("clean trim")?;
     let td = trim_aircraft(ac, dirty, 60.0, ac.mass_kg, 0.0, &p).context("contaminated trim")?;

@@ -59,12 +59,12 @@ impl SectionAero for AnalyticSection {
         let cd_fp = self.cd0 + 1.9 * a.sin().powi(2);
         let w = 1.0 / (1.0 + ((alpha_deg.abs() - self.stall_deg) / self.blend_deg).exp());
         Lookup {
-            cl: w * cl_att + (1.0 - w) * cl_fp,
-            cd: w * cd_att + (1.0 - w) * cd_fp,
-            cm: 0.0,
-            re_clamped: false,
-            mach_clamped: false,
             post_stall: w < 0.5,
+            ..Lookup::new(
+                w * cl_att + (1.0 - w) * cl_fp,
+                w * cd_att + (1.0 - w) * cd_fp,
+                0.0,
+            )
         }
     }
 }
