@@ -506,7 +506,7 @@ fn run(cli: Cli) -> Result<()> {
                 let v = from_kt + k as f64 * step_kt;
                 match trim_aircraft(&ac, &section, v, ac.mass_kg, 0.0, &TrimParams::default()) {
                     Ok(t) => rows.push(TrimJson::from(&t)),
-                    Err(e) => eprintln!("gyro: no trim at {v:.1} kt: {e}"),
+                    Err(e) => eprintln!("gyro: skipped {v:.1} kt: {e}"),
                 }
             }
             if rows.is_empty() {

@@ -82,7 +82,7 @@ impl Default for TrimParams {
             rpm_min: 60.0,
             rpm_scan_factor: 0.85,
             rpm_tolerance: 1e-3,
-            aoa_min_deg: 0.0,
+            aoa_min_deg: -6.0,
             aoa_max_deg: 30.0,
             aoa_scan_step_deg: 1.5,
             aoa_tolerance_deg: 1e-4,
@@ -253,33 +253,36 @@ pub fn trim_rotor<S: SectionAero + ?Sized>(
         let s = autorotation(rotor, section, v, aoa_deg.to_radians(), atmosphere, params)?;
         Ok((s.lift - weight, s))
     };
-    // Scan α_H upwards until the lift exceeds the weight.
+    // Scan α_H upwards until the lift exceeds the weight; the bracket must lie on one
+    // continuous autorotation branch, so a gap without autorotation restarts it.
     let mut below: Option<(f64, f64)> = None;
+    let mut overspeed = false;
     let mut aoa = params.aoa_min_deg;
-    let above =
+    let (below, above) =
         loop {
             if aoa > params.aoa_max_deg {
-                return Err(no_trim(
-                    "the rotor lift stays below the weight at every angle searched",
-                ));
+                return Err(no_trim(if overspeed {
+                    "the rotor leaves the rpm range searched before its lift reaches the weight"
+                } else {
+                    "the rotor lift stays below the weight at every angle searched"
+                }));
             }
             match excess(aoa) {
                 Ok((f, _)) if f >= 0.0 => match below {
-                    Some(_) => break (aoa, f),
+                    Some(b) => break (b, (aoa, f)),
                     None => return Err(no_trim(
                         "the rotor lift exceeds the weight already at the smallest angle searched",
                     )),
                 },
                 Ok((f, _)) => below = Some((aoa, f)),
-                Err(TrimError::NoAutorotation { .. }) if below.is_none() => {}
-                Err(TrimError::NoAutorotation { .. }) => return Err(no_trim(
-                    "the rotor leaves the rpm range searched before its lift reaches the weight",
-                )),
+                Err(TrimError::NoAutorotation { .. }) => {
+                    overspeed |= below.is_some();
+                    below = None;
+                }
                 Err(e) => return Err(e),
             }
             aoa += params.aoa_scan_step_deg;
         };
-    let below = below.ok_or_else(|| no_trim("no autorotation below the lift-balancing angle"))?;
     let aoa = bracketed_root(
         |a| excess(a).map(|(f, _)| f),
         below,
