@@ -89,3 +89,25 @@ fn too_heavy_never_reaches_the_screen_height() {
     assert!(matches!(err, TakeoffError::NotReached { .. }), "{err}");
     assert!(!err.to_string().contains('\n'));
 }
+
+#[test]
+fn time_step_is_converged() {
+    let mut ac = mtosport();
+    let a = simulate_takeoff(&ac, &AnalyticSection::clean()).unwrap();
+    ac.takeoff.time_step_s /= 2.0;
+    let b = simulate_takeoff(&ac, &AnalyticSection::clean()).unwrap();
+    // Lift-off is detected at step ends: the roll may move by about one step's travel
+    // (≈ 22 m/s · 0.02 s); the screen distance is interpolated within the step.
+    assert!(
+        (a.takeoff_roll_m - b.takeoff_roll_m).abs() < 0.6,
+        "{} vs {}",
+        a.takeoff_roll_m,
+        b.takeoff_roll_m
+    );
+    assert!(
+        (a.distance_15m_m / b.distance_15m_m - 1.0).abs() < 0.005,
+        "{} vs {}",
+        a.distance_15m_m,
+        b.distance_15m_m
+    );
+}
