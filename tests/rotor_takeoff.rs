@@ -33,6 +33,13 @@ fn takeoff_clean_and_contaminated() {
             r.max_flapping_deg
         );
         assert!(!r.flap_stops_reached);
+        // The pilot model climbs while accelerating (paper: 43 kt at lift-off, 51 kt at 15 m).
+        assert!(
+            r.screen_speed_kt > r.liftoff_speed_kt,
+            "{} -> {}",
+            r.liftoff_speed_kt,
+            r.screen_speed_kt
+        );
         // Rotor spins up from 200 rpm prerotation (paper: ≈ 300 rpm at lift-off).
         assert!(
             (250.0..420.0).contains(&r.liftoff_rotor_rpm),

@@ -119,8 +119,10 @@ pub struct TakeoffParams {
     pub head_angle_min_deg: f64,
     /// Rolling-friction coefficient of the wheels.
     pub rolling_friction: f64,
-    /// Climb rate the pilot aims for after lift-off [m/s].
+    /// Largest climb rate the pilot aims for after lift-off [m/s].
     pub target_climb_rate_ms: f64,
+    /// Climb rate the pilot aims for per airspeed gained since lift-off [(m/s)/(m/s)].
+    pub climb_rate_per_speed_gain: f64,
     /// Pilot gain: change of rotor-disc angle per climb-rate error [deg per m/s].
     pub pilot_gain_deg_per_ms: f64,
     /// Pilot (and control-system) time constant [s].
@@ -272,6 +274,10 @@ impl Aircraft {
         }
         non_negative("takeoff.rolling_friction", t.rolling_friction)?;
         non_negative("takeoff.target_climb_rate_ms", t.target_climb_rate_ms)?;
+        non_negative(
+            "takeoff.climb_rate_per_speed_gain",
+            t.climb_rate_per_speed_gain,
+        )?;
         non_negative("takeoff.pilot_gain_deg_per_ms", t.pilot_gain_deg_per_ms)?;
         positive("takeoff.pilot_time_constant_s", t.pilot_time_constant_s)?;
         positive("takeoff.screen_height_m", t.screen_height_m)?;

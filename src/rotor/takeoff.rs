@@ -7,7 +7,9 @@
 //! rotor lift exceeds the weight. Airborne: forces along and normal to the flight path,
 //! m·a = (F_prop − D)·e_V + L·e_L − G·e_z, and the pilot lowers the rotor disc angle with a
 //! PI law on the climb rate, α̇_H = K (ẇ_err·τ + w_err), w_err = w_target − w, clamped to the
-//! head-angle range. Rotor speed throughout: I_R·Ω̇ = Q_aero (the quasi-steady autorotative
+//! head-angle range. The climb target grows with the speed gained since lift-off,
+//! w_target = min(w_max, k_V·(V − V_LO)), so the aircraft first accelerates in level flight
+//! close to the ground and then climbs while still accelerating (the paper's procedure). Rotor speed throughout: I_R·Ω̇ = Q_aero (the quasi-steady autorotative
 //! torque of the blade-element model). Thrust acts along the flight path (small angles).
 
 use super::aircraft::Aircraft;
@@ -121,6 +123,8 @@ struct Model<'a, S: SectionAero + ?Sized> {
     inertia: f64,
     /// Last rotor solution, the warm start of the next solve (local to this run).
     warm: Option<RotorSolution>,
+    /// Airspeed at lift-off [m/s] (the pilot's climb target grows with the speed gained).
+    liftoff_speed: f64,
 }
 
 impl<S: SectionAero + ?Sized> Model<'_, S> {
@@ -183,7 +187,11 @@ impl<S: SectionAero + ?Sized> Model<'_, S> {
         let ax = (along * cg - s.lift * sg) / m;
         let az = (along * sg + s.lift * cg) / m - G0;
         let to = &ac.takeoff;
-        let err = to.target_climb_rate_ms - y[3];
+        let gained = (v - self.liftoff_speed).max(0.0);
+        let target = to
+            .target_climb_rate_ms
+            .min(to.climb_rate_per_speed_gain * gained);
+        let err = target - y[3];
         let mut rate =
             (to.pilot_gain_deg_per_ms * (err - to.pilot_time_constant_s * az)).to_radians();
         let (lo, hi) = (
@@ -261,6 +269,7 @@ pub fn simulate_takeoff<S: SectionAero + ?Sized>(
         prop: PropellerMap::calibrate(&aircraft.propeller)?,
         inertia: aircraft.rotor.polar_inertia(),
         warm: None,
+        liftoff_speed: 0.0,
     };
     let dt = to.time_step_s;
     let kt = super::KT_TO_MS;
@@ -285,6 +294,7 @@ pub fn simulate_takeoff<S: SectionAero + ?Sized>(
         if !airborne && s.lift >= weight {
             airborne = true;
             liftoff = Some((y[0], t, y[2], y[4]));
+            model.liftoff_speed = y[2];
         }
         if airborne && next[1] >= to.screen_height_m {
             let frac = (to.screen_height_m - y[1]) / (next[1] - y[1]);
