@@ -7,6 +7,7 @@ use polargen::polar::PolarPoint;
 use polargen::rotor::trim::{trim_aircraft, TrimParams, TrimResult};
 use polargen::rotor::{simulate_takeoff, Aircraft, Atmosphere, Rotor, TakeoffResult, KT_TO_MS};
 use polargen::table::{read_table, PolarTable, TableMeta};
+use rayon::prelude::*;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -345,10 +346,15 @@ fn rel(a: f64, b: f64) -> f64 {
 
 fn compare(ac: &Aircraft, clean: &PolarTable, dirty: &PolarTable, json: bool) -> Result<()> {
     let p = TrimParams::default();
-    let tc = trim_aircraft(ac, clean, 60.0, ac.mass_kg, 0.0, &p).context("clean trim")?;
-    let td = trim_aircraft(ac, dirty, 60.0, ac.mass_kg, 0.0, &p).context("contaminated trim")?;
-    let oc = simulate_takeoff(ac, clean).context("clean takeoff")?;
-    let od = simulate_takeoff(ac, dirty).context("contaminated takeoff")?;
+    // The four cases are independent: run the clean and contaminated ones in parallel.
+    let case = |section: &PolarTable, label: &str| -> Result<(TrimResult, TakeoffResult)> {
+        let t = trim_aircraft(ac, section, 60.0, ac.mass_kg, 0.0, &p)
+            .with_context(|| format!("{label} trim"))?;
+        let o = simulate_takeoff(ac, section).with_context(|| format!("{label} takeoff"))?;
+        Ok((t, o))
+    };
+    let (c, d) = rayon::join(|| case(clean, "clean"), || case(dirty, "contaminated"));
+    let ((tc, oc), (td, od)) = (c?, d?);
     let ours_trim = |t: &TrimResult| {
         [
             t.rotor_rpm,
@@ -501,10 +507,19 @@ fn run(cli: Cli) -> Result<()> {
             let ac = load_aircraft(&aircraft, mass)?;
             let section = load_section(&table)?;
             let n = ((to_kt - from_kt) / step_kt).floor() as usize + 1;
+            let results: Vec<(f64, Result<TrimResult, _>)> = (0..n)
+                .into_par_iter()
+                .map(|k| {
+                    let v = from_kt + k as f64 * step_kt;
+                    (
+                        v,
+                        trim_aircraft(&ac, &section, v, ac.mass_kg, 0.0, &TrimParams::default()),
+                    )
+                })
+                .collect();
             let mut rows = Vec::new();
-            for k in 0..n {
-                let v = from_kt + k as f64 * step_kt;
-                match trim_aircraft(&ac, &section, v, ac.mass_kg, 0.0, &TrimParams::default()) {
+            for (v, r) in results {
+                match r {
                     Ok(t) => rows.push(TrimJson::from(&t)),
                     Err(e) => eprintln!("gyro: skipped {v:.1} kt: {e}"),
                 }
