@@ -1,1 +1,612 @@
-fn main() {}
+//! `gyro` — gyroplane rotor performance from airfoil polar tables: cruise trim, takeoff,
+//! clean-versus-contaminated comparison (paper Tables 3 and 4) and power-required sweeps.
+
+use anyhow::{bail, Context, Result};
+use clap::{Parser, Subcommand};
+use polargen::polar::PolarPoint;
+use polargen::rotor::trim::{trim_aircraft, TrimParams, TrimResult};
+use polargen::rotor::{simulate_takeoff, Aircraft, Atmosphere, Rotor, TakeoffResult, KT_TO_MS};
+use polargen::table::{read_table, PolarTable, TableMeta};
+use rayon::prelude::*;
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+
+#[derive(Parser)]
+#[command(
+    name = "gyro",
+    version,
+    about = "Gyroplane rotor strip model driven by airfoil polar tables"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Level-cruise trim: rotor rpm, rotor AoA, drags, propeller thrust, engine rpm, L/D.
+    Trim {
+        /// Aircraft preset (TOML).
+        #[arg(long)]
+        aircraft: PathBuf,
+        /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
+        #[arg(long)]
+        table: PathBuf,
+        /// Airspeed [kt].
+        #[arg(long, default_value_t = 60.0)]
+        speed_kt: f64,
+        /// Mass [kg] (default: the preset's).
+        #[arg(long)]
+        mass: Option<f64>,
+        /// ISA altitude [m].
+        #[arg(long, default_value_t = 0.0)]
+        altitude_m: f64,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Takeoff from brake release to the screen height: s_TO, s_15, β_max.
+    Takeoff {
+        /// Aircraft preset (TOML).
+        #[arg(long)]
+        aircraft: PathBuf,
+        /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
+        #[arg(long)]
+        table: PathBuf,
+        /// Mass [kg] (default: the preset's).
+        #[arg(long)]
+        mass: Option<f64>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        /// Write the time history (t, x, h, v, rotor_rpm, alpha_r_deg, beta_deg) to this CSV.
+        #[arg(long)]
+        history: Option<PathBuf>,
+    },
+    /// Clean versus contaminated rotor: paper Tables 3 and 4 side by side with ours.
+    Compare {
+        /// Aircraft preset (TOML).
+        #[arg(long)]
+        aircraft: PathBuf,
+        /// Table of the clean blade section.
+        #[arg(long)]
+        clean: PathBuf,
+        /// Table of the contaminated blade section.
+        #[arg(long)]
+        contaminated: PathBuf,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Trim over a speed range: power-required curve.
+    Sweep {
+        /// Aircraft preset (TOML).
+        #[arg(long)]
+        aircraft: PathBuf,
+        /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
+        #[arg(long)]
+        table: PathBuf,
+        /// Lowest airspeed [kt].
+        #[arg(long, default_value_t = 30.0)]
+        from_kt: f64,
+        /// Highest airspeed [kt].
+        #[arg(long, default_value_t = 90.0)]
+        to_kt: f64,
+        /// Speed step [kt].
+        #[arg(long, default_value_t = 5.0)]
+        step_kt: f64,
+        /// Mass [kg] (default: the preset's).
+        #[arg(long)]
+        mass: Option<f64>,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Blade angle of attack α(ψ) at one radius in trimmed cruise (paper Fig. 10; ψ = 0 rear).
+    Alpha {
+        /// Aircraft preset (TOML).
+        #[arg(long)]
+        aircraft: PathBuf,
+        /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
+        #[arg(long)]
+        table: PathBuf,
+        /// Airspeed [kt].
+        #[arg(long, default_value_t = 60.0)]
+        speed_kt: f64,
+        /// Radius as a fraction of R.
+        #[arg(long, default_value_t = 0.9)]
+        radius: f64,
+        /// Azimuth samples per revolution.
+        #[arg(long, default_value_t = 36)]
+        samples: usize,
+    },
+}
+
+/// Paper Table 3 (clean, contaminated) at 60 kt, 450 kg, ISA.
+const PAPER_TRIM: [(&str, f64, f64); 7] = [
+    ("rotor rpm n_R", 347.0, 348.0),
+    ("rotor AoA alpha_R [deg]", 6.2, 8.1),
+    ("engine rpm", 4401.0, 4596.0),
+    ("rotor drag D_R [N]", 478.0, 624.0),
+    ("parasitic drag D_P [N]", 573.0, 573.0),
+    ("prop thrust F_prop [N]", 1051.0, 1197.0),
+    ("L/D", 4.2, 3.7),
+];
+
+/// Paper Table 4 (clean, contaminated).
+const PAPER_TAKEOFF: [(&str, f64, f64); 3] = [
+    ("takeoff roll s_TO [m]", 121.0, 144.0),
+    ("distance to 15 m s_15 [m]", 218.0, 253.0),
+    ("max flapping beta_max [deg]", 3.5, 4.2),
+];
+
+/// Reads the section table given with `--table`: a polargen table file (long-form CSV or
+/// JSON, [`read_table`]) or, as a fallback, a single XFOIL-style polar CSV with columns
+/// `alpha, cl, cd[, cdp, cm, xtr_top, xtr_bot]` (the XFOIL reference polars). A single polar
+/// becomes a one-node table at the Re and M parsed from a file name like `…_Re1.9e6_M0.41_…`
+/// (Re 1e6, M 0 if absent); lookups at other Re/M are clamped to that node.
+fn load_section(path: &Path) -> Result<PolarTable> {
+    match read_table(path) {
+        Ok(t) => Ok(t),
+        Err(table_err) => single_polar_table(path)
+            .with_context(|| format!("not a polargen table ({table_err}) nor an XFOIL polar CSV")),
+    }
+}
+
+/// Number after `key` in a file stem such as `naca8h12_Re1.9e6_M0.41_free`.
+fn stem_number(stem: &str, key: &str) -> Option<f64> {
+    stem.split('_')
+        .find_map(|part| part.strip_prefix(key).and_then(|v| v.parse::<f64>().ok()))
+}
+
+fn single_polar_table(path: &Path) -> Result<PolarTable> {
+    let mut rd = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .from_path(path)
+        .with_context(|| format!("cannot read table {}", path.display()))?;
+    let headers = rd.headers()?.clone();
+    let col = |name: &str| headers.iter().position(|h| h.eq_ignore_ascii_case(name));
+    let (Some(ia), Some(il), Some(id)) = (col("alpha"), col("cl"), col("cd")) else {
+        bail!("table {} needs columns alpha, cl, cd", path.display());
+    };
+    let (icdp, icm, ixt, ixb) = (col("cdp"), col("cm"), col("xtr_top"), col("xtr_bot"));
+    let mut points = Vec::new();
+    for (n, rec) in rd.records().enumerate() {
+        let rec = rec.with_context(|| format!("table {} row {}", path.display(), n + 2))?;
+        let get = |i: usize| -> Result<f64> {
+            let s = rec.get(i).unwrap_or("");
+            s.parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .with_context(|| {
+                    format!("table {} row {}: bad number '{s}'", path.display(), n + 2)
+                })
+        };
+        let opt = |i: Option<usize>, default: f64| -> Result<f64> {
+            i.map(get).transpose().map(|v| v.unwrap_or(default))
+        };
+        let cd = get(id)?;
+        let cdp = opt(icdp, 0.0)?;
+        points.push(PolarPoint {
+            alpha: get(ia)?,
+            cl: get(il)?,
+            cd,
+            cdp,
+            cdf: cd - cdp,
+            cm: opt(icm, 0.0)?,
+            xtr_top: opt(ixt, 1.0)?,
+            xtr_bot: opt(ixb, 1.0)?,
+            converged: true,
+            iterations: 0,
+            residual: 0.0,
+        });
+    }
+    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("");
+    let re = stem_number(stem, "Re").unwrap_or(1e6);
+    let mach = stem_number(stem, "M").unwrap_or(0.0);
+    let meta = TableMeta {
+        airfoil: stem.split('_').next().unwrap_or("polar").to_string(),
+        ncrit: 9.0,
+        xtr_top_set: 1.0,
+        xtr_bot_set: 1.0,
+        panels: 0,
+        solver: "XFOIL polar file".to_string(),
+    };
+    PolarTable::new(meta, vec![re], vec![mach], vec![points])
+        .with_context(|| format!("table {}", path.display()))
+}
+
+fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
+    let mut ac = Aircraft::from_toml_file(path)?;
+    if let Some(m) = mass {
+        if !(m.is_finite() && m > 0.0) {
+            bail!("--mass must be a positive number of kg, got {m}");
+        }
+        ac.mass_kg = m;
+    }
+    Ok(ac)
+}
+
+fn check_speed(kt: f64) -> Result<()> {
+    if !(kt.is_finite() && kt > 0.0 && kt < 300.0) {
+        bail!("--speed-kt must be between 0 and 300 kt, got {kt}");
+    }
+    Ok(())
+}
+
+#[derive(Serialize)]
+struct TrimJson {
+    rotor_rpm: f64,
+    rotor_aoa_deg: f64,
+    engine_rpm: Option<f64>,
+    rotor_drag_n: f64,
+    parasitic_drag_n: f64,
+    prop_thrust_n: f64,
+    lift_to_drag: f64,
+    hub_aoa_deg: f64,
+    power_required_kw: f64,
+    beta1c_deg: f64,
+    beta1s_deg: f64,
+    speed_kt: f64,
+}
+
+impl From<&TrimResult> for TrimJson {
+    fn from(t: &TrimResult) -> Self {
+        Self {
+            rotor_rpm: t.rotor_rpm,
+            rotor_aoa_deg: t.rotor_aoa_deg,
+            engine_rpm: t.engine_rpm,
+            rotor_drag_n: t.rotor_drag_n,
+            parasitic_drag_n: t.parasitic_drag_n,
+            prop_thrust_n: t.prop_thrust_n,
+            lift_to_drag: t.lift_to_drag,
+            hub_aoa_deg: t.hub_aoa_deg,
+            power_required_kw: t.power_required_kw,
+            beta1c_deg: t.beta1c_deg,
+            beta1s_deg: t.beta1s_deg,
+            speed_kt: t.airspeed_kt,
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct TakeoffJson {
+    takeoff_roll_m: f64,
+    distance_15m_m: f64,
+    max_flapping_deg: f64,
+    liftoff_speed_kt: f64,
+    screen_speed_kt: f64,
+    liftoff_rotor_rpm: f64,
+    screen_time_s: f64,
+}
+
+impl From<&TakeoffResult> for TakeoffJson {
+    fn from(t: &TakeoffResult) -> Self {
+        Self {
+            takeoff_roll_m: t.takeoff_roll_m,
+            distance_15m_m: t.distance_15m_m,
+            max_flapping_deg: t.max_flapping_deg,
+            liftoff_speed_kt: t.liftoff_speed_kt,
+            screen_speed_kt: t.screen_speed_kt,
+            liftoff_rotor_rpm: t.liftoff_rotor_rpm,
+            screen_time_s: t.screen_time_s,
+        }
+    }
+}
+
+fn engine_text(e: Option<f64>) -> String {
+    e.map_or_else(|| "above max".to_string(), |v| format!("{v:.0}"))
+}
+
+fn print_trim(t: &TrimResult) {
+    println!("trim at {:.1} kt", t.airspeed_kt);
+    println!("  rotor rpm n_R          {:8.1}", t.rotor_rpm);
+    println!(
+        "  rotor AoA alpha_R [deg]{:8.2}   (hub {:.2})",
+        t.rotor_aoa_deg, t.hub_aoa_deg
+    );
+    println!("  engine rpm             {:>8}", engine_text(t.engine_rpm));
+    println!("  rotor drag D_R [N]     {:8.1}", t.rotor_drag_n);
+    println!("  parasitic D_P [N]      {:8.1}", t.parasitic_drag_n);
+    println!("  prop thrust F_prop [N] {:8.1}", t.prop_thrust_n);
+    println!("  L/D                    {:8.2}", t.lift_to_drag);
+    println!("  power required [kW]    {:8.1}", t.power_required_kw);
+    println!(
+        "  flapping b1c, b1s [deg]{:8.2} {:.2}",
+        t.beta1c_deg, t.beta1s_deg
+    );
+}
+
+fn print_takeoff(t: &TakeoffResult) {
+    println!("takeoff");
+    println!("  takeoff roll s_TO [m]      {:7.1}", t.takeoff_roll_m);
+    println!("  distance to 15 m s_15 [m]  {:7.1}", t.distance_15m_m);
+    println!(
+        "  max flapping beta_max [deg]{:7.2}{}",
+        t.max_flapping_deg,
+        if t.flap_stops_reached {
+            "  (on the stops)"
+        } else {
+            ""
+        }
+    );
+    println!(
+        "  lift-off speed [kt]        {:7.1}  at {:.1} s, rotor {:.0} rpm",
+        t.liftoff_speed_kt, t.liftoff_time_s, t.liftoff_rotor_rpm
+    );
+    println!(
+        "  speed at 15 m [kt]         {:7.1}  at {:.1} s",
+        t.screen_speed_kt, t.screen_time_s
+    );
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    100.0 * (b - a) / a
+}
+
+fn compare(ac: &Aircraft, clean: &PolarTable, dirty: &PolarTable, json: bool) -> Result<()> {
+    let p = TrimParams::default();
+    // The four cases are independent: run the clean and contaminated ones in parallel.
+    let case = |section: &PolarTable, label: &str| -> Result<(TrimResult, TakeoffResult)> {
+        let t = trim_aircraft(ac, section, 60.0, ac.mass_kg, 0.0, &p)
+            .with_context(|| format!("{label} trim"))?;
+        let o = simulate_takeoff(ac, section).with_context(|| format!("{label} takeoff"))?;
+        Ok((t, o))
+    };
+    let (c, d) = rayon::join(|| case(clean, "clean"), || case(dirty, "contaminated"));
+    let ((tc, oc), (td, od)) = (c?, d?);
+    let ours_trim = |t: &TrimResult| {
+        [
+            t.rotor_rpm,
+            t.rotor_aoa_deg,
+            t.engine_rpm.unwrap_or(f64::NAN),
+            t.rotor_drag_n,
+            t.parasitic_drag_n,
+            t.prop_thrust_n,
+            t.lift_to_drag,
+        ]
+    };
+    let ours_to = |t: &TakeoffResult| [t.takeoff_roll_m, t.distance_15m_m, t.max_flapping_deg];
+    if json {
+        #[derive(Serialize)]
+        struct Row {
+            quantity: &'static str,
+            paper_clean: f64,
+            paper_contaminated: f64,
+            ours_clean: f64,
+            ours_contaminated: f64,
+        }
+        let rows = |paper: &[(&'static str, f64, f64)], c: &[f64], d: &[f64]| -> Vec<Row> {
+            paper
+                .iter()
+                .zip(c.iter().zip(d))
+                .map(|(&(q, pc, pd), (&oc, &od))| Row {
+                    quantity: q,
+                    paper_clean: pc,
+                    paper_contaminated: pd,
+                    ours_clean: oc,
+                    ours_contaminated: od,
+                })
+                .collect()
+        };
+        let out = serde_json::json!({
+            "trim": rows(&PAPER_TRIM, &ours_trim(&tc), &ours_trim(&td)),
+            "takeoff": rows(&PAPER_TAKEOFF, &ours_to(&oc), &ours_to(&od)),
+        });
+        println!("{}", serde_json::to_string_pretty(&out)?);
+        return Ok(());
+    }
+    let table = |title: &str, paper: &[(&str, f64, f64)], c: &[f64], d: &[f64]| {
+        println!("{title}");
+        println!(
+            "  {:<28} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>8}",
+            "", "paper", "paper", "paper", "ours", "ours", "ours"
+        );
+        println!(
+            "  {:<28} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>8}",
+            "quantity", "clean", "contam.", "change", "clean", "contam.", "change"
+        );
+        for (&(q, pc, pd), (&oc, &od)) in paper.iter().zip(c.iter().zip(d)) {
+            println!(
+                "  {q:<28} {pc:>9.1} {pd:>9.1} {:>+7.1}% | {oc:>9.1} {od:>9.1} {:>+7.1}%",
+                rel(pc, pd),
+                rel(oc, od)
+            );
+        }
+    };
+    table(
+        "Table 3 — trim at 60 kt, ISA sea level",
+        &PAPER_TRIM,
+        &ours_trim(&tc),
+        &ours_trim(&td),
+    );
+    println!();
+    table(
+        "Table 4 — takeoff, ISA sea level, no wind",
+        &PAPER_TAKEOFF,
+        &ours_to(&oc),
+        &ours_to(&od),
+    );
+    Ok(())
+}
+
+fn run(cli: Cli) -> Result<()> {
+    match cli.command {
+        Command::Trim {
+            aircraft,
+            table,
+            speed_kt,
+            mass,
+            altitude_m,
+            json,
+        } => {
+            check_speed(speed_kt)?;
+            let ac = load_aircraft(&aircraft, mass)?;
+            let section = load_section(&table)?;
+            let t = trim_aircraft(
+                &ac,
+                &section,
+                speed_kt,
+                ac.mass_kg,
+                altitude_m,
+                &TrimParams::default(),
+            )?;
+            if json {
+                println!("{}", serde_json::to_string_pretty(&TrimJson::from(&t))?);
+            } else {
+                print_trim(&t);
+            }
+        }
+        Command::Takeoff {
+            aircraft,
+            table,
+            mass,
+            json,
+            history,
+        } => {
+            let ac = load_aircraft(&aircraft, mass)?;
+            let section = load_section(&table)?;
+            let t = simulate_takeoff(&ac, &section)?;
+            if let Some(path) = history {
+                let f = std::fs::File::create(&path)
+                    .with_context(|| format!("cannot write history {}", path.display()))?;
+                t.write_history_csv(std::io::BufWriter::new(f))
+                    .with_context(|| format!("cannot write history {}", path.display()))?;
+            }
+            if json {
+                println!("{}", serde_json::to_string_pretty(&TakeoffJson::from(&t))?);
+            } else {
+                print_takeoff(&t);
+            }
+        }
+        Command::Compare {
+            aircraft,
+            clean,
+            contaminated,
+            json,
+        } => {
+            let ac = load_aircraft(&aircraft, None)?;
+            let c = load_section(&clean)?;
+            let d = load_section(&contaminated)?;
+            compare(&ac, &c, &d, json)?;
+        }
+        Command::Sweep {
+            aircraft,
+            table,
+            from_kt,
+            to_kt,
+            step_kt,
+            mass,
+            json,
+        } => {
+            check_speed(from_kt)?;
+            check_speed(to_kt)?;
+            if !(step_kt.is_finite() && step_kt > 0.0) || to_kt < from_kt {
+                bail!("sweep needs --from-kt <= --to-kt and a positive --step-kt");
+            }
+            let ac = load_aircraft(&aircraft, mass)?;
+            let section = load_section(&table)?;
+            let n = ((to_kt - from_kt) / step_kt).floor() as usize + 1;
+            let results: Vec<(f64, Result<TrimResult, _>)> = (0..n)
+                .into_par_iter()
+                .map(|k| {
+                    let v = from_kt + k as f64 * step_kt;
+                    (
+                        v,
+                        trim_aircraft(&ac, &section, v, ac.mass_kg, 0.0, &TrimParams::default()),
+                    )
+                })
+                .collect();
+            let mut rows = Vec::new();
+            for (v, r) in results {
+                match r {
+                    Ok(t) => rows.push(TrimJson::from(&t)),
+                    Err(e) => eprintln!("gyro: skipped {v:.1} kt: {e}"),
+                }
+            }
+            if rows.is_empty() {
+                bail!("no trim point in the speed range");
+            }
+            if json {
+                println!("{}", serde_json::to_string_pretty(&rows)?);
+            } else {
+                println!(
+                    "{:>7} {:>7} {:>7} {:>8} {:>8} {:>8} {:>8} {:>6} {:>7}",
+                    "V[kt]", "n_R", "a_R", "engine", "D_R[N]", "D_P[N]", "F_P[N]", "L/D", "P[kW]"
+                );
+                for r in &rows {
+                    println!(
+                        "{:7.1} {:7.1} {:7.2} {:>8} {:8.1} {:8.1} {:8.1} {:6.2} {:7.1}",
+                        r.speed_kt,
+                        r.rotor_rpm,
+                        r.rotor_aoa_deg,
+                        engine_text(r.engine_rpm),
+                        r.rotor_drag_n,
+                        r.parasitic_drag_n,
+                        r.prop_thrust_n,
+                        r.lift_to_drag,
+                        r.power_required_kw
+                    );
+                }
+            }
+        }
+        Command::Alpha {
+            aircraft,
+            table,
+            speed_kt,
+            radius,
+            samples,
+        } => {
+            check_speed(speed_kt)?;
+            if !(radius > 0.0 && radius <= 1.0) {
+                bail!("--radius must be a fraction of R in (0, 1], got {radius}");
+            }
+            if !(4..=3600).contains(&samples) {
+                bail!("--samples must be between 4 and 3600, got {samples}");
+            }
+            let ac = load_aircraft(&aircraft, None)?;
+            let section = load_section(&table)?;
+            let rotor = Rotor::from_params(&ac.rotor);
+            let atm = Atmosphere::isa(0.0);
+            let s = polargen::rotor::trim::trim_rotor(
+                &rotor,
+                &section,
+                speed_kt * KT_TO_MS,
+                ac.weight_n(),
+                &atm,
+                &TrimParams::default(),
+            )?;
+            println!("psi_deg,alpha_deg");
+            for (psi, a) in rotor.alpha_at_radius(&s, radius, samples) {
+                println!("{psi:.1},{a:.3}");
+            }
+        }
+    }
+    Ok(())
+}
+
+fn main() {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if !e.use_stderr() => e.exit(),
+        Err(e) => {
+            let text = e.to_string();
+            let message: Vec<&str> = text
+                .lines()
+                .take_while(|l| !l.starts_with("Usage:"))
+                .map(str::trim)
+                .filter(|l| !l.is_empty())
+                .collect();
+            eprintln!(
+                "gyro: {} (see gyro --help)",
+                message.join(" ").trim_start_matches("error: ")
+            );
+            std::process::exit(2);
+        }
+    };
+    if let Err(e) = run(cli) {
+        let msg = format!("{e:#}").replace('\n', " ");
+        eprintln!("gyro: {msg}");
+        std::process::exit(1);
+    }
+}

@@ -1,2 +1,50 @@
 //! Blade-element (strip) model of a two-bladed teetering gyroplane rotor driven by a polar
 //! table: autorotation, cruise trim and takeoff.
+//!
+//! The rotor sees the airfoil only through [`SectionAero`](crate::table::SectionAero):
+//! every strip turns its local velocity into (α, Re, M) and asks the section for
+//! (c_l, c_d, c_m). Layers inside this module:
+//!
+//! * [`atmosphere`] — ISA standard atmosphere (density, speed of sound, viscosity).
+//! * [`aircraft`] — the aircraft preset (rotor, airframe, propeller, takeoff data) from TOML.
+//! * [`blade_element`] — velocity triangle and loads of one strip (reverse flow included).
+//! * [`inflow`] — induced velocity: Glauert momentum theory, Drees linear inflow, tip loss.
+//! * [`flapping`] — first-harmonic teeter motion of the blade pair.
+//! * [`rotor`] — azimuth-averaged rotor forces, torque and the flapping solution.
+//! * [`trim`] — autorotation rpm and level-cruise trim.
+//! * [`propeller`] — propeller/engine map (Rotax 912 with reduction gear).
+//! * [`takeoff`] — time-domain takeoff simulation to 15 m.
+
+pub mod aircraft;
+pub mod atmosphere;
+pub mod blade_element;
+pub mod flapping;
+pub mod inflow;
+pub mod propeller;
+#[allow(clippy::module_inception)]
+pub mod rotor;
+pub mod takeoff;
+pub mod trim;
+
+pub use aircraft::{Aircraft, AircraftError};
+pub use atmosphere::Atmosphere;
+pub use rotor::{FlightCondition, InflowModel, Rotor, RotorError, RotorSolution};
+
+pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
+pub use trim::{TrimError, TrimResult};
+
+/// Knots to metres per second (1 kt = 1852 m / 3600 s, exact by definition).
+pub const KT_TO_MS: f64 = 1852.0 / 3600.0;
+
+/// Standard gravity [m/s²] (ISO 80000-3, also the ISA value).
+pub const G0: f64 = 9.80665;
+
+/// Revolutions per minute to radians per second.
+pub fn rpm_to_rad_s(rpm: f64) -> f64 {
+    rpm * std::f64::consts::PI / 30.0
+}
+
+/// Radians per second to revolutions per minute.
+pub fn rad_s_to_rpm(omega: f64) -> f64 {
+    omega * 30.0 / std::f64::consts::PI
+}

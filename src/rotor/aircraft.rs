@@ -1,0 +1,304 @@
+//! Aircraft preset: rotor, airframe, propeller/engine and takeoff data, loaded from TOML.
+
+use serde::Deserialize;
+use std::path::Path;
+
+/// Errors while loading or checking an aircraft preset.
+#[derive(Debug, thiserror::Error)]
+pub enum AircraftError {
+    /// The file could not be read.
+    #[error("cannot read aircraft file {path}: {source}")]
+    Io {
+        /// File path.
+        path: String,
+        /// Underlying error.
+        source: std::io::Error,
+    },
+    /// The TOML is malformed, has a missing field or an unknown one.
+    #[error("bad aircraft file {path}: {message}")]
+    Parse {
+        /// File path.
+        path: String,
+        /// The parser's message, folded onto one line.
+        message: String,
+    },
+    /// A value is outside its physical range.
+    #[error("aircraft parameter {field} = {value} is invalid: {reason}")]
+    Invalid {
+        /// Dotted field name.
+        field: &'static str,
+        /// Offending value.
+        value: f64,
+        /// What is required.
+        reason: &'static str,
+    },
+}
+
+/// Whole-aircraft data.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Aircraft {
+    /// Aircraft name (for reports).
+    pub name: String,
+    /// Takeoff mass [kg].
+    pub mass_kg: f64,
+    /// Equivalent parasitic drag area S_P·C_DP of the airframe without rotor [m²].
+    pub parasitic_drag_area_m2: f64,
+    /// Rotor data.
+    pub rotor: RotorParams,
+    /// Propeller and engine data.
+    pub propeller: PropellerParams,
+    /// Takeoff procedure data.
+    pub takeoff: TakeoffParams,
+}
+
+/// Rotor geometry, mass and discretisation.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RotorParams {
+    /// Rotor radius R [m].
+    pub radius_m: f64,
+    /// Number of blades (a teetering rotor has 2).
+    pub blades: u32,
+    /// Blade chord c [m] (constant, untwisted blade).
+    pub chord_m: f64,
+    /// Blade incidence θ relative to the hub plane [deg] (fixed, no collective or cyclic).
+    pub incidence_deg: f64,
+    /// Root cut-out: radius where the aerodynamic blade starts [m].
+    pub root_cutout_m: f64,
+    /// Built-in coning of the hub bar β0 [deg] (a teetering rotor's coning is fixed by the hub).
+    pub precone_deg: f64,
+    /// Mass of one blade [kg] (uniform spanwise distribution assumed for the inertia).
+    pub blade_mass_kg: f64,
+    /// Polar moment of inertia of hub, teeter block and bolts about the shaft [kg m²].
+    pub hub_inertia_kg_m2: f64,
+    /// Teeter stops: largest teeter amplitude before the blades hit the stops [deg].
+    pub flap_stop_deg: f64,
+    /// Number of radial strips.
+    pub radial_strips: usize,
+    /// Number of azimuth steps per revolution (even, so both blades sit on the grid).
+    pub azimuth_steps: usize,
+    /// Tip-loss factor B (lift is zero outboard of B·R); omitted → Gessow–Myers B = 1 − √(2C_T)/N_b.
+    #[serde(default)]
+    pub tip_loss_b: Option<f64>,
+    /// Induced-inflow model: "glauert" (uniform) or "drees" (linear).
+    pub inflow: String,
+}
+
+/// Propeller and engine map (see [`crate::rotor::propeller`]).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PropellerParams {
+    /// Propeller diameter D [m].
+    pub diameter_m: f64,
+    /// Propeller rpm / engine rpm (reduction gear).
+    pub gear_ratio: f64,
+    /// Static thrust at full throttle [N].
+    pub static_thrust_n: f64,
+    /// Engine rpm at full throttle, standing still [rpm].
+    pub static_engine_rpm: f64,
+    /// Calibration point: airspeed [kt] …
+    pub calib_speed_kt: f64,
+    /// … thrust there [N] …
+    pub calib_thrust_n: f64,
+    /// … and the engine rpm measured there [rpm].
+    pub calib_engine_rpm: f64,
+    /// Highest engine rpm allowed (full-throttle rpm never exceeds it) [rpm].
+    pub max_engine_rpm: f64,
+}
+
+/// Takeoff procedure and ground data.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TakeoffParams {
+    /// Rotor speed when the brake is released [rpm].
+    pub prerotation_rpm: f64,
+    /// Rotor head pitch with the stick full aft [deg] (fuselage level on the ground).
+    pub head_angle_max_deg: f64,
+    /// Smallest rotor-disc angle the pilot model commands in the climb [deg].
+    pub head_angle_min_deg: f64,
+    /// Rolling-friction coefficient of the wheels.
+    pub rolling_friction: f64,
+    /// Largest climb rate the pilot aims for after lift-off [m/s].
+    pub target_climb_rate_ms: f64,
+    /// Climb rate the pilot aims for per airspeed gained since lift-off [(m/s)/(m/s)].
+    pub climb_rate_per_speed_gain: f64,
+    /// Pilot gain: change of rotor-disc angle per climb-rate error [deg per m/s].
+    pub pilot_gain_deg_per_ms: f64,
+    /// Pilot (and control-system) time constant [s].
+    pub pilot_time_constant_s: f64,
+    /// Screen height [m].
+    pub screen_height_m: f64,
+    /// Airfield altitude [m] (ISA).
+    pub field_altitude_m: f64,
+    /// Integration time step [s].
+    pub time_step_s: f64,
+    /// Give up after this time [s].
+    pub max_time_s: f64,
+}
+
+impl Aircraft {
+    /// Reads and checks a TOML preset.
+    pub fn from_toml_file(path: &Path) -> Result<Self, AircraftError> {
+        let text = std::fs::read_to_string(path).map_err(|source| AircraftError::Io {
+            path: path.display().to_string(),
+            source,
+        })?;
+        Self::from_toml_str(&text, &path.display().to_string())
+    }
+
+    /// Parses and checks a TOML preset held in memory; `origin` names it in errors.
+    pub fn from_toml_str(text: &str, origin: &str) -> Result<Self, AircraftError> {
+        let aircraft: Aircraft = toml::from_str(text).map_err(|e| AircraftError::Parse {
+            path: origin.to_string(),
+            message: e.message().replace('\n', " "),
+        })?;
+        aircraft.validate()?;
+        Ok(aircraft)
+    }
+
+    /// Aircraft weight G = m·g0 [N].
+    pub fn weight_n(&self) -> f64 {
+        self.mass_kg * super::G0
+    }
+
+    /// Checks every value for its physical range.
+    pub fn validate(&self) -> Result<(), AircraftError> {
+        fn positive(field: &'static str, value: f64) -> Result<(), AircraftError> {
+            if value.is_finite() && value > 0.0 {
+                Ok(())
+            } else {
+                Err(AircraftError::Invalid {
+                    field,
+                    value,
+                    reason: "must be a positive number",
+                })
+            }
+        }
+        fn non_negative(field: &'static str, value: f64) -> Result<(), AircraftError> {
+            if value.is_finite() && value >= 0.0 {
+                Ok(())
+            } else {
+                Err(AircraftError::Invalid {
+                    field,
+                    value,
+                    reason: "must be zero or positive",
+                })
+            }
+        }
+        let r = &self.rotor;
+        positive("mass_kg", self.mass_kg)?;
+        non_negative("parasitic_drag_area_m2", self.parasitic_drag_area_m2)?;
+        positive("rotor.radius_m", r.radius_m)?;
+        positive("rotor.chord_m", r.chord_m)?;
+        non_negative("rotor.root_cutout_m", r.root_cutout_m)?;
+        if r.root_cutout_m >= r.radius_m {
+            return Err(AircraftError::Invalid {
+                field: "rotor.root_cutout_m",
+                value: r.root_cutout_m,
+                reason: "must be smaller than the radius",
+            });
+        }
+        if r.blades != 2 {
+            return Err(AircraftError::Invalid {
+                field: "rotor.blades",
+                value: f64::from(r.blades),
+                reason: "the teetering-rotor model needs exactly 2 blades",
+            });
+        }
+        if !r.incidence_deg.is_finite() || r.incidence_deg.abs() > 20.0 {
+            return Err(AircraftError::Invalid {
+                field: "rotor.incidence_deg",
+                value: r.incidence_deg,
+                reason: "must be within ±20°",
+            });
+        }
+        if !r.precone_deg.is_finite() || r.precone_deg.abs() > 10.0 {
+            return Err(AircraftError::Invalid {
+                field: "rotor.precone_deg",
+                value: r.precone_deg,
+                reason: "must be within ±10°",
+            });
+        }
+        positive("rotor.blade_mass_kg", r.blade_mass_kg)?;
+        non_negative("rotor.hub_inertia_kg_m2", r.hub_inertia_kg_m2)?;
+        positive("rotor.flap_stop_deg", r.flap_stop_deg)?;
+        if r.radial_strips < 2 || r.radial_strips > 200 {
+            return Err(AircraftError::Invalid {
+                field: "rotor.radial_strips",
+                value: r.radial_strips as f64,
+                reason: "must be between 2 and 200",
+            });
+        }
+        if r.azimuth_steps < 8 || r.azimuth_steps > 720 || r.azimuth_steps % 2 != 0 {
+            return Err(AircraftError::Invalid {
+                field: "rotor.azimuth_steps",
+                value: r.azimuth_steps as f64,
+                reason: "must be even and between 8 and 720",
+            });
+        }
+        if let Some(b) = r.tip_loss_b {
+            if !(b > 0.5 && b <= 1.0) {
+                return Err(AircraftError::Invalid {
+                    field: "rotor.tip_loss_b",
+                    value: b,
+                    reason: "must be in (0.5, 1]",
+                });
+            }
+        }
+        if r.inflow != "glauert" && r.inflow != "drees" {
+            return Err(AircraftError::Invalid {
+                field: "rotor.inflow",
+                value: f64::NAN,
+                reason: "must be \"glauert\" or \"drees\"",
+            });
+        }
+        let p = &self.propeller;
+        positive("propeller.diameter_m", p.diameter_m)?;
+        positive("propeller.gear_ratio", p.gear_ratio)?;
+        positive("propeller.static_thrust_n", p.static_thrust_n)?;
+        positive("propeller.static_engine_rpm", p.static_engine_rpm)?;
+        positive("propeller.calib_speed_kt", p.calib_speed_kt)?;
+        positive("propeller.calib_thrust_n", p.calib_thrust_n)?;
+        positive("propeller.calib_engine_rpm", p.calib_engine_rpm)?;
+        positive("propeller.max_engine_rpm", p.max_engine_rpm)?;
+        let t = &self.takeoff;
+        positive("takeoff.prerotation_rpm", t.prerotation_rpm)?;
+        positive("takeoff.head_angle_max_deg", t.head_angle_max_deg)?;
+        if !t.head_angle_min_deg.is_finite() || t.head_angle_min_deg >= t.head_angle_max_deg {
+            return Err(AircraftError::Invalid {
+                field: "takeoff.head_angle_min_deg",
+                value: t.head_angle_min_deg,
+                reason: "must be below head_angle_max_deg",
+            });
+        }
+        non_negative("takeoff.rolling_friction", t.rolling_friction)?;
+        non_negative("takeoff.target_climb_rate_ms", t.target_climb_rate_ms)?;
+        non_negative(
+            "takeoff.climb_rate_per_speed_gain",
+            t.climb_rate_per_speed_gain,
+        )?;
+        non_negative("takeoff.pilot_gain_deg_per_ms", t.pilot_gain_deg_per_ms)?;
+        positive("takeoff.pilot_time_constant_s", t.pilot_time_constant_s)?;
+        positive("takeoff.screen_height_m", t.screen_height_m)?;
+        non_negative("takeoff.field_altitude_m", t.field_altitude_m)?;
+        positive("takeoff.time_step_s", t.time_step_s)?;
+        positive("takeoff.max_time_s", t.max_time_s)?;
+        Ok(())
+    }
+}
+
+impl RotorParams {
+    /// Polar moment of inertia of the rotor about the shaft [kg m²]: hub plus N_b uniform
+    /// blades spanning root cut-out r0 … R, I_b = m_b (R³ − r0³) / (3 (R − r0)).
+    pub fn polar_inertia(&self) -> f64 {
+        let (r0, r1) = (self.root_cutout_m, self.radius_m);
+        let blade = self.blade_mass_kg * (r1.powi(3) - r0.powi(3)) / (3.0 * (r1 - r0));
+        self.hub_inertia_kg_m2 + f64::from(self.blades) * blade
+    }
+
+    /// Rotor disc area A = πR² [m²].
+    pub fn disc_area(&self) -> f64 {
+        std::f64::consts::PI * self.radius_m * self.radius_m
+    }
+}

@@ -1,0 +1,106 @@
+//! One blade element (strip): velocity triangle → (α, Re, M) → section coefficients → loads.
+//!
+//! Section frame: `t` points along the blade's direction of rotation (towards the leading
+//! edge in normal flow), `n` is normal to the blade, upwards. U_T is the air speed relative to
+//! the blade along −t seen from the blade (positive in normal flow), U_P the air speed coming
+//! up through the rotor (positive = upflow, as in autorotation).
+//!
+//! The flow angle φ = atan2(U_P, U_T) is kept over the full circle, so in the reverse-flow
+//! region (U_T < 0, the air arrives at the trailing edge) α = θ + φ lies near ±180° and the
+//! section's 360° model supplies the coefficients. Lift is perpendicular to the relative wind
+//! with the same orientation for every α, so its sign follows from c_l without special cases
+//! (blade-element theory: Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §3.2).
+
+use crate::table::{Lookup, SectionAero};
+
+/// Air state used by a strip (density, viscosity and speed of sound).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AirState {
+    /// Density [kg/m³].
+    pub density: f64,
+    /// Dynamic viscosity [Pa s].
+    pub viscosity: f64,
+    /// Speed of sound [m/s].
+    pub speed_of_sound: f64,
+}
+
+/// Local flow at one strip.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StripFlow {
+    /// In-plane (tangential) air speed, positive when the air meets the leading edge [m/s].
+    pub ut: f64,
+    /// Upflow through the rotor normal to the blade [m/s].
+    pub up: f64,
+    /// Resultant speed W = √(U_T² + U_P²) [m/s].
+    pub speed: f64,
+    /// Section angle of attack α = θ + atan2(U_P, U_T), wrapped to (−180°, 180°] [deg].
+    pub alpha_deg: f64,
+    /// Chord Reynolds number ρWc/μ.
+    pub reynolds: f64,
+    /// Mach number W/a.
+    pub mach: f64,
+}
+
+impl StripFlow {
+    /// Velocity triangle of a strip with pitch `theta` [rad] and chord `chord` [m].
+    pub fn new(ut: f64, up: f64, theta: f64, chord: f64, air: &AirState) -> Self {
+        let speed = ut.hypot(up);
+        let phi = up.atan2(ut);
+        Self {
+            ut,
+            up,
+            speed,
+            alpha_deg: wrap_deg((theta + phi).to_degrees()),
+            reynolds: air.density * speed * chord / air.viscosity,
+            mach: speed / air.speed_of_sound,
+        }
+    }
+
+    /// True when the air arrives at the trailing edge (U_T < 0).
+    pub fn is_reversed(&self) -> bool {
+        self.ut < 0.0
+    }
+
+    /// Section coefficients from `section` at this strip's (α, Re, M).
+    pub fn coefficients<S: SectionAero + ?Sized>(&self, section: &S) -> Lookup {
+        section.lookup(self.alpha_deg, self.reynolds, self.mach)
+    }
+}
+
+/// Aerodynamic load per unit span of a strip [N/m].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StripLoad {
+    /// Force along the direction of rotation (positive drives the rotor).
+    pub tangential: f64,
+    /// Force normal to the blade, upwards (thrust and flap moment).
+    pub normal: f64,
+}
+
+/// Loads per unit span from the velocity triangle: with q·c = ½ρW²c,
+/// F_t = ½ρWc (c_l·U_P − c_d·U_T), F_n = ½ρWc (c_l·U_T + c_d·U_P).
+/// `lift_factor` ∈ [0, 1] scales the lift only (tip loss: the part of the strip outboard of
+/// B·R carries drag but no lift).
+pub fn strip_load(
+    flow: &StripFlow,
+    coeffs: &Lookup,
+    density: f64,
+    chord: f64,
+    lift_factor: f64,
+) -> StripLoad {
+    let k = 0.5 * density * flow.speed * chord;
+    let cl = coeffs.cl * lift_factor;
+    StripLoad {
+        tangential: k * (cl * flow.up - coeffs.cd * flow.ut),
+        normal: k * (cl * flow.ut + coeffs.cd * flow.up),
+    }
+}
+
+/// Wraps an angle in degrees to (−180°, 180°].
+pub fn wrap_deg(a: f64) -> f64 {
+    let w = (a + 180.0).rem_euclid(360.0) - 180.0;
+    if w == -180.0 {
+        180.0
+    } else {
+        w
+    }
+}

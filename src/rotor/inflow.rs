@@ -1,0 +1,95 @@
+//! Induced inflow of the rotor: Glauert's momentum theory in forward flight, Drees' linear
+//! inflow distribution, and the Gessow–Myers tip-loss factor.
+//!
+//! Sign convention (gyroplane): the free stream passes *up* through a disc tilted back by
+//! α; the induced velocity `v_i` is positive *downwards* (opposing positive thrust), so the
+//! net upflow through the disc is V·sin α − v_i.
+
+/// Number of scan intervals used to bracket the smallest momentum-theory root.
+const SCAN_INTERVALS: usize = 64;
+
+/// Uniform induced velocity from Glauert's momentum theory in forward flight,
+/// T = 2ρA·v_i·V′ with V′ = √((V cos α)² + (V sin α − v_i)²)
+/// (Glauert 1926; Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §2.14, with the
+/// sign of the axial free-stream component reversed for an autorotating disc).
+///
+/// `thrust` [N], `density` [kg/m³], `area` [m²], `airspeed` [m/s], `disc_aoa` [rad] (positive
+/// = disc tilted back, flow up through the disc). Returns v_i [m/s], positive downwards.
+/// For negative thrust the mirrored problem is solved. Where several momentum solutions exist
+/// (windmill-brake state) the smallest |v_i| is returned, the physical branch.
+pub fn glauert_induced_velocity(
+    thrust: f64,
+    density: f64,
+    area: f64,
+    airspeed: f64,
+    disc_aoa: f64,
+) -> f64 {
+    if !(thrust.is_finite() && density > 0.0 && area > 0.0) || thrust == 0.0 {
+        return 0.0;
+    }
+    let sign = thrust.signum();
+    let target = thrust.abs() / (2.0 * density * area);
+    let edge = airspeed * disc_aoa.cos();
+    // Mirror for negative thrust: v → −v and the axial component changes sign.
+    let axial = sign * airspeed * disc_aoa.sin();
+    let g = |v: f64| v * (edge * edge + (axial - v).powi(2)).sqrt() - target;
+    // g(0) = −target < 0 and g(v) ≥ v (v − axial) ≥ target beyond this bound.
+    let upper = axial.max(0.0) + target.sqrt() + 1e-9;
+    let mut lo = 0.0;
+    let mut hi = upper;
+    let step = upper / SCAN_INTERVALS as f64;
+    for k in 1..=SCAN_INTERVALS {
+        let v = step * k as f64;
+        if g(v) >= 0.0 {
+            lo = v - step;
+            hi = v;
+            break;
+        }
+    }
+    for _ in 0..80 {
+        let mid = 0.5 * (lo + hi);
+        if g(mid) >= 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+        if hi - lo <= 1e-12 * (1.0 + hi) {
+            break;
+        }
+    }
+    sign * 0.5 * (lo + hi)
+}
+
+/// Thrust that momentum theory associates with a uniform induced velocity `v_i`:
+/// T = 2ρA·v_i·V′ (the inverse of [`glauert_induced_velocity`] on its physical branch).
+pub fn glauert_thrust(v_i: f64, density: f64, area: f64, airspeed: f64, disc_aoa: f64) -> f64 {
+    let edge = airspeed * disc_aoa.cos();
+    let axial = airspeed * disc_aoa.sin();
+    2.0 * density * area * v_i * (edge * edge + (axial - v_i).powi(2)).sqrt()
+}
+
+/// First-harmonic gradients (k_x, k_y) of Drees' linear inflow
+/// v_i(r, ψ) = v_0 (1 + k_x (r/R) cos ψ + k_y (r/R) sin ψ), ψ = 0 downstream:
+/// k_x = (4/3)(1 − cos χ − 1.8 μ²)/sin χ, k_y = −2μ (Drees 1949; Leishman, *Principles of
+/// Helicopter Aerodynamics*, 2nd ed., §10.2, Table 10.1).
+///
+/// `mu` = V cos α/(ΩR), `lambda` = net through-flow ratio |V sin α − v_0|/(ΩR). The wake skew
+/// angle is taken as χ = atan(μ/|λ|) ∈ [0, 90°] (for an autorotating disc the through-flow is
+/// upwards; the skew magnitude is what matters to the model).
+pub fn drees_coefficients(mu: f64, lambda: f64) -> (f64, f64) {
+    let chi = mu.abs().atan2(lambda.abs());
+    let kx = if chi.sin() < 1e-6 {
+        0.0
+    } else {
+        (4.0 / 3.0) * (1.0 - chi.cos() - 1.8 * mu * mu) / chi.sin()
+    };
+    (kx, -2.0 * mu)
+}
+
+/// Gessow–Myers tip-loss factor B = 1 − √(2 C_T)/N_b: blade elements outboard of B·R carry
+/// drag but no lift (Gessow & Myers 1952, *Aerodynamics of the Helicopter*; Leishman,
+/// *Principles of Helicopter Aerodynamics*, 2nd ed., §3.5). Negative C_T is treated as |C_T|.
+pub fn gessow_myers_tip_loss(thrust_coefficient: f64, blades: u32) -> f64 {
+    let nb = f64::from(blades.max(1));
+    (1.0 - (2.0 * thrust_coefficient.abs()).sqrt() / nb).clamp(0.5, 1.0)
+}

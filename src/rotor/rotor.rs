@@ -1,0 +1,524 @@
+//! Azimuth-averaged loads of the teetering rotor: the blade-element sum over radial strips and
+//! azimuth steps, solved together with the induced inflow and the teeter flapping.
+//!
+//! Hub frame: x along the hub plane pointing downstream (ψ = 0, the rear), y towards the
+//! advancing side (ψ = 90°), z along the shaft, up. The disc is tilted back by the hub angle
+//! of attack α_H, so the free stream has the in-plane component V cos α_H (towards +x) and the
+//! upflow V sin α_H. Blade 1 sits at azimuth ψ, radius r; blade 2 mirrors it (teeter).
+
+use super::atmosphere::Atmosphere;
+use super::blade_element::{strip_load, AirState, StripFlow};
+use super::flapping::{first_harmonics, Teeter};
+use super::inflow::{
+    drees_coefficients, gessow_myers_tip_loss, glauert_induced_velocity, glauert_thrust,
+};
+use crate::table::SectionAero;
+use std::f64::consts::TAU;
+
+/// Errors of the rotor solution.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RotorError {
+    /// The operating point is not physical (non-finite values, rotor not turning, …).
+    #[error("invalid rotor operating point: {0}")]
+    InvalidCondition(&'static str),
+    /// The coupled inflow/flapping iteration did not converge.
+    #[error("rotor inflow/flapping iteration did not converge after {iterations} iterations (step {step:.3e})")]
+    NoConvergence {
+        /// Iterations used.
+        iterations: usize,
+        /// Size of the last Newton step (scaled).
+        step: f64,
+    },
+}
+
+/// Induced-inflow model.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum InflowModel {
+    /// Uniform inflow from Glauert's momentum theory.
+    Glauert,
+    /// Glauert's mean value with Drees' linear fore-aft and lateral gradients.
+    Drees,
+}
+
+/// Tunable numerics of the coupled inflow/flapping Newton iteration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RotorSolverParams {
+    /// Largest number of Newton iterations.
+    pub max_iterations: usize,
+    /// Convergence: scaled Newton step below this (v0 in units of ΩR, β in rad).
+    pub tolerance: f64,
+    /// Finite-difference step for the Jacobian (same scaling).
+    pub fd_step: f64,
+    /// Largest allowed change of a flap coefficient per iteration [rad].
+    pub max_flap_step: f64,
+}
+
+impl Default for RotorSolverParams {
+    fn default() -> Self {
+        Self {
+            max_iterations: 40,
+            tolerance: 1e-9,
+            fd_step: 1e-6,
+            max_flap_step: 0.05,
+        }
+    }
+}
+
+/// Rotor geometry and discretisation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rotor {
+    /// Radius R [m].
+    pub radius: f64,
+    /// Chord c [m].
+    pub chord: f64,
+    /// Number of blades (2 for the teetering model).
+    pub blades: u32,
+    /// Blade pitch relative to the hub plane θ [rad].
+    pub pitch: f64,
+    /// Root cut-out radius [m].
+    pub root_cutout: f64,
+    /// Hub-bar coning β0 [rad].
+    pub precone: f64,
+    /// Number of radial strips.
+    pub radial_strips: usize,
+    /// Number of azimuth steps per revolution.
+    pub azimuth_steps: usize,
+    /// Fixed tip-loss factor B, or `None` for Gessow–Myers from the current C_T.
+    pub tip_loss_b: Option<f64>,
+    /// Inflow model.
+    pub inflow: InflowModel,
+    /// Numerics.
+    pub solver: RotorSolverParams,
+}
+
+/// Operating point of the rotor.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FlightCondition {
+    /// True airspeed V [m/s].
+    pub airspeed: f64,
+    /// Hub (shaft-normal plane) angle of attack α_H [rad], positive = disc tilted back.
+    pub hub_aoa: f64,
+    /// Rotor angular speed Ω [rad/s].
+    pub omega: f64,
+    /// Air state.
+    pub atmosphere: Atmosphere,
+}
+
+/// Converged rotor state and its azimuth-averaged loads.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RotorSolution {
+    /// Operating point solved.
+    pub condition: FlightCondition,
+    /// Mean induced velocity v0 [m/s] (downwards positive).
+    pub induced_velocity: f64,
+    /// Teeter flapping.
+    pub teeter: Teeter,
+    /// Tip-loss factor B used.
+    pub tip_loss_b: f64,
+    /// Thrust along the shaft T [N].
+    pub thrust: f64,
+    /// In-plane force towards the rear (H-force) [N].
+    pub h_force: f64,
+    /// In-plane force towards the advancing side [N].
+    pub side_force: f64,
+    /// Rotor lift, perpendicular to the flight path [N].
+    pub lift: f64,
+    /// Rotor drag, along the flight path, rearwards [N].
+    pub drag: f64,
+    /// Aerodynamic driving torque about the shaft [N m]; positive accelerates the rotor,
+    /// zero in autorotation (the shaft torque needed to drive the rotor is its negative).
+    pub torque: f64,
+    /// Advance ratio μ = V cos α_H/(ΩR).
+    pub advance_ratio: f64,
+    /// Net upflow ratio λ = (V sin α_H − v0)/(ΩR).
+    pub inflow_ratio: f64,
+    /// Thrust coefficient C_T = T/(ρA(ΩR)²).
+    pub thrust_coefficient: f64,
+    /// Fraction of the strip-azimuth samples in reverse flow.
+    pub reverse_flow_fraction: f64,
+    /// Newton iterations used.
+    pub iterations: usize,
+}
+
+impl RotorSolution {
+    /// Angle of attack of the tip-path plane α_R = α_H − β1c [rad] (the "rotor AoA").
+    pub fn disc_aoa(&self) -> f64 {
+        self.condition.hub_aoa + self.teeter.tilt_back()
+    }
+
+    /// Resultant rotor force √(L² + D²) [N].
+    pub fn resultant(&self) -> f64 {
+        self.lift.hypot(self.drag)
+    }
+}
+
+/// Loads of one evaluation at given inflow and flapping.
+#[derive(Clone, Copy, Debug, Default)]
+struct Loads {
+    thrust: f64,
+    h_force: f64,
+    side_force: f64,
+    torque: f64,
+    moment_1c: f64,
+    moment_1s: f64,
+    reverse_fraction: f64,
+}
+
+impl Rotor {
+    /// Disc area πR² [m²].
+    pub fn disc_area(&self) -> f64 {
+        std::f64::consts::PI * self.radius * self.radius
+    }
+
+    /// Radii of the strip centres and the strip width [m].
+    pub fn strips(&self) -> (Vec<f64>, f64) {
+        let dr = (self.radius - self.root_cutout) / self.radius_strips_f();
+        let r = (0..self.radial_strips)
+            .map(|i| self.root_cutout + (i as f64 + 0.5) * dr)
+            .collect();
+        (r, dr)
+    }
+
+    fn radius_strips_f(&self) -> f64 {
+        self.radial_strips.max(1) as f64
+    }
+
+    fn air(cond: &FlightCondition) -> AirState {
+        AirState {
+            density: cond.atmosphere.density,
+            viscosity: cond.atmosphere.viscosity,
+            speed_of_sound: cond.atmosphere.speed_of_sound,
+        }
+    }
+
+    /// Tip-loss factor for mean induced velocity `v0` (through the thrust momentum theory
+    /// gives for it, so that B is a smooth function of the iterate).
+    fn tip_loss_for(&self, cond: &FlightCondition, v0: f64) -> f64 {
+        match self.tip_loss_b {
+            Some(b) => b,
+            None => {
+                let rho = cond.atmosphere.density;
+                let t = glauert_thrust(v0, rho, self.disc_area(), cond.airspeed, cond.hub_aoa);
+                let tip = cond.omega * self.radius;
+                gessow_myers_tip_loss(t / (rho * self.disc_area() * tip * tip), self.blades)
+            }
+        }
+    }
+
+    /// Local induced velocity at (r, ψ) [m/s] for mean value `v0`.
+    fn induced_at(&self, cond: &FlightCondition, v0: f64, r: f64, psi: f64) -> f64 {
+        match self.inflow {
+            InflowModel::Glauert => v0,
+            InflowModel::Drees => {
+                let tip = cond.omega * self.radius;
+                let mu = cond.airspeed * cond.hub_aoa.cos() / tip;
+                let lambda = (cond.airspeed * cond.hub_aoa.sin() - v0) / tip;
+                let (kx, ky) = drees_coefficients(mu, lambda);
+                let x = r / self.radius;
+                v0 * (1.0 + kx * x * psi.cos() + ky * x * psi.sin())
+            }
+        }
+    }
+
+    /// Velocity triangle of blade 1 at radius `r`, azimuth `psi`:
+    /// U_T = Ωr + V cos α_H sin ψ,
+    /// U_P = V sin α_H − v_i(r, ψ) − Ωr dβ/dψ − V cos α_H β cos ψ
+    /// (small flap angles; Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §4.7,
+    /// with the normal velocity counted upwards).
+    pub fn strip_flow(
+        &self,
+        cond: &FlightCondition,
+        v0: f64,
+        teeter: &Teeter,
+        r: f64,
+        psi: f64,
+    ) -> StripFlow {
+        let edge = cond.airspeed * cond.hub_aoa.cos();
+        let axial = cond.airspeed * cond.hub_aoa.sin();
+        let beta = teeter.beta(psi);
+        let ut = cond.omega * r + edge * psi.sin();
+        let up = axial
+            - self.induced_at(cond, v0, r, psi)
+            - cond.omega * r * teeter.beta_rate(psi)
+            - edge * beta * psi.cos();
+        StripFlow::new(ut, up, self.pitch, self.chord, &Self::air(cond))
+    }
+
+    /// Blade-element sum for inflow `v0` and flapping `teeter`.
+    fn evaluate<S: SectionAero + ?Sized>(
+        &self,
+        section: &S,
+        cond: &FlightCondition,
+        v0: f64,
+        teeter: &Teeter,
+    ) -> Loads {
+        let (radii, dr) = self.strips();
+        let b_tip = self.tip_loss_for(cond, v0) * self.radius;
+        let rho = cond.atmosphere.density;
+        let n = self.azimuth_steps;
+        let mut moments = vec![0.0; n];
+        let mut loads = Loads::default();
+        let mut reversed = 0usize;
+        for (k, moment) in moments.iter_mut().enumerate() {
+            let psi = TAU * k as f64 / n as f64;
+            let beta = teeter.beta(psi);
+            let (sp, cp) = psi.sin_cos();
+            let (mut ft_sum, mut fn_sum, mut q, mut m) = (0.0, 0.0, 0.0, 0.0);
+            for &r in &radii {
+                let flow = self.strip_flow(cond, v0, teeter, r, psi);
+                if flow.is_reversed() {
+                    reversed += 1;
+                }
+                let lift_factor = ((b_tip - (r - 0.5 * dr)) / dr).clamp(0.0, 1.0);
+                let load = strip_load(
+                    &flow,
+                    &flow.coefficients(section),
+                    rho,
+                    self.chord,
+                    lift_factor,
+                );
+                ft_sum += load.tangential * dr;
+                fn_sum += load.normal * dr;
+                q += load.tangential * r * dr;
+                m += load.normal * r * dr;
+            }
+            *moment = m;
+            // Force on the hub from blade 1: F_t e_t + F_n (−sin β e_r + cos β e_z),
+            // e_r = (cos ψ, sin ψ), e_t = (−sin ψ, cos ψ).
+            loads.thrust += fn_sum * beta.cos();
+            loads.h_force += -ft_sum * sp - fn_sum * beta.sin() * cp;
+            loads.side_force += ft_sum * cp - fn_sum * beta.sin() * sp;
+            loads.torque += q;
+        }
+        // Both blades: blade 2 reproduces blade 1's loads half a revolution later.
+        let scale = f64::from(self.blades) / n as f64;
+        loads.thrust *= scale;
+        loads.h_force *= scale;
+        loads.side_force *= scale;
+        loads.torque *= scale;
+        let (m1c, m1s) = first_harmonics(&moments);
+        loads.moment_1c = m1c;
+        loads.moment_1s = m1s;
+        loads.reverse_fraction = reversed as f64 / (n * radii.len()) as f64;
+        loads
+    }
+
+    /// Scaled residuals of the coupled problem for unknowns z = (v0/ΩR, β1c, β1s):
+    /// momentum balance (v0 − v_Glauert(T))/ΩR and the first-harmonic teeter moments divided
+    /// by ½ρ(ΩR)²cR².
+    fn residuals<S: SectionAero + ?Sized>(
+        &self,
+        section: &S,
+        cond: &FlightCondition,
+        z: [f64; 3],
+    ) -> ([f64; 3], Loads) {
+        let tip = cond.omega * self.radius;
+        let rho = cond.atmosphere.density;
+        let teeter = Teeter {
+            beta0: self.precone,
+            beta1c: z[1],
+            beta1s: z[2],
+        };
+        let loads = self.evaluate(section, cond, z[0] * tip, &teeter);
+        let v_mt = glauert_induced_velocity(
+            loads.thrust,
+            rho,
+            self.disc_area(),
+            cond.airspeed,
+            cond.hub_aoa,
+        );
+        let mscale = 0.5 * rho * tip * tip * self.chord * self.radius * self.radius;
+        (
+            [
+                z[0] - v_mt / tip,
+                loads.moment_1c / mscale,
+                loads.moment_1s / mscale,
+            ],
+            loads,
+        )
+    }
+
+    /// Solves inflow and teeter flapping at `cond` (Newton's method with a finite-difference
+    /// Jacobian on the three scaled unknowns), starting from `warm` if given.
+    pub fn solve<S: SectionAero + ?Sized>(
+        &self,
+        section: &S,
+        cond: &FlightCondition,
+        warm: Option<&RotorSolution>,
+    ) -> Result<RotorSolution, RotorError> {
+        if !(cond.airspeed.is_finite() && cond.hub_aoa.is_finite() && cond.omega.is_finite()) {
+            return Err(RotorError::InvalidCondition(
+                "non-finite airspeed, angle or rotor speed",
+            ));
+        }
+        if cond.omega <= 0.0 {
+            return Err(RotorError::InvalidCondition("rotor speed must be positive"));
+        }
+        if cond.airspeed < 0.0 {
+            return Err(RotorError::InvalidCondition(
+                "airspeed must not be negative",
+            ));
+        }
+        if cond.atmosphere.density.is_nan() || cond.atmosphere.density <= 0.0 {
+            return Err(RotorError::InvalidCondition("air density must be positive"));
+        }
+        let tip = cond.omega * self.radius;
+        let mut z = match warm {
+            Some(w) => [w.induced_velocity / tip, w.teeter.beta1c, w.teeter.beta1s],
+            None => [0.0, 0.0, 0.0],
+        };
+        let p = self.solver;
+        let mut last_step = f64::INFINITY;
+        for iter in 1..=p.max_iterations {
+            let (f, _) = self.residuals(section, cond, z);
+            let mut jac = [[0.0; 3]; 3];
+            for j in 0..3 {
+                let mut zp = z;
+                zp[j] += p.fd_step;
+                let (fp, _) = self.residuals(section, cond, zp);
+                for i in 0..3 {
+                    jac[i][j] = (fp[i] - f[i]) / p.fd_step;
+                }
+            }
+            let Some(dz) = solve3(jac, [-f[0], -f[1], -f[2]]) else {
+                return Err(RotorError::NoConvergence {
+                    iterations: iter,
+                    step: f64::NAN,
+                });
+            };
+            let flap_step = dz[1].abs().max(dz[2].abs());
+            let damp = if flap_step > p.max_flap_step {
+                p.max_flap_step / flap_step
+            } else {
+                1.0
+            };
+            for i in 0..3 {
+                z[i] += damp * dz[i];
+            }
+            last_step = dz.iter().fold(0.0_f64, |a, d| a.max(d.abs()));
+            if !last_step.is_finite() {
+                break;
+            }
+            if last_step < p.tolerance {
+                let (_, loads) = self.residuals(section, cond, z);
+                return Ok(self.package(cond, z, loads, iter));
+            }
+        }
+        Err(RotorError::NoConvergence {
+            iterations: p.max_iterations,
+            step: last_step,
+        })
+    }
+
+    fn package(
+        &self,
+        cond: &FlightCondition,
+        z: [f64; 3],
+        loads: Loads,
+        iterations: usize,
+    ) -> RotorSolution {
+        let tip = cond.omega * self.radius;
+        let rho = cond.atmosphere.density;
+        let (sa, ca) = cond.hub_aoa.sin_cos();
+        let v0 = z[0] * tip;
+        RotorSolution {
+            condition: *cond,
+            induced_velocity: v0,
+            teeter: Teeter {
+                beta0: self.precone,
+                beta1c: z[1],
+                beta1s: z[2],
+            },
+            tip_loss_b: self.tip_loss_for(cond, v0),
+            thrust: loads.thrust,
+            h_force: loads.h_force,
+            side_force: loads.side_force,
+            // Wind axes: lift ⟂ flight path, drag along it (disc tilted back by α_H).
+            lift: loads.thrust * ca - loads.h_force * sa,
+            drag: loads.thrust * sa + loads.h_force * ca,
+            torque: loads.torque,
+            advance_ratio: cond.airspeed * ca / tip,
+            inflow_ratio: (cond.airspeed * sa - v0) / tip,
+            thrust_coefficient: loads.thrust / (rho * self.disc_area() * tip * tip),
+            reverse_flow_fraction: loads.reverse_fraction,
+            iterations,
+        }
+    }
+
+    /// Section angle of attack α(ψ) [deg] at radius fraction `r_over_r` for `samples` azimuths
+    /// ψ_k = 360°·k/samples (ψ = 0 at the rear), using a converged `solution`'s inflow and
+    /// flapping. Returns (ψ [deg], α [deg]) pairs.
+    pub fn alpha_at_radius(
+        &self,
+        solution: &RotorSolution,
+        r_over_r: f64,
+        samples: usize,
+    ) -> Vec<(f64, f64)> {
+        let r = r_over_r * self.radius;
+        (0..samples)
+            .map(|k| {
+                let psi = TAU * k as f64 / samples.max(1) as f64;
+                let flow = self.strip_flow(
+                    &solution.condition,
+                    solution.induced_velocity,
+                    &solution.teeter,
+                    r,
+                    psi,
+                );
+                (psi.to_degrees(), flow.alpha_deg)
+            })
+            .collect()
+    }
+}
+
+/// Solves a 3×3 linear system by Gaussian elimination with partial pivoting; `None` if singular.
+fn solve3(mut a: [[f64; 3]; 3], mut b: [f64; 3]) -> Option<[f64; 3]> {
+    for col in 0..3 {
+        let piv = (col..3).max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))?;
+        if a[piv][col].abs() < 1e-300 || !a[piv][col].is_finite() {
+            return None;
+        }
+        a.swap(col, piv);
+        b.swap(col, piv);
+        let pivot_row = a[col];
+        for row in col + 1..3 {
+            let f = a[row][col] / pivot_row[col];
+            for (x, p) in a[row].iter_mut().zip(pivot_row.iter()).skip(col) {
+                *x -= f * p;
+            }
+            b[row] -= f * b[col];
+        }
+    }
+    let mut x = [0.0; 3];
+    for row in (0..3).rev() {
+        let mut s = b[row];
+        for k in row + 1..3 {
+            s -= a[row][k] * x[k];
+        }
+        x[row] = s / a[row][row];
+    }
+    Some(x)
+}
+
+impl Rotor {
+    /// Builds the rotor model from the preset's rotor section.
+    pub fn from_params(p: &super::aircraft::RotorParams) -> Self {
+        Self {
+            radius: p.radius_m,
+            chord: p.chord_m,
+            blades: p.blades,
+            pitch: p.incidence_deg.to_radians(),
+            root_cutout: p.root_cutout_m,
+            precone: p.precone_deg.to_radians(),
+            radial_strips: p.radial_strips,
+            azimuth_steps: p.azimuth_steps,
+            tip_loss_b: p.tip_loss_b,
+            inflow: if p.inflow == "drees" {
+                InflowModel::Drees
+            } else {
+                InflowModel::Glauert
+            },
+            solver: RotorSolverParams::default(),
+        }
+    }
+}

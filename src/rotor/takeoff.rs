@@ -1,0 +1,333 @@
+//! Takeoff simulation (paper Table 4): point-mass longitudinal dynamics plus the rotor-speed
+//! ODE, integrated with the classical fourth-order Runge–Kutta method.
+//!
+//! Procedure (paper §Takeoff): rotor prerotated to 200 rpm, brake released, full throttle,
+//! stick full aft (rotor head pitch 15°, fuselage level, so the hub angle of attack is 15° on
+//! the ground roll). Ground roll: m·u̇ = F_prop − D_R − D_P − μ_r·(G − L). Lift-off when the
+//! rotor lift exceeds the weight. Airborne: forces along and normal to the flight path,
+//! m·a = (F_prop − D)·e_V + L·e_L − G·e_z, and the pilot lowers the rotor disc angle with a
+//! PI law on the climb rate, α̇_H = K (ẇ_err·τ + w_err), w_err = w_target − w, clamped to the
+//! head-angle range. The climb target grows with the speed gained since lift-off,
+//! w_target = min(w_max, k_V·(V − V_LO)), so the aircraft first accelerates in level flight
+//! close to the ground and then climbs while still accelerating (the paper's procedure). Rotor speed throughout: I_R·Ω̇ = Q_aero (the quasi-steady autorotative
+//! torque of the blade-element model). Thrust acts along the flight path (small angles).
+
+use super::aircraft::Aircraft;
+use super::atmosphere::Atmosphere;
+use super::propeller::{PropellerError, PropellerMap};
+use super::rotor::{FlightCondition, Rotor, RotorError, RotorSolution};
+use super::{rad_s_to_rpm, rpm_to_rad_s, G0};
+use crate::table::SectionAero;
+use serde::Serialize;
+
+/// Errors of the takeoff simulation.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum TakeoffError {
+    /// The rotor solution failed during the run.
+    #[error("rotor solution failed at t = {time_s:.2} s: {source}")]
+    Rotor {
+        /// Simulation time [s].
+        time_s: f64,
+        /// Underlying error.
+        source: RotorError,
+    },
+    /// The propeller model could not be calibrated.
+    #[error(transparent)]
+    Propeller(#[from] PropellerError),
+    /// The aircraft did not reach the screen height in time.
+    #[error("takeoff did not reach {height_m:.0} m within {time_s:.0} s ({reason})")]
+    NotReached {
+        /// Screen height [m].
+        height_m: f64,
+        /// Time limit [s].
+        time_s: f64,
+        /// State at the end.
+        reason: &'static str,
+    },
+    /// The rotor stopped or the state became non-finite.
+    #[error("takeoff simulation diverged at t = {time_s:.2} s: {reason}")]
+    Diverged {
+        /// Simulation time [s].
+        time_s: f64,
+        /// What went wrong.
+        reason: &'static str,
+    },
+}
+
+/// One row of the takeoff time history.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct TakeoffSample {
+    /// Time since brake release [s].
+    pub t: f64,
+    /// Distance from brake release [m].
+    pub x: f64,
+    /// Height [m].
+    pub h: f64,
+    /// Airspeed [m/s].
+    pub v: f64,
+    /// Rotor speed [rpm].
+    pub rotor_rpm: f64,
+    /// Tip-path-plane angle of attack α_R [deg].
+    pub alpha_r_deg: f64,
+    /// Teeter amplitude β [deg].
+    pub beta_deg: f64,
+}
+
+/// Result of a takeoff run.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct TakeoffResult {
+    /// Ground roll to lift-off s_TO [m].
+    pub takeoff_roll_m: f64,
+    /// Distance to the screen height s_15 [m].
+    pub distance_15m_m: f64,
+    /// Largest teeter amplitude during the run β_max [deg].
+    pub max_flapping_deg: f64,
+    /// Whether β_max reached the teeter stops.
+    pub flap_stops_reached: bool,
+    /// Airspeed at lift-off [kt].
+    pub liftoff_speed_kt: f64,
+    /// Airspeed at the screen height [kt].
+    pub screen_speed_kt: f64,
+    /// Rotor speed at lift-off [rpm].
+    pub liftoff_rotor_rpm: f64,
+    /// Time from brake release to lift-off [s].
+    pub liftoff_time_s: f64,
+    /// Time from brake release to the screen height [s].
+    pub screen_time_s: f64,
+    /// Time history (every integration step).
+    #[serde(skip)]
+    pub history: Vec<TakeoffSample>,
+}
+
+impl TakeoffResult {
+    /// Writes the history as CSV with header `t,x,h,v,rotor_rpm,alpha_r_deg,beta_deg`.
+    pub fn write_history_csv<W: std::io::Write>(&self, out: W) -> Result<(), csv::Error> {
+        let mut w = csv::Writer::from_writer(out);
+        for s in &self.history {
+            w.serialize(s)?;
+        }
+        w.flush()?;
+        Ok(())
+    }
+}
+
+/// State vector: x, h, u (horizontal speed), w (climb rate), Ω, α_H.
+type State = [f64; 6];
+
+/// Everything the right-hand side needs.
+struct Model<'a, S: SectionAero + ?Sized> {
+    aircraft: &'a Aircraft,
+    rotor: Rotor,
+    section: &'a S,
+    prop: PropellerMap,
+    inertia: f64,
+    /// Last rotor solution, the warm start of the next solve (local to this run).
+    warm: Option<RotorSolution>,
+    /// Airspeed at lift-off [m/s] (the pilot's climb target grows with the speed gained).
+    liftoff_speed: f64,
+}
+
+impl<S: SectionAero + ?Sized> Model<'_, S> {
+    fn rotor_at(&mut self, t: f64, y: &State) -> Result<RotorSolution, TakeoffError> {
+        let atm = Atmosphere::isa(self.aircraft.takeoff.field_altitude_m + y[1].max(0.0));
+        let cond = FlightCondition {
+            airspeed: y[2].hypot(y[3]),
+            hub_aoa: y[5],
+            omega: y[4],
+            atmosphere: atm,
+        };
+        if !(y.iter().all(|v| v.is_finite())) {
+            return Err(TakeoffError::Diverged {
+                time_s: t,
+                reason: "non-finite state",
+            });
+        }
+        if y[4] <= 0.0 {
+            return Err(TakeoffError::Diverged {
+                time_s: t,
+                reason: "the rotor stopped",
+            });
+        }
+        let s = self
+            .rotor
+            .solve(self.section, &cond, self.warm.as_ref())
+            .map_err(|source| TakeoffError::Rotor { time_s: t, source })?;
+        self.warm = Some(s);
+        Ok(s)
+    }
+
+    /// Time derivative of the state; `airborne` selects the equations of motion.
+    fn derivative(
+        &mut self,
+        t: f64,
+        y: &State,
+        airborne: bool,
+    ) -> Result<(State, RotorSolution), TakeoffError> {
+        let s = self.rotor_at(t, y)?;
+        let ac = self.aircraft;
+        let m = ac.mass_kg;
+        let weight = ac.weight_n();
+        let v = y[2].hypot(y[3]);
+        let rho = s.condition.atmosphere.density;
+        let thrust = self.prop.full_throttle_thrust(rho, v);
+        let drag = s.drag + 0.5 * rho * v * v * ac.parasitic_drag_area_m2;
+        let omega_dot = s.torque / self.inertia;
+        let mut dy = [0.0; 6];
+        if !airborne {
+            let friction = ac.takeoff.rolling_friction * (weight - s.lift).max(0.0);
+            let ax = (thrust - drag - friction) / m;
+            dy[0] = y[2];
+            dy[2] = ax.max(if y[2] > 0.0 { f64::NEG_INFINITY } else { 0.0 });
+            dy[4] = omega_dot;
+            return Ok((dy, s));
+        }
+        let gamma = if v > 1e-6 { y[3].atan2(y[2]) } else { 0.0 };
+        let (sg, cg) = gamma.sin_cos();
+        let along = thrust - drag;
+        let ax = (along * cg - s.lift * sg) / m;
+        let az = (along * sg + s.lift * cg) / m - G0;
+        let to = &ac.takeoff;
+        let gained = (v - self.liftoff_speed).max(0.0);
+        let target = to
+            .target_climb_rate_ms
+            .min(to.climb_rate_per_speed_gain * gained);
+        let err = target - y[3];
+        let mut rate =
+            (to.pilot_gain_deg_per_ms * (err - to.pilot_time_constant_s * az)).to_radians();
+        let (lo, hi) = (
+            to.head_angle_min_deg.to_radians(),
+            to.head_angle_max_deg.to_radians(),
+        );
+        if (y[5] >= hi && rate > 0.0) || (y[5] <= lo && rate < 0.0) {
+            rate = 0.0;
+        }
+        dy[0] = y[2];
+        dy[1] = y[3];
+        dy[2] = ax;
+        dy[3] = az;
+        dy[4] = omega_dot;
+        dy[5] = rate;
+        Ok((dy, s))
+    }
+
+    fn rk4_step(
+        &mut self,
+        t: f64,
+        y: &State,
+        dt: f64,
+        airborne: bool,
+    ) -> Result<(State, RotorSolution), TakeoffError> {
+        let add = |a: &State, k: &State, h: f64| -> State {
+            let mut r = *a;
+            for i in 0..6 {
+                r[i] += h * k[i];
+            }
+            r
+        };
+        let (k1, s1) = self.derivative(t, y, airborne)?;
+        let (k2, _) = self.derivative(t + 0.5 * dt, &add(y, &k1, 0.5 * dt), airborne)?;
+        let (k3, _) = self.derivative(t + 0.5 * dt, &add(y, &k2, 0.5 * dt), airborne)?;
+        let (k4, _) = self.derivative(t + dt, &add(y, &k3, dt), airborne)?;
+        let mut next = *y;
+        for i in 0..6 {
+            next[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        }
+        let hi = self.aircraft.takeoff.head_angle_max_deg.to_radians();
+        let lo = self.aircraft.takeoff.head_angle_min_deg.to_radians();
+        next[5] = next[5].clamp(lo, hi);
+        if next[1] < 0.0 {
+            next[1] = 0.0;
+            next[3] = next[3].max(0.0);
+        }
+        Ok((next, s1))
+    }
+}
+
+fn sample(t: f64, y: &State, s: &RotorSolution) -> TakeoffSample {
+    TakeoffSample {
+        t,
+        x: y[0],
+        h: y[1],
+        v: y[2].hypot(y[3]),
+        rotor_rpm: rad_s_to_rpm(y[4]),
+        alpha_r_deg: s.disc_aoa().to_degrees(),
+        beta_deg: s.teeter.amplitude().to_degrees(),
+    }
+}
+
+/// Simulates the takeoff of `aircraft` with rotor section `section` from brake release to the
+/// screen height (see the module documentation for the equations).
+pub fn simulate_takeoff<S: SectionAero + ?Sized>(
+    aircraft: &Aircraft,
+    section: &S,
+) -> Result<TakeoffResult, TakeoffError> {
+    let to = &aircraft.takeoff;
+    let mut model = Model {
+        aircraft,
+        rotor: Rotor::from_params(&aircraft.rotor),
+        section,
+        prop: PropellerMap::calibrate(&aircraft.propeller)?,
+        inertia: aircraft.rotor.polar_inertia(),
+        warm: None,
+        liftoff_speed: 0.0,
+    };
+    let dt = to.time_step_s;
+    let kt = super::KT_TO_MS;
+    let mut y: State = [
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        rpm_to_rad_s(to.prerotation_rpm),
+        to.head_angle_max_deg.to_radians(),
+    ];
+    let mut t = 0.0;
+    let mut airborne = false;
+    let mut history = Vec::new();
+    let mut beta_max: f64 = 0.0;
+    let mut liftoff: Option<(f64, f64, f64, f64)> = None;
+    let weight = aircraft.weight_n();
+    while t < to.max_time_s {
+        let (next, s) = model.rk4_step(t, &y, dt, airborne)?;
+        history.push(sample(t, &y, &s));
+        beta_max = beta_max.max(s.teeter.amplitude().to_degrees());
+        if !airborne && s.lift >= weight {
+            airborne = true;
+            liftoff = Some((y[0], t, y[2], y[4]));
+            model.liftoff_speed = y[2];
+        }
+        if airborne && next[1] >= to.screen_height_m {
+            let frac = (to.screen_height_m - y[1]) / (next[1] - y[1]);
+            let x15 = y[0] + frac * (next[0] - y[0]);
+            let t15 = t + frac * dt;
+            let v15 = y[2].hypot(y[3]) + frac * (next[2].hypot(next[3]) - y[2].hypot(y[3]));
+            let s_end = model.rotor_at(t + dt, &next)?;
+            history.push(sample(t + dt, &next, &s_end));
+            beta_max = beta_max.max(s_end.teeter.amplitude().to_degrees());
+            let (x_to, t_to, v_to, omega_to) = liftoff.unwrap_or((x15, t15, v15, next[4]));
+            return Ok(TakeoffResult {
+                takeoff_roll_m: x_to,
+                distance_15m_m: x15,
+                max_flapping_deg: beta_max,
+                flap_stops_reached: beta_max >= aircraft.rotor.flap_stop_deg,
+                liftoff_speed_kt: v_to / kt,
+                screen_speed_kt: v15 / kt,
+                liftoff_rotor_rpm: rad_s_to_rpm(omega_to),
+                liftoff_time_s: t_to,
+                screen_time_s: t15,
+                history,
+            });
+        }
+        y = next;
+        t += dt;
+    }
+    Err(TakeoffError::NotReached {
+        height_m: to.screen_height_m,
+        time_s: to.max_time_s,
+        reason: if airborne {
+            "airborne but not climbing enough"
+        } else {
+            "still on the ground"
+        },
+    })
+}

@@ -1,0 +1,336 @@
+//! Autorotation (rotor speed at zero shaft torque) and level-cruise trim of the gyroplane.
+//!
+//! Trim (paper eq. 5 and Table 3): at airspeed V, mass m and ISA altitude find the hub angle
+//! of attack α_H and rotor speed Ω such that the rotor is in autorotation (torque = 0) and its
+//! lift equals the weight G. Then D_R is the rotor drag, D_P = ½ρV²·S_P·C_DP the airframe
+//! drag, F_prop = D_R + D_P the propeller thrust and L/D = G/(D_R + D_P).
+//!
+//! Both unknowns are found by nested one-dimensional root finding with brackets: for each α_H
+//! the autorotation rpm (scan down from high rpm until the torque changes sign, then an
+//! Illinois-safeguarded secant), and α_H from the lift balance the same way. Brackets make the
+//! solve robust; the secant makes it fast.
+
+use super::aircraft::Aircraft;
+use super::atmosphere::Atmosphere;
+use super::propeller::{PropellerError, PropellerMap};
+use super::rotor::{FlightCondition, Rotor, RotorError, RotorSolution};
+use super::{rad_s_to_rpm, rpm_to_rad_s, KT_TO_MS};
+use crate::table::SectionAero;
+use serde::Serialize;
+
+/// Errors of autorotation and trim.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum TrimError {
+    /// The rotor solution failed.
+    #[error(transparent)]
+    Rotor(#[from] RotorError),
+    /// The propeller model could not be calibrated.
+    #[error(transparent)]
+    Propeller(#[from] PropellerError),
+    /// No rotor speed in the search range gives zero torque.
+    #[error("no autorotation at V = {airspeed_ms:.1} m/s, α_H = {aoa_deg:.2}°: {reason}")]
+    NoAutorotation {
+        /// Airspeed [m/s].
+        airspeed_ms: f64,
+        /// Hub angle of attack [deg].
+        aoa_deg: f64,
+        /// What the scan found.
+        reason: &'static str,
+    },
+    /// No rotor angle of attack in the search range balances the weight.
+    #[error("no trim at V = {airspeed_ms:.1} m/s, weight {weight_n:.0} N: {reason}")]
+    NoTrim {
+        /// Airspeed [m/s].
+        airspeed_ms: f64,
+        /// Weight [N].
+        weight_n: f64,
+        /// What the scan found.
+        reason: &'static str,
+    },
+    /// Invalid input (speed, mass).
+    #[error("invalid trim input: {0}")]
+    Input(&'static str),
+}
+
+/// Search ranges and tolerances of the trim solvers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TrimParams {
+    /// Highest rotor speed searched [rpm] (the scan starts here).
+    pub rpm_max: f64,
+    /// Lowest rotor speed searched [rpm].
+    pub rpm_min: f64,
+    /// Scan factor between successive rpm samples (< 1).
+    pub rpm_scan_factor: f64,
+    /// Rotor speed tolerance [rpm].
+    pub rpm_tolerance: f64,
+    /// Smallest hub angle of attack searched [deg].
+    pub aoa_min_deg: f64,
+    /// Largest hub angle of attack searched [deg].
+    pub aoa_max_deg: f64,
+    /// Hub angle scan step [deg].
+    pub aoa_scan_step_deg: f64,
+    /// Hub angle tolerance [deg].
+    pub aoa_tolerance_deg: f64,
+    /// Maximum secant iterations of each bracketed solve.
+    pub max_iterations: usize,
+}
+
+impl Default for TrimParams {
+    fn default() -> Self {
+        Self {
+            rpm_max: 900.0,
+            rpm_min: 60.0,
+            rpm_scan_factor: 0.85,
+            rpm_tolerance: 1e-3,
+            aoa_min_deg: -6.0,
+            aoa_max_deg: 30.0,
+            aoa_scan_step_deg: 1.5,
+            aoa_tolerance_deg: 1e-4,
+            max_iterations: 60,
+        }
+    }
+}
+
+/// Trimmed level flight.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct TrimResult {
+    /// Airspeed [m/s].
+    pub airspeed_ms: f64,
+    /// Airspeed [kt].
+    pub airspeed_kt: f64,
+    /// Rotor speed n_R [rpm].
+    pub rotor_rpm: f64,
+    /// Tip-path-plane angle of attack α_R [deg].
+    pub rotor_aoa_deg: f64,
+    /// Hub-plane angle of attack α_H [deg].
+    pub hub_aoa_deg: f64,
+    /// Engine speed from the propeller map [rpm] (`None` if above the engine's maximum).
+    pub engine_rpm: Option<f64>,
+    /// Rotor drag D_R [N].
+    pub rotor_drag_n: f64,
+    /// Rotor lift [N] (= weight at trim).
+    pub rotor_lift_n: f64,
+    /// Airframe drag D_P [N].
+    pub parasitic_drag_n: f64,
+    /// Propeller thrust F_prop = D_R + D_P [N].
+    pub prop_thrust_n: f64,
+    /// Lift-to-drag ratio G/(D_R + D_P).
+    pub lift_to_drag: f64,
+    /// Power required F_prop·V [kW].
+    pub power_required_kw: f64,
+    /// Longitudinal flapping β1c [deg] (negative = tip-path plane tilted back).
+    pub beta1c_deg: f64,
+    /// Lateral flapping β1s [deg].
+    pub beta1s_deg: f64,
+    /// Advance ratio μ.
+    pub advance_ratio: f64,
+    /// Thrust coefficient C_T.
+    pub thrust_coefficient: f64,
+    /// Residual shaft torque at the trim point [N m] (≈ 0).
+    pub torque_nm: f64,
+}
+
+/// Root of `f` in the bracket [a, b] (f(a)·f(b) ≤ 0): secant steps with the Illinois
+/// modification of regula falsi (Dowell & Jarratt 1971), which keeps the bracket.
+fn bracketed_root<E>(
+    mut f: impl FnMut(f64) -> Result<f64, E>,
+    (mut a, mut fa): (f64, f64),
+    (mut b, mut fb): (f64, f64),
+    xtol: f64,
+    max_iterations: usize,
+) -> Result<f64, E> {
+    let mut side = 0i8;
+    for _ in 0..max_iterations {
+        if fa == 0.0 {
+            return Ok(a);
+        }
+        if fb == 0.0 || (b - a).abs() < xtol {
+            return Ok(b);
+        }
+        let mut c = (a * fb - b * fa) / (fb - fa);
+        if !c.is_finite() || c <= a.min(b) || c >= a.max(b) {
+            c = 0.5 * (a + b);
+        }
+        let fc = f(c)?;
+        if fc * fb < 0.0 {
+            a = b;
+            fa = fb;
+            side = 0;
+        } else {
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        }
+        b = c;
+        fb = fc;
+    }
+    Ok(b)
+}
+
+/// Autorotation: the rotor speed at which the aerodynamic torque vanishes, for airspeed `v`
+/// [m/s] and hub angle `hub_aoa` [rad]. The scan starts at the highest rpm and moves down, so
+/// the equilibrium found is the stable one (torque falls with rpm there).
+pub fn autorotation<S: SectionAero + ?Sized>(
+    rotor: &Rotor,
+    section: &S,
+    v: f64,
+    hub_aoa: f64,
+    atmosphere: &Atmosphere,
+    params: &TrimParams,
+) -> Result<RotorSolution, TrimError> {
+    let cond = |rpm: f64| FlightCondition {
+        airspeed: v,
+        hub_aoa,
+        omega: rpm_to_rad_s(rpm),
+        atmosphere: *atmosphere,
+    };
+    let no_auto = |reason| TrimError::NoAutorotation {
+        airspeed_ms: v,
+        aoa_deg: hub_aoa.to_degrees(),
+        reason,
+    };
+    let mut hi = params.rpm_max;
+    let first = rotor.solve(section, &cond(hi), None)?;
+    if first.torque > 0.0 {
+        return Err(no_auto(
+            "the rotor still accelerates at the highest rpm searched",
+        ));
+    }
+    let mut f_hi = first.torque;
+    let mut warm = Some(first);
+    let (lo, f_lo) = loop {
+        let lo = hi * params.rpm_scan_factor;
+        if lo < params.rpm_min {
+            return Err(no_auto(
+                "the rotor needs driving torque at every rpm searched",
+            ));
+        }
+        let s = rotor.solve(section, &cond(lo), warm.as_ref())?;
+        warm = Some(s);
+        if s.torque >= 0.0 {
+            break (lo, s.torque);
+        }
+        hi = lo;
+        f_hi = s.torque;
+    };
+    let rpm = bracketed_root(
+        |rpm| -> Result<f64, TrimError> {
+            let s = rotor.solve(section, &cond(rpm), warm.as_ref())?;
+            warm = Some(s);
+            Ok(s.torque)
+        },
+        (lo, f_lo),
+        (hi, f_hi),
+        params.rpm_tolerance,
+        params.max_iterations,
+    )?;
+    Ok(rotor.solve(section, &cond(rpm), warm.as_ref())?)
+}
+
+/// Level-flight trim: hub angle and rotor speed such that the rotor autorotates and its lift
+/// equals `weight` [N] at airspeed `v` [m/s]. Returns the rotor solution.
+pub fn trim_rotor<S: SectionAero + ?Sized>(
+    rotor: &Rotor,
+    section: &S,
+    v: f64,
+    weight: f64,
+    atmosphere: &Atmosphere,
+    params: &TrimParams,
+) -> Result<RotorSolution, TrimError> {
+    if !(v.is_finite() && v > 0.0) {
+        return Err(TrimError::Input("airspeed must be a positive number"));
+    }
+    if !(weight.is_finite() && weight > 0.0) {
+        return Err(TrimError::Input("weight must be a positive number"));
+    }
+    let no_trim = |reason| TrimError::NoTrim {
+        airspeed_ms: v,
+        weight_n: weight,
+        reason,
+    };
+    let excess = |aoa_deg: f64| -> Result<(f64, RotorSolution), TrimError> {
+        let s = autorotation(rotor, section, v, aoa_deg.to_radians(), atmosphere, params)?;
+        Ok((s.lift - weight, s))
+    };
+    // Scan α_H upwards until the lift exceeds the weight; the bracket must lie on one
+    // continuous autorotation branch, so a gap without autorotation restarts it.
+    let mut below: Option<(f64, f64)> = None;
+    let mut overspeed = false;
+    let mut aoa = params.aoa_min_deg;
+    let (below, above) =
+        loop {
+            if aoa > params.aoa_max_deg {
+                return Err(no_trim(if overspeed {
+                    "the rotor leaves the rpm range searched before its lift reaches the weight"
+                } else {
+                    "the rotor lift stays below the weight at every angle searched"
+                }));
+            }
+            match excess(aoa) {
+                Ok((f, _)) if f >= 0.0 => match below {
+                    Some(b) => break (b, (aoa, f)),
+                    None => return Err(no_trim(
+                        "the rotor lift exceeds the weight already at the smallest angle searched",
+                    )),
+                },
+                Ok((f, _)) => below = Some((aoa, f)),
+                Err(TrimError::NoAutorotation { .. }) => {
+                    overspeed |= below.is_some();
+                    below = None;
+                }
+                Err(e) => return Err(e),
+            }
+            aoa += params.aoa_scan_step_deg;
+        };
+    let aoa = bracketed_root(
+        |a| excess(a).map(|(f, _)| f),
+        below,
+        above,
+        params.aoa_tolerance_deg,
+        params.max_iterations,
+    )?;
+    Ok(excess(aoa)?.1)
+}
+
+/// Full cruise trim of `aircraft` at `speed_kt` [kt], `mass_kg` and ISA `altitude_m`: rotor
+/// trim, airframe drag, propeller thrust and engine rpm (paper Table 3).
+pub fn trim_aircraft<S: SectionAero + ?Sized>(
+    aircraft: &Aircraft,
+    section: &S,
+    speed_kt: f64,
+    mass_kg: f64,
+    altitude_m: f64,
+    params: &TrimParams,
+) -> Result<TrimResult, TrimError> {
+    if !(mass_kg.is_finite() && mass_kg > 0.0) {
+        return Err(TrimError::Input("mass must be a positive number"));
+    }
+    let rotor = Rotor::from_params(&aircraft.rotor);
+    let prop = PropellerMap::calibrate(&aircraft.propeller)?;
+    let atm = Atmosphere::isa(altitude_m);
+    let v = speed_kt * KT_TO_MS;
+    let weight = mass_kg * super::G0;
+    let s = trim_rotor(&rotor, section, v, weight, &atm, params)?;
+    let d_p = atm.dynamic_pressure(v) * aircraft.parasitic_drag_area_m2;
+    let f_prop = s.drag + d_p;
+    Ok(TrimResult {
+        airspeed_ms: v,
+        airspeed_kt: speed_kt,
+        rotor_rpm: rad_s_to_rpm(s.condition.omega),
+        rotor_aoa_deg: s.disc_aoa().to_degrees(),
+        hub_aoa_deg: s.condition.hub_aoa.to_degrees(),
+        engine_rpm: prop.engine_rpm_for_thrust(atm.density, v, f_prop).ok(),
+        rotor_drag_n: s.drag,
+        rotor_lift_n: s.lift,
+        parasitic_drag_n: d_p,
+        prop_thrust_n: f_prop,
+        lift_to_drag: weight / f_prop,
+        power_required_kw: f_prop * v / 1000.0,
+        beta1c_deg: s.teeter.beta1c.to_degrees(),
+        beta1s_deg: s.teeter.beta1s.to_degrees(),
+        advance_ratio: s.advance_ratio,
+        thrust_coefficient: s.thrust_coefficient,
+        torque_nm: s.torque,
+    })
+}

@@ -1,0 +1,258 @@
+//! The `gyro` binary: JSON keys, history file, comparison tables and one-line errors.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn aircraft() -> String {
+    root().join("aircraft/mtosport.toml").display().to_string()
+}
+
+/// XFOIL 6.99 polars of the NACA 8-H-12 at Re 1.9e6, M 0.41 (free transition / xtr 0.07).
+fn table(kind: &str) -> String {
+    root()
+        .join(format!(
+            "tests/data/rotor/naca8h12_Re1.9e6_M0.41_{kind}.csv"
+        ))
+        .display()
+        .to_string()
+}
+
+fn gyro(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gyro"))
+        .args(args)
+        .output()
+        .expect("gyro runs")
+}
+
+fn json(out: &Output) -> serde_json::Value {
+    assert!(
+        out.status.success(),
+        "stderr: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("valid JSON")
+}
+
+fn assert_one_line_error(out: &Output, needle: &str) {
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(err.starts_with("gyro: ") && err.contains(needle), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn trim_json_keys_and_values() {
+    let a = aircraft();
+    let t = table("free");
+    let v = json(&gyro(&[
+        "trim",
+        "--aircraft",
+        &a,
+        "--table",
+        &t,
+        "--speed-kt",
+        "60",
+        "--mass",
+        "450",
+        "--json",
+    ]));
+    for key in [
+        "rotor_rpm",
+        "rotor_aoa_deg",
+        "engine_rpm",
+        "rotor_drag_n",
+        "parasitic_drag_n",
+        "prop_thrust_n",
+        "lift_to_drag",
+    ] {
+        assert!(v[key].is_number(), "{key} missing: {v}");
+    }
+    let f = |k: &str| v[k].as_f64().unwrap();
+    // XFOIL polars of the paper's airfoil: the paper's trim is 347 rpm, F_prop 1051 N.
+    assert!((f("rotor_rpm") - 347.0).abs() < 40.0, "{}", f("rotor_rpm"));
+    assert!((f("prop_thrust_n") - f("rotor_drag_n") - f("parasitic_drag_n")).abs() < 1e-6);
+    assert!((f("lift_to_drag") - 450.0 * 9.80665 / f("prop_thrust_n")).abs() < 1e-9);
+}
+
+#[test]
+fn takeoff_json_keys_and_history() {
+    let dir = std::env::temp_dir().join(format!("gyro_cli_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let hist = dir.join("hist.csv");
+    let h = hist.display().to_string();
+    let v = json(&gyro(&[
+        "takeoff",
+        "--aircraft",
+        &aircraft(),
+        "--table",
+        &table("free"),
+        "--json",
+        "--history",
+        &h,
+    ]));
+    for key in ["takeoff_roll_m", "distance_15m_m", "max_flapping_deg"] {
+        assert!(v[key].is_number(), "{key} missing: {v}");
+    }
+    assert!(v["distance_15m_m"].as_f64().unwrap() > v["takeoff_roll_m"].as_f64().unwrap());
+    let text = std::fs::read_to_string(&hist).unwrap();
+    assert!(text.starts_with("t,x,h,v,rotor_rpm,alpha_r_deg,beta_deg\n"));
+    assert!(text.lines().count() > 100);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn compare_prints_both_tables_with_paper_values() {
+    let out = gyro(&[
+        "compare",
+        "--aircraft",
+        &aircraft(),
+        "--clean",
+        &table("free"),
+        "--contaminated",
+        &table("xtr0.07"),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("Table 3") && text.contains("Table 4"),
+        "{text}"
+    );
+    // The paper's clean and contaminated F_prop and takeoff roll appear beside ours.
+    assert!(
+        text.contains("1051.0") && text.contains("1197.0") && text.contains("121.0"),
+        "{text}"
+    );
+    let fprop = text.lines().find(|l| l.contains("F_prop")).unwrap();
+    assert!(fprop.contains("+13.9%"), "{fprop}");
+}
+
+#[test]
+fn sweep_gives_a_power_curve() {
+    let v = json(&gyro(&[
+        "sweep",
+        "--aircraft",
+        &aircraft(),
+        "--table",
+        &table("free"),
+        "--from-kt",
+        "40",
+        "--to-kt",
+        "80",
+        "--step-kt",
+        "20",
+        "--json",
+    ]));
+    let rows = v.as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    let d_p: Vec<f64> = rows
+        .iter()
+        .map(|r| r["parasitic_drag_n"].as_f64().unwrap())
+        .collect();
+    assert!(d_p[0] < d_p[1] && d_p[1] < d_p[2]);
+    // D_P ∝ V²: 80 kt has four times the 40 kt value.
+    assert!((d_p[2] / d_p[0] - 4.0).abs() < 1e-9);
+}
+
+#[test]
+fn errors_are_one_line() {
+    let t = table("free");
+    assert_one_line_error(
+        &gyro(&["trim", "--aircraft", "/nonexistent.toml", "--table", &t]),
+        "cannot read aircraft file",
+    );
+    assert_one_line_error(
+        &gyro(&[
+            "trim",
+            "--aircraft",
+            &aircraft(),
+            "--table",
+            "/nonexistent.csv",
+        ]),
+        "cannot read table",
+    );
+    assert_one_line_error(
+        &gyro(&[
+            "trim",
+            "--aircraft",
+            &aircraft(),
+            "--table",
+            &t,
+            "--speed-kt=-5",
+        ]),
+        "--speed-kt",
+    );
+    assert_one_line_error(&gyro(&["trim", "--aircraft", &aircraft()]), "--table");
+    assert_one_line_error(
+        &gyro(&[
+            "trim",
+            "--aircraft",
+            &aircraft(),
+            "--table",
+            &t,
+            "--speed-kt",
+            "fast",
+        ]),
+        "fast",
+    );
+    assert_one_line_error(
+        &gyro(&[
+            "trim",
+            "--aircraft",
+            &aircraft(),
+            "--table",
+            &t,
+            "--mass",
+            "0",
+        ]),
+        "--mass",
+    );
+    assert_one_line_error(
+        &gyro(&[
+            "trim",
+            "--aircraft",
+            &aircraft(),
+            "--table",
+            &t,
+            "--mass",
+            "5000",
+        ]),
+        "no trim",
+    );
+    // A table without the needed columns.
+    let bad = std::env::temp_dir().join(format!("gyro_bad_{}.csv", std::process::id()));
+    std::fs::write(&bad, "a,b\n1,2\n").unwrap();
+    assert_one_line_error(
+        &gyro(&[
+            "trim",
+            "--aircraft",
+            &aircraft(),
+            "--table",
+            &bad.display().to_string(),
+        ]),
+        "alpha, cl, cd",
+    );
+    std::fs::remove_file(&bad).ok();
+    // A malformed preset.
+    let bad = std::env::temp_dir().join(format!("gyro_bad_{}.toml", std::process::id()));
+    std::fs::write(&bad, "name = \"x\"\n").unwrap();
+    assert_one_line_error(
+        &gyro(&[
+            "trim",
+            "--aircraft",
+            &bad.display().to_string(),
+            "--table",
+            &t,
+        ]),
+        "bad aircraft file",
+    );
+    std::fs::remove_file(&bad).ok();
+}

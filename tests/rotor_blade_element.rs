@@ -1,0 +1,109 @@
+//! Strip velocity triangle, sign handling and reverse flow.
+
+mod rotor_support;
+
+use polargen::rotor::blade_element::{strip_load, wrap_deg, AirState, StripFlow};
+use polargen::table::{Lookup, SectionAero};
+
+const AIR: AirState = AirState {
+    density: 1.225,
+    viscosity: 1.789e-5,
+    speed_of_sound: 340.3,
+};
+
+/// Fore-aft symmetric flat plate (Hoerner): cl = 1.1 sin 2α, cd = 0.01 + 1.9 sin²α.
+struct FlatPlate;
+
+impl SectionAero for FlatPlate {
+    fn lookup(&self, alpha_deg: f64, _re: f64, _mach: f64) -> Lookup {
+        let a = alpha_deg.to_radians();
+        Lookup::new(1.1 * (2.0 * a).sin(), 0.01 + 1.9 * a.sin().powi(2), 0.0)
+    }
+}
+
+#[test]
+fn normal_flow_triangle() {
+    let theta = 2.5f64.to_radians();
+    let f = StripFlow::new(150.0, 6.0, theta, 0.2, &AIR);
+    let alpha = 2.5 + (6.0f64 / 150.0).atan().to_degrees();
+    assert!((f.alpha_deg - alpha).abs() < 1e-12);
+    assert!((f.speed - 150.0f64.hypot(6.0)).abs() < 1e-12);
+    assert!((f.reynolds - 1.225 * f.speed * 0.2 / 1.789e-5).abs() < 1e-6 * f.reynolds);
+    assert!((f.mach - f.speed / 340.3).abs() < 1e-15);
+    assert!(!f.is_reversed());
+    // Upflow and positive lift: the lift vector leans forward and drives the rotor when
+    // cl·U_P > cd·U_T (autorotation), and the normal force is upward.
+    let c = Lookup::new(0.6, 0.008, 0.0);
+    let l = strip_load(&f, &c, 1.225, 0.2, 1.0);
+    let q = 0.5 * 1.225 * f.speed * 0.2;
+    assert!((l.tangential - q * (0.6 * 6.0 - 0.008 * 150.0)).abs() < 1e-9);
+    assert!(l.tangential > 0.0 && l.normal > 0.0);
+    // Tip loss removes lift only: the remaining tangential force is pure drag.
+    let l0 = strip_load(&f, &c, 1.225, 0.2, 0.0);
+    assert!((l0.tangential + q * 0.008 * 150.0).abs() < 1e-9);
+}
+
+#[test]
+fn reverse_flow_angle_is_near_180_degrees() {
+    let theta = 2.5f64.to_radians();
+    let f = StripFlow::new(-10.0, 0.0, theta, 0.2, &AIR);
+    assert!(f.is_reversed());
+    assert!((f.alpha_deg - (-177.5)).abs() < 1e-9, "{}", f.alpha_deg);
+    let f = StripFlow::new(-10.0, 1.0, theta, 0.2, &AIR);
+    // atan2(1, −10) = 174.29°, + 2.5° = 176.79°.
+    assert!(
+        (f.alpha_deg - (2.5 + 1f64.atan2(-10.0).to_degrees())).abs() < 1e-9,
+        "{}",
+        f.alpha_deg
+    );
+    assert_eq!(wrap_deg(190.0), -170.0);
+    assert_eq!(wrap_deg(-180.0), 180.0);
+}
+
+#[test]
+fn reverse_flow_loads_mirror_forward_flow() {
+    // A fore-aft symmetric plate at pitch θ with the air arriving at the trailing edge is the
+    // mirror image (t → −t) of the plate at pitch −θ in normal flow: same normal force,
+    // opposite tangential force.
+    let section = FlatPlate;
+    for (theta_deg, ut, up) in [(2.5, 20.0, 0.0), (2.5, 20.0, 3.0), (6.0, 12.0, -2.0)] {
+        let theta = f64::to_radians(theta_deg);
+        let rev = StripFlow::new(-ut, up, theta, 0.2, &AIR);
+        let fwd = StripFlow::new(ut, up, -theta, 0.2, &AIR);
+        let lr = strip_load(&rev, &rev.coefficients(&section), 1.225, 0.2, 1.0);
+        let lf = strip_load(&fwd, &fwd.coefficients(&section), 1.225, 0.2, 1.0);
+        assert!(
+            (lr.normal - lf.normal).abs() < 1e-9 * (1.0 + lf.normal.abs()),
+            "{lr:?} {lf:?}"
+        );
+        assert!(
+            (lr.tangential + lf.tangential).abs() < 1e-9 * (1.0 + lf.tangential.abs()),
+            "{lr:?} {lf:?}"
+        );
+    }
+    // Air from behind on a nose-up plate hits its upper surface: the normal force is down and
+    // the drag pushes the blade backwards (along the air's motion, +t here).
+    let rev = StripFlow::new(-20.0, 0.0, 2.5f64.to_radians(), 0.2, &AIR);
+    let l = strip_load(&rev, &rev.coefficients(&section), 1.225, 0.2, 1.0);
+    assert!(l.normal < 0.0 && l.tangential > 0.0, "{l:?}");
+}
+
+#[test]
+fn analytic_sections_are_continuous_over_the_circle() {
+    for s in [
+        rotor_support::AnalyticSection::clean(),
+        rotor_support::AnalyticSection::contaminated(),
+    ] {
+        let mut prev = s.lookup(-180.0, 2e6, 0.4);
+        for k in 1..=3600 {
+            let a = -180.0 + 0.1 * k as f64;
+            let c = s.lookup(a, 2e6, 0.4);
+            assert!(
+                (c.cl - prev.cl).abs() < 0.05 && (c.cd - prev.cd).abs() < 0.02,
+                "jump at {a}"
+            );
+            assert!(c.cd > 0.0);
+            prev = c;
+        }
+    }
+}

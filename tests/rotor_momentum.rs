@@ -1,0 +1,87 @@
+//! The coupled rotor solution honours momentum theory in its limits.
+
+mod rotor_support;
+
+use polargen::rotor::{rpm_to_rad_s, Atmosphere, FlightCondition, InflowModel, Rotor};
+use rotor_support::{mtosport, AnalyticSection};
+
+#[test]
+fn hover_inflow_matches_actuator_disc() {
+    let r = Rotor::from_params(&mtosport().rotor);
+    let atm = Atmosphere::isa(0.0);
+    let cond = FlightCondition {
+        airspeed: 0.0,
+        hub_aoa: 0.0,
+        omega: rpm_to_rad_s(350.0),
+        atmosphere: atm,
+    };
+    let s = r.solve(&AnalyticSection::clean(), &cond, None).unwrap();
+    assert!(s.thrust > 500.0, "thrust {}", s.thrust);
+    let vh = (s.thrust / (2.0 * atm.density * r.disc_area())).sqrt();
+    assert!(
+        (s.induced_velocity / vh - 1.0).abs() < 1e-6,
+        "{} vs {vh}",
+        s.induced_velocity
+    );
+    // Axisymmetric hover: no flapping, no in-plane force, and the rotor needs driving torque.
+    assert!(s.teeter.amplitude() < 1e-8, "{:?}", s.teeter);
+    assert!(s.h_force.abs() < 1e-6 * s.thrust && s.side_force.abs() < 1e-6 * s.thrust);
+    assert!(s.torque < 0.0);
+}
+
+#[test]
+fn high_speed_inflow_tends_to_t_over_2_rho_a_v() {
+    let mut r = Rotor::from_params(&mtosport().rotor);
+    let atm = Atmosphere::isa(0.0);
+    for model in [InflowModel::Glauert, InflowModel::Drees] {
+        r.inflow = model;
+        let v = 60.0;
+        let cond = FlightCondition {
+            airspeed: v,
+            hub_aoa: 2f64.to_radians(),
+            omega: rpm_to_rad_s(380.0),
+            atmosphere: atm,
+        };
+        let s = r.solve(&AnalyticSection::clean(), &cond, None).unwrap();
+        let expected = s.thrust / (2.0 * atm.density * r.disc_area() * v);
+        assert!(
+            (s.induced_velocity / expected - 1.0).abs() < 0.01,
+            "{model:?}: {} vs {expected}",
+            s.induced_velocity
+        );
+        // Wind-axis forces are the hub forces rotated by α_H.
+        let a = cond.hub_aoa;
+        assert!((s.lift - (s.thrust * a.cos() - s.h_force * a.sin())).abs() < 1e-9 * s.thrust);
+        assert!((s.drag - (s.thrust * a.sin() + s.h_force * a.cos())).abs() < 1e-9 * s.thrust);
+    }
+}
+
+#[test]
+fn discretisation_is_converged_to_a_few_percent() {
+    let ac = mtosport();
+    let coarse = Rotor::from_params(&ac.rotor);
+    let mut fine = coarse.clone();
+    fine.radial_strips = 40;
+    fine.azimuth_steps = 144;
+    let cond = FlightCondition {
+        airspeed: 30.9,
+        hub_aoa: 5f64.to_radians(),
+        omega: rpm_to_rad_s(370.0),
+        atmosphere: Atmosphere::isa(0.0),
+    };
+    let section = AnalyticSection::clean();
+    let a = coarse.solve(&section, &cond, None).unwrap();
+    let b = fine.solve(&section, &cond, None).unwrap();
+    assert!(
+        (a.thrust / b.thrust - 1.0).abs() < 0.02,
+        "{} vs {}",
+        a.thrust,
+        b.thrust
+    );
+    assert!(
+        (a.drag / b.drag - 1.0).abs() < 0.05,
+        "{} vs {}",
+        a.drag,
+        b.drag
+    );
+}
