@@ -273,7 +273,11 @@ fn run_viscous(cli: &Cli) -> Result<()> {
         &nodes,
         &alphas,
         cli.threads,
-        &SweepParams::default(),
+        // The viscous solver retries a failed point from a fresh start itself.
+        &SweepParams {
+            fresh_retry: false,
+            ..SweepParams::default()
+        },
         |reynolds, mach| {
             ViscousSweep::new(
                 &foil,

@@ -4,7 +4,9 @@
 //! start point and marches down — the way XFOIL users run polars. A point that fails is retried
 //! by sub-stepping from the last converged neighbour (half, then quarter steps), then from a fresh
 //! start; if it still fails it is kept with `converged = false` and the march continues from the
-//! last converged state, so one bad point does not poison its neighbours.
+//! last converged state, so one bad point does not poison its neighbours. After a few failures
+//! in a row (deep stall) the remaining points of the branch are solved once each, without the
+//! costly recovery, so a sweep's cost stays bounded.
 
 use super::range::march_order;
 use super::PolarPoint;
@@ -29,8 +31,12 @@ pub struct SweepParams {
     /// How many times the step from the last converged neighbour is halved when retrying a
     /// failed point (1 → a half step, 2 → also quarter steps).
     pub substep_levels: u32,
-    /// Retry a failed point once more from a fresh (inviscid) start.
+    /// Retry a failed point once more from a fresh (inviscid) start. Off for solvers that
+    /// already do so inside one solve (the viscous solver does).
     pub fresh_retry: bool,
+    /// After this many failures in a row along one branch (typically past stall), further
+    /// points of that branch are still solved once each, but without the costly recovery.
+    pub recover_limit: u32,
 }
 
 impl Default for SweepParams {
@@ -38,6 +44,7 @@ impl Default for SweepParams {
         Self {
             substep_levels: 2,
             fresh_retry: true,
+            recover_limit: 3,
         }
     }
 }
@@ -77,19 +84,22 @@ fn march<S: WarmStartSolver>(
     out: &mut [Option<PolarPoint>],
 ) -> Option<S::State> {
     let mut first_state = None;
+    let mut failures_in_a_row = 0;
     for (k, &i) in order.iter().enumerate() {
         let alpha = alphas[i];
         let mut point = solver.solve(alpha);
-        if !point.converged {
+        if !point.converged && failures_in_a_row < params.recover_limit {
             point = recover(solver, alpha, anchor.as_ref(), params).unwrap_or(point);
         }
         if point.converged {
+            failures_in_a_row = 0;
             let state = solver.save();
             if k == 0 {
                 first_state = Some(state.clone());
             }
             anchor = Some((alpha, state));
         } else {
+            failures_in_a_row += 1;
             match &anchor {
                 Some((_, s)) => solver.restore(s),
                 None => solver.reset(),
@@ -147,11 +157,13 @@ mod tests {
         state: Option<f64>,
         max_step: f64,
         bad: Vec<f64>,
+        calls: usize,
     }
 
     impl WarmStartSolver for Mock {
         type State = Option<f64>;
         fn solve(&mut self, alpha: f64) -> PolarPoint {
+            self.calls += 1;
             let from = self.state.unwrap_or(0.0);
             let ok = (alpha - from).abs() <= self.max_step + 1e-12 && !self.bad.contains(&alpha);
             self.state = if ok { Some(alpha) } else { Some(f64::NAN) };
@@ -188,6 +200,7 @@ mod tests {
             state: None,
             max_step: 1.0,
             bad: vec![],
+            calls: 0,
         };
         let pts = sweep(&mut m, &alphas, &SweepParams::default());
         assert!(pts.iter().all(|p| p.converged));
@@ -201,9 +214,33 @@ mod tests {
             state: None,
             max_step: 2.0,
             bad: vec![2.0, -1.0],
+            calls: 0,
         };
         let pts = sweep(&mut m, &alphas, &SweepParams::default());
         let conv: Vec<bool> = pts.iter().map(|p| p.converged).collect();
         assert_eq!(conv, vec![true, true, false, true, false, true]);
+    }
+
+    #[test]
+    fn recovery_stops_after_failures_in_a_row() {
+        // Past 2° every point fails; with a limit of 2 only the first two failures get the
+        // recovery. Solves: 0° and 1° one each; 2°: 1 + half step 1.5° + 2° + fresh = 4;
+        // 3°: 1 + half step 2° (fails, ends the sub-steps) + fresh = 3; 4°, 5°, 6°: one each.
+        let alphas = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0];
+        let mut m = Mock {
+            state: None,
+            max_step: 1.0,
+            bad: vec![2.0, 3.0, 4.0, 5.0, 6.0],
+            calls: 0,
+        };
+        let params = SweepParams {
+            substep_levels: 1,
+            fresh_retry: true,
+            recover_limit: 2,
+        };
+        let pts = sweep(&mut m, &alphas, &params);
+        assert_eq!(pts.iter().filter(|p| p.converged).count(), 2);
+        assert!(pts.iter().all(|p| p.converged == (p.alpha < 2.0)));
+        assert_eq!(m.calls, 12);
     }
 }
