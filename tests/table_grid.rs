@@ -77,6 +77,10 @@ fn ragged_and_duplicate_grids_are_rejected() {
     ];
     let e = PolarTable::from_polars(meta("x"), list.clone()).unwrap_err();
     assert_eq!(e.to_string(), "ragged grid: no polar at Re 2000000, M 0.2");
+    let mut nan = list.clone();
+    nan[2].1 = f64::NAN;
+    let e = PolarTable::from_polars(meta("x"), nan).unwrap_err();
+    assert_eq!(e.to_string(), "Mach must be in [0, 1), got NaN");
     let mut dup = list;
     dup.push(dup[0].clone());
     let e = PolarTable::from_polars(meta("x"), dup).unwrap_err();
@@ -140,4 +144,23 @@ fn points_are_validated() {
         one(pts),
         "empty table: no polar has at least 2 converged points"
     );
+}
+
+#[test]
+fn tables_can_be_shared_across_threads() {
+    fn shareable<T: Send + Sync>(_: &T) -> bool {
+        true
+    }
+    let t = analytic_table();
+    assert!(shareable(&t));
+    let cl: Vec<f64> = std::thread::scope(|s| {
+        let h: Vec<_> = (0..2)
+            .map(|k| {
+                let t = &t;
+                s.spawn(move || polargen::table::SectionAero::lookup(t, k as f64, 1e6, 0.2).cl)
+            })
+            .collect();
+        h.into_iter().map(|h| h.join().unwrap()).collect()
+    });
+    assert!((cl[1] - cl[0] - 0.11).abs() < 1e-12);
 }

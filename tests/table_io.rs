@@ -196,7 +196,7 @@ fn format_inference_and_names() {
     assert!(parse_json(&std::fs::read_to_string(&path).unwrap()).is_ok());
     assert_eq!(
         read_table(&dir.join("x.c81")).unwrap_err().to_string(),
-        "C81 files cannot be read back as tables (only CSV and JSON)"
+        "C81 files cannot be read back as tables (only CSV, JSON and XFOIL polar)"
     );
     std::fs::remove_dir_all(dir).unwrap();
 }
@@ -292,6 +292,7 @@ fn c81_structure() {
     let path = dir.join("deep/er/t.c81");
     assert_eq!(write_table(&t, &path, None).unwrap(), vec![path.clone()]);
     let text = std::fs::read_to_string(&path).unwrap();
+    assert!(!text.contains("-0.000"));
     let lines: Vec<&str> = text.lines().collect();
     let head = lines[0];
     assert_eq!(head.len(), 42);
@@ -303,8 +304,8 @@ fn c81_structure() {
     assert_eq!(counts, vec![nm, na, nm, na, nm, na]);
     assert_eq!(nm, 11);
     // α rows: −180…−20 every 10° (−10 is within half a step of −8), the 45 computed α,
-    // 20…180 every 10°.
-    assert_eq!(na, 17 + 45 + 17);
+    // 20…180 every 10°, and 20 more that split the widest extension gaps.
+    assert_eq!(na, 99);
     assert_eq!(lines.len(), 1 + 3 * (2 + 2 * na));
     let mut k = 1;
     let mut alpha_seen = Vec::new();
@@ -358,6 +359,14 @@ fn c81_structure() {
     assert_eq!(alpha_seen[0], -180.0);
     assert_eq!(*alpha_seen.last().unwrap(), 180.0);
     assert!(alpha_seen.windows(2).all(|w| w[1] > w[0]));
+    for a in &alphas {
+        assert!(alpha_seen.contains(a), "computed α {a} missing");
+    }
+    // The extension is sampled at most every 10°, and more finely next to the computed range.
+    let gaps: Vec<f64> = alpha_seen.windows(2).map(|w| w[1] - w[0]).collect();
+    assert!(gaps.iter().all(|&g| g <= 10.0 + 1e-9));
+    let k = alpha_seen.iter().position(|&a| a == -8.0).unwrap();
+    assert!(alpha_seen[k] - alpha_seen[k - 1] < 5.0);
     std::fs::remove_dir_all(dir).unwrap();
 }
 
@@ -454,5 +463,103 @@ fn atomic_write_creates_folders_and_leaves_no_temp_files() {
     assert!(msg.starts_with("value ") && msg.ends_with(" does not fit a 7-character field"));
     assert!(!dir.join("h.c81").exists());
     assert_eq!(files_in(&dir), vec!["a"]);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn xfoil_polar_reads_back_to_field_precision() {
+    let pts = xfoil_reference("naca8h12_Re1.9e6_M0.41_xtr0.07.csv");
+    let mut m = meta("NACA 8-H-12");
+    m.xtr_top_set = 0.07;
+    m.xtr_bot_set = 0.07;
+    let t = PolarTable::new(m, vec![1.9e6], vec![0.41], vec![pts.clone()]).unwrap();
+    let dir = scratch("polread");
+    let path = dir.join("p.pol");
+    write_table(&t, &path, None).unwrap();
+    let back = read_table(&path).unwrap();
+    assert_eq!(back.meta().airfoil, "NACA 8-H-12");
+    assert_eq!(back.meta().solver, "polargen 0.1.0");
+    assert_eq!((back.meta().ncrit, back.meta().xtr_top_set), (9.0, 0.07));
+    assert_eq!((back.re(), back.mach()), (&[1.9e6][..], &[0.41][..]));
+    let q = back.polar(1.9e6, 0.41).unwrap();
+    assert_eq!(q.len(), pts.len());
+    // The reference has at most 4 decimals in cl/cm and 5 in cd: the text is exact for it.
+    for (a, b) in pts.iter().zip(q) {
+        assert_eq!(
+            (a.alpha, a.cl, a.cd, a.cdp, a.cm),
+            (b.alpha, b.cl, b.cd, b.cdp, b.cm)
+        );
+        assert_eq!((a.xtr_top, a.xtr_bot), (b.xtr_top, b.xtr_bot));
+    }
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn xfoil_polar_reader_handles_extra_columns_and_repeats() {
+    let text = "\n       XFOIL         Version 6.99\n\n Calculated polar for: NACA 2412\n\n\
+ 1 1 Reynolds number fixed          Mach number fixed\n\n\
+ xtrf =   1.000 (top)        0.070 (bottom)\n\
+ Mach =   0.200     Re =     3.000 e 6     Ncrit =   5.000\n\n\
+   alpha    CL        CD       CDp       CM      Cpmin    Xcpmin   Chinge   Top_Xtr  Bot_Xtr\n\
+  ------ -------- --------- --------- -------- -------- -------- -------- -------- --------\n\
+   0.000   0.2500   0.00600   0.00100  -0.0500  -1.5000   0.0300  -0.0100   0.6000   0.0700\n\
+   2.000   0.4700   0.00650   0.00120  -0.0510  -1.1000   0.0400  -0.0080   0.5000   0.0700\n\
+   0.000   0.2500   0.00600   0.00100  -0.0500  -1.5000   0.0300  -0.0100   0.6000   0.0700\n\
+  -2.000   0.0300   0.00640   0.00110  -0.0490  -1.0000   0.0300  -0.0100   0.7000   0.0700\n";
+    let t = polargen::table::io::xfoil_polar::parse_xfoil_polar(text).unwrap();
+    assert_eq!(t.meta().solver, "XFOIL Version 6.99");
+    assert_eq!((t.meta().ncrit, t.meta().xtr_bot_set), (5.0, 0.07));
+    assert_eq!((t.re()[0], t.mach()[0]), (3e6, 0.2));
+    let p = t.polar(3e6, 0.2).unwrap();
+    let alphas: Vec<f64> = p.iter().map(|p| p.alpha).collect();
+    assert_eq!(alphas, vec![-2.0, 0.0, 2.0]);
+    assert_eq!((p[2].cl, p[2].cm, p[2].xtr_top), (0.47, -0.051, 0.5));
+    assert!((p[2].cdf - 0.0053).abs() < 1e-15);
+    let broken = text.replace("Ncrit =   5.000", "");
+    assert_eq!(
+        polargen::table::io::xfoil_polar::parse_xfoil_polar(&broken)
+            .unwrap_err()
+            .to_string(),
+        "XFOIL polar line 9: Mach/Re/Ncrit line is incomplete"
+    );
+    let bad = text.replace("0.4700", "0.47x0");
+    assert_eq!(
+        polargen::table::io::xfoil_polar::parse_xfoil_polar(&bad)
+            .unwrap_err()
+            .to_string(),
+        "XFOIL polar line 14: '0.47x0' is not a number"
+    );
+}
+
+#[test]
+fn output_does_not_depend_on_polar_order() {
+    // Polars collected from parallel workers arrive in any order: the files are identical.
+    let alphas = alpha_range(-3.0, 6.0, 1.0);
+    let mut list = Vec::new();
+    for &re in &[5e5, 1e6, 2e6] {
+        for &m in &[0.0, 0.3] {
+            list.push((re, m, analytic_polar(re, m, &alphas)));
+        }
+    }
+    let a = PolarTable::from_polars(meta("order"), list.clone()).unwrap();
+    list.reverse();
+    list.swap(1, 4);
+    for (_, _, pts) in list.iter_mut() {
+        pts.reverse();
+    }
+    let b = PolarTable::from_polars(meta("order"), list).unwrap();
+    let dir = scratch("order");
+    for ext in ["csv", "json", "c81"] {
+        let (pa, pb) = (dir.join(format!("a.{ext}")), dir.join(format!("b.{ext}")));
+        let fa = write_table(&a, &pa, None).unwrap();
+        let fb = write_table(&b, &pb, None).unwrap();
+        for (x, y) in fa.iter().zip(&fb) {
+            assert_eq!(
+                std::fs::read(x).unwrap(),
+                std::fs::read(y).unwrap(),
+                "{ext}"
+            );
+        }
+    }
     std::fs::remove_dir_all(dir).unwrap();
 }

@@ -42,6 +42,30 @@ fn exact_between_nodes_in_alpha_log_re_and_mach() {
 }
 
 #[test]
+fn non_uniform_alpha_spacing_is_exact() {
+    // Clustered and sparse nodes (spacings from 1e-6° to 7°) exercise the interval index.
+    let alphas = [
+        -12.0, -5.0, -4.9, 0.0, 1e-6, 0.5, 0.75, 3.0, 10.0, 10.001, 17.0,
+    ];
+    let t = PolarTable::new(
+        meta("uneven"),
+        vec![1e6],
+        vec![0.0],
+        vec![analytic_polar(1e6, 0.0, &alphas)],
+    )
+    .unwrap();
+    for k in 0..=2900 {
+        let a = -12.0 + k as f64 * 0.01;
+        let l = t.lookup(a, 1e6, 0.0);
+        assert!((l.cl - cl_model(a, 1e6, 0.0)).abs() < 1e-12, "cl at {a}");
+        assert!(!l.post_stall);
+    }
+    for &a in &alphas {
+        assert_eq!(t.lookup(a, 1e6, 0.0).cl, cl_model(a, 1e6, 0.0), "node {a}");
+    }
+}
+
+#[test]
 fn re_interpolation_is_linear_in_log_re() {
     // Two polars differing only by a constant cl offset: at the geometric mean of the two Re
     // values the offset is exactly halfway (linear in ln Re), not at the arithmetic mean.
@@ -308,4 +332,33 @@ fn custom_post_stall_parameters_are_used() {
     let t = analytic_table().with_post_stall(p).unwrap();
     assert!((t.lookup(90.0, 1e6, 0.0).cd - 1.8).abs() < 1e-12);
     assert!((t.lookup(-180.0, 1e6, 0.0).cd - 0.05).abs() < 1e-12);
+    let bad = PostStallParams {
+        cd_max: -1.0,
+        ..PostStallParams::default()
+    };
+    assert_eq!(
+        t.clone().with_post_stall(bad).unwrap_err().to_string(),
+        "post-stall parameter cd_max = -1 is invalid (must be positive)"
+    );
+    let bad = PostStallParams {
+        vc_min_junction_deg: f64::NAN,
+        ..PostStallParams::default()
+    };
+    assert_eq!(
+        t.with_post_stall(bad).unwrap_err().to_string(),
+        "post-stall parameter vc_min_junction_deg = NaN is invalid (must be in [0, 90))"
+    );
+}
+
+#[test]
+fn non_finite_queries_do_not_panic() {
+    let t = analytic_table();
+    let l = t.lookup(f64::NAN, 1e6, 0.2);
+    assert!(l.cl.is_nan() && l.post_stall);
+    assert!(t.lookup(f64::INFINITY, 1e6, 0.2).cl.is_nan());
+    let l = t.lookup(3.0, f64::INFINITY, f64::NEG_INFINITY);
+    assert!(l.re_clamped && l.mach_clamped);
+    assert!((l.cl - cl_model(3.0, 2e6, 0.0)).abs() < 1e-12);
+    let l = t.lookup(1e300, 0.0, 0.2);
+    assert!(l.re_clamped && l.cl.is_finite());
 }

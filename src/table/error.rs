@@ -61,7 +61,7 @@ pub enum TableError {
         re: f64,
         /// Mach number.
         mach: f64,
-        /// Repeated α [deg].
+        /// Repeated α (deg).
         alpha: f64,
     },
     /// A converged point (or any α) holds NaN or infinity, or α is outside ±180°.
@@ -75,7 +75,7 @@ pub enum TableError {
         re: f64,
         /// Mach number.
         mach: f64,
-        /// α [deg].
+        /// α (deg).
         alpha: f64,
     },
     /// α outside [−180°, 180°].
@@ -85,8 +85,18 @@ pub enum TableError {
         re: f64,
         /// Mach number.
         mach: f64,
-        /// α [deg].
+        /// α (deg).
         alpha: f64,
+    },
+    /// A 360°-extension parameter is out of its range.
+    #[error("post-stall parameter {name} = {value} is invalid (must be {rule})")]
+    BadPostStall {
+        /// Field name.
+        name: &'static str,
+        /// The value.
+        value: f64,
+        /// The allowed range.
+        rule: &'static str,
     },
     /// No polar of the table has the two converged points a lookup needs.
     #[error("empty table: no polar has at least 2 converged points")]
@@ -112,6 +122,14 @@ pub enum TableError {
         /// What is wrong.
         message: String,
     },
+    /// An XFOIL polar file could not be parsed.
+    #[error("XFOIL polar line {line}: {message}")]
+    Polar {
+        /// 1-based line number.
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
     /// The output format cannot be inferred from a file name.
     #[error("cannot infer table format from '{0}' (use .csv, .json, .pol or .c81)")]
     UnknownExtension(String),
@@ -119,7 +137,7 @@ pub enum TableError {
     #[error("unknown table format '{0}' (expected csv, json, xfoil or c81)")]
     UnknownFormat(String),
     /// The format has no reader.
-    #[error("{0} files cannot be read back as tables (only CSV and JSON)")]
+    #[error("{0} files cannot be read back as tables (only CSV, JSON and XFOIL polar)")]
     NotReadable(&'static str),
     /// A C81 table would exceed the format's 2-digit counts.
     #[error("C81 table needs {count} {what} but the format allows at most 99")]

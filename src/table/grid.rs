@@ -77,6 +77,7 @@ impl PolarTable {
         mut polars: Vec<Vec<PolarPoint>>,
         params: PostStallParams,
     ) -> Result<Self, TableError> {
+        params.validate()?;
         check_axis("Re", &re)?;
         check_axis("Mach", &mach)?;
         if let Some(&r) = re.iter().find(|r| !(r.is_finite() && **r > 0.0)) {
@@ -119,10 +120,11 @@ impl PolarTable {
     ) -> Result<Self, TableError> {
         let mut re: Vec<f64> = polars.iter().map(|p| p.0).collect();
         let mut mach: Vec<f64> = polars.iter().map(|p| p.1).collect();
-        for v in re.iter().chain(mach.iter()) {
-            if v.is_nan() {
-                return Err(TableError::BadRe(*v));
-            }
+        if let Some(&r) = re.iter().find(|r| r.is_nan()) {
+            return Err(TableError::BadRe(r));
+        }
+        if let Some(&m) = mach.iter().find(|m| m.is_nan()) {
+            return Err(TableError::BadMach(m));
         }
         re.sort_by(f64::total_cmp);
         re.dedup();
@@ -248,7 +250,7 @@ impl PolarTable {
         self.polars.iter().flatten().filter(|p| p.converged).count()
     }
 
-    /// First and last converged α [deg] of the curve used at node (`i_re`, `i_mach`) (that of
+    /// First and last converged α (deg) of the curve used at node (`i_re`, `i_mach`) (that of
     /// the nearest usable neighbour if the node's own polar has < 2 converged points).
     pub fn alpha_range(&self, i_re: usize, i_mach: usize) -> Option<(f64, f64)> {
         (i_re < self.re.len() && i_mach < self.mach.len())
@@ -323,6 +325,10 @@ fn check_polar(re: f64, mach: f64, polar: &mut [PolarPoint]) -> Result<(), Table
     Ok(())
 }
 
+/// Weight of a (normalised) Re distance relative to a Mach distance when a polar without two
+/// converged points borrows the curve of its nearest usable neighbour.
+const SAME_RE_PREFERENCE: f64 = 10.0;
+
 /// Prepare the α curve of every node; a node without two converged points borrows the curve
 /// of the nearest usable node (first along M in the same Re row, then along Re), flagged.
 fn build_curves(
@@ -337,8 +343,8 @@ fn build_curves(
         return Err(TableError::Empty);
     }
     let ln_re: Vec<f64> = re.iter().map(|r| r.ln()).collect();
-    // Distance in grid-normalised units: M steps count less than Re steps so that a
-    // same-Re neighbour is preferred.
+    // Distance in grid-normalised units; a step along Re counts SAME_RE_PREFERENCE times a
+    // step along M, so that a neighbour at the same Re is preferred.
     let span_re = (ln_re[ln_re.len() - 1] - ln_re[0]).max(1e-300);
     let span_m = (mach[nm - 1] - mach[0]).max(1e-300);
     let mut curves = Vec::with_capacity(own.len());
@@ -354,7 +360,7 @@ fn build_curves(
                 let d = |q: usize| {
                     let dr = (ln_re[q / nm] - ln_re[i]) / span_re;
                     let dm = (mach[q % nm] - mach[j]) / span_m;
-                    10.0 * dr.abs() + dm.abs()
+                    SAME_RE_PREFERENCE * dr.abs() + dm.abs()
                 };
                 d(p).total_cmp(&d(q))
             })

@@ -25,11 +25,11 @@ use crate::polar::PolarPoint;
 /// intervals and the 360° extension.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct AlphaCurve {
-    /// α of the converged points [deg], strictly increasing.
+    /// α of the converged points (deg), strictly increasing.
     alpha: Vec<f64>,
     /// (cl, cd, cm) at each converged point.
     value: Vec<[f64; 3]>,
-    /// d(cl, cd, cm)/dα [1/deg] at each converged point.
+    /// d(cl, cd, cm)/dα (1/deg) at each converged point.
     slope: Vec<[f64; 3]>,
     /// Interval k (between converged points k and k+1) spans unconverged points.
     bridged: Vec<bool>,
@@ -37,7 +37,15 @@ pub(crate) struct AlphaCurve {
     pub(crate) substitute: bool,
     /// Extension beyond the first and last converged α.
     ext: Extension360,
+    /// Buckets per degree of the interval index.
+    bucket_scale: f64,
+    /// Interval index: `bucket[b]` is the interval holding α₀ + b/bucket_scale, so that a
+    /// lookup starts at most a few intervals from its target (no binary search).
+    bucket: Vec<u32>,
 }
+
+/// Largest number of buckets of one curve's interval index.
+const MAX_BUCKETS: usize = 4096;
 
 /// Result of evaluating one curve.
 #[derive(Clone, Copy, Debug)]
@@ -81,6 +89,7 @@ impl AlphaCurve {
             cm: value[k][2],
         };
         let ext = Extension360::new(params, junction(0), junction(n - 1));
+        let (bucket_scale, bucket) = interval_index(&alpha);
         Some(Self {
             alpha,
             value,
@@ -88,26 +97,37 @@ impl AlphaCurve {
             bridged,
             substitute: false,
             ext,
+            bucket_scale,
+            bucket,
         })
     }
 
-    /// First and last converged α [deg].
+    /// First and last converged α (deg).
     pub(crate) fn alpha_range(&self) -> (f64, f64) {
         (self.alpha[0], self.alpha[self.alpha.len() - 1])
     }
 
-    /// (cl, cd, cm) at `a` [deg, within ±180°]: cubic Hermite inside the converged range
+    /// (cl, cd, cm) at `a` (deg, within ±180°): cubic Hermite inside the converged range
     /// (Fritsch & Carlson 1980, eq. 2 basis), the 360° extension outside.
-    pub(crate) fn eval(&self, a: f64) -> CurveValue {
+    /// `trig` caches (sin α, cos α) across the polars of one lookup.
+    pub(crate) fn eval(&self, a: f64, trig: &mut Option<(f64, f64)>) -> CurveValue {
         let n = self.alpha.len();
         if !(a >= self.alpha[0] && a <= self.alpha[n - 1]) {
+            let (s, c) = *trig.get_or_insert_with(|| a.to_radians().sin_cos());
             return CurveValue {
-                v: self.ext.eval(a),
+                v: self.ext.eval_sc(a, s, c),
                 post_stall: true,
                 bridged: self.substitute,
             };
         }
-        let k = (self.alpha.partition_point(|&x| x <= a).max(1) - 1).min(n - 2);
+        let b = (((a - self.alpha[0]) * self.bucket_scale) as usize).min(self.bucket.len() - 1);
+        let mut k = self.bucket[b] as usize;
+        while k + 2 < n && self.alpha[k + 1] <= a {
+            k += 1;
+        }
+        while k > 0 && self.alpha[k] > a {
+            k -= 1;
+        }
         let h = self.alpha[k + 1] - self.alpha[k];
         let t = (a - self.alpha[k]) / h;
         let t2 = t * t;
@@ -125,6 +145,31 @@ impl AlphaCurve {
             bridged: self.bridged[k] || self.substitute,
         }
     }
+}
+
+/// Uniform-bucket index of the intervals of a strictly increasing `alpha` (n ≥ 2): bucket
+/// width at most the smallest spacing (capped at [`MAX_BUCKETS`] buckets), each holding the
+/// interval that contains its left edge.
+fn interval_index(alpha: &[f64]) -> (f64, Vec<u32>) {
+    let n = alpha.len();
+    let span = alpha[n - 1] - alpha[0];
+    let h_min = alpha
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .fold(f64::INFINITY, f64::min);
+    let nb = ((span / h_min).ceil() as usize).clamp(1, MAX_BUCKETS);
+    let scale = nb as f64 / span;
+    let mut k = 0;
+    let bucket = (0..nb)
+        .map(|b| {
+            let edge = alpha[0] + b as f64 / scale;
+            while k + 2 < n && alpha[k + 1] <= edge {
+                k += 1;
+            }
+            k as u32
+        })
+        .collect();
+    (scale, bucket)
 }
 
 /// PCHIP node slopes for each of the three coefficient columns.
@@ -188,7 +233,7 @@ pub(crate) fn bracket(axis: &[f64], x: f64) -> (usize, f64, bool) {
     (i, (x - axis[i]) / (axis[i + 1] - axis[i]), false)
 }
 
-/// Wrap an angle [deg] into [−180°, 180°]; values already inside are returned unchanged.
+/// Wrap an angle (deg) into [−180°, 180°]; values already inside are returned unchanged.
 #[inline]
 pub fn wrap_deg(a: f64) -> f64 {
     if (-180.0..=180.0).contains(&a) {
@@ -201,7 +246,8 @@ pub fn wrap_deg(a: f64) -> f64 {
 impl SectionAero for PolarTable {
     /// Table lookup: PCHIP in α over converged points, 360° extension outside the computed
     /// range, bilinear in (ln Re, M) between the four neighbouring polars, clamped (and
-    /// flagged) outside the Re and Mach axes. Allocation-free; O(log n) per polar.
+    /// flagged) outside the Re and Mach axes. Allocation-free; O(1) per polar (interval
+    /// index, no binary search in α).
     fn lookup(&self, alpha_deg: f64, re: f64, mach: f64) -> Lookup {
         let a = wrap_deg(alpha_deg);
         let ln_re = if re > 0.0 { re.ln() } else { f64::NEG_INFINITY };
@@ -214,6 +260,7 @@ impl SectionAero for PolarTable {
         };
         let n_re = self.re().len();
         let n_m = self.mach().len();
+        let mut trig = None;
         for (dr, fr) in [(0, 1.0 - wr), (1, wr)] {
             if fr == 0.0 || ir + dr >= n_re {
                 continue;
@@ -223,7 +270,7 @@ impl SectionAero for PolarTable {
                 if w == 0.0 || im + dm >= n_m {
                     continue;
                 }
-                let c = self.curve(ir + dr, im + dm).eval(a);
+                let c = self.curve(ir + dr, im + dm).eval(a, &mut trig);
                 out.cl += w * c.v[0];
                 out.cd += w * c.v[1];
                 out.cm += w * c.v[2];

@@ -7,6 +7,46 @@
 //!   flat plate).
 //! * [`io`] — CSV, JSON, XFOIL polar and C81 files, written atomically.
 //! * [`error`] — [`TableError`].
+//!
+//! ```
+//! use polargen::polar::PolarPoint;
+//! use polargen::table::{PolarTable, SectionAero, TableMeta};
+//!
+//! let meta = TableMeta {
+//!     airfoil: "flat".into(),
+//!     ncrit: 9.0,
+//!     xtr_top_set: 1.0,
+//!     xtr_bot_set: 1.0,
+//!     panels: 160,
+//!     solver: "example".into(),
+//! };
+//! let polar = |re: f64| -> Vec<PolarPoint> {
+//!     (-5..=10)
+//!         .map(|a| PolarPoint {
+//!             alpha: a as f64,
+//!             cl: 0.1 * a as f64 + 0.01 * (re / 1e6),
+//!             cd: 0.01,
+//!             cdp: 0.004,
+//!             cdf: 0.006,
+//!             cm: -0.02,
+//!             xtr_top: 0.5,
+//!             xtr_bot: 0.8,
+//!             converged: true,
+//!             iterations: 5,
+//!             residual: 1e-10,
+//!         })
+//!         .collect()
+//! };
+//! let table = PolarTable::from_polars(
+//!     meta,
+//!     vec![(1e6, 0.0, polar(1e6)), (4e6, 0.0, polar(4e6))],
+//! )
+//! .unwrap();
+//! let l = table.lookup(2.5, 2e6, 0.0); // halfway in ln Re: 0.25 + 0.025
+//! assert!((l.cl - 0.275).abs() < 1e-12 && !l.re_clamped);
+//! let rev = table.lookup(170.0, 2e6, 0.3); // reverse flow, Mach clamped to 0
+//! assert!(rev.post_stall && rev.mach_clamped && rev.cl < 0.0);
+//! ```
 
 pub mod error;
 pub mod grid;
@@ -52,7 +92,7 @@ impl Lookup {
     }
 }
 
-/// Anything that gives section coefficients at (α [deg], Re, M): the interface the rotor
+/// Anything that gives section coefficients at (α (deg), Re, M): the interface the rotor
 /// model consumes. [`PolarTable`] implements it; tests may use analytic sections.
 pub trait SectionAero {
     /// Coefficients at angle of attack `alpha_deg` (any value, wrapped to ±180°), Reynolds

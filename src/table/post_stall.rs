@@ -26,6 +26,7 @@
 //! past ±90°. All pieces meet continuously (cl, cd, cm) at α_s and ±90°, and both sides end at
 //! the same flat-plate values at ±180°, so the extension is periodic.
 
+use super::TableError;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -40,7 +41,7 @@ pub struct PostStallParams {
     /// hundredths, the order measured on a reversed NACA 0012 (Critzos, Heyson & Boswinkle
     /// 1955, NACA TN 3361).
     pub cd_reverse: f64,
-    /// Smallest |α_s| [deg] at the junction for which Viterna–Corrigan is used; below it (or
+    /// Smallest |α_s| (deg) at the junction for which Viterna–Corrigan is used; below it (or
     /// with α_s on the wrong side of 0°) the cos² blend to the flat plate is used instead,
     /// because the A2 term ∝ 1/sin α would blow up.
     pub vc_min_junction_deg: f64,
@@ -57,9 +58,40 @@ impl Default for PostStallParams {
 }
 
 impl PostStallParams {
-    /// Flat-plate coefficients (cl, cd, cm about c/4) at `alpha` [rad]; see the module docs.
+    /// Check the ranges: `cd_max` > 0, `cd_reverse` ≥ 0, 0 ≤ `vc_min_junction_deg` < 90, all
+    /// finite.
+    pub fn validate(&self) -> Result<(), TableError> {
+        let checks = [
+            ("cd_max", self.cd_max, self.cd_max > 0.0, "positive"),
+            (
+                "cd_reverse",
+                self.cd_reverse,
+                self.cd_reverse >= 0.0,
+                "non-negative",
+            ),
+            (
+                "vc_min_junction_deg",
+                self.vc_min_junction_deg,
+                (0.0..90.0).contains(&self.vc_min_junction_deg),
+                "in [0, 90)",
+            ),
+        ];
+        for (name, value, ok, rule) in checks {
+            if !(ok && value.is_finite()) {
+                return Err(TableError::BadPostStall { name, value, rule });
+            }
+        }
+        Ok(())
+    }
+
+    /// Flat-plate coefficients (cl, cd, cm about c/4) at `alpha` (rad); see the module docs.
     pub fn flat_plate(&self, alpha: f64) -> [f64; 3] {
         let (s, c) = alpha.sin_cos();
+        self.flat_plate_sc(s, c)
+    }
+
+    /// Flat-plate coefficients from `(sin α, cos α)`.
+    fn flat_plate_sc(&self, s: f64, c: f64) -> [f64; 3] {
         let cn = self.cd_max * s;
         [
             cn * c,
@@ -72,7 +104,7 @@ impl PostStallParams {
 /// The coefficients at the junction between computed data and the extension.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Junction {
-    /// α_s [deg]: the first (lower side) or last (upper side) converged α.
+    /// α_s (deg): the first (lower side) or last (upper side) converged α.
     pub alpha_deg: f64,
     /// Lift coefficient at α_s.
     pub cl: f64,
@@ -85,11 +117,11 @@ pub struct Junction {
 /// The extension on one side of the computed range.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Side {
-    /// Junction angle [rad].
+    /// Junction angle (rad).
     a_s: f64,
     /// Junction values (cl, cd, cm).
     v_s: [f64; 3],
-    /// End of the blended segment [rad]: ±π/2, or ±π when the data pass ±90°.
+    /// End of the blended segment (rad): ±π/2, or ±π when the data pass ±90°.
     end: f64,
     /// Viterna–Corrigan coefficients (A2, B2) when it applies.
     vc: Option<(f64, f64)>,
@@ -117,13 +149,20 @@ impl Extension360 {
     /// (cl, cd, cm) at `alpha_deg`, which must lie outside the computed range, in
     /// [−180°, lower α_s) or (upper α_s, 180°].
     pub fn eval(&self, alpha_deg: f64) -> [f64; 3] {
+        let (s, c) = alpha_deg.to_radians().sin_cos();
+        self.eval_sc(alpha_deg, s, c)
+    }
+
+    /// As [`eval`](Self::eval), with `(sin α, cos α)` already known (shared by the four
+    /// polars of one table lookup).
+    pub fn eval_sc(&self, alpha_deg: f64, sin_a: f64, cos_a: f64) -> [f64; 3] {
         let a = alpha_deg.to_radians();
         let side = if a > self.upper.a_s {
             &self.upper
         } else {
             &self.lower
         };
-        side.eval(&self.params, a)
+        side.eval(&self.params, a, sin_a, cos_a)
     }
 }
 
@@ -145,26 +184,23 @@ impl Side {
         Self { a_s, v_s, end, vc }
     }
 
-    /// Coefficients at `a` [rad] beyond this side's junction.
-    fn eval(&self, p: &PostStallParams, a: f64) -> [f64; 3] {
+    /// Coefficients at `a` (rad) (with sine `s` and cosine `c`) beyond this side's junction.
+    fn eval(&self, p: &PostStallParams, a: f64, s: f64, c: f64) -> [f64; 3] {
         let t = (a - self.a_s) / (self.end - self.a_s);
+        let fp = p.flat_plate_sc(s, c);
         if t >= 1.0 {
-            return p.flat_plate(a);
+            return fp;
         }
         let t = t.max(0.0);
         let w = (FRAC_PI_2 * t).cos().powi(2);
-        let fp = p.flat_plate(a);
         let blend = |k: usize| w * self.v_s[k] + (1.0 - w) * fp[k];
         let cm = blend(2);
         match self.vc {
-            Some((a2, b2)) => {
-                let (s, c) = a.sin_cos();
-                [
-                    p.cd_max * s * c + a2 * c * c / s,
-                    p.cd_max * s * s + b2 * c,
-                    cm,
-                ]
-            }
+            Some((a2, b2)) => [
+                p.cd_max * s * c + a2 * c * c / s,
+                p.cd_max * s * s + b2 * c,
+                cm,
+            ],
             None => [blend(0), blend(1), cm],
         }
     }

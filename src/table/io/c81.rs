@@ -23,8 +23,10 @@
 //! * α rows: every converged α of the polars used (the nearest Re row of the grid), thinned
 //!   uniformly if needed to fit the 99-row limit of the I2 counts, plus rows every
 //!   `outer_step_deg` from −180° and up to +180° outside that range, kept at least half a
-//!   step away from it. Values come from [`SectionAero::lookup`], so they include the 360°
-//!   extension and never use unconverged points.
+//!   step away from it; any rows left of the 99 then split the widest gaps outside the
+//!   computed range, weighted towards it (the extension changes fastest after stall), while
+//!   gaps wider than 2° remain. Values come from [`SectionAero::lookup`], so they include the 360° extension
+//!   and never use unconverged points.
 //! * Fields: Mach F7.3, α F7.2, coefficients with as many decimals (≤ 4) as leave at least one
 //!   leading blank, so that free-format (whitespace-splitting) readers work too.
 
@@ -44,7 +46,7 @@ pub const MAX_COUNT: usize = 99;
 pub struct C81Options {
     /// Write one table at this Re instead of one per Re of the grid.
     pub re: Option<f64>,
-    /// α spacing [deg] of the rows outside the computed range.
+    /// α spacing (deg) of the rows outside the computed range.
     pub outer_step_deg: f64,
 }
 
@@ -98,14 +100,48 @@ pub fn c81_alphas(table: &PolarTable, i_re: usize, outer_step_deg: f64) -> Vec<f
             inner.push(last);
         }
     }
-    below.into_iter().chain(inner).chain(above).collect()
+    let (first_inner, last_inner) = (inner[0], inner[inner.len() - 1]);
+    let mut rows: Vec<f64> = below.into_iter().chain(inner).chain(above).collect();
+    // Spend the remaining row budget on the extension, most where it changes fastest (just
+    // past stall): repeatedly split the gap outside the computed range with the largest
+    // width / (1 + distance from the range / outer step), until the budget is used or no
+    // such gap is wider than 2·MIN_OUTER_GAP_DEG.
+    while rows.len() < MAX_COUNT {
+        let outside = |k: usize| rows[k] < first_inner || rows[k + 1] > last_inner;
+        let priority = |k: usize| {
+            let distance = (first_inner - rows[k + 1])
+                .max(rows[k] - last_inner)
+                .max(0.0);
+            (rows[k + 1] - rows[k]) / (1.0 + distance / step)
+        };
+        let widest = (0..rows.len() - 1)
+            .filter(|&k| outside(k))
+            .max_by(|&a, &b| priority(a).total_cmp(&priority(b)));
+        match widest {
+            Some(k) if rows[k + 1] - rows[k] > 2.0 * MIN_OUTER_GAP_DEG => {
+                let mid = ((rows[k] + rows[k + 1]) / 2.0 * 100.0).round() / 100.0;
+                rows.insert(k + 1, mid);
+            }
+            _ => break,
+        }
+    }
+    rows
 }
+
+/// Extension rows are not split below this spacing (deg).
+const MIN_OUTER_GAP_DEG: f64 = 1.0;
 
 /// Format a value in a 7-character field with at most `max_dec` decimals, keeping at least
 /// one leading blank if `blank` is set.
 fn field(v: f64, max_dec: usize, blank: bool) -> Result<String, TableError> {
     let limit = if blank { FIELD - 1 } else { FIELD };
     for d in (0..=max_dec).rev() {
+        // A value that rounds to zero is written as 0 (never "-0.000").
+        let v = if (v * 10f64.powi(d as i32)).round() == 0.0 {
+            0.0
+        } else {
+            v
+        };
         let s = format!("{v:.d$}");
         if s.len() <= limit {
             return Ok(format!("{s:>FIELD$}"));

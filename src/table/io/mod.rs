@@ -1,4 +1,5 @@
-//! Table files: CSV and JSON (written and read back), XFOIL polar text and C81 (written).
+//! Table files: CSV and JSON (written and read back exactly), XFOIL polar text (written, and
+//! read as a one-polar table) and C81 (written).
 //! Every writer goes through [`atomic::write_atomic`], so a failure never leaves half a file
 //! and missing folders are created.
 
@@ -22,7 +23,7 @@ pub enum TableFormat {
     Csv,
     /// Serde JSON (`.json`), readable.
     Json,
-    /// XFOIL polar text, one file per (Re, M) (`.pol`).
+    /// XFOIL polar text, one file per (Re, M) (`.pol`); readable as a one-polar table.
     XfoilPolar,
     /// C81 rotorcraft airfoil table, one file per Re (`.c81`).
     C81,
@@ -91,12 +92,13 @@ pub fn write_table(
     }
 }
 
-/// Read a table from a CSV or JSON file (format from the extension).
+/// Read a table from a CSV, JSON or XFOIL polar file (format from the extension; a polar
+/// file gives a one-polar table).
 pub fn read_table(path: &Path) -> Result<PolarTable, TableError> {
     match TableFormat::from_path(path)? {
         TableFormat::Csv => csv::read_csv(path),
         TableFormat::Json => json::read_json(path),
-        TableFormat::XfoilPolar => Err(TableError::NotReadable("XFOIL polar")),
+        TableFormat::XfoilPolar => xfoil_polar::read_xfoil_polar(path),
         TableFormat::C81 => Err(TableError::NotReadable("C81")),
     }
 }

@@ -98,3 +98,111 @@ pub fn write_xfoil_polars(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf
     }
     Ok(written)
 }
+
+/// Read an XFOIL polar file (as written by XFOIL's `PACC` or by
+/// [`write_xfoil_polars`]) as a one-polar table.
+///
+/// The header gives the airfoil name, `xtrf` (top, bottom), Mach, Re (`1.900 e 6`) and
+/// N_crit; the column-title line locates `alpha CL CD CDp CM Top_Xtr Bot_Xtr` among any
+/// other columns (XFOIL may add `Cpmin`, `Xcpmin`, `Chinge`). Every row is a converged point
+/// (XFOIL writes no others); a repeated α (XFOIL sweeps that revisit a point) keeps the first
+/// row. The panel count is unknown (0) and the solver is the file's first text line (the
+/// version line).
+pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
+    let err = |line: usize, message: &str| TableError::Polar {
+        line,
+        message: message.to_string(),
+    };
+    let num = |line: usize, s: &str| -> Result<f64, TableError> {
+        s.parse()
+            .map_err(|_| err(line, &format!("'{s}' is not a number")))
+    };
+    let mut name = None;
+    let mut solver = String::new();
+    let mut xtr = None;
+    let mut cond = None;
+    let mut columns: Option<Vec<String>> = None;
+    let mut points: Vec<PolarPoint> = Vec::new();
+    for (i, raw) in text.lines().enumerate() {
+        let line = i + 1;
+        let t = raw.trim();
+        if let Some(cols) = columns.as_deref() {
+            // Skip blank lines and the dashed rule under the column titles.
+            if t.is_empty() || t.contains("--") {
+                continue;
+            }
+            let v: Vec<&str> = t.split_whitespace().collect();
+            if v.len() < cols.len() {
+                return Err(err(
+                    line,
+                    &format!("{} columns, expected {}", v.len(), cols.len()),
+                ));
+            }
+            let get = |name: &str| -> Result<f64, TableError> {
+                let k = cols
+                    .iter()
+                    .position(|c| c.eq_ignore_ascii_case(name))
+                    .ok_or_else(|| TableError::MissingColumn(name.to_string()))?;
+                num(line, v[k])
+            };
+            let (cd, cdp) = (get("CD")?, get("CDp")?);
+            let p = PolarPoint {
+                alpha: get("alpha")?,
+                cl: get("CL")?,
+                cd,
+                cdp,
+                cdf: cd - cdp,
+                cm: get("CM")?,
+                xtr_top: get("Top_Xtr")?,
+                xtr_bot: get("Bot_Xtr")?,
+                converged: true,
+                iterations: 0,
+                residual: 0.0,
+            };
+            if !points.iter().any(|q| q.alpha == p.alpha) {
+                points.push(p);
+            }
+        } else if let Some(rest) = t.strip_prefix("Calculated polar for:") {
+            name = Some(rest.trim().to_string());
+        } else if solver.is_empty() && name.is_none() && !t.is_empty() {
+            solver = t.split_whitespace().collect::<Vec<_>>().join(" ");
+        } else if t.starts_with("xtrf") {
+            let v: Vec<&str> = t.split_whitespace().collect();
+            match (v.get(2), v.get(4)) {
+                (Some(a), Some(b)) => xtr = Some((num(line, a)?, num(line, b)?)),
+                _ => return Err(err(line, "xtrf line lacks the top and bottom values")),
+            }
+        } else if t.starts_with("Mach") {
+            // "Mach = 0.410 Re = 1.900 e 6 Ncrit = 9.000"
+            let v: Vec<&str> = t.split_whitespace().collect();
+            if v.len() < 11 {
+                return Err(err(line, "Mach/Re/Ncrit line is incomplete"));
+            }
+            let re = num(line, v[5])? * 10f64.powf(num(line, v[7])?);
+            cond = Some((num(line, v[2])?, re, num(line, v[10])?));
+        } else if t.starts_with("alpha") {
+            columns = Some(t.split_whitespace().map(str::to_string).collect());
+        }
+    }
+    let name = name.ok_or_else(|| err(1, "no 'Calculated polar for:' line"))?;
+    let (xt, xb) = xtr.ok_or_else(|| err(1, "no 'xtrf =' line"))?;
+    let (mach, re, ncrit) = cond.ok_or_else(|| err(1, "no 'Mach = … Re = … Ncrit = …' line"))?;
+    if columns.is_none() {
+        return Err(err(1, "no column-title line starting with 'alpha'"));
+    }
+    let meta = TableMeta {
+        airfoil: name,
+        ncrit,
+        xtr_top_set: xt,
+        xtr_bot_set: xb,
+        panels: 0,
+        solver,
+    };
+    PolarTable::new(meta, vec![re], vec![mach], vec![points])
+}
+
+/// Read an XFOIL polar file; see [`parse_xfoil_polar`].
+pub fn read_xfoil_polar(path: &Path) -> Result<PolarTable, TableError> {
+    let text = std::fs::read_to_string(path).map_err(|e| TableError::io(path, e))?;
+    parse_xfoil_polar(&text)
+}
