@@ -163,6 +163,42 @@ fn sweep_gives_a_power_curve() {
 }
 
 #[test]
+fn alpha_distribution_csv() {
+    let out = gyro(&[
+        "alpha",
+        "--aircraft",
+        &aircraft(),
+        "--table",
+        &table("free"),
+        "--radius",
+        "0.9",
+        "--samples",
+        "36",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("psi_deg,alpha_deg"));
+    let rows: Vec<(f64, f64)> = lines
+        .map(|l| {
+            let (a, b) = l.split_once(',').unwrap();
+            (a.parse().unwrap(), b.parse().unwrap())
+        })
+        .collect();
+    assert_eq!(rows.len(), 36);
+    // Paper Fig. 10: the blade angle peaks on the retreating side, ψ ≈ 270° (ψ = 0 rear).
+    let max = rows
+        .iter()
+        .cloned()
+        .fold((0.0, f64::MIN), |m, r| if r.1 > m.1 { r } else { m });
+    assert!((240.0..=300.0).contains(&max.0), "{max:?}");
+}
+
+#[test]
 fn errors_are_one_line() {
     let t = table("free");
     assert_one_line_error(

@@ -9,7 +9,19 @@ use polargen::rotor::{simulate_takeoff, Aircraft, Atmosphere, Rotor, TakeoffResu
 use polargen::table::{read_table, PolarTable, TableMeta};
 use rayon::prelude::*;
 use serde::Serialize;
+use std::fmt::Write as _;
+use std::io::Write as _;
 use std::path::{Path, PathBuf};
+
+/// Appends one formatted line to an output `String` (writing to a `String` cannot fail).
+macro_rules! outln {
+    ($buf:expr) => {
+        $buf.push('\n')
+    };
+    ($buf:expr, $($arg:tt)*) => {{
+        let _ = writeln!($buf, $($arg)*);
+    }};
+}
 
 #[derive(Parser)]
 #[command(
@@ -298,30 +310,39 @@ fn engine_text(e: Option<f64>) -> String {
     e.map_or_else(|| "above max".to_string(), |v| format!("{v:.0}"))
 }
 
-fn print_trim(t: &TrimResult) {
-    println!("trim at {:.1} kt", t.airspeed_kt);
-    println!("  rotor rpm n_R          {:8.1}", t.rotor_rpm);
-    println!(
+fn print_trim(buf: &mut String, t: &TrimResult) {
+    outln!(buf, "trim at {:.1} kt", t.airspeed_kt);
+    outln!(buf, "  rotor rpm n_R          {:8.1}", t.rotor_rpm);
+    outln!(
+        buf,
         "  rotor AoA alpha_R [deg]{:8.2}   (hub {:.2})",
-        t.rotor_aoa_deg, t.hub_aoa_deg
+        t.rotor_aoa_deg,
+        t.hub_aoa_deg
     );
-    println!("  engine rpm             {:>8}", engine_text(t.engine_rpm));
-    println!("  rotor drag D_R [N]     {:8.1}", t.rotor_drag_n);
-    println!("  parasitic D_P [N]      {:8.1}", t.parasitic_drag_n);
-    println!("  prop thrust F_prop [N] {:8.1}", t.prop_thrust_n);
-    println!("  L/D                    {:8.2}", t.lift_to_drag);
-    println!("  power required [kW]    {:8.1}", t.power_required_kw);
-    println!(
+    outln!(
+        buf,
+        "  engine rpm             {:>8}",
+        engine_text(t.engine_rpm)
+    );
+    outln!(buf, "  rotor drag D_R [N]     {:8.1}", t.rotor_drag_n);
+    outln!(buf, "  parasitic D_P [N]      {:8.1}", t.parasitic_drag_n);
+    outln!(buf, "  prop thrust F_prop [N] {:8.1}", t.prop_thrust_n);
+    outln!(buf, "  L/D                    {:8.2}", t.lift_to_drag);
+    outln!(buf, "  power required [kW]    {:8.1}", t.power_required_kw);
+    outln!(
+        buf,
         "  flapping b1c, b1s [deg]{:8.2} {:.2}",
-        t.beta1c_deg, t.beta1s_deg
+        t.beta1c_deg,
+        t.beta1s_deg
     );
 }
 
-fn print_takeoff(t: &TakeoffResult) {
-    println!("takeoff");
-    println!("  takeoff roll s_TO [m]      {:7.1}", t.takeoff_roll_m);
-    println!("  distance to 15 m s_15 [m]  {:7.1}", t.distance_15m_m);
-    println!(
+fn print_takeoff(buf: &mut String, t: &TakeoffResult) {
+    outln!(buf, "takeoff");
+    outln!(buf, "  takeoff roll s_TO [m]      {:7.1}", t.takeoff_roll_m);
+    outln!(buf, "  distance to 15 m s_15 [m]  {:7.1}", t.distance_15m_m);
+    outln!(
+        buf,
         "  max flapping beta_max [deg]{:7.2}{}",
         t.max_flapping_deg,
         if t.flap_stops_reached {
@@ -330,13 +351,18 @@ fn print_takeoff(t: &TakeoffResult) {
             ""
         }
     );
-    println!(
+    outln!(
+        buf,
         "  lift-off speed [kt]        {:7.1}  at {:.1} s, rotor {:.0} rpm",
-        t.liftoff_speed_kt, t.liftoff_time_s, t.liftoff_rotor_rpm
+        t.liftoff_speed_kt,
+        t.liftoff_time_s,
+        t.liftoff_rotor_rpm
     );
-    println!(
+    outln!(
+        buf,
         "  speed at 15 m [kt]         {:7.1}  at {:.1} s",
-        t.screen_speed_kt, t.screen_time_s
+        t.screen_speed_kt,
+        t.screen_time_s
     );
 }
 
@@ -344,7 +370,13 @@ fn rel(a: f64, b: f64) -> f64 {
     100.0 * (b - a) / a
 }
 
-fn compare(ac: &Aircraft, clean: &PolarTable, dirty: &PolarTable, json: bool) -> Result<()> {
+fn compare(
+    buf: &mut String,
+    ac: &Aircraft,
+    clean: &PolarTable,
+    dirty: &PolarTable,
+    json: bool,
+) -> Result<()> {
     let p = TrimParams::default();
     // The four cases are independent: run the clean and contaminated ones in parallel.
     let case = |section: &PolarTable, label: &str| -> Result<(TrimResult, TakeoffResult)> {
@@ -393,35 +425,53 @@ fn compare(ac: &Aircraft, clean: &PolarTable, dirty: &PolarTable, json: bool) ->
             "trim": rows(&PAPER_TRIM, &ours_trim(&tc), &ours_trim(&td)),
             "takeoff": rows(&PAPER_TAKEOFF, &ours_to(&oc), &ours_to(&od)),
         });
-        println!("{}", serde_json::to_string_pretty(&out)?);
+        outln!(buf, "{}", serde_json::to_string_pretty(&out)?);
         return Ok(());
     }
-    let table = |title: &str, paper: &[(&str, f64, f64)], c: &[f64], d: &[f64]| {
-        println!("{title}");
-        println!(
-            "  {:<28} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>8}",
-            "", "paper", "paper", "paper", "ours", "ours", "ours"
-        );
-        println!(
-            "  {:<28} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>8}",
-            "quantity", "clean", "contam.", "change", "clean", "contam.", "change"
-        );
-        for (&(q, pc, pd), (&oc, &od)) in paper.iter().zip(c.iter().zip(d)) {
-            println!(
-                "  {q:<28} {pc:>9.1} {pd:>9.1} {:>+7.1}% | {oc:>9.1} {od:>9.1} {:>+7.1}%",
-                rel(pc, pd),
-                rel(oc, od)
+    let table =
+        |buf: &mut String, title: &str, paper: &[(&str, f64, f64)], c: &[f64], d: &[f64]| {
+            outln!(buf, "{title}");
+            outln!(
+                buf,
+                "  {:<28} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>8}",
+                "",
+                "paper",
+                "paper",
+                "paper",
+                "ours",
+                "ours",
+                "ours"
             );
-        }
-    };
+            outln!(
+                buf,
+                "  {:<28} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>8}",
+                "quantity",
+                "clean",
+                "contam.",
+                "change",
+                "clean",
+                "contam.",
+                "change"
+            );
+            for (&(q, pc, pd), (&oc, &od)) in paper.iter().zip(c.iter().zip(d)) {
+                outln!(
+                    buf,
+                    "  {q:<28} {pc:>9.1} {pd:>9.1} {:>+7.1}% | {oc:>9.1} {od:>9.1} {:>+7.1}%",
+                    rel(pc, pd),
+                    rel(oc, od)
+                );
+            }
+        };
     table(
+        buf,
         "Table 3 — trim at 60 kt, ISA sea level",
         &PAPER_TRIM,
         &ours_trim(&tc),
         &ours_trim(&td),
     );
-    println!();
+    outln!(buf);
     table(
+        buf,
         "Table 4 — takeoff, ISA sea level, no wind",
         &PAPER_TAKEOFF,
         &ours_to(&oc),
@@ -430,7 +480,8 @@ fn compare(ac: &Aircraft, clean: &PolarTable, dirty: &PolarTable, json: bool) ->
     Ok(())
 }
 
-fn run(cli: Cli) -> Result<()> {
+/// Runs one command, appending its standard output to `buf`.
+fn run(cli: Cli, buf: &mut String) -> Result<()> {
     match cli.command {
         Command::Trim {
             aircraft,
@@ -452,9 +503,13 @@ fn run(cli: Cli) -> Result<()> {
                 &TrimParams::default(),
             )?;
             if json {
-                println!("{}", serde_json::to_string_pretty(&TrimJson::from(&t))?);
+                outln!(
+                    buf,
+                    "{}",
+                    serde_json::to_string_pretty(&TrimJson::from(&t))?
+                );
             } else {
-                print_trim(&t);
+                print_trim(buf, &t);
             }
         }
         Command::Takeoff {
@@ -474,9 +529,13 @@ fn run(cli: Cli) -> Result<()> {
                     .with_context(|| format!("cannot write history {}", path.display()))?;
             }
             if json {
-                println!("{}", serde_json::to_string_pretty(&TakeoffJson::from(&t))?);
+                outln!(
+                    buf,
+                    "{}",
+                    serde_json::to_string_pretty(&TakeoffJson::from(&t))?
+                );
             } else {
-                print_takeoff(&t);
+                print_takeoff(buf, &t);
             }
         }
         Command::Compare {
@@ -488,7 +547,7 @@ fn run(cli: Cli) -> Result<()> {
             let ac = load_aircraft(&aircraft, None)?;
             let c = load_section(&clean)?;
             let d = load_section(&contaminated)?;
-            compare(&ac, &c, &d, json)?;
+            compare(buf, &ac, &c, &d, json)?;
         }
         Command::Sweep {
             aircraft,
@@ -528,14 +587,24 @@ fn run(cli: Cli) -> Result<()> {
                 bail!("no trim point in the speed range");
             }
             if json {
-                println!("{}", serde_json::to_string_pretty(&rows)?);
+                outln!(buf, "{}", serde_json::to_string_pretty(&rows)?);
             } else {
-                println!(
+                outln!(
+                    buf,
                     "{:>7} {:>7} {:>7} {:>8} {:>8} {:>8} {:>8} {:>6} {:>7}",
-                    "V[kt]", "n_R", "a_R", "engine", "D_R[N]", "D_P[N]", "F_P[N]", "L/D", "P[kW]"
+                    "V[kt]",
+                    "n_R",
+                    "a_R",
+                    "engine",
+                    "D_R[N]",
+                    "D_P[N]",
+                    "F_P[N]",
+                    "L/D",
+                    "P[kW]"
                 );
                 for r in &rows {
-                    println!(
+                    outln!(
+                        buf,
                         "{:7.1} {:7.1} {:7.2} {:>8} {:8.1} {:8.1} {:8.1} {:6.2} {:7.1}",
                         r.speed_kt,
                         r.rotor_rpm,
@@ -576,9 +645,9 @@ fn run(cli: Cli) -> Result<()> {
                 &atm,
                 &TrimParams::default(),
             )?;
-            println!("psi_deg,alpha_deg");
+            outln!(buf, "psi_deg,alpha_deg");
             for (psi, a) in rotor.alpha_at_radius(&s, radius, samples) {
-                println!("{psi:.1},{a:.3}");
+                outln!(buf, "{psi:.1},{a:.3}");
             }
         }
     }
@@ -604,9 +673,22 @@ fn main() {
             std::process::exit(2);
         }
     };
-    if let Err(e) = run(cli) {
+    let mut buf = String::new();
+    if let Err(e) = run(cli, &mut buf) {
         let msg = format!("{e:#}").replace('\n', " ");
         eprintln!("gyro: {msg}");
         std::process::exit(1);
+    }
+    // A closed pipe (e.g. `gyro … | head`) is not an error of ours: stop quietly.
+    let mut stdout = std::io::stdout().lock();
+    match stdout
+        .write_all(buf.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+            eprintln!("gyro: cannot write output: {e}");
+            std::process::exit(1);
+        }
+        _ => {}
     }
 }

@@ -172,14 +172,14 @@ impl Rotor {
 
     /// Radii of the strip centres and the strip width [m].
     pub fn strips(&self) -> (Vec<f64>, f64) {
-        let dr = (self.radius - self.root_cutout) / self.radius_strips_f();
+        let dr = (self.radius - self.root_cutout) / self.strip_count();
         let r = (0..self.radial_strips)
             .map(|i| self.root_cutout + (i as f64 + 0.5) * dr)
             .collect();
         (r, dr)
     }
 
-    fn radius_strips_f(&self) -> f64 {
+    fn strip_count(&self) -> f64 {
         self.radial_strips.max(1) as f64
     }
 

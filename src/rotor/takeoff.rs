@@ -177,7 +177,8 @@ impl<S: SectionAero + ?Sized> Model<'_, S> {
             let friction = ac.takeoff.rolling_friction * (weight - s.lift).max(0.0);
             let ax = (thrust - drag - friction) / m;
             dy[0] = y[2];
-            dy[2] = ax.max(if y[2] > 0.0 { f64::NEG_INFINITY } else { 0.0 });
+            // Standing still, the brakes-off aircraft cannot roll backwards.
+            dy[2] = if y[2] <= 0.0 { ax.max(0.0) } else { ax };
             dy[4] = omega_dot;
             return Ok((dy, s));
         }
