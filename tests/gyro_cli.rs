@@ -291,4 +291,24 @@ fn errors_are_one_line() {
         "bad aircraft file",
     );
     std::fs::remove_file(&bad).ok();
+    // A table without two converged points in any polar cannot drive the rotor.
+    let dead = std::env::temp_dir().join(format!("gyro_dead_{}.csv", std::process::id()));
+    std::fs::write(
+        &dead,
+        "airfoil,re,mach,ncrit,xtr_top_set,xtr_bot_set,alpha,cl,cd,cdp,cm,xtr_top,xtr_bot,converged\n\
+         x,1e6,0,9,1,1,0,0.1,0.01,0.005,0,1,1,false\n\
+         x,1e6,0,9,1,1,1,0.2,0.01,0.005,0,1,1,true\n",
+    )
+    .unwrap();
+    assert_one_line_error(
+        &gyro(&[
+            "trim",
+            "--aircraft",
+            &aircraft(),
+            "--table",
+            &dead.display().to_string(),
+        ]),
+        "no polar has at least 2 converged points",
+    );
+    std::fs::remove_file(&dead).ok();
 }

@@ -158,11 +158,16 @@ const PAPER_TAKEOFF: [(&str, f64, f64); 3] = [
 /// becomes a one-node table at the Re and M parsed from a file name like `…_Re1.9e6_M0.41_…`
 /// (Re 1e6, M 0 if absent); lookups at other Re/M are clamped to that node.
 fn load_section(path: &Path) -> Result<PolarTable> {
-    match read_table(path) {
-        Ok(t) => Ok(t),
-        Err(table_err) => single_polar_table(path)
-            .with_context(|| format!("not a polargen table ({table_err}) nor an XFOIL polar CSV")),
-    }
+    let table = match read_table(path) {
+        Ok(t) => t,
+        Err(table_err) => single_polar_table(path).with_context(|| {
+            format!("not a polargen table ({table_err}) nor an XFOIL polar CSV")
+        })?,
+    };
+    table
+        .require_lookup()
+        .with_context(|| format!("{}", path.display()))?;
+    Ok(table)
 }
 
 /// Number after `key` in a file stem such as `naca8h12_Re1.9e6_M0.41_free`.
