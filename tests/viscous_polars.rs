@@ -53,6 +53,8 @@ struct Stats {
     xfoil_converged: usize,
     #[allow(dead_code)]
     ms_per_point: f64,
+    /// Cd at Cl = 0.8 interpolated linearly in the converged points (paper Table 5).
+    cd_at_cl08: f64,
 }
 
 fn median(mut v: Vec<f64>) -> f64 {
@@ -116,6 +118,13 @@ fn run_case(foil: &str, file: &str, re: f64, mach: f64, xtr: f64) -> Stats {
         dxt.push((p.xtr_top - r[5]).abs());
     }
     let fold = |v: &[f64]| v.iter().fold(0.0_f64, |m, x| m.max(*x));
+    let mut conv: Vec<_> = points.iter().filter(|p| p.converged).collect();
+    conv.sort_by(|a, b| a.alpha.total_cmp(&b.alpha));
+    let cd_at_cl08 = conv
+        .windows(2)
+        .find(|w| w[0].cl <= 0.8 && w[1].cl > 0.8)
+        .map(|w| w[0].cd + (0.8 - w[0].cl) / (w[1].cl - w[0].cl) * (w[1].cd - w[0].cd))
+        .unwrap_or(f64::NAN);
     let stats = Stats {
         median_dcd: median(dcd.clone()),
         max_dcd: fold(&dcd),
@@ -125,6 +134,7 @@ fn run_case(foil: &str, file: &str, re: f64, mach: f64, xtr: f64) -> Stats {
         converged,
         xfoil_converged: refs.len(),
         ms_per_point: 1e3 * elapsed / points.len() as f64,
+        cd_at_cl08,
     };
     eprintln!("{foil} {file}: {stats:?}");
     stats
@@ -139,6 +149,16 @@ fn assert_targets(s: &Stats) {
     assert!(s.max_dcl <= 0.02, "{s:?}");
     assert!(s.max_dcm <= 0.005, "{s:?}");
     assert!(s.median_dxtr_top <= 0.03, "{s:?}");
+}
+
+/// Paper Table 5: Cd at Cl = 0.8 within 10 % of the XFOIL value quoted there.
+fn assert_table5(s: &Stats, cd_paper: f64) {
+    let rel = (s.cd_at_cl08 / cd_paper - 1.0).abs();
+    assert!(
+        rel <= 0.10,
+        "Cd(Cl=0.8) {} vs paper {cd_paper}: {s:?}",
+        s.cd_at_cl08
+    );
 }
 
 #[test]

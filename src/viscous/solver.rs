@@ -77,14 +77,19 @@ pub struct BlStation {
     pub s: f64,
     /// x coordinate of the station.
     pub x: f64,
+    /// y coordinate of the station.
+    pub y: f64,
     /// Edge speed Ue/V∞ (incompressible, as the panel method sees it).
     pub ue: f64,
     /// Displacement thickness δ* (wake: including the wake gap).
     pub dstar: f64,
     /// Momentum thickness θ.
     pub theta: f64,
-    /// Skin-friction coefficient (0 in the wake).
+    /// Skin-friction coefficient based on the edge dynamic pressure (0 in the wake).
     pub cf: f64,
+    /// Skin friction referred to the free-stream dynamic pressure, τw/(½ρ∞V∞²) = Cf·ρe·Ue,c²
+    /// (the "Cf" column of XFOIL's DUMP).
+    pub cf_inf: f64,
     /// Shape factor H = δ*/θ.
     pub h: f64,
     /// Kinematic shape factor Hk.
@@ -459,10 +464,12 @@ impl ViscousSolver {
                     BlStation {
                         s: st.xi,
                         x: g.x[st.node],
+                        y: g.y[st.node],
                         ue: a.state.ue[k],
                         dstar: v.dstar,
                         theta: v.theta,
                         cf: p.cf,
+                        cf_inf: p.cf * p.rho_e * p.ue_compressible * p.ue_compressible,
                         h: p.h,
                         hk: p.hk,
                         n_or_ctau: if regime == Regime::Laminar { s } else { s * s },
