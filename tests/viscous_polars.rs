@@ -185,24 +185,28 @@ fn naca4412_re3e6_m02_free() {
 
 #[test]
 fn naca23012_re19e5_m041_free() {
-    assert_targets(&run_case(
+    let s = run_case(
         "naca23012",
         "naca23012_Re1.9e6_M0.41_free.csv",
         1.9e6,
         0.41,
         1.0,
-    ));
+    );
+    assert_targets(&s);
+    assert_table5(&s, 0.00802);
 }
 
 #[test]
 fn naca23012_re19e5_m041_xtr007() {
-    assert_targets(&run_case(
+    let s = run_case(
         "naca23012",
         "naca23012_Re1.9e6_M0.41_xtr0.07.csv",
         1.9e6,
         0.41,
         0.07,
-    ));
+    );
+    assert_targets(&s);
+    assert_table5(&s, 0.01118);
 }
 
 #[test]
@@ -218,22 +222,26 @@ fn naca2412_re1e6_m0_free() {
 
 #[test]
 fn naca8h12_re19e5_m041_free() {
-    assert_targets(&run_case(
+    let s = run_case(
         "naca8h12",
         "naca8h12_Re1.9e6_M0.41_free.csv",
         1.9e6,
         0.41,
         1.0,
-    ));
+    );
+    assert_targets(&s);
+    assert_table5(&s, 0.00607);
 }
 
 #[test]
 fn naca8h12_re19e5_m041_xtr007() {
-    assert_targets(&run_case(
+    let s = run_case(
         "naca8h12",
         "naca8h12_Re1.9e6_M0.41_xtr0.07.csv",
         1.9e6,
         0.41,
         0.07,
-    ));
+    );
+    assert_targets(&s);
+    assert_table5(&s, 0.01165);
 }
