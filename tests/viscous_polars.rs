@@ -71,12 +71,16 @@ fn median(mut v: Vec<f64>) -> f64 {
 }
 
 fn run_case(foil: &str, file: &str, re: f64, mach: f64, xtr: f64) -> Stats {
+    run_case_trip(foil, file, re, mach, xtr, xtr)
+}
+
+fn run_case_trip(foil: &str, file: &str, re: f64, mach: f64, xtr_top: f64, xtr_bot: f64) -> Stats {
     let airfoil = paneled(foil);
     let params = ViscousParams {
         reynolds: re,
         mach,
-        xtr_top: xtr,
-        xtr_bot: xtr,
+        xtr_top,
+        xtr_bot,
         ..ViscousParams::default()
     };
     let mut solver = ViscousSolver::new(&airfoil, params).unwrap();
@@ -244,4 +248,26 @@ fn naca8h12_re19e5_m041_xtr007() {
     );
     assert_targets(&s);
     assert_table5(&s, 0.01165);
+}
+
+/// Held-out check generated with tools/xfoil_reference.py (not a case of the issue list):
+/// low Reynolds number with laminar separation bubbles.
+#[test]
+fn naca4415_re2e5_m0_free_bubble() {
+    let s = run_case("naca4415", "naca4415_Re2e5_M0_free.csv", 2e5, 0.0, 1.0);
+    assert_targets(&s);
+}
+
+/// Held-out check: different trips on the two surfaces, Re 3e6, M 0.3 (XFOIL's NACA 0012).
+#[test]
+fn naca0012_re3e6_m03_trip_top01_bot02() {
+    let s = run_case_trip(
+        "naca0012",
+        "naca0012_Re3e6_M0.3_xtr0.1_0.2.csv",
+        3e6,
+        0.3,
+        0.1,
+        0.2,
+    );
+    assert_targets(&s);
 }

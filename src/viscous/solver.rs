@@ -37,6 +37,9 @@ pub struct ViscousParams {
     pub limits: UpdateLimits,
     /// Controls of the initial march (XFOIL MRCHUE).
     pub march: MarchParams,
+    /// The mixed-mode re-march before each Newton iteration (XFOIL MRCHDU) is skipped once the
+    /// RMS relative Newton change is below this value (0 = always re-march, as XFOIL).
+    pub remarch_below: f64,
 }
 
 impl Default for ViscousParams {
@@ -51,6 +54,7 @@ impl Default for ViscousParams {
             tolerance: 1e-4,
             limits: UpdateLimits::default(),
             march: MarchParams::default(),
+            remarch_below: 0.0,
         }
     }
 }
@@ -378,14 +382,18 @@ impl ViscousSolver {
                 xi_forced,
                 ante: self.ante,
             };
-            remarch_mixed(
-                &self.bl,
-                &layout,
-                &mut state,
-                xi_forced,
-                self.ante,
-                &self.params.march,
-            );
+            // Mixed-mode re-march (XFOIL MRCHDU) while the iteration is still far from
+            // converged; close to convergence the Newton steps alone are quadratic.
+            if residual > self.params.remarch_below {
+                remarch_mixed(
+                    &self.bl,
+                    &layout,
+                    &mut state,
+                    xi_forced,
+                    self.ante,
+                    &self.params.march,
+                );
+            }
             let asm = assemble(&self.bl, &coupling, &mut state)?;
             transition = [
                 asm.transition[0].map(|t| t.xi),
