@@ -38,6 +38,10 @@ pub struct Coupling<'a> {
     pub xi_forced: [Option<f64>; 2],
     /// Trailing-edge gap normal to the TE bisector (XFOIL ANTE).
     pub ante: f64,
+    /// The regimes stored in the state were just decided by the mixed-mode march on the same
+    /// state, so only the interval ending at the first turbulent station is checked for
+    /// transition (the others are known not to transition).
+    pub regimes_known: bool,
 }
 
 impl Coupling<'_> {
@@ -168,9 +172,13 @@ pub fn assemble(
                     if !state.turbulent[k] {
                         v2.s = s_turb_ref;
                     }
-                    let tr = model
-                        .transition(&v1, &v2, coupling.xi_forced[side])
-                        .map_err(at(k))?;
+                    let tr = if coupling.regimes_known && !state.turbulent[k] {
+                        None
+                    } else {
+                        model
+                            .transition(&v1, &v2, coupling.xi_forced[side])
+                            .map_err(at(k))?
+                    };
                     match tr {
                         Some(t) => {
                             if !state.turbulent[k] {

@@ -375,16 +375,18 @@ impl ViscousSolver {
         let mut residual = f64::INFINITY;
         let mut transition = [None, None];
         for iter in 1..=self.params.max_iterations {
+            // Mixed-mode re-march (XFOIL MRCHDU) while the iteration is still far from
+            // converged; close to convergence the Newton steps alone are quadratic.
+            let remarch = residual > self.params.remarch_below;
             let coupling = Coupling {
                 layout: &layout,
                 ue_inv: &ue_inv,
                 dv: &dv,
                 xi_forced,
                 ante: self.ante,
+                regimes_known: remarch,
             };
-            // Mixed-mode re-march (XFOIL MRCHDU) while the iteration is still far from
-            // converged; close to convergence the Newton steps alone are quadratic.
-            if residual > self.params.remarch_below {
+            if remarch {
                 remarch_mixed(
                     &self.bl,
                     &layout,
