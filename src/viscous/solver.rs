@@ -378,15 +378,7 @@ impl ViscousSolver {
             // Mixed-mode re-march (XFOIL MRCHDU) while the iteration is still far from
             // converged; close to convergence the Newton steps alone are quadratic.
             let remarch = residual > self.params.remarch_below;
-            let coupling = Coupling {
-                layout: &layout,
-                ue_inv: &ue_inv,
-                dv: &dv,
-                xi_forced,
-                ante: self.ante,
-                regimes_known: remarch,
-            };
-            if remarch {
+            let cache = if remarch {
                 remarch_mixed(
                     &self.bl,
                     &layout,
@@ -394,8 +386,19 @@ impl ViscousSolver {
                     xi_forced,
                     self.ante,
                     &self.params.march,
-                );
-            }
+                )
+            } else {
+                Vec::new()
+            };
+            let coupling = Coupling {
+                layout: &layout,
+                ue_inv: &ue_inv,
+                dv: &dv,
+                xi_forced,
+                ante: self.ante,
+                regimes_known: remarch,
+                cached: remarch.then_some(cache.as_slice()),
+            };
             let asm = assemble(&self.bl, &coupling, &mut state)?;
             transition = [
                 asm.transition[0].map(|t| t.xi),
