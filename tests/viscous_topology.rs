@@ -174,3 +174,10 @@ fn invalid_inputs_are_errors_not_panics() {
     assert!(p.converged, "{p:?}");
     assert!((p.cl - 0.2142).abs() < 0.002, "{p:?}");
 }
+
+/// Parallel sweeps move one solver per thread: it must be `Send`.
+#[test]
+fn solver_is_send() {
+    fn assert_send<T: Send>() {}
+    assert_send::<ViscousSolver>();
+}
