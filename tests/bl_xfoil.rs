@@ -116,33 +116,21 @@ fn vars(m: &BlModel, xi: f64, r: &Row, s: f64) -> StationVars {
     }
 }
 
-/// The three dumped cases: file, Re, M, polar (xtr_top, xtr_bot, cd) at α = 4°.
-const CASES: [(&str, f64, f64, f64, f64, f64); 3] = [
-    (
-        "naca0012_Re1e6_M0_free_bl_a4.txt",
-        1e6,
-        0.0,
-        0.2537,
-        0.9685,
-        0.00728,
-    ),
-    (
-        "naca8h12_Re1.9e6_M0.41_free_bl_a4.txt",
-        1.9e6,
-        0.41,
-        0.3989,
-        0.9963,
-        0.00597,
-    ),
-    (
-        "naca8h12_Re1.9e6_M0.41_xtr0.07_bl_a4.txt",
-        1.9e6,
-        0.41,
-        0.07,
-        0.07,
-        0.0109,
-    ),
+/// The dumped cases: file, Re, M, XFOIL polar (xtr_top, xtr_bot, cd) at that α; the free
+/// transition cases come first.
+#[rustfmt::skip]
+const CASES: [(&str, f64, f64, f64, f64, f64); 7] = [
+    ("naca0012_Re1e6_M0_free_bl_a0.txt", 1e6, 0.0, 0.687, 0.687, 0.0054),
+    ("naca0012_Re1e6_M0_free_bl_a4.txt", 1e6, 0.0, 0.2537, 0.9685, 0.00728),
+    ("naca0012_Re1e6_M0_free_bl_a8.txt", 1e6, 0.0, 0.0381, 1.0, 0.01211),
+    ("naca8h12_Re1.9e6_M0.41_free_bl_a4.txt", 1.9e6, 0.41, 0.3989, 0.9963, 0.00597),
+    ("naca23012_Re1.9e6_M0.41_free_bl_a4.txt", 1.9e6, 0.41, 0.1867, 0.968, 0.00727),
+    ("naca8h12_Re1.9e6_M0.41_xtr0.07_bl_a4.txt", 1.9e6, 0.41, 0.07, 0.07, 0.0109),
+    ("naca23012_Re1.9e6_M0.41_xtr0.07_bl_a4.txt", 1.9e6, 0.41, 0.07, 0.07, 0.01065),
 ];
+
+/// Number of free-transition cases at the start of [`CASES`].
+const N_FREE: usize = 5;
 
 /// Closure check: XFOIL's dumped Cf (= 2τw/ρ∞V∞²) and H* against ours from the dumped
 /// θ, Hk, Ue, laminar upstream of the polar's transition point and turbulent downstream.
@@ -191,7 +179,7 @@ fn skin_friction_and_hstar_match_xfoil_dumps() {
 /// XFOIL put free transition (polar xtr), within 0.001 c.
 #[test]
 fn free_transition_location_matches_xfoil() {
-    for (file, re, mach, xtr_top, xtr_bot, _) in &CASES[..2] {
+    for (file, re, mach, xtr_top, xtr_bot, _) in &CASES[..N_FREE] {
         let m = model(*re, *mach);
         let d = load(file);
         for (surface, xtr) in [(&d.upper, *xtr_top), (&d.lower, *xtr_bot)] {
@@ -225,7 +213,7 @@ fn free_transition_location_matches_xfoil() {
 /// Forced transition: the earlier of forced and free wins and is reported as forced.
 #[test]
 fn forced_transition_wins_when_upstream() {
-    let (file, re, mach, _, _, _) = CASES[2];
+    let (file, re, mach, _, _, _) = CASES[N_FREE];
     let m = model(re, mach);
     let d = load(file);
     let (x1, r1) = d.upper[10];

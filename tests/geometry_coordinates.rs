@@ -2,7 +2,10 @@
 //! one test per kind of malformed file asserting the one-line error message.
 
 use polargen::geometry::coordinates::parse_airfoil_bytes;
-use polargen::geometry::{read_airfoil_file, Airfoil, CoordinateFormat, GeometryError};
+use polargen::geometry::{
+    airfoil_by_name_or_path, parse_airfoil_text, read_airfoil_file, to_selig_string, Airfoil,
+    CoordinateFormat, GeometryError, PanelingParams,
+};
 use std::path::{Path, PathBuf};
 
 fn data(name: &str) -> PathBuf {
@@ -153,4 +156,20 @@ fn missing_file() {
     assert!(e
         .to_string()
         .contains("does_not_exist.dat: cannot read file:"));
+}
+
+#[test]
+fn selig_writer_round_trips_paneled_nodes() {
+    let p = airfoil_by_name_or_path("naca23012")
+        .unwrap()
+        .repanel(160, &PanelingParams::default())
+        .unwrap();
+    let text = to_selig_string(&p);
+    assert!(text.starts_with("NACA 23012\n"));
+    let (back, fmt) = parse_airfoil_text(&text, "mem", "x").unwrap();
+    assert_eq!(fmt, CoordinateFormat::Selig);
+    assert_eq!(back.name, "NACA 23012");
+    for i in 0..160 {
+        assert!((back.x[i] - p.x[i]).abs() <= 5e-9 && (back.y[i] - p.y[i]).abs() <= 5e-9);
+    }
 }

@@ -28,6 +28,13 @@ fn bad_contours_are_errors() {
         InviscidError::NonFiniteNode(7)
     );
     let mut a = xfoil_nodes("naca0012");
+    a.x.reverse();
+    a.y.reverse();
+    assert_eq!(
+        PanelSystem::new(&a).unwrap_err(),
+        InviscidError::ClockwiseContour
+    );
+    let mut a = xfoil_nodes("naca0012");
     a.x[11] = a.x[10];
     a.y[11] = a.y[10];
     assert_eq!(
@@ -53,6 +60,15 @@ fn trailing_edge_classification() {
     assert!(sharp.bisector().is_some());
     // The paneled 8-H-12 spline leading edge lies ~0.00075 c ahead of x = 0.
     assert!((sharp.geometry().chord - 1.0).abs() < 2e-3);
+}
+
+/// The factorised system can be shared across threads (parallel polar sweeps).
+#[test]
+fn panel_system_is_send_and_sync() {
+    fn check<T: Send + Sync>() {}
+    check::<PanelSystem>();
+    check::<polargen::inviscid::Wake>();
+    check::<polargen::inviscid::SourceInfluence>();
 }
 
 /// Kutta condition γ₀ + γ_{N−1} = 0 holds for both unit solutions.

@@ -20,7 +20,7 @@ const DGR: f64 = 0.08;
 /// Arguments: `(hk, theta, rt)`.
 pub fn dampl(hk: f64, theta: f64, rt: f64) -> Partials<3> {
     let r = dampl_d(
-        Dual::variable(hk, 0),
+        Dual::<3>::variable(hk, 0),
         Dual::variable(theta, 1),
         Dual::variable(rt, 2),
     );
@@ -30,7 +30,7 @@ pub fn dampl(hk: f64, theta: f64, rt: f64) -> Partials<3> {
     }
 }
 
-pub(crate) fn dampl_d(hk: Dual, theta: Dual, rt: Dual) -> Dual {
+pub(crate) fn dampl_d<const N: usize>(hk: Dual<N>, theta: Dual<N>, rt: Dual<N>) -> Dual<N> {
     let hmi = 1.0 / (hk - 1.0);
     let aa = hmi.powf(0.43) * 2.492;
     let bb = (hmi * 14.0 - 9.24).tanh();
@@ -43,12 +43,12 @@ pub(crate) fn dampl_d(hk: Dual, theta: Dual, rt: Dual) -> Dual {
     let rfac = if rnorm.v >= 1.0 {
         Dual::constant(1.0)
     } else {
-        rnorm.sq() * 3.0 - rnorm.powf(3.0) * 2.0
+        rnorm.sq() * 3.0 - rnorm.powi(3) * 2.0
     };
     let arg = hmi * 3.87 - 2.52;
     let ex = (-arg.sq()).exp();
     let dadr = (hk - 1.0) * 0.028 - ex * 0.0345;
-    let af = hmi * 2.7 - hmi.sq() * 5.5 + hmi.powf(3.0) * 3.0 - 0.05;
+    let af = hmi * 2.7 - hmi.sq() * 5.5 + hmi.powi(3) * 3.0 - 0.05;
     af * dadr / theta * rfac
 }
 
@@ -56,17 +56,17 @@ pub(crate) fn dampl_d(hk: Dual, theta: Dual, rt: Dual) -> Dual {
 /// ā = √(½(a1² + a2²)) + 0.002/(θ1+θ2)·exp(−min(20(Ncrit − ½(N1+N2)), 20)) — the small
 /// extra term keeps dN/dξ > 0 near N = Ncrit. Inputs are station quantities as [`Dual`]s.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn axset_d(
-    hk1: Dual,
-    t1: Dual,
-    rt1: Dual,
-    a1: Dual,
-    hk2: Dual,
-    t2: Dual,
-    rt2: Dual,
-    a2: Dual,
+pub(crate) fn axset_d<const N: usize>(
+    hk1: Dual<N>,
+    t1: Dual<N>,
+    rt1: Dual<N>,
+    a1: Dual<N>,
+    hk2: Dual<N>,
+    t2: Dual<N>,
+    rt2: Dual<N>,
+    a2: Dual<N>,
     ncrit: f64,
-) -> Dual {
+) -> Dual<N> {
     let ax1 = dampl_d(hk1, t1, rt1);
     let ax2 = dampl_d(hk2, t2, rt2);
     let axsq = (ax1.sq() + ax2.sq()) * 0.5;

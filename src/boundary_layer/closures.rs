@@ -21,12 +21,10 @@ pub struct Partials<const N: usize> {
 }
 
 /// Evaluates a Dual closure at `args`, seeding one gradient slot per argument.
-fn partials<const N: usize>(args: [f64; N], f: impl Fn(&[Dual; N]) -> Dual) -> Partials<N> {
-    let duals: [Dual; N] = std::array::from_fn(|i| Dual::variable(args[i], i));
+fn partials<const N: usize>(args: [f64; N], f: impl Fn(&[Dual<N>; N]) -> Dual<N>) -> Partials<N> {
+    let duals: [Dual<N>; N] = std::array::from_fn(|i| Dual::variable(args[i], i));
     let r = f(&duals);
-    let mut d = [0.0; N];
-    d.copy_from_slice(&r.g[..N]);
-    Partials { value: r.v, d }
+    Partials { value: r.v, d: r.g }
 }
 
 /// Kinematic shape parameter Hk(H, Me²) = (H − 0.29 Me²)/(1 + 0.113 Me²)
@@ -35,7 +33,7 @@ pub fn hkin(h: f64, msq: f64) -> Partials<2> {
     partials([h, msq], |a| hkin_d(a[0], a[1]))
 }
 
-pub(crate) fn hkin_d(h: Dual, msq: Dual) -> Dual {
+pub(crate) fn hkin_d<const N: usize>(h: Dual<N>, msq: Dual<N>) -> Dual<N> {
     (h - msq * 0.29) / (msq * 0.113 + 1.0)
 }
 
@@ -46,11 +44,11 @@ pub fn hsl(hk: f64, rt: f64, msq: f64) -> Partials<3> {
     partials([hk, rt, msq], |a| hsl_d(a[0]))
 }
 
-pub(crate) fn hsl_d(hk: Dual) -> Dual {
+pub(crate) fn hsl_d<const N: usize>(hk: Dual<N>) -> Dual<N> {
     if hk.v < 4.35 {
         let tmp = hk - 4.35;
         let hp1 = hk + 1.0;
-        tmp.sq() * 0.0111 / hp1 - tmp.powf(3.0) * 0.0278 / hp1 + 1.528 - (tmp * hk).sq() * 0.0002
+        tmp.sq() * 0.0111 / hp1 - tmp.powi(3) * 0.0278 / hp1 + 1.528 - (tmp * hk).sq() * 0.0002
     } else {
         (hk - 4.35).sq() * 0.015 / hk + 1.528
     }
@@ -63,7 +61,7 @@ pub fn hst(hk: f64, rt: f64, msq: f64) -> Partials<3> {
     partials([hk, rt, msq], |a| hst_d(a[0], a[1], a[2]))
 }
 
-pub(crate) fn hst_d(hk: Dual, rt: Dual, msq: Dual) -> Dual {
+pub(crate) fn hst_d<const N: usize>(hk: Dual<N>, rt: Dual<N>, msq: Dual<N>) -> Dual<N> {
     const HSMIN: f64 = 1.5;
     const DHSINF: f64 = 0.015;
     // Re_θ-dependent break point H0 (limited for Re_θ < 400) and Re_θ floor of 200.
@@ -99,9 +97,9 @@ pub fn cfl(hk: f64, rt: f64, msq: f64) -> Partials<3> {
     partials([hk, rt, msq], |a| cfl_d(a[0], a[1]))
 }
 
-pub(crate) fn cfl_d(hk: Dual, rt: Dual) -> Dual {
+pub(crate) fn cfl_d<const N: usize>(hk: Dual<N>, rt: Dual<N>) -> Dual<N> {
     if hk.v < 5.5 {
-        let tmp = (5.5 - hk).powf(3.0) / (hk + 1.0);
+        let tmp = (5.5 - hk).powi(3) / (hk + 1.0);
         (tmp * 0.0727 - 0.07) / rt
     } else {
         let tmp = 1.0 - 1.0 / (hk - 4.5);
@@ -120,7 +118,7 @@ pub fn cft(hk: f64, rt: f64, msq: f64) -> Partials<3> {
 #[allow(clippy::approx_constant)]
 const XFOIL_LN10: f64 = 2.3026;
 
-pub(crate) fn cft_d(hk: Dual, rt: Dual, msq: Dual) -> Dual {
+pub(crate) fn cft_d<const N: usize>(hk: Dual<N>, rt: Dual<N>, msq: Dual<N>) -> Dual<N> {
     const GM1: f64 = 0.4;
     let fc = (msq * (0.5 * GM1) + 1.0).sqrt();
     let grt = (rt / fc).ln().max_const(3.0);
@@ -138,7 +136,7 @@ pub fn dil(hk: f64, rt: f64) -> Partials<2> {
     partials([hk, rt], |a| dil_d(a[0], a[1]))
 }
 
-pub(crate) fn dil_d(hk: Dual, rt: Dual) -> Dual {
+pub(crate) fn dil_d<const N: usize>(hk: Dual<N>, rt: Dual<N>) -> Dual<N> {
     if hk.v < 4.0 {
         ((4.0 - hk).powf(5.5) * 0.00205 + 0.207) / rt
     } else {
@@ -154,7 +152,7 @@ pub fn dilw(hk: f64, rt: f64) -> Partials<2> {
     partials([hk, rt], |a| dilw_d(a[0], a[1]))
 }
 
-pub(crate) fn dilw_d(hk: Dual, rt: Dual) -> Dual {
+pub(crate) fn dilw_d<const N: usize>(hk: Dual<N>, rt: Dual<N>) -> Dual<N> {
     let hs = hsl_d(hk);
     let rcd = (1.0 - 1.0 / hk).sq() * 1.10 / hk;
     rcd * 2.0 / (hs * rt)
@@ -166,7 +164,7 @@ pub fn hct(hk: f64, msq: f64) -> Partials<2> {
     partials([hk, msq], |a| hct_d(a[0], a[1]))
 }
 
-pub(crate) fn hct_d(hk: Dual, msq: Dual) -> Dual {
+pub(crate) fn hct_d<const N: usize>(hk: Dual<N>, msq: Dual<N>) -> Dual<N> {
     msq * (0.064 / (hk - 0.8) + 0.251)
 }
 
@@ -177,7 +175,12 @@ pub fn slip_velocity(hs: f64, hk: f64, h: f64, gbcon: f64) -> Partials<3> {
     partials([hs, hk, h], |a| slip_velocity_d(a[0], a[1], a[2], gbcon))
 }
 
-pub(crate) fn slip_velocity_d(hs: Dual, hk: Dual, h: Dual, gbcon: f64) -> Dual {
+pub(crate) fn slip_velocity_d<const N: usize>(
+    hs: Dual<N>,
+    hk: Dual<N>,
+    h: Dual<N>,
+    gbcon: f64,
+) -> Dual<N> {
     hs * 0.5 * (1.0 - (hk - 1.0) / (h * gbcon))
 }
 
@@ -203,16 +206,16 @@ pub fn ctau_eq_sqrt(
 }
 
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn ctau_eq_sqrt_d(
-    hs: Dual,
-    us: Dual,
-    hk: Dual,
-    h: Dual,
-    rt: Dual,
+pub(crate) fn ctau_eq_sqrt_d<const N: usize>(
+    hs: Dual<N>,
+    us: Dual<N>,
+    hk: Dual<N>,
+    h: Dual<N>,
+    rt: Dual<N>,
     low_re_offset: bool,
     ctcon: f64,
     gccon: f64,
-) -> Dual {
+) -> Dual<N> {
     let hkc = if low_re_offset {
         (hk - 1.0 - gccon / rt).max_const(0.01)
     } else {
@@ -242,14 +245,14 @@ pub fn dissipation_turbulent(
     })
 }
 
-pub(crate) fn dissipation_turbulent_d(
-    hs: Dual,
-    us: Dual,
-    cf_turb: Dual,
-    s: Dual,
-    hk: Dual,
-    rt: Dual,
-) -> Dual {
+pub(crate) fn dissipation_turbulent_d<const N: usize>(
+    hs: Dual<N>,
+    us: Dual<N>,
+    cf_turb: Dual<N>,
+    s: Dual<N>,
+    hk: Dual<N>,
+    rt: Dual<N>,
+) -> Dual<N> {
     let wall = cf_turb * us * 0.5 * 2.0 / hs;
     let hmin = 1.0 + 2.1 / rt.ln();
     let fl = (hk - 1.0) / (hmin - 1.0);
@@ -265,7 +268,12 @@ pub fn dissipation_outer(hs: f64, us: f64, s: f64, rt: f64) -> Partials<4> {
     })
 }
 
-pub(crate) fn dissipation_outer_d(hs: Dual, us: Dual, s: Dual, rt: Dual) -> Dual {
+pub(crate) fn dissipation_outer_d<const N: usize>(
+    hs: Dual<N>,
+    us: Dual<N>,
+    s: Dual<N>,
+    rt: Dual<N>,
+) -> Dual<N> {
     let dd = s.sq() * (0.995 - us) * 2.0 / hs;
     let dl = (0.995 - us).sq() * 0.15 / rt * 2.0 / hs;
     dd + dl
@@ -278,7 +286,11 @@ pub fn transition_ctau_factor(hk: f64, ctrcon: f64, ctrcex: f64) -> Partials<1> 
     partials([hk], |a| transition_ctau_factor_d(a[0], ctrcon, ctrcex))
 }
 
-pub(crate) fn transition_ctau_factor_d(hk: Dual, ctrcon: f64, ctrcex: f64) -> Dual {
+pub(crate) fn transition_ctau_factor_d<const N: usize>(
+    hk: Dual<N>,
+    ctrcon: f64,
+    ctrcex: f64,
+) -> Dual<N> {
     (-ctrcex / (hk - 1.0)).exp() * ctrcon
 }
 
@@ -289,7 +301,11 @@ pub fn bl_thickness(hk: f64, theta: f64, dstar: f64) -> Partials<3> {
     partials([hk, theta, dstar], |a| bl_thickness_d(a[0], a[1], a[2]))
 }
 
-pub(crate) fn bl_thickness_d(hk: Dual, theta: Dual, dstar: Dual) -> Dual {
+pub(crate) fn bl_thickness_d<const N: usize>(
+    hk: Dual<N>,
+    theta: Dual<N>,
+    dstar: Dual<N>,
+) -> Dual<N> {
     const HDMAX: f64 = 12.0;
     let de = (3.15 + 1.72 / (hk - 1.0)) * theta + dstar;
     if de.v > HDMAX * theta.v {

@@ -2,50 +2,46 @@
 //!
 //! A [`Dual`] carries a value and its gradient with respect to the [`NVARS`] = 10 primary
 //! variables of one interval: station 1 `(s, θ, δ*, u, ξ)` in slots 0..5 and station 2 in
-//! slots 5..10 (the column order of XFOIL's VS1/VS2 matrices, xblsys.f BLSYS). The closures
-//! supply their own analytic partials; [`Dual::chain`] combines them with the gradients of
-//! their arguments, so the Jacobians of the discrete equations follow exactly from the
-//! residual expressions without hand-expanded sensitivity bookkeeping.
+//! slots 5..10 (the column order of XFOIL's VS1/VS2 matrices, xblsys.f BLSYS). Closures and
+//! station variables are evaluated on these numbers, so the Jacobians of the discrete
+//! equations follow exactly from the residual expressions without hand-expanded sensitivity
+//! bookkeeping. A station's secondary variables depend on its own 5 variables only; they are
+//! computed with 5-slot numbers and then embedded ([`Dual::embed`]).
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// Number of independent variables of one interval (5 per station, 2 stations).
 pub const NVARS: usize = 10;
 
-/// A value together with its gradient with respect to the interval's primary variables.
+/// A value together with its gradient with respect to `N` independent variables (by
+/// default the [`NVARS`] primary variables of an interval; one station alone uses 5).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Dual {
+pub struct Dual<const N: usize = NVARS> {
     /// Function value.
     pub v: f64,
-    /// Partial derivatives with respect to the [`NVARS`] primary variables.
-    pub g: [f64; NVARS],
+    /// Partial derivatives with respect to the `N` independent variables.
+    pub g: [f64; N],
 }
 
-impl Dual {
+impl<const N: usize> Dual<N> {
     /// A constant (zero gradient).
     pub fn constant(v: f64) -> Self {
-        Self { v, g: [0.0; NVARS] }
+        Self { v, g: [0.0; N] }
     }
 
     /// An independent variable occupying gradient slot `slot`.
     pub fn variable(v: f64, slot: usize) -> Self {
-        let mut g = [0.0; NVARS];
+        let mut g = [0.0; N];
         g[slot] = 1.0;
         Self { v, g }
     }
 
-    /// Chain rule: the value `value` of a function whose partials with respect to the
-    /// arguments `args` are `partials` (same order).
-    pub fn chain(value: f64, partials: &[f64], args: &[Dual]) -> Self {
-        let mut g = [0.0; NVARS];
-        for (p, a) in partials.iter().zip(args) {
-            if *p != 0.0 {
-                for (gi, ai) in g.iter_mut().zip(a.g.iter()) {
-                    *gi += p * ai;
-                }
-            }
-        }
-        Self { v: value, g }
+    /// The same number with its gradient placed at slots `offset..offset+N` of a longer
+    /// gradient (a station's derivatives placed among the interval's variables).
+    pub fn embed<const M: usize>(self, offset: usize) -> Dual<M> {
+        let mut g = [0.0; M];
+        g[offset..offset + N].copy_from_slice(&self.g);
+        Dual { v: self.v, g }
     }
 
     /// Applies a scalar function with value `f` and derivative `df` at `self.v`.
@@ -78,6 +74,12 @@ impl Dual {
     pub fn powf(self, p: f64) -> Self {
         let f = self.v.powf(p);
         self.map(f, p * self.v.powf(p - 1.0))
+    }
+
+    /// Integer power.
+    pub fn powi(self, n: i32) -> Self {
+        let f = self.v.powi(n);
+        self.map(f, f64::from(n) * self.v.powi(n - 1))
     }
 
     /// Square.
@@ -118,7 +120,7 @@ impl Dual {
         }
     }
 
-    /// Gradient slots `offset..offset+5` (one station's columns).
+    /// Gradient slots `offset..offset+5` (one station's columns); `offset + 5 ≤ N`.
     pub fn station_grad(&self, offset: usize) -> [f64; 5] {
         let mut out = [0.0; 5];
         out.copy_from_slice(&self.g[offset..offset + 5]);
@@ -126,9 +128,9 @@ impl Dual {
     }
 }
 
-impl Add for Dual {
-    type Output = Dual;
-    fn add(self, o: Dual) -> Dual {
+impl<const N: usize> Add for Dual<N> {
+    type Output = Dual<N>;
+    fn add(self, o: Dual<N>) -> Dual<N> {
         let mut g = self.g;
         for (gi, oi) in g.iter_mut().zip(o.g.iter()) {
             *gi += oi;
@@ -137,9 +139,9 @@ impl Add for Dual {
     }
 }
 
-impl Sub for Dual {
-    type Output = Dual;
-    fn sub(self, o: Dual) -> Dual {
+impl<const N: usize> Sub for Dual<N> {
+    type Output = Dual<N>;
+    fn sub(self, o: Dual<N>) -> Dual<N> {
         let mut g = self.g;
         for (gi, oi) in g.iter_mut().zip(o.g.iter()) {
             *gi -= oi;
@@ -148,10 +150,10 @@ impl Sub for Dual {
     }
 }
 
-impl Mul for Dual {
-    type Output = Dual;
-    fn mul(self, o: Dual) -> Dual {
-        let mut g = [0.0; NVARS];
+impl<const N: usize> Mul for Dual<N> {
+    type Output = Dual<N>;
+    fn mul(self, o: Dual<N>) -> Dual<N> {
+        let mut g = [0.0; N];
         for (i, gi) in g.iter_mut().enumerate() {
             *gi = self.g[i] * o.v + self.v * o.g[i];
         }
@@ -159,11 +161,11 @@ impl Mul for Dual {
     }
 }
 
-impl Div for Dual {
-    type Output = Dual;
-    fn div(self, o: Dual) -> Dual {
+impl<const N: usize> Div for Dual<N> {
+    type Output = Dual<N>;
+    fn div(self, o: Dual<N>) -> Dual<N> {
         let q = self.v / o.v;
-        let mut g = [0.0; NVARS];
+        let mut g = [0.0; N];
         for (i, gi) in g.iter_mut().enumerate() {
             *gi = (self.g[i] - q * o.g[i]) / o.v;
         }
@@ -171,16 +173,16 @@ impl Div for Dual {
     }
 }
 
-impl Neg for Dual {
-    type Output = Dual;
-    fn neg(self) -> Dual {
+impl<const N: usize> Neg for Dual<N> {
+    type Output = Dual<N>;
+    fn neg(self) -> Dual<N> {
         self.map(-self.v, -1.0)
     }
 }
 
-impl Add<f64> for Dual {
-    type Output = Dual;
-    fn add(self, c: f64) -> Dual {
+impl<const N: usize> Add<f64> for Dual<N> {
+    type Output = Dual<N>;
+    fn add(self, c: f64) -> Dual<N> {
         Dual {
             v: self.v + c,
             g: self.g,
@@ -188,9 +190,9 @@ impl Add<f64> for Dual {
     }
 }
 
-impl Sub<f64> for Dual {
-    type Output = Dual;
-    fn sub(self, c: f64) -> Dual {
+impl<const N: usize> Sub<f64> for Dual<N> {
+    type Output = Dual<N>;
+    fn sub(self, c: f64) -> Dual<N> {
         Dual {
             v: self.v - c,
             g: self.g,
@@ -198,44 +200,44 @@ impl Sub<f64> for Dual {
     }
 }
 
-impl Mul<f64> for Dual {
-    type Output = Dual;
-    fn mul(self, c: f64) -> Dual {
+impl<const N: usize> Mul<f64> for Dual<N> {
+    type Output = Dual<N>;
+    fn mul(self, c: f64) -> Dual<N> {
         self.map(self.v * c, c)
     }
 }
 
-impl Div<f64> for Dual {
-    type Output = Dual;
-    fn div(self, c: f64) -> Dual {
+impl<const N: usize> Div<f64> for Dual<N> {
+    type Output = Dual<N>;
+    fn div(self, c: f64) -> Dual<N> {
         self.map(self.v / c, 1.0 / c)
     }
 }
 
-impl Add<Dual> for f64 {
-    type Output = Dual;
-    fn add(self, d: Dual) -> Dual {
+impl<const N: usize> Add<Dual<N>> for f64 {
+    type Output = Dual<N>;
+    fn add(self, d: Dual<N>) -> Dual<N> {
         d + self
     }
 }
 
-impl Sub<Dual> for f64 {
-    type Output = Dual;
-    fn sub(self, d: Dual) -> Dual {
+impl<const N: usize> Sub<Dual<N>> for f64 {
+    type Output = Dual<N>;
+    fn sub(self, d: Dual<N>) -> Dual<N> {
         d.map(self - d.v, -1.0)
     }
 }
 
-impl Mul<Dual> for f64 {
-    type Output = Dual;
-    fn mul(self, d: Dual) -> Dual {
+impl<const N: usize> Mul<Dual<N>> for f64 {
+    type Output = Dual<N>;
+    fn mul(self, d: Dual<N>) -> Dual<N> {
         d * self
     }
 }
 
-impl Div<Dual> for f64 {
-    type Output = Dual;
-    fn div(self, d: Dual) -> Dual {
+impl<const N: usize> Div<Dual<N>> for f64 {
+    type Output = Dual<N>;
+    fn div(self, d: Dual<N>) -> Dual<N> {
         let q = self / d.v;
         d.map(q, -q / d.v)
     }
@@ -247,8 +249,8 @@ mod tests {
 
     #[test]
     fn quotient_and_log_rules() {
-        let a = Dual::variable(2.0, 0);
-        let b = Dual::variable(3.0, 1);
+        let a: Dual = Dual::variable(2.0, 0);
+        let b: Dual = Dual::variable(3.0, 1);
         let f = (a * b).ln() / b + a.powf(1.5);
         // d/da = 1/(a b) * b / b + 1.5 a^0.5 = 1/(a b) + 1.5 sqrt(a)
         let dfa = 1.0 / 3.0 / 2.0 + 1.5 * 2f64.sqrt();

@@ -12,6 +12,28 @@
 //! * [`BlModel::te_junction`] — first wake station from the two trailing-edge stations (TESYS).
 //! * [`BlModel::squire_young`] — drag from the last wake station (CDCALC).
 //! * [`BlModel::properties`] — Cf, H, Hk, Re_θ, … of a station for output.
+//! * [`BlModel::kinematic_shape`] — Hk with its sensitivities (inverse march).
+//! * [`BlModel::stagnation_guess`] — Thwaites starting values for the similarity station.
+//!
+//! Residual convention: R itself (XFOIL's VSREZ is −R); Newton solves J·Δ = −R.
+//!
+//! ```
+//! use polargen::boundary_layer::{BlConditions, BlModel, BlParams, Regime, StationVars};
+//!
+//! let model = BlModel::new(
+//!     &BlConditions { reynolds: 1.9e6, mach: 0.41, ncrit: 9.0 },
+//!     BlParams::default(),
+//! )?;
+//! // two turbulent stations: ξ, incompressible Ue, θ, δ*, √Cτ, wake gap
+//! let st1 = StationVars { x: 0.50, u: 1.10, theta: 1.0e-3, dstar: 1.5e-3, s: 0.07, dw: 0.0 };
+//! let st2 = StationVars { x: 0.52, u: 1.09, theta: 1.05e-3, dstar: 1.6e-3, s: 0.07, dw: 0.0 };
+//! let eq = model.interval(Regime::Turbulent, &st1, &st2)?;
+//! // rows: shear-lag, momentum, shape; columns (s, θ, δ*, u, ξ)
+//! assert!(eq.d2[1][1] > 0.0); // momentum residual grows with θ2
+//! let cf = model.properties(&st2, Regime::Turbulent)?.cf;
+//! assert!(cf > 0.002 && cf < 0.005);
+//! # Ok::<(), polargen::boundary_layer::BlError>(())
+//! ```
 
 pub mod amplification;
 pub mod closures;
@@ -173,8 +195,51 @@ impl BlModel {
         regime: Regime,
     ) -> Result<StationProperties, BlError> {
         validate(v, regime)?;
-        Ok(StationProperties::from_station(
-            &self.station(v, None, regime),
-        ))
+        let p = StationProperties::from_station(&self.station(v, None, regime));
+        if [p.cf, p.h_star, p.re_theta, p.cd, p.hk]
+            .iter()
+            .all(|x| x.is_finite())
+        {
+            Ok(p)
+        } else {
+            Err(BlError::NonFinite("station properties"))
+        }
+    }
+
+    /// Kinematic shape parameter Hk = HKIN(δ*/θ, Me²) of a station without the regime's lower
+    /// clamp (XFOIL BLKIN HK2), with ∂Hk/∂(s, θ, δ*, u, ξ) (u incompressible, δ* total) —
+    /// the sensitivities XFOIL's inverse march (MRCHUE) uses to drive Hk to a target.
+    pub fn kinematic_shape(&self, v: &StationVars) -> Result<closures::Partials<5>, BlError> {
+        validate(v, Regime::Laminar)?;
+        let t = dual::Dual::<5>::variable(v.theta, 1);
+        let d = dual::Dual::variable(v.dstar, 2) - v.dw;
+        let u = station::compressible_speed_d(dual::Dual::variable(v.u, 3), &self.flow);
+        let u2h = u.sq() * self.flow.hstinv;
+        let msq = u2h / ((1.0 - u2h * 0.5) * self.flow.gm1);
+        let hk = closures::hkin_d(d / t, msq);
+        if hk.v.is_finite() {
+            Ok(closures::Partials {
+                value: hk.v,
+                d: hk.g,
+            })
+        } else {
+            Err(BlError::NonFinite("kinematic shape parameter"))
+        }
+    }
+
+    /// Starting guess (θ, δ*) for the similarity station at ξ with edge speed `u` from
+    /// Thwaites' method, θ² = 0.45/(C·(5m + 1)·Re)·ξ^(1−m) with Ue = C·ξ^m, m = BULE, and
+    /// δ* = 2.2θ (XFOIL xbl.f MRCHUE initialisation).
+    pub fn stagnation_guess(&self, x: f64, u: f64) -> Result<(f64, f64), BlError> {
+        for (what, value) in [("xi", x), ("edge speed", u)] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(BlError::Station { what, value });
+            }
+        }
+        let m = self.params.bule;
+        let ucon = u / x.powf(m);
+        let tsq = 0.45 / (ucon * (5.0 * m + 1.0) * self.flow.reybl) * x.powf(1.0 - m);
+        let theta = tsq.sqrt();
+        Ok((theta, 2.2 * theta))
     }
 }

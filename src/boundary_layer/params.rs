@@ -44,9 +44,10 @@ pub struct BlParams {
     /// Ratio of specific heats (XFOIL GAMMA = 1.4).
     pub gamma: f64,
     /// Sutherland constant over stagnation temperature in the edge viscosity
-    /// μ ∝ (h/h0)^1.5 (1 + HVRAT)/(h/h0 + HVRAT). XFOIL 6.99 initialises HVRAT = 0 (INIT;
-    /// μ ∝ √T), the 0.35 of its comments is not used by the solver: HVRAT = 0 reproduces
-    /// the skin friction of XFOIL 6.99 dumps at M = 0.41 to 0.3 %, 0.35 is 1.3 % off.
+    /// μ ∝ (h/h0)^1.5 (1 + HVRAT)/(h/h0 + HVRAT). The XFOIL 6.99 boundary layer runs with
+    /// HVRAT = 0 (μ ∝ √T): with 0 the skin friction of XFOIL 6.99 dumps at M = 0.41 is
+    /// reproduced to 0.3 % (tests/bl_xfoil.rs), with the 0.35 quoted in XFOIL's comments
+    /// it is 1.3 % off.
     pub hvrat: f64,
     /// Similarity-station log-derivative of Ue, d ln Ue / d ln ξ (XFOIL BULE = 1, stagnation flow).
     pub bule: f64,

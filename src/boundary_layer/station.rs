@@ -6,7 +6,7 @@ use super::closures::{
     bl_thickness_d, cfl_d, cft_d, ctau_eq_sqrt_d, dil_d, dilw_d, dissipation_outer_d,
     dissipation_turbulent_d, hct_d, hkin_d, hsl_d, hst_d, slip_velocity_d,
 };
-use super::dual::Dual;
+use super::dual::{Dual, NVARS};
 use super::params::{BlParams, FlowConstants, Regime};
 use super::BlError;
 
@@ -29,28 +29,28 @@ pub struct StationVars {
 
 /// Secondary variables of a station as derivative numbers (XFOIL COM2 block).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Station {
-    pub x: Dual,
+pub(crate) struct Station<const N: usize = NVARS> {
+    pub x: Dual<N>,
     /// Compressible edge speed.
-    pub u: Dual,
-    pub t: Dual,
+    pub u: Dual<N>,
+    pub t: Dual<N>,
     /// δ* − wake gap.
-    pub d: Dual,
-    pub s: Dual,
+    pub d: Dual<N>,
+    pub s: Dual<N>,
     pub dw: f64,
-    pub msq: Dual,
+    pub msq: Dual<N>,
     /// Edge density ρe/ρ∞.
-    pub rho: Dual,
-    pub h: Dual,
-    pub hk: Dual,
-    pub rt: Dual,
-    pub hc: Dual,
-    pub hs: Dual,
-    pub us: Dual,
-    pub cq: Dual,
-    pub cf: Dual,
-    pub di: Dual,
-    pub de: Dual,
+    pub rho: Dual<N>,
+    pub h: Dual<N>,
+    pub hk: Dual<N>,
+    pub rt: Dual<N>,
+    pub hc: Dual<N>,
+    pub hs: Dual<N>,
+    pub us: Dual<N>,
+    pub cq: Dual<N>,
+    pub cf: Dual<N>,
+    pub di: Dual<N>,
+    pub de: Dual<N>,
 }
 
 /// Checks that a station's primary variables are usable (finite, positive where needed).
@@ -81,7 +81,7 @@ pub(crate) fn validate(v: &StationVars, regime: Regime) -> Result<(), BlError> {
 }
 
 /// Karman–Tsien compressible edge speed (XFOIL BLPRV): Ue = Ui(1−λ)/(1−λ(Ui/q∞)²).
-pub(crate) fn compressible_speed_d(ui: Dual, fc: &FlowConstants) -> Dual {
+pub(crate) fn compressible_speed_d<const N: usize>(ui: Dual<N>, fc: &FlowConstants) -> Dual<N> {
     let r = ui / fc.qinfbl;
     ui * (1.0 - fc.tkbl) / (1.0 - r.sq() * fc.tkbl)
 }
@@ -89,6 +89,7 @@ pub(crate) fn compressible_speed_d(ui: Dual, fc: &FlowConstants) -> Dual {
 impl Station {
     /// Station from its primary variables, seeded in gradient slots
     /// `offset..offset+5` in the order (s, θ, δ*, u, ξ); `None` makes all constants.
+    /// The secondary variables are computed on 5-slot numbers and then embedded.
     pub fn seeded(
         v: &StationVars,
         offset: Option<usize>,
@@ -97,7 +98,7 @@ impl Station {
         p: &BlParams,
     ) -> Self {
         let var = |value: f64, k: usize| match offset {
-            Some(o) => Dual::variable(value, o + k),
+            Some(_) => Dual::<5>::variable(value, k),
             None => Dual::constant(value),
         };
         let s = var(v.s, 0);
@@ -105,18 +106,47 @@ impl Station {
         let d = var(v.dstar, 2) - v.dw;
         let u = compressible_speed_d(var(v.u, 3), fc);
         let x = var(v.x, 4);
-        Self::from_primaries(x, u, t, d, s, v.dw, regime, fc, p)
+        Station::from_primaries(x, u, t, d, s, v.dw, regime, fc, p).embed(offset.unwrap_or(0))
     }
+}
 
+impl Station<5> {
+    /// The station with its derivatives placed at slots `offset..offset+5` of an interval.
+    fn embed(&self, offset: usize) -> Station {
+        let e = |d: Dual<5>| d.embed::<NVARS>(offset);
+        Station {
+            x: e(self.x),
+            u: e(self.u),
+            t: e(self.t),
+            d: e(self.d),
+            s: e(self.s),
+            dw: self.dw,
+            msq: e(self.msq),
+            rho: e(self.rho),
+            h: e(self.h),
+            hk: e(self.hk),
+            rt: e(self.rt),
+            hc: e(self.hc),
+            hs: e(self.hs),
+            us: e(self.us),
+            cq: e(self.cq),
+            cf: e(self.cf),
+            di: e(self.di),
+            de: e(self.de),
+        }
+    }
+}
+
+impl<const N: usize> Station<N> {
     /// Secondary variables from primaries given as derivative numbers (compressible `u`,
     /// `d` = δ* − wake gap): XFOIL BLKIN followed by BLVAR.
     #[allow(clippy::too_many_arguments)]
     pub fn from_primaries(
-        x: Dual,
-        u: Dual,
-        t: Dual,
-        d: Dual,
-        s: Dual,
+        x: Dual<N>,
+        u: Dual<N>,
+        t: Dual<N>,
+        d: Dual<N>,
+        s: Dual<N>,
         dw: f64,
         regime: Regime,
         fc: &FlowConstants,
@@ -128,7 +158,7 @@ impl Station {
         let tr = msq * (0.5 * fc.gm1) + 1.0;
         let rho = tr.powf(-1.0 / fc.gm1) * fc.rstbl;
         let herat = 1.0 - u2h * 0.5;
-        let visc = herat.powf(1.5) * (1.0 + fc.hvrat) / (herat + fc.hvrat) / fc.reybl;
+        let visc = herat * herat.sqrt() * (1.0 + fc.hvrat) / (herat + fc.hvrat) / fc.reybl;
         let h = d / t;
         let hk_raw = hkin_d(h, msq);
         let rt = rho * u * t / visc;
@@ -249,7 +279,7 @@ pub struct StationProperties {
 }
 
 impl StationProperties {
-    pub(crate) fn from_station(st: &Station) -> Self {
+    pub(crate) fn from_station<const N: usize>(st: &Station<N>) -> Self {
         Self {
             ue: st.u.v,
             mach_edge_sq: st.msq.v,

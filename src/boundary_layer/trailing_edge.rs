@@ -90,7 +90,7 @@ impl BlModel {
     /// CD = 2θ (Ue/V∞)^((5 + H)/2) with the Karman–Tsien compressible Ue and H = δ*/θ.
     pub fn squire_young(&self, last_wake: &StationVars) -> Result<SquireYoung, BlError> {
         validate(last_wake, Regime::Wake)?;
-        let t = Dual::variable(last_wake.theta, 1);
+        let t = Dual::<5>::variable(last_wake.theta, 1);
         let d = Dual::variable(last_wake.dstar, 2);
         let u = compressible_speed_d(Dual::variable(last_wake.u, 3), &self.flow);
         let h = d / t;

@@ -81,17 +81,12 @@ impl Primaries {
     }
 }
 
-/// Forced-transition fraction of the interval (XFOIL TRCHEK2 SFX): (ξ_f − ξ1)/(ξ2 − ξ1)
-/// if ξ_f < ξ2 (clipped at 0 for ξ_f ≤ ξ1), else 1.
+/// Forced-transition fraction of the interval (XFOIL TRCHEK2 SFX): (ξ_f − ξ1)/(ξ2 − ξ1) if
+/// ξ1 < ξ_f < ξ2, else 1 (a trip at or upstream of ξ1 is ignored: station 1 should already
+/// be turbulent; a trip at or beyond ξ2 does not act inside the interval).
 fn forced_fraction(s1: &Station, p2: &Primaries, xi_forced: Option<f64>) -> Dual {
     match xi_forced {
-        Some(xf) if xf < p2.x.v => {
-            if xf <= s1.x.v {
-                Dual::constant(0.0)
-            } else {
-                (xf - s1.x) / (p2.x - s1.x)
-            }
-        }
+        Some(xf) if xf > s1.x.v && xf < p2.x.v => (xf - s1.x) / (p2.x - s1.x),
         _ => Dual::constant(1.0),
     }
 }

@@ -228,6 +228,19 @@ pub fn parse_airfoil_text(
     Ok((airfoil, format))
 }
 
+/// Formats an airfoil as a Selig file: the name line, then one `x y` pair per line in
+/// XFOIL order, with 8 decimals (enough to round-trip paneled nodes to 1e-8 chord).
+pub fn to_selig_string(airfoil: &Airfoil) -> String {
+    let mut out = String::with_capacity(24 * (airfoil.x.len() + 1));
+    let name = airfoil.name.lines().next().unwrap_or("").trim();
+    out.push_str(if name.is_empty() { "airfoil" } else { name });
+    out.push('\n');
+    for (x, y) in airfoil.x.iter().zip(&airfoil.y) {
+        out.push_str(&format!("{x:12.8} {y:12.8}\n"));
+    }
+    out
+}
+
 /// Signed area enclosed by the contour closed through its end points (positive for
 /// counter-clockwise, i.e. XFOIL order), as in XFOIL `LOAD`.
 pub fn signed_area(x: &[f64], y: &[f64]) -> f64 {
@@ -281,7 +294,10 @@ pub fn validate_contour(
             });
         }
     }
-    if let Some((i, j, px, py)) = first_crossing(x, y) {
+    // A closed TE (end points equal up to round-off) makes the first and last segments
+    // neighbours, which must not count as a crossing.
+    let closed = (x[0] - x[n - 1]).hypot(y[0] - y[n - 1]) <= 1e-9 * scale;
+    if let Some((i, j, px, py)) = first_crossing(x, y, closed) {
         return Err(GeometryError::SelfIntersecting {
             file: file.to_string(),
             line_a: line_of[i],
@@ -295,8 +311,8 @@ pub fn validate_contour(
 
 /// First pair of non-adjacent polyline segments (i, i+1), (j, j+1), i < j, that cross
 /// properly (each segment's end points strictly on opposite sides of the other), with the
-/// crossing point.
-fn first_crossing(x: &[f64], y: &[f64]) -> Option<(usize, usize, f64, f64)> {
+/// crossing point. With `closed`, the first and last segments are treated as adjacent.
+fn first_crossing(x: &[f64], y: &[f64], closed: bool) -> Option<(usize, usize, f64, f64)> {
     let n = x.len();
     let orient = |a: usize, b: usize, c: usize| -> f64 {
         (x[b] - x[a]) * (y[c] - y[a]) - (y[b] - y[a]) * (x[c] - x[a])
@@ -305,6 +321,9 @@ fn first_crossing(x: &[f64], y: &[f64]) -> Option<(usize, usize, f64, f64)> {
         let (xmin_i, xmax_i) = (x[i].min(x[i + 1]), x[i].max(x[i + 1]));
         let (ymin_i, ymax_i) = (y[i].min(y[i + 1]), y[i].max(y[i + 1]));
         for j in i + 2..n - 1 {
+            if closed && i == 0 && j == n - 2 {
+                continue;
+            }
             if x[j].max(x[j + 1]) < xmin_i
                 || x[j].min(x[j + 1]) > xmax_i
                 || y[j].max(y[j + 1]) < ymin_i

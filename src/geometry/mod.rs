@@ -16,7 +16,7 @@ pub mod paneling;
 pub mod registry;
 pub mod spline;
 
-pub use coordinates::{parse_airfoil_text, read_airfoil_file, CoordinateFormat};
+pub use coordinates::{parse_airfoil_text, read_airfoil_file, to_selig_string, CoordinateFormat};
 pub use error::GeometryError;
 pub use naca::{naca, NacaOptions, NacaSection, TrailingEdge};
 pub use paneling::{PaneledAirfoil, PanelingParams, DEFAULT_PANEL_NODES};

@@ -242,11 +242,11 @@ impl NacaSection {
     /// Generates the contour in XFOIL order (upper TE → LE → lower TE) with
     /// `2·points_per_side − 1` points (XFOIL `NACA4`/`NACA5`).
     pub fn airfoil(&self, opts: &NacaOptions) -> Result<Airfoil, GeometryError> {
-        if opts.points_per_side < 5 {
+        if !(5..=100_000).contains(&opts.points_per_side) {
             return Err(GeometryError::NacaDesignation {
                 designation: self.name(),
                 reason: format!(
-                    "points_per_side must be at least 5 (got {})",
+                    "points_per_side must be between 5 and 100000 (got {})",
                     opts.points_per_side
                 ),
             });

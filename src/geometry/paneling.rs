@@ -454,8 +454,8 @@ fn check_params(p: &PanelingParams) -> Result<(), GeometryError> {
     if !(p.ctrrat.is_finite() && p.ctrrat >= 0.0) {
         return bad("ctrrat must be finite and >= 0");
     }
-    if p.ipfac == 0 {
-        return bad("ipfac must be >= 1");
+    if !(1..=100).contains(&p.ipfac) {
+        return bad("ipfac must be between 1 and 100");
     }
     if !(p.te_panel_ratio.is_finite() && p.te_panel_ratio > 0.5) {
         return bad("te_panel_ratio must be > 0.5");

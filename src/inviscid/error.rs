@@ -27,6 +27,9 @@ pub enum InviscidError {
     /// Two consecutive nodes coincide, giving a zero-length panel.
     #[error("airfoil node {0} coincides with the next node (zero-length panel)")]
     DuplicateNode(usize),
+    /// The contour runs clockwise (e.g. lower surface first); XFOIL order is counter-clockwise.
+    #[error("airfoil contour is clockwise; expected XFOIL order (upper TE -> LE -> lower TE)")]
+    ClockwiseContour,
     /// The influence matrix could not be factorised into a usable solution.
     #[error("panel influence matrix is singular (self-intersecting or degenerate contour?)")]
     SingularSystem,

@@ -2,6 +2,18 @@
 //! for α = 0° and 90°, source-panel influence for the viscous coupling, Karman–Tsien
 //! compressibility.
 //!
+//! Conventions (XFOIL's): nodes in XFOIL order (upper TE → LE → lower TE, counter-clockwise),
+//! chord ≈ 1, speeds per V∞. The nodal vorticity γ equals the signed surface speed: positive on
+//! the upper surface, negative on the lower; wake speeds continue the lower-surface sign.
+//! Sources σ (per V∞·c) relate to the boundary-layer mass defect m = Ue·δ* by σ = −m on the
+//! upper surface and σ = +m on the lower surface and wake; the speed at every airfoil and wake
+//! node is q = q_inv(α) + D·σ with D from [`SourceInfluence`].
+//!
+//! Files: [`panels`] (geometry and PSILIN/PSWLIN kernels), [`system`] (matrix, Kutta/sharp-TE
+//! rows, LU, unit solutions), [`wake`] (XYWAKE), [`source_influence`] (QDCALC),
+//! [`compressibility`] (Karman–Tsien), [`forces`] (CLCALC), [`simd_state`] (vector-register
+//! hygiene around faer calls), [`error`].
+//!
 //! Typical use:
 //! ```no_run
 //! # use polargen::geometry::Airfoil;
@@ -18,6 +30,7 @@ pub mod compressibility;
 pub mod error;
 pub mod forces;
 pub mod panels;
+pub mod simd_state;
 pub mod source_influence;
 pub mod system;
 pub mod wake;
@@ -26,6 +39,7 @@ pub use compressibility::KarmanTsien;
 pub use error::InviscidError;
 pub use forces::{integrate_pressure, SectionForces};
 pub use panels::{PanelGeometry, PanelParams, TrailingEdge};
+pub use simd_state::reset_simd_state;
 pub use source_influence::{speeds_with_sources, SourceInfluence};
 pub use system::{InviscidSolution, PanelSystem};
 pub use wake::{Wake, WakeParams};

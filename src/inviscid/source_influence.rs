@@ -26,6 +26,7 @@ use super::panels::{
     airfoil_influence, airfoil_source_value, wake_source_influence, wake_source_value, FieldPoint,
     Influence, Probe,
 };
+use super::simd_state::reset_simd_state;
 use super::system::PanelSystem;
 use super::wake::{dot, Wake};
 
@@ -48,12 +49,8 @@ impl SourceInfluence {
         let n = g.len();
         let nw = wake.len();
         let nt = n + nw;
+        reset_simd_state();
         let mut d = Mat::<f64>::zeros(nt, nt);
-
-        // Airfoil rows, airfoil sources: cached dγ/dσ.
-        d.as_mut()
-            .submatrix_mut(0, 0, n, n)
-            .copy_from(system.airfoil_source_sensitivity());
 
         // Airfoil rows, wake sources: −dψ/dσ_w on each node row, back-substituted.
         let mut bw = Mat::<f64>::zeros(n + 1, nw);
@@ -80,11 +77,6 @@ impl SourceInfluence {
                 bw[(i, j)] = -psi_w[j];
             }
         }
-        system.back_substitute(bw.as_mut());
-        d.as_mut()
-            .submatrix_mut(0, n, n, nw)
-            .copy_from(bw.as_ref().subrows(0, n));
-
         // Wake rows: direct source speeds, and dq/dγ for the chain through the airfoil.
         let mut c = Mat::<f64>::zeros(nw, n);
         let mut inf = Influence::new(n);
@@ -113,6 +105,14 @@ impl SourceInfluence {
                 d[(n + iw, n + j)] = qn_w[j];
             }
         }
+        // Dense linear algebra last: airfoil rows of D from the factorised system.
+        system.back_substitute(bw.as_mut());
+        d.as_mut()
+            .submatrix_mut(0, 0, n, n)
+            .copy_from(system.airfoil_source_sensitivity());
+        d.as_mut()
+            .submatrix_mut(0, n, n, nw)
+            .copy_from(bw.as_ref().subrows(0, n));
         let top = d.as_ref().subrows(0, n).to_owned();
         matmul(
             d.as_mut().subrows_mut(n, nw),
@@ -122,6 +122,7 @@ impl SourceInfluence {
             1.0,
             Par::Seq,
         );
+        reset_simd_state();
         // First wake node carries the TE speed.
         for j in 0..nt {
             d[(n, j)] = d[(n - 1, j)];
@@ -172,6 +173,7 @@ pub fn speeds_with_sources(
             expected: n + nw,
         });
     }
+    reset_simd_state();
     let (sig_a, sig_w) = sigma.split_at(n);
     let mut extra = vec![0.0; n];
     let last_row = if g.te.sharp { n - 1 } else { n };
