@@ -77,7 +77,7 @@ pub struct PanelModel {
 /// One boundary-layer station of a solution, for plots and debugging.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BlStation {
-    /// ξ: arc length from the stagnation point [chord].
+    /// ξ: arc length from the stagnation point, in chords.
     pub s: f64,
     /// x coordinate of the station.
     pub x: f64,
