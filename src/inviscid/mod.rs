@@ -11,7 +11,8 @@
 //!
 //! Files: [`panels`] (geometry and PSILIN/PSWLIN kernels), [`system`] (matrix, Kutta/sharp-TE
 //! rows, LU, unit solutions), [`wake`] (XYWAKE), [`source_influence`] (QDCALC),
-//! [`compressibility`] (Karman–Tsien), [`forces`] (CLCALC), [`error`].
+//! [`compressibility`] (Karman–Tsien), [`forces`] (CLCALC), [`simd_state`] (vector-register
+//! hygiene around faer calls), [`error`].
 //!
 //! Typical use:
 //! ```no_run
@@ -29,6 +30,7 @@ pub mod compressibility;
 pub mod error;
 pub mod forces;
 pub mod panels;
+pub mod simd_state;
 pub mod source_influence;
 pub mod system;
 pub mod wake;
@@ -37,6 +39,7 @@ pub use compressibility::KarmanTsien;
 pub use error::InviscidError;
 pub use forces::{integrate_pressure, SectionForces};
 pub use panels::{PanelGeometry, PanelParams, TrailingEdge};
+pub use simd_state::reset_simd_state;
 pub use source_influence::{speeds_with_sources, SourceInfluence};
 pub use system::{InviscidSolution, PanelSystem};
 pub use wake::{Wake, WakeParams};

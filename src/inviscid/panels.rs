@@ -348,6 +348,10 @@ struct PanelFrame {
     g2: f64,
     t1: f64,
     t2: f64,
+    /// Panel unit tangent x.
+    sx: f64,
+    /// Panel unit tangent y.
+    sy: f64,
     /// d(x1)/dn = d(x2)/dn at the field point.
     xi: f64,
     /// d(yy)/dn at the field point.
@@ -436,6 +440,8 @@ impl PanelFrame {
             g2,
             t1,
             t2,
+            sx,
+            sy,
             xi: sx * p.nx + sy * p.ny,
             yyi: sx * p.ny - sy * p.nx,
             sgn,
@@ -447,6 +453,20 @@ impl PanelFrame {
     /// ∂ψ_dif/∂n); the panel contributes QOPI·(ψ_sum·(γa+γb) + ψ_dif·(γb−γa)).
     #[inline]
     fn vortex(&self) -> (f64, f64, f64, f64) {
+        let v = self.vortex_terms();
+        (
+            v[0],
+            v[1],
+            v[2] * self.xi + v[3] * self.yyi,
+            v[4] * self.xi + v[5] * self.yyi,
+        )
+    }
+
+    /// Vortex-panel integrals and their partial derivatives with respect to the panel-frame
+    /// coordinates of the field point: [ψ_sum, ψ_dif, ∂ψ_sum/∂x, ∂ψ_sum/∂y, ∂ψ_dif/∂x,
+    /// ∂ψ_dif/∂y] (PSILIN PSIS, PSID, PSX1+PSX2, PSYY, PDX1+PDX2, PDYY).
+    #[inline]
+    fn vortex_terms(&self) -> [f64; 6] {
         let (x1, x2, yy) = (self.x1, self.x2, self.yy);
         let (g1, g2, t1, t2) = (self.g1, self.g2, self.t1, self.t2);
         let dxinv = 1.0 / (x1 - x2);
@@ -459,22 +479,39 @@ impl PanelFrame {
         let pdx1 = ((x1 + x2) * psx1 + psis - x1 * g1 - psid) * dxinv;
         let pdx2 = ((x1 + x2) * psx2 + psis + x2 * g2 + psid) * dxinv;
         let pdyy = ((x1 + x2) * psyy - yy * (g1 - g2)) * dxinv;
-        let psni = (psx1 + psx2) * self.xi + psyy * self.yyi;
-        let pdni = (pdx1 + pdx2) * self.xi + pdyy * self.yyi;
-        (psis, psid, psni, pdni)
+        [psis, psid, psx1 + psx2, psyy, pdx1 + pdx2, pdyy]
     }
 
     /// Constant-strength source and vortex integrals of the TE panel (PSILIN label 11):
     /// returns (ψ_σ, ψ_γ, ∂ψ_σ/∂n, ∂ψ_γ/∂n), to be weighted by HOPI·σ_TE and HOPI·γ_TE.
     #[inline]
     fn te_panel(&self, apan: f64) -> (f64, f64, f64, f64) {
+        let v = self.te_terms(apan);
+        (
+            v[0],
+            v[1],
+            v[2] * self.xi + v[3] * self.yyi,
+            v[4] * self.xi + v[5] * self.yyi,
+        )
+    }
+
+    /// TE-panel integrals and partial derivatives in the panel frame: [ψ_σ, ψ_γ, ∂ψ_σ/∂x,
+    /// ∂ψ_σ/∂y, ∂ψ_γ/∂x, ∂ψ_γ/∂y] (PSILIN PSIG, PGAM, PSIGX1+PSIGX2, PSIGYY, PGAMX1+PGAMX2,
+    /// PGAMYY).
+    #[inline]
+    fn te_terms(&self, apan: f64) -> [f64; 6] {
         let (x1, x2, yy) = (self.x1, self.x2, self.yy);
         let (g1, g2, t1, t2) = (self.g1, self.g2, self.t1, self.t2);
         let psig = 0.5 * yy * (g1 - g2) + x2 * (t2 - apan) - x1 * (t1 - apan);
         let pgam = 0.5 * x1 * g1 - 0.5 * x2 * g2 + x2 - x1 + yy * (t1 - t2);
-        let psigni = (-(t1 - apan) + (t2 - apan)) * self.xi + 0.5 * (g1 - g2) * self.yyi;
-        let pgamni = (0.5 * g1 - 0.5 * g2) * self.xi + (t1 - t2) * self.yyi;
-        (psig, pgam, psigni, pgamni)
+        [
+            psig,
+            pgam,
+            -(t1 - apan) + (t2 - apan),
+            0.5 * (g1 - g2),
+            0.5 * g1 - 0.5 * g2,
+            t1 - t2,
+        ]
     }
 
     /// Linear-source panel split at its midpoint (PSILIN/PSWLIN "SIGLIN" block). Returns the
@@ -684,6 +721,38 @@ pub fn airfoil_influence(g: &PanelGeometry, p: &Probe, with_sources: bool, out: 
         out.psi_gamma[0] += dpsi;
         out.qn_gamma[n - 1] -= dqn;
         out.qn_gamma[0] += dqn;
+    }
+}
+
+/// Gradient of the airfoil-vorticity stream function at probe `p`: `gx[j] = d(∂ψ/∂x)/dγ_j`,
+/// `gy[j] = d(∂ψ/∂y)/dγ_j` (PSILIN's dQ/dγ for the normals (1, 0) and (0, 1), evaluated in one
+/// pass; ∂ψ/∂n for any normal n is `n_x·gx + n_y·gy`). Freestream excluded.
+pub fn airfoil_vortex_gradient(g: &PanelGeometry, p: &Probe, gx: &mut [f64], gy: &mut [f64]) {
+    let n = g.len();
+    gx.fill(0.0);
+    gy.fill(0.0);
+    for jo in 0..n - 1 {
+        let f = airfoil_frame(g, p, jo);
+        let v = f.vortex_terms();
+        // (1, 0): xi = sx, yyi = −sy;  (0, 1): xi = sy, yyi = sx.
+        for (out, xi, yyi) in [(&mut *gx, f.sx, -f.sy), (&mut *gy, f.sy, f.sx)] {
+            let psni = v[2] * xi + v[3] * yyi;
+            let pdni = v[4] * xi + v[5] * yyi;
+            out[jo] += QOPI * (psni - pdni);
+            out[jo + 1] += QOPI * (psni + pdni);
+        }
+    }
+    if !g.te.closed {
+        let f = airfoil_frame(g, p, n - 1);
+        let v = f.te_terms(g.apanel[n - 1]);
+        let (scs, sds) = (g.te.scs, g.te.sds);
+        for (out, xi, yyi) in [(&mut *gx, f.sx, -f.sy), (&mut *gy, f.sy, f.sx)] {
+            let psigni = v[2] * xi + v[3] * yyi;
+            let pgamni = v[4] * xi + v[5] * yyi;
+            let dqn = HOPI * (psigni * 0.5 * scs - pgamni * 0.5 * sds);
+            out[n - 1] -= dqn;
+            out[0] += dqn;
+        }
     }
 }
 

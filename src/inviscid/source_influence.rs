@@ -26,6 +26,7 @@ use super::panels::{
     airfoil_influence, airfoil_source_value, wake_source_influence, wake_source_value, FieldPoint,
     Influence, Probe,
 };
+use super::simd_state::reset_simd_state;
 use super::system::PanelSystem;
 use super::wake::{dot, Wake};
 
@@ -48,6 +49,7 @@ impl SourceInfluence {
         let n = g.len();
         let nw = wake.len();
         let nt = n + nw;
+        reset_simd_state();
         let mut d = Mat::<f64>::zeros(nt, nt);
 
         // Airfoil rows, wake sources: −dψ/dσ_w on each node row, back-substituted.
@@ -120,6 +122,7 @@ impl SourceInfluence {
             1.0,
             Par::Seq,
         );
+        reset_simd_state();
         // First wake node carries the TE speed.
         for j in 0..nt {
             d[(n, j)] = d[(n - 1, j)];
@@ -170,6 +173,7 @@ pub fn speeds_with_sources(
             expected: n + nw,
         });
     }
+    reset_simd_state();
     let (sig_a, sig_w) = sigma.split_at(n);
     let mut extra = vec![0.0; n];
     let last_row = if g.te.sharp { n - 1 } else { n };

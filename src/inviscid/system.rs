@@ -21,6 +21,7 @@ use super::panels::{
     airfoil_influence, airfoil_source_value, FieldPoint, Influence, PanelGeometry, PanelParams,
     Probe,
 };
+use super::simd_state::reset_simd_state;
 use crate::geometry::Airfoil;
 
 /// A factorised panel system for one paneled airfoil, holding the unit solutions.
@@ -78,6 +79,7 @@ impl PanelSystem {
     /// As [`PanelSystem::new`] with explicit parameters.
     pub fn with_params(airfoil: &Airfoil, params: PanelParams) -> Result<Self, InviscidError> {
         let geom = PanelGeometry::new(&airfoil.x, &airfoil.y, &params)?;
+        reset_simd_state();
         let n = geom.len();
         let mut a = Mat::<f64>::zeros(n + 1, n + 1);
         let mut source_rhs = Mat::<f64>::zeros(n + 1, n);
@@ -141,6 +143,7 @@ impl PanelSystem {
                 *gi = rhs[(i, k)];
             }
         }
+        reset_simd_state();
         let psi0_unit = [rhs[(n, 0)], rhs[(n, 1)]];
         let finite = gamma_unit.iter().flatten().all(|v| v.is_finite())
             && psi0_unit.iter().all(|v| v.is_finite());
@@ -284,6 +287,7 @@ impl PanelSystem {
     /// place; row N of the result is ψ₀.
     pub fn back_substitute(&self, rhs: faer::MatMut<'_, f64>) {
         self.lu.solve_in_place(rhs);
+        reset_simd_state();
     }
 
     /// Sensitivity of the nodal vorticity (surface speed) to the airfoil nodal sources,
@@ -295,6 +299,7 @@ impl PanelSystem {
                 let n = self.n_nodes();
                 let mut b = self.source_rhs.clone();
                 self.lu.solve_in_place(b.as_mut());
+                reset_simd_state();
                 b.subrows(0, n).to_owned()
             })
             .as_ref()
@@ -327,6 +332,7 @@ impl PanelSystem {
         }
         let (sa, ca) = alpha_deg.to_radians().sin_cos();
         let g = &self.geom;
+        reset_simd_state();
         let mut rhs = Mat::<f64>::zeros(n + 1, 1);
         for i in 0..n {
             let probe = Probe {
@@ -351,6 +357,7 @@ impl PanelSystem {
             rhs[(n - 1, 0)] = -(ca * cb + sa * sb) - q_m - extra_psi[n - 1];
         }
         self.lu.solve_in_place(rhs.as_mut());
+        reset_simd_state();
         Ok((0..n).map(|i| rhs[(i, 0)]).collect())
     }
 }

@@ -3,7 +3,8 @@
 //! xutils.f SETEXP), and the inviscid wake speeds of the unit solutions (XFOIL QWCALC).
 
 use super::error::InviscidError;
-use super::panels::{airfoil_influence, FieldPoint, Influence, Probe};
+use super::panels::{airfoil_vortex_gradient, FieldPoint, Probe};
+use super::simd_state::reset_simd_state;
 use super::system::PanelSystem;
 
 /// Tunable constants of the wake geometry (XFOIL defaults).
@@ -94,6 +95,7 @@ impl Wake {
         let ds1 = 0.5 * (g.s[1] - g.s[0] + g.s[n - 1] - g.s[n - 2]);
         let spacing = geometric_spacing(ds1, params.length * g.chord, nw)?;
 
+        reset_simd_state();
         let gamma = system.gamma(alpha_deg);
         let (sa, ca) = alpha_deg.to_radians().sin_cos();
         let mut x = vec![0.0; nw];
@@ -113,7 +115,13 @@ impl Wake {
         y[0] = g.te.y + params.te_offset * nx[0];
         s[0] = g.s[n - 1];
 
-        let mut inf = Influence::new(n);
+        // One gradient evaluation per node gives the streamline direction for the next node
+        // and the unit-solution tangential speeds (QWCALC) at this node.
+        let mut qinv_unit = [vec![0.0; nw], vec![0.0; nw]];
+        qinv_unit[0][0] = system.gamma_unit(0)[n - 1];
+        qinv_unit[1][0] = system.gamma_unit(1)[n - 1];
+        let mut gx = vec![0.0; n];
+        let mut gy = vec![0.0; n];
         for i in 0..nw {
             if i > 0 {
                 let ds = spacing[i] - spacing[i - 1];
@@ -121,38 +129,6 @@ impl Wake {
                 y[i] = y[i - 1] + ds * nx[i];
                 s[i] = s[i - 1] + ds;
             }
-            if i + 1 == nw {
-                apanel[i] = apanel[i - 1];
-                break;
-            }
-            // ∇ψ at node i from the airfoil vorticity and the freestream ψ∞ = y cos α − x sin α.
-            let mut grad = [0.0; 2];
-            for (k, (ex, ey)) in [(1.0, 0.0), (0.0, 1.0)].into_iter().enumerate() {
-                let probe = Probe {
-                    kind: FieldPoint::Wake(i),
-                    x: x[i],
-                    y: y[i],
-                    nx: ex,
-                    ny: ey,
-                };
-                airfoil_influence(g, &probe, false, &mut inf);
-                let free = if k == 0 { -sa } else { ca };
-                grad[k] = dot(&inf.qn_gamma, &gamma) + free;
-            }
-            let gmod = grad[0].hypot(grad[1]);
-            if !(gmod > 0.0 && gmod.is_finite()) {
-                return Err(InviscidError::WakeStagnation(i));
-            }
-            nx[i + 1] = -grad[0] / gmod;
-            ny[i + 1] = -grad[1] / gmod;
-            apanel[i] = grad[1].atan2(grad[0]);
-        }
-
-        // QWCALC: unit-solution tangential speeds on the wake.
-        let mut qinv_unit = [vec![0.0; nw], vec![0.0; nw]];
-        qinv_unit[0][0] = system.gamma_unit(0)[n - 1];
-        qinv_unit[1][0] = system.gamma_unit(1)[n - 1];
-        for i in 1..nw {
             let probe = Probe {
                 kind: FieldPoint::Wake(i),
                 x: x[i],
@@ -160,9 +136,27 @@ impl Wake {
                 nx: nx[i],
                 ny: ny[i],
             };
-            airfoil_influence(g, &probe, false, &mut inf);
-            qinv_unit[0][i] = dot(&inf.qn_gamma, system.gamma_unit(0)) + ny[i];
-            qinv_unit[1][i] = dot(&inf.qn_gamma, system.gamma_unit(1)) - nx[i];
+            airfoil_vortex_gradient(g, &probe, &mut gx, &mut gy);
+            if i > 0 {
+                for (k, q) in qinv_unit.iter_mut().enumerate() {
+                    let gu = system.gamma_unit(k);
+                    let free = if k == 0 { ny[i] } else { -nx[i] };
+                    q[i] = nx[i] * dot(&gx, gu) + ny[i] * dot(&gy, gu) + free;
+                }
+            }
+            if i + 1 == nw {
+                apanel[i] = apanel[i - 1];
+                break;
+            }
+            // ∇ψ from the airfoil vorticity and the freestream ψ∞ = y cos α − x sin α.
+            let grad = [dot(&gx, &gamma) - sa, dot(&gy, &gamma) + ca];
+            let gmod = grad[0].hypot(grad[1]);
+            if !(gmod > 0.0 && gmod.is_finite()) {
+                return Err(InviscidError::WakeStagnation(i));
+            }
+            nx[i + 1] = -grad[0] / gmod;
+            ny[i + 1] = -grad[1] / gmod;
+            apanel[i] = grad[1].atan2(grad[0]);
         }
 
         Ok(Self {

@@ -15,17 +15,17 @@ use super::error::ViscousError;
 /// Primary variables of one station (XFOIL BLPRV arguments).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct StationVars {
-    /// ξ: arc length from the stagnation point [chord].
+    /// ξ: arc length from the stagnation point, in chords.
     pub x: f64,
     /// Incompressible edge speed Ue/V∞ (XFOIL UEDG).
     pub u: f64,
-    /// Momentum thickness θ [chord].
+    /// Momentum thickness θ, in chords.
     pub theta: f64,
-    /// Total displacement thickness δ* = m/Ue including the wake gap [chord].
+    /// Total displacement thickness δ* = m/Ue including the wake gap, in chords.
     pub dstar: f64,
     /// √Cτ (turbulent/wake) or amplification N (laminar).
     pub s: f64,
-    /// Wake gap thickness (0 on the airfoil) [chord].
+    /// Wake gap thickness (0 on the airfoil), in chords.
     pub dw: f64,
 }
 

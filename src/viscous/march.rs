@@ -4,6 +4,7 @@
 //! Drela 1989 §4.2).
 
 use super::bl_model::{BoundaryLayerModel, IntervalEquations, Regime, StationVars};
+use super::newton::CachedEquations;
 use super::state::BlState;
 use super::stations::{StationKind, StationLayout, Surface};
 
@@ -317,7 +318,8 @@ pub fn remarch_mixed(
     xi_forced: [Option<f64>; 2],
     ante: f64,
     params: &MarchParams,
-) {
+) -> Vec<Option<CachedEquations>> {
+    let mut cache = vec![None; layout.len()];
     let old_turbulent = state.turbulent.clone();
     let mut order: Vec<usize> = layout.range(Surface::Upper).collect();
     order.extend(layout.range(Surface::Lower));
@@ -348,8 +350,14 @@ pub fn remarch_mixed(
         let mut hkref = 0.0;
         let mut converged = false;
         let mut last_dmax = f64::INFINITY;
+        // Equations of the last local iteration, the variables they were evaluated at
+        // (s, θ, δ*, u) and whether the regime changed in that iteration.
+        let mut last: Option<(CachedEquations, [f64; 4], bool)> = None;
         for itbl in 0..params.max_iterations {
             let s_now = if turbulent { cti } else { n_amp };
+            let was_turbulent_now = turbulent;
+            let mut junction = None;
+            let mut tr_info = None;
             let v2 = StationVars {
                 x: st.xi,
                 u,
@@ -367,13 +375,14 @@ pub fn remarch_mixed(
                 StationKind::WakeStart => {
                     let (ku, kl) = (layout.upper_te(), layout.lower_te());
                     let (vu, vl) = (state.vars(layout, ku), state.vars(layout, kl));
-                    model
-                        .junction(&vu, &vl, &v2, ante)
-                        .map(|j| IntervalEquations {
+                    model.junction(&vu, &vl, &v2, ante).map(|j| {
+                        junction = Some(j);
+                        IntervalEquations {
                             res: j.res,
                             d1: [[0.0; 5]; 3],
                             d2: j.d_wake,
-                        })
+                        }
+                    })
                 }
                 StationKind::Interval => {
                     let p = st.upstream.unwrap_or(k - 1);
@@ -387,6 +396,7 @@ pub fn remarch_mixed(
                         let v2t = StationVars { s: cti, ..v2 };
                         match model.transition(&v1, &v2t, xi_forced[side]) {
                             Ok(Some(t)) => {
+                                tr_info = Some((t.xi_transition, t.forced, cti));
                                 if !transitioned {
                                     transitioned = true;
                                     turbulent = true;
@@ -412,7 +422,19 @@ pub fn remarch_mixed(
                     }
                 }
             };
-            let Ok(eq) = eq else { break };
+            let Ok(eq) = eq else {
+                last = None;
+                break;
+            };
+            let s_eval = match tr_info {
+                Some((_, _, c)) => c,
+                None => s_now,
+            };
+            let cached = match junction {
+                Some(j) => CachedEquations::Junction(j),
+                None => CachedEquations::Interval(eq, tr_info.map(|(x, f, _)| (x, f))),
+            };
+            last = Some((cached, [s_eval, th, ds, u], turbulent != was_turbulent_now));
             let v2 = StationVars {
                 s: if turbulent { cti } else { n_amp },
                 ..v2
@@ -502,6 +524,26 @@ pub fn remarch_mixed(
             }
         }
         let sane = th > 0.0 && u > 0.0 && ds.is_finite() && th.is_finite() && u.is_finite();
+        if let (true, Some((eqs, at, false))) = (converged && sane, last) {
+            // Residuals moved linearly to the final local state.
+            let s_final = if turbulent { cti } else { n_amp };
+            let delta = [s_final - at[0], th - at[1], ds - at[2], u - at[3]];
+            let shift = |res: &mut [f64; 3], d: &[[f64; 5]; 3]| {
+                for (r, row) in res.iter_mut().zip(d) {
+                    *r += row[..4].iter().zip(&delta).map(|(a, b)| a * b).sum::<f64>();
+                }
+            };
+            cache[k] = Some(match eqs {
+                CachedEquations::Interval(mut e, tr) => {
+                    shift(&mut e.res, &e.d2);
+                    CachedEquations::Interval(e, tr)
+                }
+                CachedEquations::Junction(mut j) => {
+                    shift(&mut j.res, &j.d_wake);
+                    CachedEquations::Junction(j)
+                }
+            });
+        }
         if !converged && (!sane || last_dmax > 0.1) && st.kind == StationKind::Interval {
             // Garbage: extrapolate from upstream (XFOIL MRCHDU fallback).
             let p = st.upstream.unwrap_or(k.saturating_sub(1));
@@ -531,4 +573,5 @@ pub fn remarch_mixed(
         state.mass[k] = ds * u;
         state.turbulent[k] = turbulent || wake;
     }
+    cache
 }

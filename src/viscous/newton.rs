@@ -8,7 +8,9 @@
 //! differ from Ue_inv + D·m (after an inverse march or a relaxed step); that mismatch e_j enters
 //! the right-hand side like XFOIL's DUE terms.
 
-use super::bl_model::{BoundaryLayerModel, Regime, StationVars};
+use super::bl_model::{
+    BoundaryLayerModel, IntervalEquations, JunctionEquations, Regime, StationVars,
+};
 use super::block_solver::BlockSystem;
 use super::error::ViscousError;
 use super::state::BlState;
@@ -38,6 +40,23 @@ pub struct Coupling<'a> {
     pub xi_forced: [Option<f64>; 2],
     /// Trailing-edge gap normal to the TE bisector (XFOIL ANTE).
     pub ante: f64,
+    /// The regimes stored in the state were just decided by the mixed-mode march on the same
+    /// state, so only the interval ending at the first turbulent station is checked for
+    /// transition (the others are known not to transition).
+    pub regimes_known: bool,
+    /// Equations of each station left by the mixed-mode march, linearly corrected to the final
+    /// state of the march (None: evaluate here).
+    pub cached: Option<&'a [Option<CachedEquations>]>,
+}
+
+/// Station equations computed by the mixed-mode march and reused by the assembly.
+#[derive(Clone, Copy, Debug)]
+pub enum CachedEquations {
+    /// Similarity or interval equations (d1: upstream station, d2: this station), with the
+    /// transition point (ξ, forced) if the interval transitions.
+    Interval(IntervalEquations, Option<(f64, bool)>),
+    /// Trailing-edge junction of the first wake station.
+    Junction(JunctionEquations),
 }
 
 impl Coupling<'_> {
@@ -152,6 +171,39 @@ pub fn assemble(
         let mut turbulent = false;
         for k in range {
             let st = layout.stations[k];
+            if let Some(CachedEquations::Interval(e, tr)) =
+                coupling.cached.and_then(|c| c[k].as_ref())
+            {
+                if st.kind == StationKind::Similarity {
+                    add_terms(
+                        &mut sys,
+                        k,
+                        k,
+                        &e.combined_jacobian(),
+                        state,
+                        coupling,
+                        &mismatch,
+                    );
+                } else {
+                    let p = st.upstream.unwrap_or(k - 1);
+                    sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
+                    add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
+                    add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
+                }
+                if let Some((xi, forced)) = tr {
+                    turbulent = true;
+                    transition[side] = Some(TransitionPoint {
+                        xi: *xi,
+                        station: k,
+                        forced: *forced,
+                    });
+                }
+                for r in 0..3 {
+                    sys.rhs[k][r] -= e.res[r];
+                }
+                sumsq += e.res.iter().map(|r| r * r).sum::<f64>();
+                continue;
+            }
             let eq;
             if st.kind == StationKind::Similarity {
                 state.turbulent[k] = false;
@@ -168,9 +220,13 @@ pub fn assemble(
                     if !state.turbulent[k] {
                         v2.s = s_turb_ref;
                     }
-                    let tr = model
-                        .transition(&v1, &v2, coupling.xi_forced[side])
-                        .map_err(at(k))?;
+                    let tr = if coupling.regimes_known && !state.turbulent[k] {
+                        None
+                    } else {
+                        model
+                            .transition(&v1, &v2, coupling.xi_forced[side])
+                            .map_err(at(k))?
+                    };
                     match tr {
                         Some(t) => {
                             if !state.turbulent[k] {
@@ -226,6 +282,33 @@ pub fn assemble(
     for k in layout.range(Surface::Wake) {
         state.turbulent[k] = true;
         let st = layout.stations[k];
+        match coupling.cached.and_then(|c| c[k].as_ref()) {
+            Some(CachedEquations::Junction(e)) => {
+                let (ku, kl) = (layout.upper_te(), layout.lower_te());
+                sys.upstream[k] = Some((kl, [[0.0; 3]; 3]));
+                sys.upstream2[k] = Some((ku, [[0.0; 3]; 3]));
+                add_terms(&mut sys, k, kl, &e.d_lower, state, coupling, &mismatch);
+                add_terms(&mut sys, k, ku, &e.d_upper, state, coupling, &mismatch);
+                add_terms(&mut sys, k, k, &e.d_wake, state, coupling, &mismatch);
+                for r in 0..3 {
+                    sys.rhs[k][r] -= e.res[r];
+                }
+                sumsq += e.res.iter().map(|r| r * r).sum::<f64>();
+                continue;
+            }
+            Some(CachedEquations::Interval(e, _)) => {
+                let p = st.upstream.unwrap_or(k - 1);
+                sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
+                add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
+                add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
+                for r in 0..3 {
+                    sys.rhs[k][r] -= e.res[r];
+                }
+                sumsq += e.res.iter().map(|r| r * r).sum::<f64>();
+                continue;
+            }
+            None => {}
+        }
         let eq;
         if st.kind == StationKind::WakeStart {
             let (ku, kl) = (layout.upper_te(), layout.lower_te());

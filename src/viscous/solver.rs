@@ -37,6 +37,9 @@ pub struct ViscousParams {
     pub limits: UpdateLimits,
     /// Controls of the initial march (XFOIL MRCHUE).
     pub march: MarchParams,
+    /// The mixed-mode re-march before each Newton iteration (XFOIL MRCHDU) is skipped once the
+    /// RMS relative Newton change is below this value (0 = always re-march, as XFOIL).
+    pub remarch_below: f64,
 }
 
 impl Default for ViscousParams {
@@ -51,6 +54,7 @@ impl Default for ViscousParams {
             tolerance: 1e-4,
             limits: UpdateLimits::default(),
             march: MarchParams::default(),
+            remarch_below: 0.0,
         }
     }
 }
@@ -73,18 +77,23 @@ pub struct PanelModel {
 /// One boundary-layer station of a solution, for plots and debugging.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BlStation {
-    /// ξ: arc length from the stagnation point [chord].
+    /// ξ: arc length from the stagnation point, in chords.
     pub s: f64,
     /// x coordinate of the station.
     pub x: f64,
+    /// y coordinate of the station.
+    pub y: f64,
     /// Edge speed Ue/V∞ (incompressible, as the panel method sees it).
     pub ue: f64,
     /// Displacement thickness δ* (wake: including the wake gap).
     pub dstar: f64,
     /// Momentum thickness θ.
     pub theta: f64,
-    /// Skin-friction coefficient (0 in the wake).
+    /// Skin-friction coefficient based on the edge dynamic pressure (0 in the wake).
     pub cf: f64,
+    /// Skin friction referred to the free-stream dynamic pressure, τw/(½ρ∞V∞²) = Cf·ρe·Ue,c²
+    /// (the "Cf" column of XFOIL's DUMP).
+    pub cf_inf: f64,
     /// Shape factor H = δ*/θ.
     pub h: f64,
     /// Kinematic shape factor Hk.
@@ -381,21 +390,30 @@ impl ViscousSolver {
         let mut residual = f64::INFINITY;
         let mut transition = [None, None];
         for iter in 1..=self.params.max_iterations {
+            // Mixed-mode re-march (XFOIL MRCHDU) while the iteration is still far from
+            // converged; close to convergence the Newton steps alone are quadratic.
+            let remarch = residual > self.params.remarch_below;
+            let cache = if remarch {
+                remarch_mixed(
+                    &self.bl,
+                    &layout,
+                    &mut state,
+                    xi_forced,
+                    self.ante,
+                    &self.params.march,
+                )
+            } else {
+                Vec::new()
+            };
             let coupling = Coupling {
                 layout: &layout,
                 ue_inv: &ue_inv,
                 dv: &dv,
                 xi_forced,
                 ante: self.ante,
+                regimes_known: remarch,
+                cached: remarch.then_some(cache.as_slice()),
             };
-            remarch_mixed(
-                &self.bl,
-                &layout,
-                &mut state,
-                xi_forced,
-                self.ante,
-                &self.params.march,
-            );
             let asm = assemble(&self.bl, &coupling, &mut state)?;
             transition = [
                 asm.transition[0].map(|t| t.xi),
@@ -474,10 +492,12 @@ impl ViscousSolver {
                     BlStation {
                         s: st.xi,
                         x: g.x[st.node],
+                        y: g.y[st.node],
                         ue: a.state.ue[k],
                         dstar: v.dstar,
                         theta: v.theta,
                         cf: p.cf,
+                        cf_inf: p.cf * p.rho_e * p.ue_compressible * p.ue_compressible,
                         h: p.h,
                         hk: p.hk,
                         n_or_ctau: if regime == Regime::Laminar { s } else { s * s },

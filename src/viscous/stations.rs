@@ -53,7 +53,7 @@ pub struct Station {
 /// Location of the stagnation point on the airfoil surface (XFOIL STFIND).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Stagnation {
-    /// Node index i with q[i] ≥ 0 > q[i+1] (XFOIL IST, 0-based).
+    /// Node index i with `q[i] ≥ 0 > q[i+1]` (XFOIL IST, 0-based).
     pub ist: usize,
     /// Arc length of the stagnation point (XFOIL SST), linearly interpolated in q.
     pub sst: f64,
