@@ -7,23 +7,8 @@ use polargen::viscous::{BlStation, ViscousParams, ViscousSolver};
 const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/viscous/");
 
 fn paneled(name: &str) -> Airfoil {
-    let text = std::fs::read_to_string(format!("{DATA}{name}_xfoil_paneled.dat")).unwrap();
-    let (mut x, mut y) = (Vec::new(), Vec::new());
-    for line in text.lines() {
-        let v: Vec<f64> = line
-            .split_whitespace()
-            .filter_map(|t| t.parse().ok())
-            .collect();
-        if v.len() == 2 {
-            x.push(v[0]);
-            y.push(v[1]);
-        }
-    }
-    Airfoil {
-        name: name.to_string(),
-        x,
-        y,
-    }
+    let path = format!("{DATA}{name}_xfoil_paneled.dat");
+    polargen::geometry::read_airfoil_file(std::path::Path::new(&path)).unwrap()
 }
 
 /// Dump rows: s, x, y, Ue, δ*, θ, Cf, H.

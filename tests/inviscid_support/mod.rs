@@ -9,23 +9,8 @@ pub const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/inviscid
 
 /// Reads XFOIL's paneled nodes `<name>_xfoil_paneled.dat` (plain `x y`, E-notation allowed).
 pub fn xfoil_nodes(name: &str) -> Airfoil {
-    let text = std::fs::read_to_string(format!("{DATA}/{name}_xfoil_paneled.dat")).unwrap();
-    let (mut x, mut y) = (Vec::new(), Vec::new());
-    for line in text.lines() {
-        let v: Vec<f64> = line
-            .split_whitespace()
-            .map(|t| t.parse().unwrap())
-            .collect();
-        if v.len() == 2 {
-            x.push(v[0]);
-            y.push(v[1]);
-        }
-    }
-    Airfoil {
-        name: name.to_string(),
-        x,
-        y,
-    }
+    let path = format!("{DATA}/{name}_xfoil_paneled.dat");
+    polargen::geometry::read_airfoil_file(std::path::Path::new(&path)).unwrap()
 }
 
 /// Reads the wake rows (x, y) of an XFOIL `DUMP` file: the rows with at most 9 columns
