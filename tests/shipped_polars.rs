@@ -1,0 +1,86 @@
+//! The default-grid tables shipped in `polars/`: grid shape, converged fraction, exact lookups
+//! on grid nodes, and interpolated values at the paper's condition against XFOIL.
+
+use polargen::table::io::read_table;
+use polargen::table::{PolarTable, SectionAero};
+use std::path::Path;
+
+fn shipped(name: &str) -> PolarTable {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("polars")
+        .join(name);
+    read_table(&path).unwrap()
+}
+
+#[test]
+fn default_grid_shape_and_convergence() {
+    for name in [
+        "naca8h12_free.csv",
+        "naca8h12_xtr0.07.csv",
+        "naca23012_free.csv",
+        "naca23012_xtr0.07.csv",
+    ] {
+        let t = shipped(name);
+        assert_eq!(
+            t.re(),
+            &[0.25e6, 0.5e6, 1.0e6, 1.5e6, 2.0e6, 2.5e6],
+            "{name}"
+        );
+        assert_eq!(t.mach(), &[0.0, 0.2, 0.3, 0.4, 0.5], "{name}");
+        assert_eq!(t.point_count(), 1830, "{name}");
+        let frac = t.converged_count() as f64 / t.point_count() as f64;
+        assert!(frac > 0.95, "{name}: {frac}");
+        let xtr = if name.contains("xtr") { 0.07 } else { 1.0 };
+        assert_eq!(t.meta().xtr_top_set, xtr);
+        assert_eq!(t.meta().ncrit, 9.0);
+    }
+}
+
+#[test]
+fn lookup_is_exact_on_nodes() {
+    let t = shipped("naca8h12_free.csv");
+    let polar = t.polar(2.0e6, 0.4).unwrap();
+    for p in polar.iter().filter(|p| p.converged) {
+        let l = t.lookup(p.alpha, 2.0e6, 0.4);
+        assert!((l.cl - p.cl).abs() < 1e-12 && (l.cd - p.cd).abs() < 1e-12);
+        assert!(!l.re_clamped && !l.mach_clamped);
+    }
+}
+
+/// At the paper's condition (Re 1.9e6, M 0.41, between grid nodes) the interpolated table stays
+/// close to XFOIL's polar there (tests/data/viscous). Measured: |ΔCd| ≤ 0.2 %, |ΔCl| ≤ 0.0015 —
+/// the interpolation error in ln Re (1.5–2.0e6) and M (0.4–0.5) plus XFOIL's rounding; the
+/// tolerances (2 %, 0.005) leave room for solver updates, not for a broken table or lookup.
+#[test]
+fn interpolated_values_at_the_paper_condition() {
+    let cases = [
+        (
+            "naca8h12_free.csv",
+            [(0.0, 0.1311, 0.00726), (4.0, 0.7402, 0.00597)],
+        ),
+        (
+            "naca8h12_xtr0.07.csv",
+            [(0.0, 0.1353, 0.00966), (4.0, 0.6433, 0.0109)],
+        ),
+    ];
+    for (name, points) in cases {
+        let t = shipped(name);
+        for (alpha, cl, cd) in points {
+            let l = t.lookup(alpha, 1.9e6, 0.41);
+            println!(
+                "{name} α {alpha}: cl {:.4} ({cl}), cd {:.5} ({cd})",
+                l.cl, l.cd
+            );
+            assert!(
+                (l.cl - cl).abs() < 0.005,
+                "{name} α {alpha}: cl {} vs {cl}",
+                l.cl
+            );
+            assert!(
+                (l.cd / cd - 1.0).abs() < 0.02,
+                "{name} α {alpha}: cd {} vs {cd}",
+                l.cd
+            );
+        }
+    }
+}
