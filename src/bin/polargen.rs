@@ -15,14 +15,16 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use clap::Parser;
+use clap::{Args, Parser, Subcommand};
 
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
 use polargen::inviscid::PanelSystem;
-use polargen::polar::{parse_alpha_range, run_grid, SweepParams, ViscousSweep};
+use polargen::plot::polar_plots::polar_figure;
+use polargen::plot::render;
+use polargen::polar::{parse_alpha_range, run_grid, PolarPoint, SweepParams, ViscousSweep};
 use polargen::table::io::csv::write_csv_to;
 use polargen::table::io::json::write_json_to;
-use polargen::table::io::{write_atomic, write_table, TableFormat};
+use polargen::table::io::{read_table, write_atomic, write_table, TableFormat};
 use polargen::table::{PolarTable, TableError, TableMeta};
 use polargen::viscous::ViscousParams;
 
@@ -38,12 +40,79 @@ const DEFAULT_ALPHA: &str = "-10:20:0.5";
 
 /// Airfoil polars and Re × Mach × α tables with an XFOIL-class viscous–inviscid solver.
 #[derive(Parser, Debug)]
-#[command(name = "polargen", version, about)]
+#[command(
+    name = "polargen",
+    version,
+    about,
+    args_conflicts_with_subcommands = true,
+    subcommand_negates_reqs = true
+)]
 struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+
+    #[command(flatten)]
+    run: RunArgs,
+}
+
+/// Subcommands besides the main job (computing polars and tables).
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Overlay polars from tables (CSV or JSON): Cl–α, Cd–Cl, Cl/Cd–α, Cm–α; SVG or PNG by
+    /// the extension of --out.
+    Plot(PlotArgs),
+    /// Convert a table (CSV, JSON or XFOIL polar) to another format: csv, json, xfoil or c81.
+    Convert(ConvertArgs),
+}
+
+/// `polargen convert` options.
+#[derive(Args, Debug)]
+struct ConvertArgs {
+    /// Table written by polargen (.csv, .json) or an XFOIL polar file (.pol).
+    #[arg(value_name = "TABLE")]
+    table: PathBuf,
+
+    /// Output file; the format follows its extension unless --format is given (xfoil and
+    /// c81 may write one file per (Re, M) or per Re, named after it).
+    #[arg(long, value_name = "FILE")]
+    out: PathBuf,
+
+    /// Output format: csv, json, xfoil or c81.
+    #[arg(long)]
+    format: Option<String>,
+}
+
+/// `polargen plot` options.
+#[derive(Args, Debug)]
+struct PlotArgs {
+    /// Tables written by polargen (.csv or .json).
+    #[arg(required = true, value_name = "TABLE")]
+    tables: Vec<PathBuf>,
+
+    /// Output image: FILE.svg or FILE.png.
+    #[arg(long, value_name = "FILE")]
+    out: PathBuf,
+
+    /// Reynolds number of the polar to draw from a grid table (nearest node).
+    #[arg(long)]
+    re: Option<f64>,
+
+    /// Mach number of the polar to draw from a grid table (nearest node).
+    #[arg(long, allow_hyphen_values = true)]
+    mach: Option<f64>,
+
+    /// Figure title (default: airfoils and the Re, M drawn).
+    #[arg(long)]
+    title: Option<String>,
+}
+
+/// Options of the main job: polars and tables.
+#[derive(Args, Debug)]
+struct RunArgs {
     /// Airfoil: naca8h12, naca23012, nacaDDDD, nacaDDDDD, or a coordinate file (Selig,
     /// Lednicer or plain x y).
-    #[arg(long, value_name = "NAME|PATH")]
-    airfoil: String,
+    #[arg(long, value_name = "NAME|PATH", required = true)]
+    airfoil: Option<String>,
 
     /// Inviscid panel solution only (cd = 0); output `alpha,cl,cd,cm,converged`.
     #[arg(long)]
@@ -116,10 +185,11 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let result = if cli.inviscid {
-        run_inviscid(&cli)
-    } else {
-        run_viscous(&cli)
+    let result = match &cli.command {
+        Some(Command::Plot(args)) => plot_tables(args),
+        Some(Command::Convert(args)) => convert_table(args),
+        None if cli.run.inviscid => run_inviscid(&cli.run),
+        None => run_viscous(&cli.run),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -163,7 +233,7 @@ fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>> {
 }
 
 /// Mach numbers from `--mach` (or `default`), each checked to lie in [0, 1).
-fn mach_list(cli: &Cli, default: &[f64]) -> Result<Vec<f64>> {
+fn mach_list(cli: &RunArgs, default: &[f64]) -> Result<Vec<f64>> {
     let list = match &cli.mach {
         Some(t) => parse_list("mach", t)?,
         None => default.to_vec(),
@@ -175,7 +245,7 @@ fn mach_list(cli: &Cli, default: &[f64]) -> Result<Vec<f64>> {
 }
 
 /// Check the panel count and load + repanel the airfoil.
-fn load_airfoil(cli: &Cli) -> Result<Airfoil> {
+fn load_airfoil(cli: &RunArgs) -> Result<Airfoil> {
     if !(PANEL_RANGE.0..=PANEL_RANGE.1).contains(&cli.panels) {
         bail!(
             "--panels {}: must be between {} and {}",
@@ -184,7 +254,8 @@ fn load_airfoil(cli: &Cli) -> Result<Airfoil> {
             PANEL_RANGE.1
         );
     }
-    let raw = airfoil_by_name_or_path(&cli.airfoil)?;
+    let spec = cli.airfoil.as_deref().context("--airfoil is required")?;
+    let raw = airfoil_by_name_or_path(spec)?;
     let foil = raw
         .repanel(cli.panels, &PanelingParams::default())
         .with_context(|| format!("paneling {}", raw.name))?;
@@ -192,7 +263,7 @@ fn load_airfoil(cli: &Cli) -> Result<Airfoil> {
 }
 
 /// `--inviscid`: the panel solution at one Mach number.
-fn run_inviscid(cli: &Cli) -> Result<()> {
+fn run_inviscid(cli: &RunArgs) -> Result<()> {
     let mach = match mach_list(cli, &[0.0])?.as_slice() {
         [m] => *m,
         _ => bail!("--mach: --inviscid takes one Mach number"),
@@ -223,7 +294,7 @@ fn run_inviscid(cli: &Cli) -> Result<()> {
 }
 
 /// The viscous polar(s) or table.
-fn run_viscous(cli: &Cli) -> Result<()> {
+fn run_viscous(cli: &RunArgs) -> Result<()> {
     let re = match &cli.re {
         Some(t) => parse_list("re", t)?,
         None => DEFAULT_RE.to_vec(),
@@ -341,6 +412,103 @@ fn run_viscous(cli: &Cli) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// `polargen plot`: overlay one polar from each table.
+fn plot_tables(args: &PlotArgs) -> Result<()> {
+    let mut curves: Vec<(String, Vec<PolarPoint>)> = Vec::new();
+    let mut conditions: Vec<(f64, f64)> = Vec::new();
+    for path in &args.tables {
+        let table = read_table(path)?;
+        let grid = table.re().len() * table.mach().len() > 1;
+        if grid && (args.re.is_none() || args.mach.is_none()) {
+            bail!(
+                "{}: a grid table ({} Re x {} M): give --re and --mach",
+                path.display(),
+                table.re().len(),
+                table.mach().len()
+            );
+        }
+        let re = args.re.unwrap_or(table.re()[0]);
+        let mach = args.mach.unwrap_or(table.mach()[0]);
+        check_inside("re", re, table.re(), path)?;
+        check_inside("mach", mach, table.mach(), path)?;
+        let (r, m, points) = table.nearest_polar(re, mach);
+        let meta = table.meta();
+        let trip = if meta.xtr_top_set >= 1.0 && meta.xtr_bot_set >= 1.0 {
+            "free".to_string()
+        } else if meta.xtr_top_set == meta.xtr_bot_set {
+            format!("xtr {}", meta.xtr_top_set)
+        } else {
+            format!("xtr {}/{}", meta.xtr_top_set, meta.xtr_bot_set)
+        };
+        curves.push((format!("{} {trip}", meta.airfoil), points.to_vec()));
+        conditions.push((r, m));
+    }
+    let title = match &args.title {
+        Some(t) => t.clone(),
+        None => {
+            let names: Vec<&str> = curves.iter().map(|c| c.0.as_str()).collect();
+            let (r, m) = conditions[0];
+            let same = conditions.iter().all(|c| *c == (r, m));
+            let at = if same {
+                format!("Re {}, M {m}", sci(r))
+            } else {
+                "several Re, M".to_string()
+            };
+            let nearest = match (args.re, args.mach) {
+                (Some(rq), Some(mq)) if same && (rq != r || mq != m) => {
+                    format!(" (nearest to Re {}, M {mq})", sci(rq))
+                }
+                _ => String::new(),
+            };
+            format!("{} — {at}{nearest}", names.join(" vs "))
+        }
+    };
+    let refs: Vec<(&str, &[PolarPoint])> = curves
+        .iter()
+        .map(|(l, p)| (l.as_str(), p.as_slice()))
+        .collect();
+    render(&polar_figure(&refs, &title), &args.out)?;
+    Ok(())
+}
+
+/// `polargen convert`: read a table and write it in another format.
+fn convert_table(args: &ConvertArgs) -> Result<()> {
+    let format = match &args.format {
+        Some(f) => f.parse::<TableFormat>().context("--format")?,
+        None => TableFormat::from_path(&args.out).context("--out")?,
+    };
+    let table = read_table(&args.table)?;
+    let files = write_table(&table, &args.out, Some(format))?;
+    if files.len() > 1 {
+        eprintln!("polargen: wrote {} files", files.len());
+    }
+    Ok(())
+}
+
+/// Error when `value` lies outside a table axis (beyond 0.1 % of the span).
+fn check_inside(flag: &str, value: f64, axis: &[f64], path: &std::path::Path) -> Result<()> {
+    let (lo, hi) = (axis[0], axis[axis.len() - 1]);
+    let slack = 1e-3 * (hi - lo).abs().max(hi.abs() * 1e-3);
+    if !value.is_finite() || value < lo - slack || value > hi + slack {
+        bail!(
+            "--{flag} {value}: outside the table {} ({lo} … {hi})",
+            path.display()
+        );
+    }
+    Ok(())
+}
+
+/// Compact number for titles: 1.9e6 → "1.9e6", 0 → "0".
+fn sci(v: f64) -> String {
+    if v >= 1e4 {
+        let e = v.log10().floor() as i32;
+        let m = v / 10f64.powi(e);
+        format!("{}e{e}", (m * 1000.0).round() / 1000.0)
+    } else {
+        format!("{v}")
+    }
 }
 
 /// A progress bar on stderr when stderr is a terminal; nothing otherwise.
