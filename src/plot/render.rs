@@ -47,7 +47,7 @@ pub struct RenderParams {
     pub panel_height: u32,
     /// Height of the strip holding the figure title (px).
     pub title_height: u32,
-    /// Figure title font size (px).
+    /// Figure title font size (px); a title wider than the canvas is drawn smaller to fit.
     pub title_font: f64,
     /// Panel caption font size (px).
     pub panel_title_font: f64,
@@ -333,6 +333,9 @@ struct Layout {
     grid: (usize, usize),
     /// Height of the title strip (px) (0 without a title).
     title_height: u32,
+    /// Title font size (px): [`RenderParams::title_font`], reduced so a long title fits the
+    /// canvas width.
+    title_font: f64,
     /// Legend entries, by row.
     legend_rows: Vec<Vec<(LegendEntry, u32)>>,
 }
@@ -347,6 +350,8 @@ impl Layout {
         } else {
             p.title_height
         };
+        let usable = width.saturating_sub(2 * p.margin);
+        let title_font = fitted_font_size(&figure.title, p.title_font, usable)?;
         let font = FontDesc::new(
             FontFamily::Name(FONT_FAMILY),
             p.legend_font,
@@ -354,7 +359,6 @@ impl Layout {
         );
         let mut rows: Vec<Vec<(LegendEntry, u32)>> = Vec::new();
         let mut row_width = 0;
-        let usable = width.saturating_sub(2 * p.margin);
         for entry in legend_entries(figure) {
             let (text_w, _) = font
                 .box_size(entry.label())
@@ -379,9 +383,27 @@ impl Layout {
             size: (width, height),
             grid,
             title_height,
+            title_font,
             legend_rows: rows,
         })
     }
+}
+
+/// The font size, at most `size`, at which `text` in the shipped font is no wider than `width`
+/// pixels (text width scales linearly with the font size).
+fn fitted_font_size(text: &str, size: f64, width: u32) -> Result<f64, PlotError> {
+    if text.is_empty() {
+        return Ok(size);
+    }
+    let font = FontDesc::new(FontFamily::Name(FONT_FAMILY), size, FontStyle::Normal);
+    let (text_w, _) = font
+        .box_size(text)
+        .map_err(|e| PlotError::Draw(e.to_string()))?;
+    Ok(if text_w > width && text_w > 0 {
+        size * f64::from(width) / f64::from(text_w)
+    } else {
+        size
+    })
 }
 
 /// Distinct labelled series and markers of all panels, in order of first appearance.
@@ -416,7 +438,7 @@ where
     root.fill(&WHITE).map_err(draw_err)?;
     let (title_area, rest) = root.split_vertically(layout.title_height);
     if layout.title_height > 0 {
-        let style = TextStyle::from((FONT_FAMILY, p.title_font).into_font())
+        let style = TextStyle::from((FONT_FAMILY, layout.title_font).into_font())
             .pos(Pos::new(HPos::Center, VPos::Center));
         title_area
             .draw_text(
@@ -725,8 +747,11 @@ where
     if !panel.title.is_empty() {
         builder.caption(&panel.title, (FONT_FAMILY, p.panel_title_font));
     }
+    // Twice the margin on the right: a tick label at the right end of the x axis is centred on
+    // it and would otherwise be cut off by the cell edge.
     let mut chart = builder
         .margin(p.margin)
+        .margin_right(2 * p.margin)
         .x_label_area_size(p.x_label_area)
         .y_label_area_size(p.y_label_area)
         .build_cartesian_2d(x_coord, y_coord)

@@ -12,12 +12,14 @@
 //! * [`flapping`] — first-harmonic teeter motion of the blade pair.
 //! * [`rotor`] — azimuth-averaged rotor forces, torque and the flapping solution.
 //! * [`trim`] — autorotation rpm and level-cruise trim.
+//! * [`cruise`] — power-required speed sweep and blade α(ψ) in trimmed cruise.
 //! * [`propeller`] — propeller/engine map (Rotax 912 with reduction gear).
 //! * [`takeoff`] — time-domain takeoff simulation to 15 m.
 
 pub mod aircraft;
 pub mod atmosphere;
 pub mod blade_element;
+pub mod cruise;
 pub mod flapping;
 pub mod inflow;
 pub mod propeller;

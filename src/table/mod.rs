@@ -3,6 +3,8 @@
 //! * [`grid`] — [`PolarTable`]: one polar per (Re, M) node, metadata, validation, accessors.
 //! * [`lookup`] — the α curve of one polar (monotone cubic, gaps bridged) and the
 //!   [`SectionAero`] implementation (linear in ln Re and in M between polars).
+//! * [`fixed_condition`] — queries at one (Re, M) between nodes: the polar sampled by lookups,
+//!   α and Cd where Cl reaches a target (paper Table 5).
 //! * [`post_stall`] — the 360° extension beyond the computed α range (Viterna–Corrigan and a
 //!   flat plate).
 //! * [`io`] — CSV, JSON, XFOIL polar and C81 files, written atomically.
@@ -49,6 +51,7 @@
 //! ```
 
 pub mod error;
+pub mod fixed_condition;
 pub mod grid;
 pub mod io;
 pub mod lookup;

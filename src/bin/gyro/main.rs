@@ -1,13 +1,16 @@
 //! `gyro` — gyroplane rotor performance from airfoil polar tables: cruise trim, takeoff,
-//! clean-versus-contaminated comparison (paper Tables 3 and 4) and power-required sweeps.
+//! clean-versus-contaminated comparison (paper Tables 3 and 4), power-required sweeps, rotor
+//! plots ([`plot`]) and the paper report ([`report`]).
 
 use anyhow::{bail, Context, Result};
 use clap::{Parser, Subcommand};
+use paper::{PAPER_TAKEOFF, PAPER_TRIM};
 use polargen::polar::PolarPoint;
+use polargen::rotor::cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds};
 use polargen::rotor::trim::{trim_aircraft, TrimParams, TrimResult};
-use polargen::rotor::{simulate_takeoff, Aircraft, Atmosphere, Rotor, TakeoffResult, KT_TO_MS};
-use polargen::table::{read_table, PolarTable, TableMeta};
-use rayon::prelude::*;
+use polargen::rotor::{simulate_takeoff, Aircraft, TakeoffResult};
+use polargen::table::io::write_atomic;
+use polargen::table::{read_table, PolarTable, TableError, TableMeta};
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::io::Write as _;
@@ -22,6 +25,10 @@ macro_rules! outln {
         let _ = writeln!($buf, $($arg)*);
     }};
 }
+
+mod paper;
+mod plot;
+mod report;
 
 #[derive(Parser)]
 #[command(
@@ -132,25 +139,14 @@ enum Command {
         #[arg(long, default_value_t = 36)]
         samples: usize,
     },
+    /// Rotor figures, clean vs contaminated, to SVG or PNG: alpha, takeoff or power.
+    Plot {
+        #[command(subcommand)]
+        kind: plot::PlotKind,
+    },
+    /// The paper report: Tables 3, 4, 5 beside the paper's values and all figures, in one folder.
+    Report(report::ReportArgs),
 }
-
-/// Paper Table 3 (clean, contaminated) at 60 kt, 450 kg, ISA.
-const PAPER_TRIM: [(&str, f64, f64); 7] = [
-    ("rotor rpm n_R", 347.0, 348.0),
-    ("rotor AoA alpha_R [deg]", 6.2, 8.1),
-    ("engine rpm", 4401.0, 4596.0),
-    ("rotor drag D_R [N]", 478.0, 624.0),
-    ("parasitic drag D_P [N]", 573.0, 573.0),
-    ("prop thrust F_prop [N]", 1051.0, 1197.0),
-    ("L/D", 4.2, 3.7),
-];
-
-/// Paper Table 4 (clean, contaminated).
-const PAPER_TAKEOFF: [(&str, f64, f64); 3] = [
-    ("takeoff roll s_TO [m]", 121.0, 144.0),
-    ("distance to 15 m s_15 [m]", 218.0, 253.0),
-    ("max flapping beta_max [deg]", 3.5, 4.2),
-];
 
 /// Reads the section table given with `--table`: a polargen table file (long-form CSV or
 /// JSON, [`read_table`]) or, as a fallback, a single XFOIL-style polar CSV with columns
@@ -158,6 +154,9 @@ const PAPER_TAKEOFF: [(&str, f64, f64); 3] = [
 /// becomes a one-node table at the Re and M parsed from a file name like `…_Re1.9e6_M0.41_…`
 /// (Re 1e6, M 0 if absent); lookups at other Re/M are clamped to that node.
 fn load_section(path: &Path) -> Result<PolarTable> {
+    if !path.is_file() {
+        bail!("cannot read table {}: no such file", path.display());
+    }
     let table = match read_table(path) {
         Ok(t) => t,
         Err(table_err) => single_polar_table(path).with_context(|| {
@@ -249,6 +248,30 @@ fn check_speed(kt: f64) -> Result<()> {
         bail!("--speed-kt must be between 0 and 300 kt, got {kt}");
     }
     Ok(())
+}
+
+fn check_radius(radius: f64) -> Result<()> {
+    if !(radius > 0.0 && radius <= 1.0) {
+        bail!("--radius must be a fraction of R in (0, 1], got {radius}");
+    }
+    Ok(())
+}
+
+fn check_samples(samples: usize) -> Result<()> {
+    if !(4..=3600).contains(&samples) {
+        bail!("--samples must be between 4 and 3600, got {samples}");
+    }
+    Ok(())
+}
+
+/// The speeds of a sweep from `--from-kt`, `--to-kt`, `--step-kt`, checked.
+fn checked_speeds(from_kt: f64, to_kt: f64, step_kt: f64) -> Result<Vec<f64>> {
+    check_speed(from_kt)?;
+    check_speed(to_kt)?;
+    if !(step_kt.is_finite() && step_kt > 0.0) || to_kt < from_kt {
+        bail!("sweep needs --from-kt <= --to-kt and a positive --step-kt");
+    }
+    Ok(sweep_speeds(from_kt, to_kt, step_kt))
 }
 
 #[derive(Serialize)]
@@ -371,6 +394,42 @@ fn print_takeoff(buf: &mut String, t: &TakeoffResult) {
     );
 }
 
+/// Airspeed of the paper's cruise trim (Table 3) [kt].
+const PAPER_TRIM_SPEED_KT: f64 = 60.0;
+
+/// The paper's two computations for one blade section: trim at 60 kt, ISA sea level, the
+/// preset's mass (Table 3) and the takeoff (Table 4); `label` names the case in errors.
+fn paper_case(
+    ac: &Aircraft,
+    section: &PolarTable,
+    label: &str,
+) -> Result<(TrimResult, TakeoffResult)> {
+    let t = trim_aircraft(
+        ac,
+        section,
+        PAPER_TRIM_SPEED_KT,
+        ac.mass_kg,
+        0.0,
+        &TrimParams::default(),
+    )
+    .with_context(|| format!("{label} trim"))?;
+    let o = simulate_takeoff(ac, section).with_context(|| format!("{label} takeoff"))?;
+    Ok((t, o))
+}
+
+/// (trim, takeoff) of the clean and of the contaminated section.
+type CasePair = ((TrimResult, TakeoffResult), (TrimResult, TakeoffResult));
+
+/// [`paper_case`] for the clean and the contaminated section, run in parallel.
+fn paper_cases(ac: &Aircraft, clean: &PolarTable, dirty: &PolarTable) -> Result<CasePair> {
+    let (c, d) = rayon::join(
+        || paper_case(ac, clean, "clean"),
+        || paper_case(ac, dirty, "contaminated"),
+    );
+    Ok((c?, d?))
+}
+
+/// Relative change from `a` to `b` [%].
 fn rel(a: f64, b: f64) -> f64 {
     100.0 * (b - a) / a
 }
@@ -382,16 +441,7 @@ fn compare(
     dirty: &PolarTable,
     json: bool,
 ) -> Result<()> {
-    let p = TrimParams::default();
-    // The four cases are independent: run the clean and contaminated ones in parallel.
-    let case = |section: &PolarTable, label: &str| -> Result<(TrimResult, TakeoffResult)> {
-        let t = trim_aircraft(ac, section, 60.0, ac.mass_kg, 0.0, &p)
-            .with_context(|| format!("{label} trim"))?;
-        let o = simulate_takeoff(ac, section).with_context(|| format!("{label} takeoff"))?;
-        Ok((t, o))
-    };
-    let (c, d) = rayon::join(|| case(clean, "clean"), || case(dirty, "contaminated"));
-    let ((tc, oc), (td, od)) = (c?, d?);
+    let ((tc, oc), (td, od)) = paper_cases(ac, clean, dirty)?;
     let ours_trim = |t: &TrimResult| {
         [
             t.rotor_rpm,
@@ -528,10 +578,11 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             let section = load_section(&table)?;
             let t = simulate_takeoff(&ac, &section)?;
             if let Some(path) = history {
-                let f = std::fs::File::create(&path)
-                    .with_context(|| format!("cannot write history {}", path.display()))?;
-                t.write_history_csv(std::io::BufWriter::new(f))
-                    .with_context(|| format!("cannot write history {}", path.display()))?;
+                write_atomic(&path, |w| {
+                    t.write_history_csv(w)
+                        .map_err(|e| TableError::io(&path, e.into()))
+                })
+                .with_context(|| format!("cannot write history {}", path.display()))?;
             }
             if json {
                 outln!(
@@ -563,24 +614,17 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             mass,
             json,
         } => {
-            check_speed(from_kt)?;
-            check_speed(to_kt)?;
-            if !(step_kt.is_finite() && step_kt > 0.0) || to_kt < from_kt {
-                bail!("sweep needs --from-kt <= --to-kt and a positive --step-kt");
-            }
+            let speeds = checked_speeds(from_kt, to_kt, step_kt)?;
             let ac = load_aircraft(&aircraft, mass)?;
             let section = load_section(&table)?;
-            let n = ((to_kt - from_kt) / step_kt).floor() as usize + 1;
-            let results: Vec<(f64, Result<TrimResult, _>)> = (0..n)
-                .into_par_iter()
-                .map(|k| {
-                    let v = from_kt + k as f64 * step_kt;
-                    (
-                        v,
-                        trim_aircraft(&ac, &section, v, ac.mass_kg, 0.0, &TrimParams::default()),
-                    )
-                })
-                .collect();
+            let results = speed_sweep(
+                &ac,
+                &section,
+                &speeds,
+                ac.mass_kg,
+                0.0,
+                &TrimParams::default(),
+            );
             let mut rows = Vec::new();
             for (v, r) in results {
                 match r {
@@ -632,29 +676,26 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             samples,
         } => {
             check_speed(speed_kt)?;
-            if !(radius > 0.0 && radius <= 1.0) {
-                bail!("--radius must be a fraction of R in (0, 1], got {radius}");
-            }
-            if !(4..=3600).contains(&samples) {
-                bail!("--samples must be between 4 and 3600, got {samples}");
-            }
+            check_radius(radius)?;
+            check_samples(samples)?;
             let ac = load_aircraft(&aircraft, None)?;
             let section = load_section(&table)?;
-            let rotor = Rotor::from_params(&ac.rotor);
-            let atm = Atmosphere::isa(0.0);
-            let s = polargen::rotor::trim::trim_rotor(
-                &rotor,
+            let curve = cruise_blade_alpha(
+                &ac,
                 &section,
-                speed_kt * KT_TO_MS,
-                ac.weight_n(),
-                &atm,
+                speed_kt,
+                0.0,
+                radius,
+                samples,
                 &TrimParams::default(),
             )?;
             outln!(buf, "psi_deg,alpha_deg");
-            for (psi, a) in rotor.alpha_at_radius(&s, radius, samples) {
+            for (psi, a) in curve {
                 outln!(buf, "{psi:.1},{a:.3}");
             }
         }
+        Command::Plot { kind } => plot::run(kind)?,
+        Command::Report(args) => report::run(&args, buf)?,
     }
     Ok(())
 }

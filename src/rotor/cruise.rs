@@ -1,0 +1,73 @@
+//! Cruise analyses built on the level-flight trim of [`trim`](super::trim): the power-required
+//! curve of a speed sweep and the blade angle of attack around the azimuth in trimmed cruise
+//! (the paper's Fig. 10). Both only call the trim and the rotor model; no new physics here.
+
+use super::aircraft::Aircraft;
+use super::atmosphere::Atmosphere;
+use super::rotor::Rotor;
+use super::trim::{trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
+use super::KT_TO_MS;
+use crate::table::SectionAero;
+use rayon::prelude::*;
+
+/// One speed of a [`speed_sweep`]: the airspeed [kt] and its trim (or why there is none).
+pub type SweepPoint = (f64, Result<TrimResult, TrimError>);
+
+/// Airspeeds `from_kt`, `from_kt + step_kt`, … up to `to_kt` inclusive (a step landing within
+/// 10⁻⁹ kt of `to_kt` counts as reaching it). Empty if the bounds or the step are not usable.
+pub fn sweep_speeds(from_kt: f64, to_kt: f64, step_kt: f64) -> Vec<f64> {
+    if !(from_kt.is_finite() && to_kt.is_finite() && step_kt.is_finite() && step_kt > 0.0)
+        || to_kt < from_kt
+    {
+        return Vec::new();
+    }
+    let n = ((to_kt - from_kt) / step_kt + 1e-9).floor() as usize + 1;
+    (0..n).map(|k| from_kt + k as f64 * step_kt).collect()
+}
+
+/// Power-required sweep: [`trim_aircraft`] at each airspeed of `speeds_kt` (in parallel), at
+/// `mass_kg` and ISA `altitude_m`. Each point keeps its own result, so one speed without a trim
+/// (e.g. too slow to carry the weight) does not lose the others.
+pub fn speed_sweep<S: SectionAero + Sync + ?Sized>(
+    aircraft: &Aircraft,
+    section: &S,
+    speeds_kt: &[f64],
+    mass_kg: f64,
+    altitude_m: f64,
+    params: &TrimParams,
+) -> Vec<SweepPoint> {
+    speeds_kt
+        .par_iter()
+        .map(|&v| {
+            (
+                v,
+                trim_aircraft(aircraft, section, v, mass_kg, altitude_m, params),
+            )
+        })
+        .collect()
+}
+
+/// Blade section angle of attack α(ψ) at radius fraction `r_over_r` in trimmed level flight at
+/// `speed_kt` (ISA `altitude_m`, the preset's mass): the rotor is trimmed with [`trim_rotor`]
+/// and its converged inflow and flapping give α at `samples` azimuths ψ_k = 360°·k/samples,
+/// ψ = 0 with the blade pointing to the rear (paper Fig. 10). Returns (ψ [deg], α [deg]) pairs.
+pub fn cruise_blade_alpha<S: SectionAero + ?Sized>(
+    aircraft: &Aircraft,
+    section: &S,
+    speed_kt: f64,
+    altitude_m: f64,
+    r_over_r: f64,
+    samples: usize,
+    params: &TrimParams,
+) -> Result<Vec<(f64, f64)>, TrimError> {
+    let rotor = Rotor::from_params(&aircraft.rotor);
+    let solution = trim_rotor(
+        &rotor,
+        section,
+        speed_kt * KT_TO_MS,
+        aircraft.weight_n(),
+        &Atmosphere::isa(altitude_m),
+        params,
+    )?;
+    Ok(rotor.alpha_at_radius(&solution, r_over_r, samples))
+}
