@@ -30,7 +30,7 @@ use std::path::{Path, PathBuf};
 #[derive(Args)]
 pub struct ReportArgs {
     /// Aircraft preset (TOML).
-    #[arg(long)]
+    #[arg(long, default_value = "aircraft/mtosport.toml")]
     aircraft: PathBuf,
     /// Folder holding naca8h12_free.csv, naca8h12_xtr0.07.csv, naca23012_free.csv and
     /// naca23012_xtr0.07.csv (the shipped default-grid tables).
@@ -52,6 +52,9 @@ const SWEEP_KT: (f64, f64, f64) = (30.0, 90.0, 5.0);
 
 /// α interval searched for Cl = 0.8 [deg] (the attached-flow branch of both airfoils).
 const TABLE5_ALPHA_RANGE: (f64, f64) = (-5.0, 15.0);
+
+/// Rounding of the paper's Table 5 values (printed with three decimals).
+const PAPER_TABLE5_ROUNDING: f64 = 0.0005;
 
 /// Upper Cd limit of the drag-polar panels of the polar figures.
 const DRAG_POLAR_CD_MAX: f64 = 0.04;
@@ -94,9 +97,9 @@ pub fn run(args: &ReportArgs, buf: &mut String) -> Result<()> {
         .iter()
         .map(|row| load_airfoil(&args.polars, row))
         .collect::<Result<Vec<_>>>()?;
+    let rotor = rotor_results(&ac, &foils[0].tables)?;
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("cannot create report folder {}", args.out.display()))?;
-    let rotor = rotor_results(&ac, &foils[0].tables)?;
 
     let mut written = Vec::new();
     let mut figure = |name: &str, fig: &Figure| -> Result<()> {
@@ -404,29 +407,54 @@ fn comparison_table(out: &mut String, rows: &[Row]) {
     }
 }
 
-/// Bullet list stating each row's agreement and its contamination change in words, and the
-/// tally sentence.
-fn comparison_words(out: &mut String, rows: &[Row]) {
+/// Paper-vs-ours verdicts of every value (clean and contaminated) of `rows`.
+fn tally_of(rows: &[Row]) -> Tally {
     let mut tally = Tally::default();
-    let mut same_direction = 0;
-    let mut changing = 0;
+    for r in rows {
+        tally.add(r.name, "clean", rel(r.paper.0, r.ours.0));
+        tally.add(r.name, "contaminated", rel(r.paper.1, r.ours.1));
+    }
+    tally
+}
+
+/// Clean → contaminated change of the paper (`pch`) and ours (`och`) [%] are both "changing"
+/// when the paper's is at least this large [%]; smaller paper changes have no direction to
+/// compare.
+const CHANGE_THRESHOLD_PERCENT: f64 = 1.0;
+
+/// Sentence on how often the clean → contaminated change has the paper's sign.
+fn direction_sentence(rows: &[Row]) -> String {
+    let changes: Vec<(f64, f64)> = rows
+        .iter()
+        .map(|r| (rel(r.paper.0, r.paper.1), rel(r.ours.0, r.ours.1)))
+        .filter(|(pch, _)| pch.abs() >= CHANGE_THRESHOLD_PERCENT)
+        .collect();
+    let agree = changes
+        .iter()
+        .filter(|(pch, och)| pch.signum() == och.signum())
+        .count();
+    format!(
+        "The direction of the clean → contaminated change agrees with the paper for {agree} of \
+         the {} quantities the paper shows changing by {CHANGE_THRESHOLD_PERCENT} % or more.",
+        changes.len()
+    )
+}
+
+/// Bullet list stating each row's agreement and its contamination change in words, then the
+/// tally and direction sentences.
+fn comparison_words(out: &mut String, rows: &[Row]) {
     for r in rows {
         let (dc, dd) = (rel(r.paper.0, r.ours.0), rel(r.paper.1, r.ours.1));
-        tally.add(r.name, "clean", dc);
-        tally.add(r.name, "contaminated", dd);
         let (pch, och) = (rel(r.paper.0, r.paper.1), rel(r.ours.0, r.ours.1));
-        let change = if pch.abs() < 1.0 {
+        let change = if pch.abs() < CHANGE_THRESHOLD_PERCENT {
             format!(
                 "Contamination changes it by {} in the paper and {} here.",
                 pct(pch),
                 pct(och)
             )
         } else {
-            changing += 1;
-            let agree = pch.signum() == och.signum();
-            same_direction += usize::from(agree);
             let ratio = och / pch;
-            let size = if !agree {
+            let size = if pch.signum() != och.signum() {
                 "the opposite direction".to_string()
             } else if (ratio - 1.0).abs() <= 0.2 {
                 "about the same size".to_string()
@@ -458,9 +486,9 @@ fn comparison_words(out: &mut String, rows: &[Row]) {
     outln!(out);
     outln!(
         out,
-        "{} The direction of the clean → contaminated change agrees with the paper for \
-         {same_direction} of the {changing} quantities the paper shows changing by 1 % or more.",
-        tally.sentence()
+        "{} {}",
+        tally_of(rows).sentence(),
+        direction_sentence(rows)
     );
 }
 
@@ -554,6 +582,7 @@ fn markdown(args: &ReportArgs, ac: &Aircraft, foils: &[Airfoil], rotor: &RotorRe
          \"change\" is (contaminated − clean) / clean."
     );
     outln!(o);
+    summary(o, foils, rotor);
 
     outln!(
         o,
@@ -717,6 +746,23 @@ fn table5(o: &mut String, foils: &[Airfoil]) {
                 num(xfoil_alpha[i], 2),
                 num(ours_alpha[i], 2),
             );
+            if (ours[i] - paper[i]).abs() > PAPER_TABLE5_ROUNDING {
+                let cause = if (xfoil[i] - paper[i]).abs() > PAPER_TABLE5_ROUNDING {
+                    "XFOIL 6.99 is outside it too, so the paper's XFOIL 6.94 run differs from \
+                     the reference run here, not only ours"
+                } else {
+                    "XFOIL 6.99 is inside it, so this is a difference of ours"
+                };
+                words.push(format!(
+                    "{} {}: ours {} is further from the paper's {} than its three-decimal \
+                     rounding (±{PAPER_TABLE5_ROUNDING}) allows; XFOIL 6.99 gives {}: {cause}.",
+                    r.name,
+                    TRANSITION_NAMES[i],
+                    num(ours[i], 5),
+                    paper[i],
+                    xfoil[i],
+                ));
+            }
             if let Some(m) = foil.at_cl[i] {
                 if m.lookup.post_stall || m.lookup.bridged {
                     words.push(format!(
@@ -798,4 +844,73 @@ fn power_section(o: &mut String, rotor: &RotorResults) {
     outln!(o);
     outln!(o, "![Power required](power_required.png)");
     outln!(o);
+}
+
+/// The summary at the top of the report: one verdict line per table and figure.
+fn summary(o: &mut String, foils: &[Airfoil], rotor: &RotorResults) {
+    outln!(o, "## Summary");
+    outln!(o);
+    for (what, rows) in [
+        ("Trim (Table 3)", trim_rows(&rotor.trims)),
+        ("Takeoff (Table 4)", takeoff_rows(&rotor.takeoffs)),
+    ] {
+        outln!(
+            o,
+            "- **{what}:** {} {}",
+            tally_of(&rows).sentence(),
+            direction_sentence(&rows)
+        );
+    }
+    let mut vs_xfoil: f64 = 0.0;
+    let mut vs_paper: f64 = 0.0;
+    for foil in foils {
+        let xfoil = [foil.row.xfoil.0, foil.row.xfoil.1];
+        let paper = [foil.row.paper.0, foil.row.paper.1];
+        for i in 0..2 {
+            let ours = foil.at_cl[i].map_or(f64::NAN, |m| m.lookup.cd);
+            vs_xfoil = nan_max(vs_xfoil, rel(xfoil[i], ours).abs());
+            vs_paper = nan_max(vs_paper, rel(paper[i], ours).abs());
+        }
+    }
+    outln!(
+        o,
+        "- **Section drag at Cl = {PAPER_TABLE5_CL} (Table 5):** ours is within {} of XFOIL 6.99 \
+         for both airfoils, free and fixed transition, and within {} of the values the paper \
+         prints to three decimals.",
+        num_pct(vs_xfoil),
+        num_pct(vs_paper),
+    );
+    let ours_max = rotor.alpha.clone().map(|c| alpha_max(&c));
+    let (pc, pd) = PAPER_FIG10_MAX_ALPHA;
+    outln!(
+        o,
+        "- **Blade α at {FIG10_RADIUS:.1} R (Fig. 10):** maximum {:.2}° clean and {:.2}° \
+         contaminated at ψ ≈ {:.0}° and {:.0}°; the paper has {pc}° and {pd}° at {PAPER_FIG10_PSI}° \
+         ({} and {}).",
+        ours_max[0].1,
+        ours_max[1].1,
+        ours_max[0].0,
+        ours_max[1].0,
+        pct(rel(pc, ours_max[0].1)),
+        pct(rel(pd, ours_max[1].1)),
+    );
+    outln!(o);
+}
+
+/// The larger of two values, NaN if either is NaN (a missing value must not hide).
+fn nan_max(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() {
+        f64::NAN
+    } else {
+        a.max(b)
+    }
+}
+
+/// Unsigned percentage with one decimal, "—" when not a number.
+fn num_pct(v: f64) -> String {
+    if v.is_finite() {
+        format!("{v:.1} %")
+    } else {
+        "— (a value is missing)".to_string()
+    }
 }
