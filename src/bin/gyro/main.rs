@@ -394,6 +394,36 @@ fn print_takeoff(buf: &mut String, t: &TakeoffResult) {
     );
 }
 
+/// Trims of a speed sweep at the preset's mass, ISA sea level, that succeeded, in increasing
+/// speed; a speed without a trim is reported on stderr as skipped, prefixed with the case
+/// `label` if given. Error if no speed trims.
+fn trimmed_speeds(
+    aircraft: &Aircraft,
+    section: &PolarTable,
+    speeds_kt: &[f64],
+    label: Option<&str>,
+) -> Result<Vec<TrimResult>> {
+    let prefix = label.map_or(String::new(), |l| format!("{l}: "));
+    let mut trims = Vec::new();
+    for (v, r) in speed_sweep(
+        aircraft,
+        section,
+        speeds_kt,
+        aircraft.mass_kg,
+        0.0,
+        &TrimParams::default(),
+    ) {
+        match r {
+            Ok(t) => trims.push(t),
+            Err(e) => eprintln!("gyro: {prefix}skipped {v:.1} kt: {e}"),
+        }
+    }
+    if trims.is_empty() {
+        bail!("{prefix}no trim point in the speed range");
+    }
+    Ok(trims)
+}
+
 /// Airspeed of the paper's cruise trim (Table 3) [kt].
 const PAPER_TRIM_SPEED_KT: f64 = 60.0;
 
@@ -617,24 +647,10 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             let speeds = checked_speeds(from_kt, to_kt, step_kt)?;
             let ac = load_aircraft(&aircraft, mass)?;
             let section = load_section(&table)?;
-            let results = speed_sweep(
-                &ac,
-                &section,
-                &speeds,
-                ac.mass_kg,
-                0.0,
-                &TrimParams::default(),
-            );
-            let mut rows = Vec::new();
-            for (v, r) in results {
-                match r {
-                    Ok(t) => rows.push(TrimJson::from(&t)),
-                    Err(e) => eprintln!("gyro: skipped {v:.1} kt: {e}"),
-                }
-            }
-            if rows.is_empty() {
-                bail!("no trim point in the speed range");
-            }
+            let rows: Vec<TrimJson> = trimmed_speeds(&ac, &section, &speeds, None)?
+                .iter()
+                .map(TrimJson::from)
+                .collect();
             if json {
                 outln!(buf, "{}", serde_json::to_string_pretty(&rows)?);
             } else {

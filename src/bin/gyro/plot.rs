@@ -4,16 +4,16 @@
 //! of `--out`. The figure builders here turn rotor results into plot descriptions; `gyro
 //! report` reuses them.
 
-use anyhow::{bail, Context, Result};
+use anyhow::{Context, Result};
 use clap::{Args, Subcommand};
 use polargen::plot::rotor_plots::{
     alpha_azimuth_figure, power_required_figure, takeoff_figure, AzimuthCase, PowerCase,
     TakeoffCase,
 };
 use polargen::plot::{render_with, Figure, RenderParams, Style};
-use polargen::rotor::cruise::{cruise_blade_alpha, speed_sweep};
+use polargen::rotor::cruise::cruise_blade_alpha;
 use polargen::rotor::trim::TrimParams;
-use polargen::rotor::{simulate_takeoff, Aircraft, TakeoffResult, TrimResult, KT_TO_MS};
+use polargen::rotor::{simulate_takeoff, TakeoffResult, TrimResult, KT_TO_MS};
 use polargen::table::PolarTable;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
@@ -180,34 +180,6 @@ pub fn power_plot(sweeps: &[(&str, &[TrimResult])], title: &str) -> Figure {
     power_required_figure(&cases, title)
 }
 
-/// Trims of a speed sweep that succeeded, in increasing speed; a speed without a trim is
-/// reported on stderr as skipped. Error if no speed trims.
-pub fn trimmed_speeds(
-    aircraft: &Aircraft,
-    section: &PolarTable,
-    speeds_kt: &[f64],
-    label: &str,
-) -> Result<Vec<TrimResult>> {
-    let mut trims = Vec::new();
-    for (v, r) in speed_sweep(
-        aircraft,
-        section,
-        speeds_kt,
-        aircraft.mass_kg,
-        0.0,
-        &TrimParams::default(),
-    ) {
-        match r {
-            Ok(t) => trims.push(t),
-            Err(e) => eprintln!("gyro: {label}: skipped {v:.1} kt: {e}"),
-        }
-    }
-    if trims.is_empty() {
-        bail!("{label}: no trim point in the speed range");
-    }
-    Ok(trims)
-}
-
 /// Airfoil name of a table for titles, e.g. `NACA 8-H-12`.
 pub fn airfoil_name(table: &PolarTable) -> &str {
     &table.meta().airfoil
@@ -289,7 +261,7 @@ pub fn run(kind: PlotKind) -> Result<()> {
             let sweeps = sections
                 .iter()
                 .zip(labels)
-                .map(|(s, label)| trimmed_speeds(&aircraft, s, &speeds, label))
+                .map(|(s, label)| crate::trimmed_speeds(&aircraft, s, &speeds, Some(label)))
                 .collect::<Result<Vec<_>>>()?;
             let refs: Vec<(&str, &[TrimResult])> = labels
                 .iter()

@@ -9,10 +9,8 @@ use crate::paper::{
     Table5Row, PAPER_CLEAN_TAKEOFF_TEXT, PAPER_FIG10_MAX_ALPHA, PAPER_FIG10_PSI, PAPER_MACH,
     PAPER_RE, PAPER_TABLE5, PAPER_TABLE5_CL, PAPER_TAKEOFF, PAPER_TRIM,
 };
-use crate::plot::{
-    alpha_figure, power_plot, takeoff_plot, trimmed_speeds, write_figure, CASE_LABELS,
-};
-use crate::{load_aircraft, load_section, paper_cases, rel, PAPER_TRIM_SPEED_KT};
+use crate::plot::{alpha_figure, power_plot, takeoff_plot, write_figure, CASE_LABELS};
+use crate::{load_aircraft, load_section, paper_cases, rel, trimmed_speeds, PAPER_TRIM_SPEED_KT};
 use anyhow::{Context, Result};
 use clap::Args;
 use polargen::plot::polar_plots::{mark_lift_coefficient, polar_figure};
@@ -197,8 +195,8 @@ fn rotor_results(ac: &Aircraft, tables: &[PolarTable; 2]) -> Result<RotorResults
                 },
                 || -> Result<_> {
                     Ok([
-                        trimmed_speeds(ac, &tables[0], &speeds, CASE_LABELS[0])?,
-                        trimmed_speeds(ac, &tables[1], &speeds, CASE_LABELS[1])?,
+                        trimmed_speeds(ac, &tables[0], &speeds, Some(CASE_LABELS[0]))?,
+                        trimmed_speeds(ac, &tables[1], &speeds, Some(CASE_LABELS[1]))?,
                     ])
                 },
             )
