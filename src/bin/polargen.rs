@@ -320,7 +320,16 @@ fn load_airfoil(spec: Option<&str>, panels: usize) -> Result<Airfoil> {
         );
     }
     let spec = spec.context("--airfoil is required")?;
-    let raw = airfoil_by_name_or_path(spec)?;
+    let given = airfoil_by_name_or_path(spec)?;
+    let (raw, normalised) = given
+        .in_chord_units()
+        .with_context(|| format!("locating the chord of {}", given.name))?;
+    if normalised {
+        eprintln!(
+            "polargen: note: {spec}: chord is not 1 or the leading edge is not at the origin; \
+             coordinates normalised to unit chord (LE at 0,0, TE at 1,0)"
+        );
+    }
     let foil = raw
         .repanel(panels, &PanelingParams::default())
         .with_context(|| format!("paneling {}", raw.name))?;
