@@ -87,6 +87,14 @@ pub struct Rotor {
     pub tip_loss_b: Option<f64>,
     /// Inflow model.
     pub inflow: InflowModel,
+    /// Induced-power factor κ ≥ 1: the uniform induced velocity is κ times Glauert's
+    /// momentum value, so the induced power is κ·T·v_Glauert. κ carries the losses of the
+    /// real, non-uniform inflow of a finite-bladed rotor (tip vortices, root losses, the
+    /// skewed wake) that ideal momentum theory leaves out; the usual empirical values are
+    /// κ ≈ 1.15 in hover and about the same at moderate advance ratios (Leishman, *Principles
+    /// of Helicopter Aerodynamics*, 2nd ed., ch. 2 "induced power factor" and ch. 5 forward-flight
+    /// performance; Johnson, *Helicopter Theory*, ch. 5). κ = 1 is ideal momentum theory.
+    pub induced_power_factor: f64,
     /// Numerics.
     pub solver: RotorSolverParams,
 }
@@ -198,7 +206,8 @@ impl Rotor {
             Some(b) => b,
             None => {
                 let rho = cond.atmosphere.density;
-                let t = glauert_thrust(v0, rho, self.disc_area(), cond.airspeed, cond.hub_aoa);
+                let v_ideal = v0 / self.induced_power_factor;
+                let t = glauert_thrust(v_ideal, rho, self.disc_area(), cond.airspeed, cond.hub_aoa);
                 let tip = cond.omega * self.radius;
                 gessow_myers_tip_loss(t / (rho * self.disc_area() * tip * tip), self.blades)
             }
@@ -304,7 +313,7 @@ impl Rotor {
     }
 
     /// Scaled residuals of the coupled problem for unknowns z = (v0/ΩR, β1c, β1s):
-    /// momentum balance (v0 − v_Glauert(T))/ΩR and the first-harmonic teeter moments divided
+    /// momentum balance (v0 − κ·v_Glauert(T))/ΩR and the first-harmonic teeter moments divided
     /// by ½ρ(ΩR)²cR².
     fn residuals<S: SectionAero + ?Sized>(
         &self,
@@ -320,7 +329,8 @@ impl Rotor {
             beta1s: z[2],
         };
         let loads = self.evaluate(section, cond, z[0] * tip, &teeter);
-        let v_mt = glauert_induced_velocity(
+        let v_mt = self.induced_power_factor
+            * glauert_induced_velocity(
             loads.thrust,
             rho,
             self.disc_area(),
@@ -513,6 +523,7 @@ impl Rotor {
             radial_strips: p.radial_strips,
             azimuth_steps: p.azimuth_steps,
             tip_loss_b: p.tip_loss_b,
+            induced_power_factor: p.induced_power_factor,
             inflow: if p.inflow == "drees" {
                 InflowModel::Drees
             } else {
