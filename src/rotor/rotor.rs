@@ -231,7 +231,8 @@ impl Rotor {
 
     /// Velocity triangle of blade 1 at radius `r`, azimuth `psi`:
     /// U_T = Ωr + V cos α_H sin ψ,
-    /// U_P = V sin α_H − v_i(r, ψ) − Ωr dβ/dψ − V cos α_H β cos ψ
+    /// U_P = V sin α_H − v_i(r, ψ) − Ωr dβ/dψ − V cos α_H β cos ψ,
+    /// U_R = V cos α_H cos ψ (radial, drag only; see [`super::blade_element`])
     /// (small flap angles; Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §4.7,
     /// with the normal velocity counted upwards).
     pub fn strip_flow(
@@ -251,6 +252,7 @@ impl Rotor {
             - cond.omega * r * teeter.beta_rate(psi)
             - edge * beta * psi.cos();
         StripFlow::new(ut, up, self.pitch, self.chord, &Self::air(cond))
+            .with_radial(edge * psi.cos())
     }
 
     /// Blade-element sum for inflow `v0` and flapping `teeter`.
@@ -272,7 +274,7 @@ impl Rotor {
             let psi = TAU * k as f64 / n as f64;
             let beta = teeter.beta(psi);
             let (sp, cp) = psi.sin_cos();
-            let (mut ft_sum, mut fn_sum, mut q, mut m) = (0.0, 0.0, 0.0, 0.0);
+            let (mut ft_sum, mut fn_sum, mut fr_sum, mut q, mut m) = (0.0, 0.0, 0.0, 0.0, 0.0);
             for &r in &radii {
                 let flow = self.strip_flow(cond, v0, teeter, r, psi);
                 if flow.is_reversed() {
@@ -288,15 +290,19 @@ impl Rotor {
                 );
                 ft_sum += load.tangential * dr;
                 fn_sum += load.normal * dr;
+                fr_sum += load.radial * dr;
                 q += load.tangential * r * dr;
                 m += load.normal * r * dr;
             }
             *moment = m;
-            // Force on the hub from blade 1: F_t e_t + F_n (−sin β e_r + cos β e_z),
+            // Force on the hub from blade 1:
+            // F_t e_t + F_n (−sin β e_r + cos β e_z) + F_r (cos β e_r + sin β e_z),
             // e_r = (cos ψ, sin ψ), e_t = (−sin ψ, cos ψ).
-            loads.thrust += fn_sum * beta.cos();
-            loads.h_force += -ft_sum * sp - fn_sum * beta.sin() * cp;
-            loads.side_force += ft_sum * cp - fn_sum * beta.sin() * sp;
+            let (sb, cb) = beta.sin_cos();
+            let inplane_r = fr_sum * cb - fn_sum * sb;
+            loads.thrust += fn_sum * cb + fr_sum * sb;
+            loads.h_force += -ft_sum * sp + inplane_r * cp;
+            loads.side_force += ft_sum * cp + inplane_r * sp;
             loads.torque += q;
         }
         // Both blades: blade 2 reproduces blade 1's loads half a revolution later.
@@ -331,12 +337,12 @@ impl Rotor {
         let loads = self.evaluate(section, cond, z[0] * tip, &teeter);
         let v_mt = self.induced_power_factor
             * glauert_induced_velocity(
-            loads.thrust,
-            rho,
-            self.disc_area(),
-            cond.airspeed,
-            cond.hub_aoa,
-        );
+                loads.thrust,
+                rho,
+                self.disc_area(),
+                cond.airspeed,
+                cond.hub_aoa,
+            );
         let mscale = 0.5 * rho * tip * tip * self.chord * self.radius * self.radius;
         (
             [
