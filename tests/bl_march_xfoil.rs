@@ -6,76 +6,32 @@
 //! ones (up to the dump's printed digits), which checks every equation of every regime,
 //! the transition interval and the compressibility corrections together.
 
-use polargen::boundary_layer::{
-    BlConditions, BlModel, BlParams, IntervalEquations, Regime, StationVars, TransitionKind,
-};
+use polargen::boundary_layer::{BlModel, IntervalEquations, Regime, StationVars, TransitionKind};
+
+mod bl_support;
+use bl_support::{incompressible, load_dump, model};
 
 /// One dumped station: (ξ, x, Ue compressible, θ, Hk; wake rows carry H in the last slot).
 type Row = (f64, f64, f64, f64, f64);
 
 /// Upper surface (stagnation point → TE), lower surface (stagnation point → TE) and wake
-/// (TE → end) of a dump, with ξ measured from the interpolated stagnation point.
+/// (TE → end) of a dump; lower-surface speeds made positive, wake rows carry H = δ*/θ.
 fn surfaces(name: &str) -> (Vec<Row>, Vec<Row>, Vec<Row>) {
-    let path = format!("{}/tests/data/bl/{name}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(path).expect("dump file present");
-    let all: Vec<Vec<f64>> = text
-        .lines()
-        .filter(|l| !l.trim_start().starts_with('#'))
-        .map(|l| {
-            l.split_whitespace()
-                .map(|t| t.parse().expect("number"))
-                .collect()
-        })
-        .collect();
-    let rows: Vec<&Vec<f64>> = all.iter().filter(|v| v.len() >= 12).collect();
-    let k = rows
-        .windows(2)
-        .position(|w| w[0][3] > 0.0 && w[1][3] <= 0.0)
-        .expect("stagnation point");
-    let (a, b) = (rows[k], rows[k + 1]);
-    let s_stag = a[0] + (b[0] - a[0]) * a[3] / (a[3] - b[3]);
-    let upper = rows[..=k]
-        .iter()
-        .rev()
-        .map(|r| (s_stag - r[0], r[1], r[3], r[5], r[7]))
-        .collect();
-    let lower = rows[k + 1..]
-        .iter()
-        .map(|r| (r[0] - s_stag, r[1], -r[3], r[5], r[7]))
-        .collect();
-    let wake = all
-        .iter()
-        .filter(|v| v.len() < 12)
-        .map(|r| (r[0] - s_stag, r[1], r[3], r[5], r[4] / r[5]))
-        .collect();
-    (upper, lower, wake)
+    let d = load_dump(name);
+    let row = |(xi, r): &(f64, bl_support::Row), ue: f64, h: f64| (*xi, r.x, ue, r.theta, h);
+    (
+        d.upper.iter().map(|p| row(p, p.1.ue, p.1.h)).collect(),
+        d.lower.iter().map(|p| row(p, -p.1.ue, p.1.h)).collect(),
+        d.wake
+            .iter()
+            .map(|p| row(p, p.1.ue, p.1.dstar / p.1.theta))
+            .collect(),
+    )
 }
 
 /// Upper surface only.
 fn upper_surface(name: &str) -> Vec<Row> {
     surfaces(name).0
-}
-
-fn model(re: f64, mach: f64) -> BlModel {
-    BlModel::new(
-        &BlConditions {
-            reynolds: re,
-            mach,
-            ncrit: 9.0,
-        },
-        BlParams::default(),
-    )
-    .expect("valid conditions")
-}
-
-/// Incompressible speed from the compressible one (inverse Karman–Tsien).
-fn incompressible(m: &BlModel, ue: f64) -> f64 {
-    let l = m.flow.tkbl;
-    if l == 0.0 {
-        return ue;
-    }
-    let (a, b, c) = (l * ue, 1.0 - l, -ue);
-    (-b + (b * b - 4.0 * a * c).sqrt()) / (2.0 * a)
 }
 
 fn solve3(a: [[f64; 3]; 3], b: [f64; 3]) -> [f64; 3] {

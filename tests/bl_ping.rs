@@ -2,7 +2,10 @@
 //! similarity, transition, TE junction, Squire–Young) against central finite differences,
 //! for randomised realistic station pairs.
 
-use polargen::boundary_layer::{BlConditions, BlModel, BlParams, Regime, StationVars};
+use polargen::boundary_layer::{BlModel, Regime, StationVars};
+
+mod bl_support;
+use bl_support::model;
 
 /// Small deterministic generator (64-bit LCG), uniform in [0, 1).
 struct Lcg(u64);
@@ -72,18 +75,6 @@ fn ping(
             );
         }
     }
-}
-
-fn model(re: f64, mach: f64) -> BlModel {
-    BlModel::new(
-        &BlConditions {
-            reynolds: re,
-            mach,
-            ncrit: 9.0,
-        },
-        BlParams::default(),
-    )
-    .expect("valid conditions")
 }
 
 fn station(x: f64, u: f64, theta: f64, h: f64, s: f64, dw: f64) -> StationVars {

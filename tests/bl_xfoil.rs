@@ -4,99 +4,10 @@
 //! along the dumped laminar boundary layer; the momentum-equation residual between dumped
 //! stations; and the Squire–Young drag of the last wake point against the polar's CD.
 
-use polargen::boundary_layer::{
-    BlConditions, BlModel, BlParams, Regime, StationVars, TransitionKind,
-};
+use polargen::boundary_layer::{BlModel, Regime, StationVars, TransitionKind};
 
-/// One row of an XFOIL DUMP file.
-#[derive(Clone, Copy, Debug)]
-struct Row {
-    s: f64,
-    x: f64,
-    ue: f64,
-    dstar: f64,
-    theta: f64,
-    cf: f64,
-    h: f64,
-    hs: Option<f64>,
-}
-
-/// Surfaces of a dump: upper (LE → TE, ξ increasing), lower (LE → TE), wake.
-struct Dump {
-    upper: Vec<(f64, Row)>,
-    lower: Vec<(f64, Row)>,
-    wake: Vec<Row>,
-}
-
-fn load(name: &str) -> Dump {
-    let path = format!("{}/tests/data/bl/{name}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).expect("dump file present");
-    let mut airfoil = Vec::new();
-    let mut wake = Vec::new();
-    for line in text.lines().filter(|l| !l.trim_start().starts_with('#')) {
-        let v: Vec<f64> = line
-            .split_whitespace()
-            .map(|t| t.parse().expect("number"))
-            .collect();
-        let row = Row {
-            s: v[0],
-            x: v[1],
-            ue: v[3],
-            dstar: v[4],
-            theta: v[5],
-            cf: v[6],
-            h: v[7],
-            hs: v.get(8).copied(),
-        };
-        if v.len() >= 12 {
-            airfoil.push(row);
-        } else {
-            wake.push(row);
-        }
-    }
-    // stagnation point: sign change of the signed surface speed
-    let k = airfoil
-        .windows(2)
-        .position(|w| w[0].ue > 0.0 && w[1].ue <= 0.0)
-        .expect("stagnation point");
-    let (a, b) = (airfoil[k], airfoil[k + 1]);
-    let s_stag = a.s + (b.s - a.s) * a.ue / (a.ue - b.ue);
-    let upper = airfoil[..=k]
-        .iter()
-        .rev()
-        .map(|r| (s_stag - r.s, *r))
-        .collect();
-    let lower = airfoil[k + 1..]
-        .iter()
-        .map(|r| (r.s - s_stag, *r))
-        .collect();
-    Dump { upper, lower, wake }
-}
-
-fn model(re: f64, mach: f64) -> BlModel {
-    BlModel::new(
-        &BlConditions {
-            reynolds: re,
-            mach,
-            ncrit: 9.0,
-        },
-        BlParams::default(),
-    )
-    .expect("valid conditions")
-}
-
-/// Incompressible edge speed from XFOIL's dumped (compressible) Ue by inverting the
-/// Karman–Tsien relation Ue = Ui(1−λ)/(1−λUi²).
-fn incompressible(m: &BlModel, ue: f64) -> f64 {
-    let l = m.flow.tkbl;
-    let ue = ue.abs();
-    if l == 0.0 {
-        return ue;
-    }
-    // λ·ue·Ui² + (1−λ)Ui − ue = 0
-    let (a, b, c) = (l * ue, 1.0 - l, -ue);
-    (-b + (b * b - 4.0 * a * c).sqrt()) / (2.0 * a)
-}
+mod bl_support;
+use bl_support::{incompressible, load_dump as load, model, Row};
 
 /// Station variables from a dump row. The dump's "H" column is XFOIL's kinematic Hk
 /// (BLDUMP calls HKIN), so H is recovered by inverting Whitfield's relation with the edge
@@ -294,7 +205,7 @@ fn squire_young_matches_polar_drag() {
     for (file, re, mach, _, _, cd) in CASES {
         let m = model(re, mach);
         let d = load(file);
-        let last = d.wake.last().expect("wake rows");
+        let (_, last) = d.wake.last().expect("wake rows");
         let v = StationVars {
             x: 2.0,
             u: incompressible(&m, last.ue),

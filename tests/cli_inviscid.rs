@@ -137,3 +137,56 @@ fn failure_leaves_no_output_file() {
     assert!(!path.exists());
     let _ = std::fs::remove_dir_all(dir);
 }
+
+#[test]
+fn coordinates_in_other_units_are_normalised() {
+    // The same contour in chord units and in percent (×100, shifted by 5 in x, tabs):
+    // identical coefficients, and a note that the second one was normalised.
+    let dir = std::env::temp_dir().join(format!("polargen-units-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let unit = polargen(&["--airfoil", "naca2412", "--inviscid", "--alpha", "3"]);
+    let foil = polargen::geometry::airfoil_by_name_or_path("naca2412").unwrap();
+    let text: String = foil
+        .x
+        .iter()
+        .zip(&foil.y)
+        .map(|(x, y)| format!("{}\t{}\n", 100.0 * x + 5.0, 100.0 * y))
+        .collect();
+    let path = dir.join("percent.dat");
+    std::fs::write(&path, format!("NACA 2412 in percent\n{text}")).unwrap();
+    let scaled = polargen(&[
+        "--airfoil",
+        path.to_str().unwrap(),
+        "--inviscid",
+        "--alpha",
+        "3",
+    ]);
+    assert!(
+        unit.status.success() && scaled.status.success(),
+        "{}",
+        stderr(&scaled)
+    );
+    assert!(stderr(&unit).is_empty());
+    assert!(
+        stderr(&scaled).contains("normalised to unit chord"),
+        "{}",
+        stderr(&scaled)
+    );
+    let coeffs = |o: &Output| -> Vec<f64> {
+        let line = String::from_utf8_lossy(&o.stdout)
+            .lines()
+            .nth(1)
+            .unwrap()
+            .to_string();
+        line.split(',')
+            .take(4)
+            .map(|v| v.parse().unwrap())
+            .collect()
+    };
+    let (a, b) = (coeffs(&unit), coeffs(&scaled));
+    assert!(
+        (a[1] - b[1]).abs() <= 2e-6 && (a[3] - b[3]).abs() <= 2e-6,
+        "{a:?} vs {b:?}"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}

@@ -60,11 +60,83 @@ fn overlay_svg_and_png() {
 }
 
 #[test]
+fn point_distributions_clean_vs_trip() {
+    let dir = out_dir("point");
+    let svg = dir.join("p.svg");
+    let csv = dir.join("p.csv");
+    let args = [
+        "plot-point",
+        "--airfoil",
+        "naca8h12",
+        "--re",
+        "1.9e6",
+        "--mach",
+        "0.41",
+        "--cl",
+        "0.8",
+        "--xtr",
+        "1,0.07",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--out",
+    ];
+    for out in [&svg, &dir.join("p.png")] {
+        let mut a = args.to_vec();
+        a.push(out.to_str().unwrap());
+        let o = polargen(&a);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.len() > 20_000);
+    for needle in [
+        "NACA 8-H-12 — Re 1.9e6, M 0.41, Cl 0.8",
+        "Pressure distribution",
+        "Shape factor",
+        "Skin friction",
+        "Amplification",
+        "free upper",
+        "xtr 0.07 lower",
+        "transition x/c = 0.070 (xtr 0.07 upper)",
+        "Ncrit = 9",
+    ] {
+        assert!(text.contains(needle), "SVG lacks '{needle}'");
+    }
+    let png = std::fs::read(dir.join("p.png")).unwrap();
+    assert!(png.len() > 50_000 && png.starts_with(b"\x89PNG"));
+    // The CSV holds both cases; the tripped case is turbulent from x/c = 0.07 on the upper
+    // surface, and the free case transitions well behind it (XFOIL: x/c ≈ 0.39 at Cl 0.8).
+    let table = std::fs::read_to_string(&csv).unwrap();
+    let first_turbulent = |case: &str| {
+        table
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').collect::<Vec<_>>())
+            .filter(|f| f[0] == case && f[2] == "upper" && f[14] == "true")
+            .map(|f| f[4].parse::<f64>().unwrap())
+            .next()
+            .unwrap()
+    };
+    let (free, trip) = (first_turbulent("free"), first_turbulent("xtr 0.07"));
+    assert!(
+        (0.07..0.09).contains(&trip),
+        "tripped: turbulent from x/c {trip}"
+    );
+    assert!(
+        (0.36..0.43).contains(&free),
+        "free: turbulent from x/c {free}"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
 fn errors_are_one_line() {
     let dir = out_dir("errors");
     let out = dir.join("e.svg");
     let out = out.to_str().unwrap();
     let free = polars("naca8h12_free.csv");
+    let bad_path = dir.join("bad.csv");
+    std::fs::write(&bad_path, "alpha,cl\n1,garbage\n").unwrap();
+    let bad = bad_path.to_str().unwrap().to_string();
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec!["plot", &free, "--out", out], "give --re and --mach"),
         (
@@ -102,6 +174,90 @@ fn errors_are_one_line() {
             "unknown file extension",
         ),
         (vec!["plot", "--out", out], "TABLE"),
+        (vec!["plot", &bad, "--out", out], "lacks column 'airfoil'"),
+        (
+            vec![
+                "plot",
+                &free,
+                "--re",
+                "1e6",
+                "--mach",
+                "0",
+                "--out",
+                "/proc/no/x.svg",
+            ],
+            "cannot write plot /proc/no/x.svg",
+        ),
+        (
+            vec![
+                "plot-point",
+                "--airfoil",
+                "naca0012",
+                "--re",
+                "-1",
+                "--alpha",
+                "2",
+                "--out",
+                out,
+            ],
+            "--re -1: the Reynolds number must be positive",
+        ),
+        (
+            vec![
+                "plot-point",
+                "--airfoil",
+                "naca0012",
+                "--re",
+                "1e6",
+                "--alpha",
+                "2",
+                "--xtr",
+                "1,x",
+                "--out",
+                out,
+            ],
+            "--xtr '1,x'",
+        ),
+        (
+            vec![
+                "plot-point",
+                "--airfoil",
+                "naca0012",
+                "--re",
+                "1e6",
+                "--out",
+                out,
+            ],
+            "--alpha",
+        ),
+        (
+            vec![
+                "plot-point",
+                "--airfoil",
+                "naca0012",
+                "--re",
+                "1e6",
+                "--cl",
+                "4",
+                "--out",
+                out,
+            ],
+            "on the way to Cl 4",
+        ),
+        (
+            vec![
+                "plot-point",
+                "--airfoil",
+                "naca0012",
+                "--re",
+                "1e6",
+                "--alpha",
+                "2",
+                "--out",
+                "/proc/no/x.png",
+            ],
+            "cannot write plot /proc/no/x.png",
+        ),
     ];
     for (args, needle) in cases {
         let o = polargen(&args);

@@ -78,6 +78,22 @@ fn unknown_field_and_bad_values_are_rejected() {
     assert!(Aircraft::from_toml_str(&text, "t").is_err());
     let text = preset_text().replace("azimuth_steps = 36", "azimuth_steps = 35");
     assert!(Aircraft::from_toml_str(&text, "t").is_err());
+    // κ below ideal momentum theory is rejected; omitting it means κ = 1.
+    let text = preset_text().replace("induced_power_factor = 1.15", "induced_power_factor = 0.9");
+    let err = Aircraft::from_toml_str(&text, "t").unwrap_err();
+    assert!(
+        matches!(
+            err,
+            AircraftError::Invalid {
+                field: "rotor.induced_power_factor",
+                ..
+            }
+        ),
+        "{err}"
+    );
+    let text = preset_text().replace("induced_power_factor = 1.15\n", "");
+    let ac = Aircraft::from_toml_str(&text, "t").unwrap();
+    assert_eq!(ac.rotor.induced_power_factor, 1.0);
     let err = Aircraft::from_toml_file(std::path::Path::new("/nonexistent/x.toml")).unwrap_err();
     assert!(
         err.to_string().starts_with("cannot read aircraft file"),

@@ -107,3 +107,39 @@ fn analytic_sections_are_continuous_over_the_circle() {
         }
     }
 }
+
+#[test]
+fn radial_flow_adds_profile_drag_only() {
+    // Yawed flow: α, Re, M and the lift come from (U_T, U_P); the profile drag acts along the
+    // full relative wind W₃ = √(U_T² + U_P² + U_R²) with magnitude ½ρW₃²c·c_d.
+    let theta = 2.5f64.to_radians();
+    let (ut, up, ur) = (120.0, 4.0, 30.0);
+    let plain = StripFlow::new(ut, up, theta, 0.2, &AIR);
+    let yawed = plain.with_radial(ur);
+    assert_eq!(yawed.alpha_deg, plain.alpha_deg);
+    assert_eq!(yawed.reynolds, plain.reynolds);
+    assert_eq!(yawed.mach, plain.mach);
+    let w3 = (ut * ut + up * up + ur * ur).sqrt();
+    assert!((yawed.speed_with_radial() - w3).abs() < 1e-12);
+    let (rho, c) = (1.225, 0.2);
+    // Lift only: the radial speed changes nothing.
+    let lift_only = Lookup::new(0.5, 0.0, 0.0);
+    let a = strip_load(&plain, &lift_only, rho, c, 1.0);
+    let b = strip_load(&yawed, &lift_only, rho, c, 1.0);
+    assert_eq!(
+        (a.tangential, a.normal, b.radial),
+        (b.tangential, b.normal, 0.0)
+    );
+    // Drag only: the force is antiparallel to the blade's motion through the air (parallel to
+    // the air's velocity (−U_T along t, U_P, U_R)) with magnitude ½ρW₃²c·c_d.
+    let drag_only = Lookup::new(0.0, 0.01, 0.0);
+    let d = strip_load(&yawed, &drag_only, rho, c, 1.0);
+    let mag = (d.tangential.powi(2) + d.normal.powi(2) + d.radial.powi(2)).sqrt();
+    assert!((mag - 0.5 * rho * w3 * w3 * c * 0.01).abs() < 1e-9 * mag);
+    assert!((d.tangential / mag + ut / w3).abs() < 1e-12);
+    assert!((d.normal / mag - up / w3).abs() < 1e-12);
+    assert!((d.radial / mag - ur / w3).abs() < 1e-12);
+    // The drag that opposes the rotation grows by W₃/W.
+    let d0 = strip_load(&plain, &drag_only, rho, c, 1.0);
+    assert!((d.tangential / d0.tangential - w3 / plain.speed).abs() < 1e-12);
+}

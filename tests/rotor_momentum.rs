@@ -17,7 +17,9 @@ fn hover_inflow_matches_actuator_disc() {
     };
     let s = r.solve(&AnalyticSection::clean(), &cond, None).unwrap();
     assert!(s.thrust > 500.0, "thrust {}", s.thrust);
-    let vh = (s.thrust / (2.0 * atm.density * r.disc_area())).sqrt();
+    // Actuator disc v_h = √(T/2ρA), scaled by the preset's induced-power factor κ.
+    assert!(r.induced_power_factor > 1.0);
+    let vh = r.induced_power_factor * (s.thrust / (2.0 * atm.density * r.disc_area())).sqrt();
     assert!(
         (s.induced_velocity / vh - 1.0).abs() < 1e-6,
         "{} vs {vh}",
@@ -43,7 +45,7 @@ fn high_speed_inflow_tends_to_t_over_2_rho_a_v() {
             atmosphere: atm,
         };
         let s = r.solve(&AnalyticSection::clean(), &cond, None).unwrap();
-        let expected = s.thrust / (2.0 * atm.density * r.disc_area() * v);
+        let expected = r.induced_power_factor * s.thrust / (2.0 * atm.density * r.disc_area() * v);
         assert!(
             (s.induced_velocity / expected - 1.0).abs() < 0.01,
             "{model:?}: {} vs {expected}",
@@ -54,6 +56,43 @@ fn high_speed_inflow_tends_to_t_over_2_rho_a_v() {
         assert!((s.lift - (s.thrust * a.cos() - s.h_force * a.sin())).abs() < 1e-9 * s.thrust);
         assert!((s.drag - (s.thrust * a.sin() + s.h_force * a.cos())).abs() < 1e-9 * s.thrust);
     }
+}
+
+#[test]
+fn induced_power_factor_scales_the_induced_power() {
+    // Same operating point with κ = 1 (ideal momentum theory) and κ = 1.15: the induced
+    // velocity is κ times the ideal one (for the thrust each solution carries), so the induced
+    // power T·v grows by about κ; the extra loss is taken from the autorotative (driving)
+    // torque at fixed disc angle and rpm.
+    let mut ideal = Rotor::from_params(&mtosport().rotor);
+    ideal.induced_power_factor = 1.0;
+    let mut real = ideal.clone();
+    real.induced_power_factor = 1.15;
+    let atm = Atmosphere::isa(0.0);
+    let v = 30.9;
+    let cond = FlightCondition {
+        airspeed: v,
+        hub_aoa: 5f64.to_radians(),
+        omega: rpm_to_rad_s(360.0),
+        atmosphere: atm,
+    };
+    let section = AnalyticSection::clean();
+    let a = ideal.solve(&section, &cond, None).unwrap();
+    let b = real.solve(&section, &cond, None).unwrap();
+    let ideal_of = |s: &polargen::rotor::RotorSolution| {
+        polargen::rotor::inflow::glauert_induced_velocity(
+            s.thrust,
+            atm.density,
+            ideal.disc_area(),
+            v,
+            cond.hub_aoa,
+        )
+    };
+    assert!((a.induced_velocity / ideal_of(&a) - 1.0).abs() < 1e-6);
+    assert!((b.induced_velocity / ideal_of(&b) - 1.15).abs() < 1e-6);
+    let ratio = (b.thrust * b.induced_velocity) / (a.thrust * a.induced_velocity);
+    assert!((ratio - 1.15).abs() < 0.05, "induced power ratio {ratio}");
+    assert!(b.torque < a.torque, "{} vs {}", b.torque, a.torque);
 }
 
 #[test]

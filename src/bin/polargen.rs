@@ -19,14 +19,18 @@ use clap::{Args, Parser, Subcommand};
 
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
 use polargen::inviscid::PanelSystem;
+use polargen::plot::point_plots::{point_figure, PointCase};
 use polargen::plot::polar_plots::polar_figure;
-use polargen::plot::render;
-use polargen::polar::{parse_alpha_range, run_grid, PolarPoint, SweepParams, ViscousSweep};
+use polargen::plot::{render, Style};
+use polargen::polar::{
+    parse_alpha_range, run_grid, solve_at_cl, PolarPoint, SweepParams, TargetClParams, ViscousSweep,
+};
 use polargen::table::io::csv::write_csv_to;
 use polargen::table::io::json::write_json_to;
 use polargen::table::io::{read_table, write_atomic, write_table, TableFormat};
 use polargen::table::{PolarTable, TableError, TableMeta};
-use polargen::viscous::ViscousParams;
+use polargen::viscous::forces::karman_tsien_cp;
+use polargen::viscous::{BlStation, ViscousParams, ViscousSolution, ViscousSolver};
 
 /// Smallest and largest panel-node counts accepted by `--panels`.
 const PANEL_RANGE: (usize, usize) = (20, 1000);
@@ -63,6 +67,67 @@ enum Command {
     Plot(PlotArgs),
     /// Convert a table (CSV, JSON or XFOIL polar) to another format: csv, json, xfoil or c81.
     Convert(ConvertArgs),
+    /// Cp(x) and boundary-layer distributions (H, Cf, N) at one α or Cl, one case per
+    /// transition setting overlaid (e.g. --xtr 1,0.07: clean vs tripped).
+    PlotPoint(PlotPointArgs),
+}
+
+/// `polargen plot-point` options.
+#[derive(Args, Debug)]
+struct PlotPointArgs {
+    /// Airfoil: a name (naca8h12, nacaDDDD, nacaDDDDD) or a coordinate file.
+    #[arg(long, value_name = "NAME|PATH")]
+    airfoil: String,
+
+    /// Chord Reynolds number.
+    #[arg(long, allow_hyphen_values = true)]
+    re: f64,
+
+    /// Mach number, 0 ≤ M < 1.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    mach: f64,
+
+    /// Angle of attack [deg].
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        required_unless_present = "cl",
+        conflicts_with = "cl"
+    )]
+    alpha: Option<f64>,
+
+    /// Lift coefficient instead of α: each case is solved at the α giving this Cl.
+    #[arg(long, allow_hyphen_values = true)]
+    cl: Option<f64>,
+
+    /// Transition settings to overlay, comma-separated x/c on both surfaces (1 = free).
+    #[arg(
+        long,
+        value_name = "LIST",
+        default_value = "1",
+        allow_hyphen_values = true
+    )]
+    xtr: String,
+
+    /// Critical amplification ratio N of the e^n criterion.
+    #[arg(long, default_value_t = 9.0, allow_hyphen_values = true)]
+    ncrit: f64,
+
+    /// Number of panel nodes.
+    #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES)]
+    panels: usize,
+
+    /// Output image: FILE.svg or FILE.png.
+    #[arg(long, value_name = "FILE")]
+    out: PathBuf,
+
+    /// Also write the distributions as CSV (one row per station, surfaces and wake).
+    #[arg(long, value_name = "FILE")]
+    csv: Option<PathBuf>,
+
+    /// Figure title (default: airfoil, Re, M, α or Cl).
+    #[arg(long)]
+    title: Option<String>,
 }
 
 /// `polargen convert` options.
@@ -188,6 +253,7 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Some(Command::Plot(args)) => plot_tables(args),
         Some(Command::Convert(args)) => convert_table(args),
+        Some(Command::PlotPoint(args)) => plot_point(args),
         None if cli.run.inviscid => run_inviscid(&cli.run),
         None => run_viscous(&cli.run),
     };
@@ -245,19 +311,27 @@ fn mach_list(cli: &RunArgs, default: &[f64]) -> Result<Vec<f64>> {
 }
 
 /// Check the panel count and load + repanel the airfoil.
-fn load_airfoil(cli: &RunArgs) -> Result<Airfoil> {
-    if !(PANEL_RANGE.0..=PANEL_RANGE.1).contains(&cli.panels) {
+fn load_airfoil(spec: Option<&str>, panels: usize) -> Result<Airfoil> {
+    if !(PANEL_RANGE.0..=PANEL_RANGE.1).contains(&panels) {
         bail!(
-            "--panels {}: must be between {} and {}",
-            cli.panels,
+            "--panels {panels}: must be between {} and {}",
             PANEL_RANGE.0,
             PANEL_RANGE.1
         );
     }
-    let spec = cli.airfoil.as_deref().context("--airfoil is required")?;
-    let raw = airfoil_by_name_or_path(spec)?;
+    let spec = spec.context("--airfoil is required")?;
+    let given = airfoil_by_name_or_path(spec)?;
+    let (raw, normalised) = given
+        .in_chord_units()
+        .with_context(|| format!("locating the chord of {}", given.name))?;
+    if normalised {
+        eprintln!(
+            "polargen: note: {spec}: chord is not 1 or the leading edge is not at the origin; \
+             coordinates normalised to unit chord (LE at 0,0, TE at 1,0)"
+        );
+    }
     let foil = raw
-        .repanel(cli.panels, &PanelingParams::default())
+        .repanel(panels, &PanelingParams::default())
         .with_context(|| format!("paneling {}", raw.name))?;
     Ok(foil)
 }
@@ -270,7 +344,7 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
     };
     let alphas =
         parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA)).context("--alpha")?;
-    let foil = load_airfoil(cli)?;
+    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels)?;
     let system = PanelSystem::new(&foil).context("panel system")?;
     let mut csv = String::from("alpha,cl,cd,cm,converged\n");
     for &alpha in &alphas {
@@ -325,7 +399,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     if cli.out.is_none() && matches!(format, TableFormat::XfoilPolar | TableFormat::C81) {
         bail!("--format {}: needs --out (it writes files)", format.name());
     }
-    let foil = load_airfoil(cli)?;
+    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels)?;
 
     let nodes: Vec<(f64, f64)> = re
         .iter()
@@ -419,7 +493,7 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
     let mut curves: Vec<(String, Vec<PolarPoint>)> = Vec::new();
     let mut conditions: Vec<(f64, f64)> = Vec::new();
     for path in &args.tables {
-        let table = read_table(path)?;
+        let table = read_table_file(path)?;
         let grid = table.re().len() * table.mach().len() > 1;
         if grid && (args.re.is_none() || args.mach.is_none()) {
             bail!(
@@ -479,12 +553,219 @@ fn convert_table(args: &ConvertArgs) -> Result<()> {
         Some(f) => f.parse::<TableFormat>().context("--format")?,
         None => TableFormat::from_path(&args.out).context("--out")?,
     };
-    let table = read_table(&args.table)?;
+    let table = read_table_file(&args.table)?;
     let files = write_table(&table, &args.out, Some(format))?;
     if files.len() > 1 {
         eprintln!("polargen: wrote {} files", files.len());
     }
     Ok(())
+}
+
+/// One solved case of `plot-point`: its label, transition setting and solution.
+struct PointRun {
+    label: String,
+    solution: ViscousSolution,
+}
+
+/// `polargen plot-point`: solve each transition setting at the α (or Cl) asked for and draw
+/// Cp and the boundary-layer distributions of both surfaces.
+fn plot_point(args: &PlotPointArgs) -> Result<()> {
+    if !(args.re.is_finite() && args.re > 0.0) {
+        bail!("--re {}: the Reynolds number must be positive", args.re);
+    }
+    if !(0.0..1.0).contains(&args.mach) {
+        bail!("--mach {}: the Mach number must be in [0, 1)", args.mach);
+    }
+    if !(args.ncrit.is_finite() && args.ncrit > 0.0) {
+        bail!("--ncrit {}: must be a positive number", args.ncrit);
+    }
+    let xtrs = parse_list("xtr", &args.xtr)?;
+    if let Some(x) = xtrs.iter().find(|x| !(0.0..=1.0).contains(*x)) {
+        bail!("--xtr {x}: the transition location must be in [0, 1] (1 = free)");
+    }
+    let foil = load_airfoil(Some(&args.airfoil), args.panels)?;
+    let mut runs = Vec::new();
+    for &xtr in &xtrs {
+        let params = ViscousParams {
+            reynolds: args.re,
+            mach: args.mach,
+            ncrit: args.ncrit,
+            xtr_top: xtr,
+            xtr_bot: xtr,
+            ..ViscousParams::default()
+        };
+        let mut solver = ViscousSolver::new(&foil, params).context("viscous solver")?;
+        let label = if xtr >= 1.0 {
+            "free".to_string()
+        } else {
+            format!("xtr {xtr}")
+        };
+        let solution = match (args.alpha, args.cl) {
+            (_, Some(cl)) => solve_at_cl(&mut solver, cl, &TargetClParams::default())
+                .with_context(|| label.clone())?,
+            (Some(alpha), None) => {
+                if !alpha.is_finite() {
+                    bail!("--alpha {alpha}: not a finite angle");
+                }
+                let sol = solver.solve(alpha);
+                if !sol.point.converged {
+                    bail!("{label}: the viscous solution did not converge at alpha {alpha} deg");
+                }
+                sol
+            }
+            (None, None) => bail!("give --alpha or --cl"),
+        };
+        runs.push(PointRun { label, solution });
+    }
+
+    let distributions: Vec<SurfaceCurves> = runs
+        .iter()
+        .flat_map(|r| {
+            [
+                SurfaceCurves::new(&r.solution.upper, args.mach),
+                SurfaceCurves::new(&r.solution.lower, args.mach),
+            ]
+        })
+        .collect();
+    let labels: Vec<String> = runs
+        .iter()
+        .flat_map(|r| [format!("{} upper", r.label), format!("{} lower", r.label)])
+        .collect();
+    let cases: Vec<PointCase> = distributions
+        .iter()
+        .zip(&labels)
+        .enumerate()
+        .map(|(k, (d, label))| {
+            let (run, upper) = (&runs[k / 2], k % 2 == 0);
+            let style = if upper {
+                Style::solid(k / 2)
+            } else {
+                Style::dashed(k / 2)
+            };
+            let xtr = if upper {
+                run.solution.point.xtr_top
+            } else {
+                run.solution.point.xtr_bot
+            };
+            PointCase {
+                label,
+                style,
+                cp: (&d.x, &d.cp),
+                h: (&d.x, &d.h),
+                cf: (&d.x, &d.cf),
+                n: (&d.x, &d.n),
+                x_transition: xtr.is_finite().then_some(xtr),
+            }
+        })
+        .collect();
+    let title = match &args.title {
+        Some(t) => t.clone(),
+        None => {
+            let at = match args.cl {
+                Some(cl) => {
+                    let alphas: Vec<String> = runs
+                        .iter()
+                        .map(|r| format!("{:.2}° {}", r.solution.point.alpha, r.label))
+                        .collect();
+                    format!("Cl {cl} (α {})", alphas.join(", "))
+                }
+                None => format!("α {}°", args.alpha.unwrap_or(0.0)),
+            };
+            format!("{} — Re {}, M {}, {at}", foil.name, sci(args.re), args.mach)
+        }
+    };
+    if let Some(path) = &args.csv {
+        write_atomic(path, |w| write_point_csv(&runs, args.mach, w))?;
+    }
+    render(&point_figure(&cases, &title, Some(args.ncrit)), &args.out)?;
+    Ok(())
+}
+
+/// Plot-ready distributions of one surface: x/c, Cp (Karman–Tsien), H, Cf (free-stream
+/// based, as XFOIL plots it) and N on the laminar part (NaN where turbulent).
+struct SurfaceCurves {
+    x: Vec<f64>,
+    cp: Vec<f64>,
+    h: Vec<f64>,
+    cf: Vec<f64>,
+    n: Vec<f64>,
+}
+
+impl SurfaceCurves {
+    fn new(stations: &[BlStation], mach: f64) -> Self {
+        Self {
+            x: stations.iter().map(|s| s.x).collect(),
+            cp: stations
+                .iter()
+                .map(|s| karman_tsien_cp(1.0 - s.ue * s.ue, mach))
+                .collect(),
+            h: stations.iter().map(|s| s.h).collect(),
+            cf: stations.iter().map(|s| s.cf_inf).collect(),
+            n: stations
+                .iter()
+                .map(|s| if s.turbulent { f64::NAN } else { s.n_or_ctau })
+                .collect(),
+        }
+    }
+}
+
+/// The distributions of every case as CSV: one row per station of the upper and lower
+/// surface (stagnation point → TE) and the wake.
+fn write_point_csv(
+    runs: &[PointRun],
+    mach: f64,
+    w: &mut dyn Write,
+) -> std::result::Result<(), TableError> {
+    let io = |e| TableError::io("<plot-point csv>", e);
+    writeln!(
+        w,
+        "case,alpha,surface,s,x,y,ue,cp,dstar,theta,cf,h,hk,n_or_ctau,turbulent"
+    )
+    .map_err(io)?;
+    for r in runs {
+        let sol = &r.solution;
+        for (surface, stations) in [
+            ("upper", &sol.upper),
+            ("lower", &sol.lower),
+            ("wake", &sol.wake),
+        ] {
+            for s in stations.iter() {
+                writeln!(
+                    w,
+                    "{},{},{surface},{},{},{},{},{},{},{},{},{},{},{},{}",
+                    r.label,
+                    sol.point.alpha,
+                    s.s,
+                    s.x,
+                    s.y,
+                    s.ue,
+                    karman_tsien_cp(1.0 - s.ue * s.ue, mach),
+                    s.dstar,
+                    s.theta,
+                    s.cf_inf,
+                    s.h,
+                    s.hk,
+                    s.n_or_ctau,
+                    s.turbulent
+                )
+                .map_err(io)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Read a table file; the error names the file when the reader's message does not.
+fn read_table_file(path: &std::path::Path) -> Result<PolarTable> {
+    read_table(path).map_err(|e| {
+        let msg = e.to_string();
+        let name = path.display().to_string();
+        if msg.contains(&name) {
+            anyhow::Error::new(e)
+        } else {
+            anyhow::anyhow!("{name}: {msg}")
+        }
+    })
 }
 
 /// Error when `value` lies outside a table axis (beyond 0.1 % of the span).

@@ -23,6 +23,10 @@ pub use paneling::{PaneledAirfoil, PanelingParams, DEFAULT_PANEL_NODES};
 pub use registry::{airfoil_by_name_or_path, naca8h12};
 pub use spline::{ContourSpline, CubicSpline, EndCondition};
 
+/// Deviation of the chord from 1 and of the leading-edge point from the origin (chord units)
+/// up to which [`Airfoil::in_chord_units`] keeps a contour as given.
+pub const CHORD_UNITS_TOLERANCE: f64 = 0.01;
+
 /// An airfoil contour as an ordered list of points in XFOIL order: from the upper-surface
 /// trailing edge, forward over the upper surface, around the leading edge and back along the
 /// lower surface to the lower-surface trailing edge (counter-clockwise for a normal airfoil).
@@ -131,6 +135,26 @@ impl Airfoil {
             x,
             y,
         })
+    }
+
+    /// The contour in chord units. A contour whose chord is 1 and whose leading-edge point is
+    /// at the origin within [`CHORD_UNITS_TOLERANCE`] is returned as given (like XFOIL, which
+    /// does not normalise, so results on standard files match XFOIL's); any other (e.g.
+    /// ordinates in millimetres or percent, or a shifted contour) is [`normalized`]. The flag
+    /// says whether it was normalised.
+    ///
+    /// [`normalized`]: Self::normalized
+    pub fn in_chord_units(&self) -> Result<(Airfoil, bool), GeometryError> {
+        let sp = self.spline()?;
+        let (xl, yl) = sp.point(sp.leading_edge()?);
+        let (xt, yt) = sp.te_midpoint();
+        let chord = (xt - xl).hypot(yt - yl);
+        let tol = CHORD_UNITS_TOLERANCE;
+        if (chord - 1.0).abs() <= tol && xl.hypot(yl) <= tol {
+            Ok((self.clone(), false))
+        } else {
+            Ok((self.normalized()?, true))
+        }
     }
 
     /// Curvature-based repaneling to `n` nodes (XFOIL `PANGEN`), with helper data for the

@@ -58,6 +58,9 @@ pub enum InviscidError {
     /// Wake parameters cannot produce a wake.
     #[error("invalid wake parameters: {0}")]
     InvalidWake(&'static str),
+    /// The contour spline could not be built (geometry layer message).
+    #[error("contour spline: {0}")]
+    Spline(String),
     /// The streamline tracing of the wake met a stagnation point (zero velocity).
     #[error("wake tracing met zero velocity at wake node {0}")]
     WakeStagnation(usize),

@@ -17,6 +17,7 @@
 use std::f64::consts::PI;
 
 use super::error::InviscidError;
+use crate::geometry::CubicSpline;
 
 /// 1/(4π): normalisation of a linear panel's ψ integral (XFOIL QOPI).
 const QOPI: f64 = 0.25 / PI;
@@ -143,8 +144,15 @@ impl PanelGeometry {
         if area2 < 0.0 {
             return Err(InviscidError::ClockwiseContour);
         }
-        let xp = spline_slopes(x, &s);
-        let yp = spline_slopes(y, &s);
+        // dX/ds, dY/ds at the nodes: XFOIL's contour spline (SEGSPL, zero third derivative
+        // at both ends).
+        let slopes = |v: &[f64]| {
+            CubicSpline::xfoil_default(&s, v)
+                .map(|sp| sp.node_derivatives().to_vec())
+                .map_err(|e| InviscidError::Spline(e.to_string()))
+        };
+        let xp = slopes(x)?;
+        let yp = slopes(y)?;
         let mut nx = vec![0.0; n];
         let mut ny = vec![0.0; n];
         for i in 0..n {
@@ -291,41 +299,6 @@ fn leading_edge(
         }
     }
     best
-}
-
-/// Cubic-spline first derivatives dX/ds at the nodes with zero third derivative at both ends
-/// (XFOIL spline.f SPLIND with XS1 = XS2 = −999), solved with the Thomas algorithm.
-pub fn spline_slopes(v: &[f64], s: &[f64]) -> Vec<f64> {
-    let n = v.len();
-    let mut a = vec![0.0; n]; // diagonal
-    let mut b = vec![0.0; n]; // sub-diagonal
-    let mut c = vec![0.0; n]; // super-diagonal
-    let mut d = vec![0.0; n];
-    for i in 1..n - 1 {
-        let dsm = s[i] - s[i - 1];
-        let dsp = s[i + 1] - s[i];
-        b[i] = dsp;
-        a[i] = 2.0 * (dsm + dsp);
-        c[i] = dsm;
-        d[i] = 3.0 * ((v[i + 1] - v[i]) * dsm / dsp + (v[i] - v[i - 1]) * dsp / dsm);
-    }
-    a[0] = 1.0;
-    c[0] = 1.0;
-    d[0] = 2.0 * (v[1] - v[0]) / (s[1] - s[0]);
-    b[n - 1] = 1.0;
-    a[n - 1] = 1.0;
-    d[n - 1] = 2.0 * (v[n - 1] - v[n - 2]) / (s[n - 1] - s[n - 2]);
-    // Forward elimination, back substitution.
-    for i in 1..n {
-        let w = b[i] / a[i - 1];
-        a[i] -= w * c[i - 1];
-        d[i] -= w * d[i - 1];
-    }
-    d[n - 1] /= a[n - 1];
-    for i in (0..n - 1).rev() {
-        d[i] = (d[i] - c[i] * d[i + 1]) / a[i];
-    }
-    d
 }
 
 /// Distance between two points (plain square root, as XFOIL; faster than `hypot`).

@@ -83,6 +83,15 @@ pub struct RotorParams {
     pub tip_loss_b: Option<f64>,
     /// Induced-inflow model: "glauert" (uniform) or "drees" (linear).
     pub inflow: String,
+    /// Induced-power factor κ (induced velocity = κ × Glauert's momentum value, see
+    /// [`crate::rotor::Rotor::induced_power_factor`]); omitted → 1 (ideal momentum theory).
+    #[serde(default = "ideal_induced_power_factor")]
+    pub induced_power_factor: f64,
+}
+
+/// κ = 1: ideal momentum theory (the default when a preset omits the factor).
+fn ideal_induced_power_factor() -> f64 {
+    1.0
 }
 
 /// Propeller and engine map (see [`crate::rotor::propeller`]).
@@ -119,11 +128,10 @@ pub struct TakeoffParams {
     pub head_angle_min_deg: f64,
     /// Rolling-friction coefficient of the wheels.
     pub rolling_friction: f64,
-    /// Largest climb rate the pilot aims for after lift-off [m/s].
-    pub target_climb_rate_ms: f64,
-    /// Climb rate the pilot aims for per airspeed gained since lift-off [(m/s)/(m/s)].
-    pub climb_rate_per_speed_gain: f64,
-    /// Pilot gain: change of rotor-disc angle per climb-rate error [deg per m/s].
+    /// Airspeed the pilot accelerates to during the climb, reached at the screen height [kt]
+    /// (see [`crate::rotor::takeoff`] for the pilot model).
+    pub climb_speed_kt: f64,
+    /// Pilot gain: rate of change of the rotor-disc angle per airspeed error [deg/s per m/s].
     pub pilot_gain_deg_per_ms: f64,
     /// Pilot (and control-system) time constant [s].
     pub pilot_time_constant_s: f64,
@@ -253,6 +261,13 @@ impl Aircraft {
                 reason: "must be \"glauert\" or \"drees\"",
             });
         }
+        if !(r.induced_power_factor >= 1.0 && r.induced_power_factor <= 2.0) {
+            return Err(AircraftError::Invalid {
+                field: "rotor.induced_power_factor",
+                value: r.induced_power_factor,
+                reason: "must be between 1 and 2",
+            });
+        }
         let p = &self.propeller;
         positive("propeller.diameter_m", p.diameter_m)?;
         positive("propeller.gear_ratio", p.gear_ratio)?;
@@ -273,11 +288,7 @@ impl Aircraft {
             });
         }
         non_negative("takeoff.rolling_friction", t.rolling_friction)?;
-        non_negative("takeoff.target_climb_rate_ms", t.target_climb_rate_ms)?;
-        non_negative(
-            "takeoff.climb_rate_per_speed_gain",
-            t.climb_rate_per_speed_gain,
-        )?;
+        positive("takeoff.climb_speed_kt", t.climb_speed_kt)?;
         non_negative("takeoff.pilot_gain_deg_per_ms", t.pilot_gain_deg_per_ms)?;
         positive("takeoff.pilot_time_constant_s", t.pilot_time_constant_s)?;
         positive("takeoff.screen_height_m", t.screen_height_m)?;

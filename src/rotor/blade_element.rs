@@ -10,6 +10,14 @@
 //! section's 360° model supplies the coefficients. Lift is perpendicular to the relative wind
 //! with the same orientation for every α, so its sign follows from c_l without special cases
 //! (blade-element theory: Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §3.2).
+//!
+//! Yawed (radial) flow: in forward flight the air also runs along the blade, U_R = V cos α_H cos ψ.
+//! By the independence principle lift, α, Re and M follow from the chord-normal components
+//! (U_T, U_P) alone, but skin friction acts along the whole relative wind, so the profile drag
+//! is ½ρc·c_d·W₃·(U_T, U_P, U_R) with W₃ = √(U_T² + U_P² + U_R²). This is the radial-flow
+//! contribution that raises the forward-flight profile power from (σc_d0/8)(1 + 3μ²) to about
+//! (σc_d0/8)(1 + 4.6μ²) (Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., ch. 5,
+//! profile power in forward flight; Johnson, *Helicopter Theory*, ch. 5).
 
 use crate::table::{Lookup, SectionAero};
 
@@ -31,6 +39,9 @@ pub struct StripFlow {
     pub ut: f64,
     /// Upflow through the rotor normal to the blade [m/s].
     pub up: f64,
+    /// Radial (spanwise) air speed along the blade, outwards positive [m/s]; it adds profile
+    /// drag only (see the module documentation). Zero unless set with [`StripFlow::with_radial`].
+    pub ur: f64,
     /// Resultant speed W = √(U_T² + U_P²) [m/s].
     pub speed: f64,
     /// Section angle of attack α = θ + atan2(U_P, U_T), wrapped to (−180°, 180°] [deg].
@@ -49,11 +60,22 @@ impl StripFlow {
         Self {
             ut,
             up,
+            ur: 0.0,
             speed,
             alpha_deg: wrap_deg((theta + phi).to_degrees()),
             reynolds: air.density * speed * chord / air.viscosity,
             mach: speed / air.speed_of_sound,
         }
+    }
+
+    /// The same strip with radial (spanwise) air speed `ur` [m/s], outwards positive.
+    pub fn with_radial(self, ur: f64) -> Self {
+        Self { ur, ..self }
+    }
+
+    /// Resultant speed including the radial component, W₃ = √(W² + U_R²) [m/s].
+    pub fn speed_with_radial(&self) -> f64 {
+        self.speed.hypot(self.ur)
     }
 
     /// True when the air arrives at the trailing edge (U_T < 0).
@@ -74,10 +96,13 @@ pub struct StripLoad {
     pub tangential: f64,
     /// Force normal to the blade, upwards (thrust and flap moment).
     pub normal: f64,
+    /// Force along the blade, outwards (radial-flow profile drag; H-force and side force).
+    pub radial: f64,
 }
 
-/// Loads per unit span from the velocity triangle: with q·c = ½ρW²c,
-/// F_t = ½ρWc (c_l·U_P − c_d·U_T), F_n = ½ρWc (c_l·U_T + c_d·U_P).
+/// Loads per unit span from the velocity triangle: lift on the chord-normal speed W, profile
+/// drag on the full speed W₃ (yawed flow, module documentation),
+/// F_t = ½ρc (c_l·W·U_P − c_d·W₃·U_T), F_n = ½ρc (c_l·W·U_T + c_d·W₃·U_P), F_r = ½ρc·c_d·W₃·U_R.
 /// `lift_factor` ∈ [0, 1] scales the lift only (tip loss: the part of the strip outboard of
 /// B·R carries drag but no lift).
 pub fn strip_load(
@@ -87,11 +112,12 @@ pub fn strip_load(
     chord: f64,
     lift_factor: f64,
 ) -> StripLoad {
-    let k = 0.5 * density * flow.speed * chord;
-    let cl = coeffs.cl * lift_factor;
+    let k_lift = 0.5 * density * flow.speed * chord * coeffs.cl * lift_factor;
+    let k_drag = 0.5 * density * flow.speed_with_radial() * chord * coeffs.cd;
     StripLoad {
-        tangential: k * (cl * flow.up - coeffs.cd * flow.ut),
-        normal: k * (cl * flow.ut + coeffs.cd * flow.up),
+        tangential: k_lift * flow.up - k_drag * flow.ut,
+        normal: k_lift * flow.ut + k_drag * flow.up,
+        radial: k_drag * flow.ur,
     }
 }
 

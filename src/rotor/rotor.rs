@@ -87,6 +87,14 @@ pub struct Rotor {
     pub tip_loss_b: Option<f64>,
     /// Inflow model.
     pub inflow: InflowModel,
+    /// Induced-power factor κ ≥ 1: the uniform induced velocity is κ times Glauert's
+    /// momentum value, so the induced power is κ·T·v_Glauert. κ carries the losses of the
+    /// real, non-uniform inflow of a finite-bladed rotor (tip vortices, root losses, the
+    /// skewed wake) that ideal momentum theory leaves out; the usual empirical values are
+    /// κ ≈ 1.15 in hover and about the same at moderate advance ratios (Leishman, *Principles
+    /// of Helicopter Aerodynamics*, 2nd ed., ch. 2 "induced power factor" and ch. 5 forward-flight
+    /// performance; Johnson, *Helicopter Theory*, ch. 5). κ = 1 is ideal momentum theory.
+    pub induced_power_factor: f64,
     /// Numerics.
     pub solver: RotorSolverParams,
 }
@@ -198,7 +206,8 @@ impl Rotor {
             Some(b) => b,
             None => {
                 let rho = cond.atmosphere.density;
-                let t = glauert_thrust(v0, rho, self.disc_area(), cond.airspeed, cond.hub_aoa);
+                let v_ideal = v0 / self.induced_power_factor;
+                let t = glauert_thrust(v_ideal, rho, self.disc_area(), cond.airspeed, cond.hub_aoa);
                 let tip = cond.omega * self.radius;
                 gessow_myers_tip_loss(t / (rho * self.disc_area() * tip * tip), self.blades)
             }
@@ -222,7 +231,8 @@ impl Rotor {
 
     /// Velocity triangle of blade 1 at radius `r`, azimuth `psi`:
     /// U_T = Ωr + V cos α_H sin ψ,
-    /// U_P = V sin α_H − v_i(r, ψ) − Ωr dβ/dψ − V cos α_H β cos ψ
+    /// U_P = V sin α_H − v_i(r, ψ) − Ωr dβ/dψ − V cos α_H β cos ψ,
+    /// U_R = V cos α_H cos ψ (radial, drag only; see [`super::blade_element`])
     /// (small flap angles; Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §4.7,
     /// with the normal velocity counted upwards).
     pub fn strip_flow(
@@ -242,6 +252,7 @@ impl Rotor {
             - cond.omega * r * teeter.beta_rate(psi)
             - edge * beta * psi.cos();
         StripFlow::new(ut, up, self.pitch, self.chord, &Self::air(cond))
+            .with_radial(edge * psi.cos())
     }
 
     /// Blade-element sum for inflow `v0` and flapping `teeter`.
@@ -263,7 +274,7 @@ impl Rotor {
             let psi = TAU * k as f64 / n as f64;
             let beta = teeter.beta(psi);
             let (sp, cp) = psi.sin_cos();
-            let (mut ft_sum, mut fn_sum, mut q, mut m) = (0.0, 0.0, 0.0, 0.0);
+            let (mut ft_sum, mut fn_sum, mut fr_sum, mut q, mut m) = (0.0, 0.0, 0.0, 0.0, 0.0);
             for &r in &radii {
                 let flow = self.strip_flow(cond, v0, teeter, r, psi);
                 if flow.is_reversed() {
@@ -279,15 +290,19 @@ impl Rotor {
                 );
                 ft_sum += load.tangential * dr;
                 fn_sum += load.normal * dr;
+                fr_sum += load.radial * dr;
                 q += load.tangential * r * dr;
                 m += load.normal * r * dr;
             }
             *moment = m;
-            // Force on the hub from blade 1: F_t e_t + F_n (−sin β e_r + cos β e_z),
+            // Force on the hub from blade 1:
+            // F_t e_t + F_n (−sin β e_r + cos β e_z) + F_r (cos β e_r + sin β e_z),
             // e_r = (cos ψ, sin ψ), e_t = (−sin ψ, cos ψ).
-            loads.thrust += fn_sum * beta.cos();
-            loads.h_force += -ft_sum * sp - fn_sum * beta.sin() * cp;
-            loads.side_force += ft_sum * cp - fn_sum * beta.sin() * sp;
+            let (sb, cb) = beta.sin_cos();
+            let inplane_r = fr_sum * cb - fn_sum * sb;
+            loads.thrust += fn_sum * cb + fr_sum * sb;
+            loads.h_force += -ft_sum * sp + inplane_r * cp;
+            loads.side_force += ft_sum * cp + inplane_r * sp;
             loads.torque += q;
         }
         // Both blades: blade 2 reproduces blade 1's loads half a revolution later.
@@ -304,7 +319,7 @@ impl Rotor {
     }
 
     /// Scaled residuals of the coupled problem for unknowns z = (v0/ΩR, β1c, β1s):
-    /// momentum balance (v0 − v_Glauert(T))/ΩR and the first-harmonic teeter moments divided
+    /// momentum balance (v0 − κ·v_Glauert(T))/ΩR and the first-harmonic teeter moments divided
     /// by ½ρ(ΩR)²cR².
     fn residuals<S: SectionAero + ?Sized>(
         &self,
@@ -320,13 +335,14 @@ impl Rotor {
             beta1s: z[2],
         };
         let loads = self.evaluate(section, cond, z[0] * tip, &teeter);
-        let v_mt = glauert_induced_velocity(
-            loads.thrust,
-            rho,
-            self.disc_area(),
-            cond.airspeed,
-            cond.hub_aoa,
-        );
+        let v_mt = self.induced_power_factor
+            * glauert_induced_velocity(
+                loads.thrust,
+                rho,
+                self.disc_area(),
+                cond.airspeed,
+                cond.hub_aoa,
+            );
         let mscale = 0.5 * rho * tip * tip * self.chord * self.radius * self.radius;
         (
             [
@@ -513,6 +529,7 @@ impl Rotor {
             radial_strips: p.radial_strips,
             azimuth_steps: p.azimuth_steps,
             tip_loss_b: p.tip_loss_b,
+            induced_power_factor: p.induced_power_factor,
             inflow: if p.inflow == "drees" {
                 InflowModel::Drees
             } else {

@@ -354,18 +354,25 @@ impl Tally {
 
     fn sentence(&self) -> String {
         let total = self.matches + self.close + self.differs.len();
+        // Verb agreeing with a count: "1 matches", "2 match".
+        let verb =
+            |n: usize, one: &'static str, many: &'static str| if n == 1 { one } else { many };
         let mut s = format!(
-            "Of {total} values, {} match the paper within {MATCH_PERCENT} %, {} are within \
+            "Of {total} values, {} {} the paper within {MATCH_PERCENT} %, {} {} within \
              {CLOSE_PERCENT} %",
-            self.matches, self.close
+            self.matches,
+            verb(self.matches, "matches", "match"),
+            self.close,
+            verb(self.close, "is", "are"),
         );
         if self.differs.is_empty() {
             s.push_str(" and none differs by more.");
         } else {
+            let n = self.differs.len();
             let _ = write!(
                 s,
-                " and {} differ by more: {}.",
-                self.differs.len(),
+                " and {n} {} by more: {}.",
+                verb(n, "differs", "differ"),
                 self.differs.join(", ")
             );
         }
