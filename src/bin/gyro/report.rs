@@ -835,7 +835,8 @@ fn power_section(o: &mut String, rotor: &RotorResults) {
     let p60 = rotor.trims.clone().map(|t| t.power_required_kw);
     outln!(
         o,
-        "Minimum power: clean {:.1} kW at {:.0} kt, contaminated {:.1} kW at {:.0} kt ({}). At \
+        "Minimum power on the sweep's speed grid: clean {:.1} kW at {:.0} kt, contaminated {:.1} \
+         kW at {:.0} kt ({}). At \
          {PAPER_TRIM_SPEED_KT} kt: clean {:.1} kW, contaminated {:.1} kW ({}).",
         mc.1,
         mc.0,
