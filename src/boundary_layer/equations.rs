@@ -16,7 +16,7 @@ use super::station::Station;
 /// (turbulent, wake), 1 = momentum, 2 = shape parameter. Columns of `d1`/`d2`:
 /// (s, θ, δ*, u, ξ) of station 1 / station 2, with u the incompressible edge speed and δ*
 /// the total displacement thickness (XFOIL VS1/VS2 after BLSYS's Uec → Uei conversion).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct IntervalEquations {
     /// Residuals R of the three equations.
     pub res: [f64; 3],
@@ -27,6 +27,18 @@ pub struct IntervalEquations {
 }
 
 impl IntervalEquations {
+    /// d1 + d2: the Jacobian with respect to one station when station 1 and station 2
+    /// coincide (similarity station).
+    pub fn combined_jacobian(&self) -> [[f64; 5]; 3] {
+        let mut d = self.d2;
+        for (row, row1) in d.iter_mut().zip(&self.d1) {
+            for (v, v1) in row.iter_mut().zip(row1) {
+                *v += v1;
+            }
+        }
+        d
+    }
+
     /// Splits three residual derivative numbers into values and station Jacobians.
     pub(crate) fn from_duals(r: &[Dual; 3]) -> Self {
         debug_assert_eq!(NVARS, 10);

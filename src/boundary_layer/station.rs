@@ -11,7 +11,7 @@ use super::params::{BlParams, FlowConstants, Regime};
 use super::BlError;
 
 /// Primary variables of one station (XFOIL BLPRV arguments).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct StationVars {
     /// ξ: arc length from the stagnation point, chord units (XFOIL XSSI).
     pub x: f64,

@@ -12,59 +12,9 @@
 
 use super::error::ViscousError;
 
-/// Primary variables of one station (XFOIL BLPRV arguments).
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
-pub struct StationVars {
-    /// ξ: arc length from the stagnation point, in chords.
-    pub x: f64,
-    /// Incompressible edge speed Ue/V∞ (XFOIL UEDG).
-    pub u: f64,
-    /// Momentum thickness θ, in chords.
-    pub theta: f64,
-    /// Total displacement thickness δ* = m/Ue including the wake gap, in chords.
-    pub dstar: f64,
-    /// √Cτ (turbulent/wake) or amplification N (laminar).
-    pub s: f64,
-    /// Wake gap thickness (0 on the airfoil), in chords.
-    pub dw: f64,
-}
-
-/// Flow regime of an interval or a station.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Regime {
-    /// Laminar: amplification equation for N.
-    Laminar,
-    /// Turbulent attached/separated layer: shear-lag equation for √Cτ.
-    Turbulent,
-    /// Wake: turbulent with zero wall friction.
-    Wake,
-}
-
-/// Residuals of the three equations of one interval and their Jacobians with respect to the
-/// upstream (`d1`) and downstream (`d2`) station variables, columns (s, θ, δ*, u, ξ).
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
-pub struct IntervalEquations {
-    /// Residuals f of (1) amplification or shear lag, (2) momentum, (3) shape parameter.
-    pub res: [f64; 3],
-    /// ∂f/∂(station 1 variables).
-    pub d1: [[f64; 5]; 3],
-    /// ∂f/∂(station 2 variables).
-    pub d2: [[f64; 5]; 3],
-}
-
-impl IntervalEquations {
-    /// d1 + d2: the Jacobian w.r.t. one station when station 1 and station 2 coincide
-    /// (similarity station).
-    pub fn combined_jacobian(&self) -> [[f64; 5]; 3] {
-        let mut d = self.d2;
-        for (row, row1) in d.iter_mut().zip(&self.d1) {
-            for (v, v1) in row.iter_mut().zip(row1) {
-                *v += v1;
-            }
-        }
-        d
-    }
-}
+/// Station variables, flow regime and interval equations are the boundary-layer layer's own
+/// types: the coupling works on exactly what the closures take and return.
+pub use crate::boundary_layer::{IntervalEquations, Regime, StationVars};
 
 /// An interval in which the layer becomes turbulent.
 #[derive(Clone, Copy, Debug, PartialEq)]

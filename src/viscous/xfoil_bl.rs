@@ -36,39 +36,9 @@ fn err(station: usize) -> impl Fn(bl::BlError) -> ViscousError {
     }
 }
 
-fn to_bl(v: &StationVars) -> bl::StationVars {
-    bl::StationVars {
-        x: v.x,
-        u: v.u,
-        theta: v.theta,
-        dstar: v.dstar,
-        s: v.s,
-        dw: v.dw,
-    }
-}
-
-fn to_regime(r: Regime) -> bl::Regime {
-    match r {
-        Regime::Laminar => bl::Regime::Laminar,
-        Regime::Turbulent => bl::Regime::Turbulent,
-        Regime::Wake => bl::Regime::Wake,
-    }
-}
-
-fn from_eq(e: bl::IntervalEquations) -> IntervalEquations {
-    IntervalEquations {
-        res: e.res,
-        d1: e.d1,
-        d2: e.d2,
-    }
-}
-
 impl BoundaryLayerModel for XfoilBoundaryLayer {
     fn similarity(&self, st: &StationVars) -> Result<IntervalEquations, ViscousError> {
-        self.model
-            .similarity(&to_bl(st))
-            .map(from_eq)
-            .map_err(err(usize::MAX))
+        self.model.similarity(st).map_err(err(usize::MAX))
     }
 
     fn interval(
@@ -78,8 +48,7 @@ impl BoundaryLayerModel for XfoilBoundaryLayer {
         st2: &StationVars,
     ) -> Result<IntervalEquations, ViscousError> {
         self.model
-            .interval(to_regime(regime), &to_bl(st1), &to_bl(st2))
-            .map(from_eq)
+            .interval(regime, st1, st2)
             .map_err(err(usize::MAX))
     }
 
@@ -91,10 +60,10 @@ impl BoundaryLayerModel for XfoilBoundaryLayer {
     ) -> Result<Option<TransitionInterval>, ViscousError> {
         let t = self
             .model
-            .transition_interval(&to_bl(st1), &to_bl(st2), xi_forced)
+            .transition_interval(st1, st2, xi_forced)
             .map_err(err(usize::MAX))?;
         Ok(t.map(|t| TransitionInterval {
-            equations: from_eq(t.eqs),
+            equations: t.eqs,
             xi_transition: t.xi_tr,
             forced: t.kind == bl::TransitionKind::Forced,
         }))
@@ -109,7 +78,7 @@ impl BoundaryLayerModel for XfoilBoundaryLayer {
     ) -> Result<JunctionEquations, ViscousError> {
         let j = self
             .model
-            .te_junction(&to_bl(upper), &to_bl(lower), &to_bl(wake), ante.abs())
+            .te_junction(upper, lower, wake, ante.abs())
             .map_err(err(usize::MAX))?;
         Ok(JunctionEquations {
             res: j.res,
@@ -124,11 +93,7 @@ impl BoundaryLayerModel for XfoilBoundaryLayer {
         regime: Regime,
         st: &StationVars,
     ) -> Result<StationProperties, ViscousError> {
-        let r = to_regime(regime);
-        let p = self
-            .model
-            .properties(&to_bl(st), r)
-            .map_err(err(usize::MAX))?;
+        let p = self.model.properties(st, regime).map_err(err(usize::MAX))?;
         let (_, hk_d) = self.kinematic_shape_factor(st);
         // Edge density from the edge Mach number, isentropic (XFOIL BLKIN: R2 = RSTBL·TR2^(−1/γ−1)).
         let gm1 = self.model.flow.gm1;
@@ -147,7 +112,7 @@ impl BoundaryLayerModel for XfoilBoundaryLayer {
 
     fn squire_young(&self, last: &StationVars) -> Result<f64, ViscousError> {
         self.model
-            .squire_young(&to_bl(last))
+            .squire_young(last)
             .map(|s| s.cd)
             .map_err(err(usize::MAX))
     }
