@@ -12,10 +12,7 @@ fn bench_sweeps(c: &mut Criterion) {
         .and_then(|a| a.repanel(160, &PanelingParams::default()))
         .expect("8-H-12 geometry");
     let alphas = parse_alpha_range("-4:12:0.5").expect("range");
-    let sweep_params = SweepParams {
-        fresh_retry: false,
-        ..SweepParams::default()
-    };
+    let sweep_params = SweepParams::default();
     let mut group = c.benchmark_group("naca8h12_Re1.9e6_M0.41");
     group.sample_size(10);
     for (name, xtr) in [("free", 1.0), ("xtr0.07", 0.07)] {

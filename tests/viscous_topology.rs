@@ -181,3 +181,28 @@ fn solver_is_send() {
     fn assert_send<T: Send>() {}
     assert_send::<ViscousSolver>();
 }
+
+/// A fresh start depends on α alone: after it failed at some α it is not run again there, and
+/// with `fresh_retry` off a failed warm start is not retried inside `solve`.
+#[test]
+fn failed_fresh_start_is_not_repeated() {
+    let foil = polargen::geometry::airfoil_by_name_or_path("naca0012")
+        .and_then(|a| a.repanel(160, &polargen::geometry::PanelingParams::default()))
+        .unwrap();
+    // One Newton iteration cannot converge a fresh march.
+    let params = ViscousParams {
+        max_iterations: 1,
+        ..ViscousParams::default()
+    };
+    let mut solver = ViscousSolver::new(&foil, params).unwrap();
+    let first = solver.solve(4.0).point;
+    assert!(!first.converged);
+    assert_eq!(first.iterations, 1);
+    solver.reset();
+    let again = solver.solve(4.0).point;
+    assert!(!again.converged);
+    assert_eq!(again.iterations, 0, "the failed fresh start was run again");
+    // Another α is tried normally.
+    solver.reset();
+    assert_eq!(solver.solve(3.0).point.iterations, 1);
+}

@@ -418,11 +418,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         &nodes,
         &alphas,
         cli.threads,
-        // The viscous solver retries a failed point from a fresh start itself.
-        &SweepParams {
-            fresh_retry: false,
-            ..SweepParams::default()
-        },
+        &SweepParams::default(),
         |reynolds, mach| {
             ViscousSweep::new(
                 &foil,

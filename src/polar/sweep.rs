@@ -31,8 +31,9 @@ pub struct SweepParams {
     /// How many times the step from the last converged neighbour is halved when retrying a
     /// failed point (1 → a half step, 2 → also quarter steps).
     pub substep_levels: u32,
-    /// Retry a failed point once more from a fresh (inviscid) start. Off for solvers that
-    /// already do so inside one solve (the viscous solver does).
+    /// Retry a failed point once more from a fresh (inviscid) start, after the sub-steps.
+    /// Off for solvers that already do so inside one solve ([`ViscousSweep`](super::ViscousSweep)
+    /// turns the viscous solver's own retry off and relies on this one).
     pub fresh_retry: bool,
     /// After this many failures in a row along one branch (typically past stall), further
     /// points of that branch are still solved once each, but without the costly recovery.

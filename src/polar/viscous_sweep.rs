@@ -13,8 +13,14 @@ pub struct ViscousSweep {
 }
 
 impl ViscousSweep {
-    /// Solver for an already paneled airfoil at the given condition.
+    /// Solver for an already paneled airfoil at the given condition. The solver's own
+    /// fresh-start retry is turned off: the sweep retries from a fresh start itself, after
+    /// sub-stepping from the converged neighbour (`SweepParams::fresh_retry`).
     pub fn new(airfoil: &Airfoil, params: ViscousParams) -> Result<Self, ViscousError> {
+        let params = ViscousParams {
+            fresh_retry: false,
+            ..params
+        };
         Ok(Self {
             solver: ViscousSolver::new(airfoil, params)?,
         })

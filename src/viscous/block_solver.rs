@@ -81,6 +81,12 @@ impl BlockSystem {
 
     /// Solves the system; returns w_k = (δs_k, δθ_k, δm_k) for every station.
     pub fn solve(&self) -> Result<Vec<[f64; 3]>, ViscousError> {
+        self.clone().solve_in_place()
+    }
+
+    /// Solves the system like [`solve`](Self::solve), using the storage of the dense mass
+    /// columns V for L⁻¹V (no copy of the 3n×n block; the system is consumed).
+    pub fn solve_in_place(mut self) -> Result<Vec<[f64; 3]>, ViscousError> {
         let n = self.n;
         let inv: Vec<Block3> = self
             .diag
@@ -91,7 +97,7 @@ impl BlockSystem {
 
         // Forward substitution y = L⁻¹ r and Y = L⁻¹ V (Y row-major like V).
         let mut y = vec![[0.0; 3]; n];
-        let mut big_y = self.dense.clone();
+        let mut big_y = std::mem::take(&mut self.dense);
         let mut t3 = vec![0.0; 3 * n];
         for k in 0..n {
             let mut t = self.rhs[k];

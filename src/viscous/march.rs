@@ -19,6 +19,13 @@ pub struct MarchParams {
     pub max_relative_step: f64,
     /// Initial √Cτ guessed for the first turbulent station.
     pub ctau_sqrt_initial: f64,
+    /// Convergence threshold on the largest relative change of the local iterations of the
+    /// mixed-mode re-march before each global Newton iteration (XFOIL MRCHDU DEPS = 5e-6).
+    /// The re-march only prepares the state for the global Newton step, whose own tolerance
+    /// decides the converged result, so converged points do not depend on it (checked on the
+    /// default grid: unchanged to < 1e-5 relative except where a stalled polar has two
+    /// solutions); 1e-4 instead of 5e-6 cuts the default-grid time by 15–40 %.
+    pub mixed_mode_tolerance: f64,
 }
 
 impl Default for MarchParams {
@@ -28,6 +35,7 @@ impl Default for MarchParams {
             tolerance: 1e-5,
             max_relative_step: 0.3,
             ctau_sqrt_initial: 0.03,
+            mixed_mode_tolerance: 1.0e-4,
         }
     }
 }
@@ -302,9 +310,6 @@ pub fn march(
 /// Weight of the prescribed Ue–Hk combination of the mixed-mode march (XFOIL MRCHDU SENSWT).
 pub const MIXED_MODE_WEIGHT: f64 = 1000.0;
 
-/// Convergence threshold of the mixed-mode local iterations (XFOIL MRCHDU DEPS).
-pub const MIXED_MODE_TOLERANCE: f64 = 5.0e-6;
-
 /// Re-marches the boundary layer in mixed mode from the current state (XFOIL xbl.f MRCHDU):
 /// at every station the three interval equations are solved together with a prescribed
 /// combination of Ue and Hk that lies quasi-normal to the local Ue–Hk characteristic, so that
@@ -518,7 +523,7 @@ pub fn remarch_mixed(
             if hk_new < hk_floor && hk_d_new[1] > 0.0 {
                 ds += (hk_floor - hk_new) / hk_d_new[1];
             }
-            if dmax <= MIXED_MODE_TOLERANCE {
+            if dmax <= params.mixed_mode_tolerance {
                 converged = true;
                 break;
             }

@@ -40,6 +40,10 @@ pub struct ViscousParams {
     /// The mixed-mode re-march before each Newton iteration (XFOIL MRCHDU) is skipped once the
     /// RMS relative Newton change is below this value (0 = always re-march, as XFOIL).
     pub remarch_below: f64,
+    /// Retry a failed warm-started point from a fresh march inside [`ViscousSolver::solve`].
+    /// Sweeps turn this off and retry from a fresh start themselves, after sub-stepping from
+    /// the converged neighbour (see [`crate::polar::SweepParams`]).
+    pub fresh_retry: bool,
 }
 
 impl Default for ViscousParams {
@@ -55,6 +59,7 @@ impl Default for ViscousParams {
             limits: UpdateLimits::default(),
             march: MarchParams::default(),
             remarch_below: 0.0,
+            fresh_retry: true,
         }
     }
 }
@@ -151,6 +156,9 @@ pub struct ViscousSolver {
     bl: XfoilBoundaryLayer,
     ante: f64,
     warm: Option<WarmState>,
+    /// α of the last fresh-start attempt that failed. A fresh start depends on α alone, so
+    /// it is not repeated at that α (sweep recoveries revisit a failed α several times).
+    fresh_failed_at: Option<f64>,
 }
 
 /// Outcome of one Newton attempt.
@@ -191,6 +199,7 @@ impl ViscousSolver {
             bl,
             ante,
             warm: None,
+            fresh_failed_at: None,
         })
     }
 
@@ -217,6 +226,7 @@ impl ViscousSolver {
             bl,
             ante,
             warm: None,
+            fresh_failed_at: None,
         })
     }
 
@@ -315,8 +325,9 @@ impl ViscousSolver {
     }
 
     /// Solves the viscous flow at angle of attack `alpha_deg`, warm-starting from the previous
-    /// converged state if there is one. A failed attempt is retried once from a fresh march; a
-    /// point that still fails is returned with `converged = false`.
+    /// converged state if there is one. A failed attempt is retried once from a fresh march
+    /// (unless [`ViscousParams::fresh_retry`] is off, or a fresh start already failed at this
+    /// α); a point that still fails is returned with `converged = false`.
     pub fn solve(&mut self, alpha_deg: f64) -> ViscousSolution {
         if !alpha_deg.is_finite() {
             return failed_solution(alpha_deg, 0);
@@ -334,10 +345,19 @@ impl ViscousSolver {
         }
         let warm = self.warm.take();
         let had_warm = warm.is_some();
+        let fresh_known_to_fail = self.fresh_failed_at == Some(alpha_deg);
+        if !had_warm && fresh_known_to_fail {
+            return failed_solution(alpha_deg, 0);
+        }
         let mut result = self.attempt(alpha_deg, warm);
         let ok = matches!(&result, Ok(a) if a.converged);
-        if !ok && had_warm {
+        if !ok && had_warm && self.params.fresh_retry && !fresh_known_to_fail {
             result = self.attempt(alpha_deg, None);
+            if !matches!(&result, Ok(a) if a.converged) {
+                self.fresh_failed_at = Some(alpha_deg);
+            }
+        } else if !ok && !had_warm {
+            self.fresh_failed_at = Some(alpha_deg);
         }
         match result {
             Ok(a) => {
@@ -419,7 +439,7 @@ impl ViscousSolver {
                 asm.transition[0].map(|t| t.xi),
                 asm.transition[1].map(|t| t.xi),
             ];
-            let w = asm.system.solve()?;
+            let w = asm.system.solve_in_place()?;
             let upd = apply_update(
                 &self.bl,
                 &coupling,
