@@ -510,17 +510,7 @@ fn trim_rows(t: &[TrimResult; 2]) -> Vec<Row> {
             (t.lift_to_drag, 2),
         ]
     };
-    let (c, d) = (ours(&t[0]), ours(&t[1]));
-    PAPER_TRIM
-        .iter()
-        .zip(c.iter().zip(&d))
-        .map(|(&(name, pc, pd), (&(oc, prec), &(od, _)))| Row {
-            name,
-            paper: (pc, pd),
-            ours: (oc, od),
-            prec,
-        })
-        .collect()
+    paired_rows(&PAPER_TRIM, &ours(&t[0]), &ours(&t[1]))
 }
 
 /// The rows of Table 4 (same order and names as [`PAPER_TAKEOFF`]).
@@ -532,10 +522,19 @@ fn takeoff_rows(o: &[TakeoffResult; 2]) -> Vec<Row> {
             (o.max_flapping_deg, 2),
         ]
     };
-    let (c, d) = (ours(&o[0]), ours(&o[1]));
-    PAPER_TAKEOFF
+    paired_rows(&PAPER_TAKEOFF, &ours(&o[0]), &ours(&o[1]))
+}
+
+/// Rows pairing the paper's (name, clean, contaminated) values with ours, each of ours given
+/// as (value, decimals to print); the clean entry's decimals are used for both.
+fn paired_rows(
+    paper: &[(&'static str, f64, f64)],
+    clean: &[(f64, usize)],
+    contaminated: &[(f64, usize)],
+) -> Vec<Row> {
+    paper
         .iter()
-        .zip(c.iter().zip(&d))
+        .zip(clean.iter().zip(contaminated))
         .map(|(&(name, pc, pd), (&(oc, prec), &(od, _)))| Row {
             name,
             paper: (pc, pd),
