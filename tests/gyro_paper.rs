@@ -11,12 +11,12 @@
 //!   only, not in the model: no source justifies it) gives 360/360 rpm, α_R 5.7/8.0°, D_R
 //!   477/679 N; ΔF_prop stays +19 %, because our tables' contamination drag ratio (~1.9 over the
 //!   disc) is larger than the ~1.5 the paper's D_R values imply;
-//! * takeoff distances and their increases: limited by the propeller's full-throttle thrust
-//!   lapse (linear C_T(J) through the static 2000 N and the 60-kt cruise point, −16 % at
-//!   45 kt). Held at 2000 N, the same model gives s_TO ≈ 131/165 m and s_15 ≈ 263/303 m,
-//!   inside all Table 4 bands; with the lapse the excess thrust at 45 kt (~740 N clean,
-//!   ~480 N contaminated) makes the paper's climb (15 m while accelerating to ≈ 50 kt) take
-//!   ~200–265 m instead of ~97 m.
+//! * takeoff: with the full-throttle engine speeding up as the fixed-pitch propeller unloads
+//!   (constant engine torque, propeller torque vanishing at 1.15 × the zero-thrust advance
+//!   ratio; see `rotor::propeller`) every Table 4 band is met except the contaminated s_15,
+//!   which ends ≈ 0.1 % beyond its +25 % band (317 m vs 316 m): the climb-out is still a little
+//!   long, limited by how fast the thrust lapses with speed (propeller and engine curves we do
+//!   not have).
 
 use std::path::PathBuf;
 use std::process::Command;
@@ -97,26 +97,23 @@ fn shipped_tables_against_paper_tables_3_and_4() {
     assert!(df > 10.0 && df < 24.0, "F_prop rise {df} %");
     let (ec, ed) = row(&v, "trim", "engine rpm");
     assert!((ec - 4401.0).abs() < 200.0 && (ed - 4596.0).abs() < 200.0 && ed > ec);
-    // Table 4. Issue bands met: clean s_TO within 25 % of 121 m; β_max below the 7° stops and
-    // larger when contaminated.
+    // Table 4. Issue bands met: s_TO within 25 % of 121 m and 144 m and its increase within 8
+    // points of +19 %; clean s_15 within 25 % of 218 m and the s_15 increase within 8 points
+    // of +16 %; β_max below the 7° stops and larger when contaminated.
     let (sc, sd) = row(&v, "takeoff", "takeoff roll");
     assert!((sc / 121.0 - 1.0).abs() <= 0.25, "clean s_TO {sc}");
-    // Contaminated s_TO (band 108–180 m) and the increase (+19 ± 8 points) are beyond the
-    // bands (~190 m, ~+29 %): thrust lapse (module doc). Guard: longer, by 15–40 %.
+    assert!((sd / 144.0 - 1.0).abs() <= 0.25, "contaminated s_TO {sd}");
     let ds = rise(sc, sd);
-    assert!(ds > 15.0 && ds < 40.0, "s_TO rise {ds} %");
-    // s_15 (bands 218/253 m ± 25 %, +16 ± 8 points): ~350/455 m, +29 %, the energy-limited
-    // climb segment (module doc). Guard: the climb segment is 150–300 m and contamination
-    // lengthens the total by 15–40 %.
+    assert!((ds - 19.0).abs() <= 8.0, "s_TO rise {ds} %");
     let (s15c, s15d) = row(&v, "takeoff", "distance to 15 m");
-    for (s15, s) in [(s15c, sc), (s15d, sd)] {
-        assert!(
-            s15 - s > 150.0 && s15 - s < 300.0,
-            "climb segment {s} -> {s15}"
-        );
-    }
+    assert!((s15c / 218.0 - 1.0).abs() <= 0.25, "clean s_15 {s15c}");
     let d15 = rise(s15c, s15d);
-    assert!(d15 > 15.0 && d15 < 40.0, "s_15 rise {d15} %");
+    assert!((d15 - 16.0).abs() <= 8.0, "s_15 rise {d15} %");
+    // Contaminated s_15 (band 190–316 m) is ~317 m, just beyond (module doc). Guard: within 30 %.
+    assert!(
+        (s15d / 253.0 - 1.0).abs() <= 0.30,
+        "contaminated s_15 {s15d}"
+    );
     let (bc, bd) = row(&v, "takeoff", "max flapping");
     assert!(bc < 7.0 && bd < 7.0 && bd > bc, "beta_max {bc} {bd}");
     assert!(
@@ -151,12 +148,16 @@ fn xfoil_polars_against_paper_tables_3_and_4() {
     assert!((8.0..24.0).contains(&df), "F_prop rise {df} %");
     let (ec, ed) = row(&v, "trim", "engine rpm");
     assert!((ec - 4401.0).abs() < 300.0 && ed > ec, "engine {ec} {ed}");
-    // Table 4: s_TO within 25 % of 121 m (clean); beyond that the same limits as with the
-    // shipped tables (module doc).
+    // Table 4 with the single polars: s_TO and s_15 within 25 % of the paper's (clean and
+    // contaminated), both longer when contaminated.
     let (sc, sd) = row(&v, "takeoff", "takeoff roll");
-    assert!((sc / 121.0 - 1.0).abs() <= 0.25, "s_TO {sc}");
     let (s15c, s15d) = row(&v, "takeoff", "distance to 15 m");
-    assert!(s15c - sc > 150.0 && s15c - sc < 300.0, "s_15 {s15c}");
+    for (ours, paper) in [(sc, 121.0), (sd, 144.0), (s15c, 218.0), (s15d, 253.0)] {
+        assert!(
+            (ours / paper - 1.0).abs() <= 0.25,
+            "takeoff {ours} vs {paper}"
+        );
+    }
     assert!(
         sd > 1.1 * sc && s15d > 1.1 * s15c,
         "s_TO {sc} {sd}, s_15 {s15c} {s15d}"

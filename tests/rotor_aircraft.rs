@@ -127,7 +127,26 @@ fn propeller_map_reproduces_its_calibration_points() {
     assert!((map.thrust(rho, v, 4400.0) - 1051.0).abs() < 1e-6);
     let rpm = map.engine_rpm_for_thrust(rho, v, 1051.0).unwrap();
     assert!((rpm - 4400.0).abs() < 1e-6, "{rpm}");
-    // Full-throttle thrust falls with speed.
+    // Full throttle: the engine speeds up as the propeller unloads (static rpm standing still,
+    // capped at the maximum), and the thrust falls slowly with speed (k = 1.15 > 1).
+    assert!((map.full_throttle_engine_rpm(0.0) - 5200.0).abs() < 1e-9);
+    let rpm_45 = map.full_throttle_engine_rpm(45.0 * KT_TO_MS);
+    assert!(rpm_45 > 5400.0 && rpm_45 < 5800.0, "{rpm_45}");
+    assert_eq!(map.full_throttle_engine_rpm(100.0), 5800.0);
+    let t45 = map.full_throttle_thrust(rho, 45.0 * KT_TO_MS);
+    assert!(t45 < 2000.0 && t45 > 1850.0, "{t45}");
     assert!(map.full_throttle_thrust(rho, 20.0) < map.full_throttle_thrust(rho, 0.0));
+    // With k = 1 (torque and thrust vanishing at the same J) the torque balance keeps the
+    // thrust exactly at its static value until the rpm limit.
+    let ideal = PropellerMap {
+        zero_torque_j: map.j0,
+        ..map
+    };
+    for v in [5.0, 15.0, 25.0] {
+        assert!(
+            (ideal.full_throttle_thrust(rho, v) - 2000.0).abs() < 1e-6,
+            "{v}"
+        );
+    }
     assert!(map.engine_rpm_for_thrust(rho, v, 5000.0).is_err());
 }

@@ -33,9 +33,10 @@ fn takeoff_clean_and_contaminated() {
             r.max_flapping_deg
         );
         assert!(!r.flap_stops_reached);
-        // The pilot model climbs while accelerating (paper: 43 kt at lift-off, 51 kt at 15 m).
+        // The pilot flies the climb speed schedule: at 15 m the speed is the preset's climb
+        // speed (paper: 43 kt at lift-off, 51 kt at 15 m), whatever the lift-off speed.
         assert!(
-            r.screen_speed_kt > r.liftoff_speed_kt,
+            (r.screen_speed_kt - ac.takeoff.climb_speed_kt).abs() < 3.0,
             "{} -> {}",
             r.liftoff_speed_kt,
             r.screen_speed_kt

@@ -114,6 +114,9 @@ pub struct PropellerParams {
     pub calib_engine_rpm: f64,
     /// Highest engine rpm allowed (full-throttle rpm never exceeds it) [rpm].
     pub max_engine_rpm: f64,
+    /// Zero-torque advance ratio of the propeller as a multiple of its zero-thrust advance
+    /// ratio, k = J_Q/J0 ≥ 1 (see [`crate::rotor::propeller`]).
+    pub zero_torque_j_factor: f64,
 }
 
 /// Takeoff procedure and ground data.
@@ -277,6 +280,13 @@ impl Aircraft {
         positive("propeller.calib_thrust_n", p.calib_thrust_n)?;
         positive("propeller.calib_engine_rpm", p.calib_engine_rpm)?;
         positive("propeller.max_engine_rpm", p.max_engine_rpm)?;
+        if !(1.0..=2.0).contains(&p.zero_torque_j_factor) {
+            return Err(AircraftError::Invalid {
+                field: "propeller.zero_torque_j_factor",
+                value: p.zero_torque_j_factor,
+                reason: "must be between 1 and 2",
+            });
+        }
         let t = &self.takeoff;
         positive("takeoff.prerotation_rpm", t.prerotation_rpm)?;
         positive("takeoff.head_angle_max_deg", t.head_angle_max_deg)?;

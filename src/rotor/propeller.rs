@@ -11,9 +11,15 @@
 //! * J0 from the flight-test point: the thrust needed in cruise (paper Table 3: 1051 N at 60 kt,
 //!   clean) at the engine rpm measured there (4400 rpm).
 //!
-//! At full throttle the engine is assumed to hold its static rpm, so full-throttle thrust falls
-//! linearly with airspeed (a fixed-pitch propeller unloads and the engine speeds up only a
-//! little; this is the "full thrust decreasing with speed" of the takeoff model).
+//! Full throttle: a fixed-pitch propeller unloads as the airspeed grows and the engine speeds
+//! up until its torque balances the propeller's again. The engine is taken to deliver constant
+//! torque at full throttle (the Rotax 912 ULS torque curve is flat within about 5 % between
+//! 5000 and 5800 rpm) and the propeller's torque coefficient to fall linearly with J, reaching
+//! zero at J_Q = k·J0 (at zero thrust a propeller still absorbs the blades' profile torque, so
+//! k > 1). The balance ρn²D⁵C_Q0(1 − J/J_Q) = Q_static, with J = V/(nD), gives
+//! n² − n·V/(D·J_Q) = n_static², whose positive root is the full-throttle propeller speed
+//! (capped at the engine's maximum rpm). Thrust then falls slowly with airspeed (exactly
+//! constant for k = 1), which is the "full thrust decreasing with speed" of the takeoff model.
 
 use super::aircraft::PropellerParams;
 use super::atmosphere::Atmosphere;
@@ -47,8 +53,10 @@ pub struct PropellerMap {
     pub ct0: f64,
     /// Advance ratio of zero thrust J0.
     pub j0: f64,
-    /// Engine rpm at full throttle.
-    pub full_throttle_engine_rpm: f64,
+    /// Engine rpm at full throttle, standing still.
+    pub static_engine_rpm: f64,
+    /// Advance ratio at which the propeller's torque vanishes, J_Q = k·J0.
+    pub zero_torque_j: f64,
     /// Maximum engine rpm.
     pub max_engine_rpm: f64,
 }
@@ -73,7 +81,8 @@ impl PropellerMap {
             gear_ratio: p.gear_ratio,
             ct0,
             j0: j_cal / ratio,
-            full_throttle_engine_rpm: p.static_engine_rpm,
+            static_engine_rpm: p.static_engine_rpm,
+            zero_torque_j: p.zero_torque_j_factor * j_cal / ratio,
             max_engine_rpm: p.max_engine_rpm,
         })
     }
@@ -88,9 +97,19 @@ impl PropellerMap {
         (rho * n * n * self.diameter.powi(4) * self.ct0 * (1.0 - j / self.j0)).max(0.0)
     }
 
-    /// Full-throttle thrust [N] at density `rho` and airspeed `v`.
+    /// Engine rpm at full throttle and airspeed `v` [m/s]: the torque balance of the module
+    /// documentation, n = [a + √(a² + 4 n_static²)]/2 with a = V/(D·J_Q), capped at the
+    /// maximum engine rpm.
+    pub fn full_throttle_engine_rpm(&self, v: f64) -> f64 {
+        let n_static = self.gear_ratio * self.static_engine_rpm / 60.0;
+        let a = v.max(0.0) / (self.diameter * self.zero_torque_j);
+        let n = 0.5 * (a + (a * a + 4.0 * n_static * n_static).sqrt());
+        (n * 60.0 / self.gear_ratio).min(self.max_engine_rpm)
+    }
+
+    /// Full-throttle thrust [N] at density `rho` and airspeed `v` [m/s].
     pub fn full_throttle_thrust(&self, rho: f64, v: f64) -> f64 {
-        self.thrust(rho, v, self.full_throttle_engine_rpm)
+        self.thrust(rho, v, self.full_throttle_engine_rpm(v))
     }
 
     /// Engine rpm that gives `thrust` [N] at density `rho` and airspeed `v`: the positive root
