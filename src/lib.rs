@@ -20,6 +20,8 @@
 //! * [`rotor`] — blade-element model of a teetering gyroplane rotor: trim and takeoff.
 //! * [`plot`] — SVG/PNG plots of polars, point distributions and rotor results.
 
+#![warn(missing_docs)]
+
 pub mod boundary_layer;
 pub mod geometry;
 pub mod inviscid;
