@@ -51,6 +51,8 @@ pub use trailing_edge::{SquireYoung, TeJunction};
 pub use transition::{AmplificationCheck, TransitionInterval, TransitionKind};
 
 use equations::{bldif, DiffKind};
+use std::cell::OnceCell;
+
 use station::{validate, Station};
 
 /// Errors of the boundary-layer routines.
@@ -84,6 +86,54 @@ pub enum BlError {
         /// ξ of station 2.
         x2: f64,
     },
+}
+
+/// Station 1 of an interval with its secondary variables (XFOIL BLPRV → BLKIN → BLVAR)
+/// evaluated on first use and kept, so that the intervals of a march's local Newton
+/// iterations, which vary only station 2, do not re-evaluate the closures of the fixed upstream
+/// station. Built for one regime; the laminar one also serves the transition check.
+#[derive(Clone, Debug)]
+pub struct UpstreamStation {
+    vars: StationVars,
+    regime: Regime,
+    valid: Result<(), BlError>,
+    /// Seeded in the station-1 slots of an interval (0..5).
+    seeded: OnceCell<Station>,
+    /// Values with one zero derivative slot (the transition check's fixed station 1).
+    constant: OnceCell<Station<1>>,
+}
+
+impl UpstreamStation {
+    /// Station 1 with primary variables `vars`, evaluated with the closures of `regime`.
+    pub fn new(vars: &StationVars, regime: Regime) -> Self {
+        Self {
+            vars: *vars,
+            regime,
+            valid: validate(vars, regime),
+            seeded: OnceCell::new(),
+            constant: OnceCell::new(),
+        }
+    }
+
+    /// The primary variables.
+    pub fn vars(&self) -> &StationVars {
+        &self.vars
+    }
+
+    /// The regime whose closures the station is evaluated with.
+    pub fn regime(&self) -> Regime {
+        self.regime
+    }
+
+    pub(crate) fn seeded(&self, model: &BlModel) -> &Station {
+        self.seeded
+            .get_or_init(|| model.station(&self.vars, Some(0), self.regime))
+    }
+
+    pub(crate) fn constant(&self, model: &BlModel) -> &Station<1> {
+        self.constant
+            .get_or_init(|| Station::constant(&self.vars, self.regime, &model.flow, &model.params))
+    }
 }
 
 /// Checks that station 2 lies strictly downstream of station 1.
@@ -152,10 +202,29 @@ impl BlModel {
         v1: &StationVars,
         v2: &StationVars,
     ) -> Result<IntervalEquations, BlError> {
-        validate(v1, regime)?;
+        self.interval_from(regime, &UpstreamStation::new(v1, regime), v2)
+    }
+
+    /// [`BlModel::interval`] with station 1 given as an [`UpstreamStation`], whose secondary
+    /// variables are evaluated once and reused by every interval that starts there (the local
+    /// Newton iterations of a march vary station 2 only).
+    pub fn interval_from(
+        &self,
+        regime: Regime,
+        up: &UpstreamStation,
+        v2: &StationVars,
+    ) -> Result<IntervalEquations, BlError> {
+        let other;
+        let up = if up.regime == regime {
+            up
+        } else {
+            other = UpstreamStation::new(&up.vars, regime);
+            &other
+        };
+        up.valid.clone()?;
         validate(v2, regime)?;
-        check_advance(v1, v2)?;
-        let s1 = self.station(v1, Some(0), regime);
+        check_advance(&up.vars, v2)?;
+        let s1 = up.seeded(self);
         let s2 = self.station(v2, Some(5), regime);
         let kind = match regime {
             Regime::Laminar => DiffKind::Laminar,
@@ -163,7 +232,7 @@ impl BlModel {
             Regime::Wake => DiffKind::Wake,
         };
         check_finite(
-            IntervalEquations::from_duals(&bldif(kind, &s1, &s2, &self.flow, &self.params)),
+            IntervalEquations::from_duals(&bldif(kind, s1, &s2, &self.flow, &self.params)),
             "interval equations",
         )
     }

@@ -110,6 +110,22 @@ impl Station {
     }
 }
 
+impl<const N: usize> Station<N> {
+    /// Station from its primary variables with all `N` derivative slots zero: the values of
+    /// [`Station::seeded`] (every operation acts on the value and on each slot separately, so
+    /// the number of slots does not change any value), for callers that need values only or
+    /// seed their own variable, e.g. N2 in the transition check.
+    pub fn constant(v: &StationVars, regime: Regime, fc: &FlowConstants, p: &BlParams) -> Self {
+        let c = Dual::<N>::constant;
+        let s = c(v.s);
+        let t = c(v.theta);
+        let d = c(v.dstar) - v.dw;
+        let u = compressible_speed_d(c(v.u), fc);
+        let x = c(v.x);
+        Station::from_primaries(x, u, t, d, s, v.dw, regime, fc, p)
+    }
+}
+
 impl Station<5> {
     /// The station with its derivatives placed at slots `offset..offset+5` of an interval.
     fn embed(&self, offset: usize) -> Station {

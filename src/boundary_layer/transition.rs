@@ -10,11 +10,11 @@
 
 use super::amplification::axset_d;
 use super::closures::transition_ctau_factor_d;
-use super::dual::Dual;
+use super::dual::{Dual, NVARS};
 use super::equations::{bldif, DiffKind, IntervalEquations};
 use super::params::Regime;
 use super::station::{compressible_speed_d, validate, Station, StationVars};
-use super::{check_advance, check_finite, BlError, BlModel};
+use super::{check_advance, check_finite, BlError, BlModel, UpstreamStation};
 
 /// Whether transition in an interval is free (e^n) or forced (trip).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -59,14 +59,14 @@ pub struct TransitionInterval {
 }
 
 /// Laminar primaries of station 2 for the interpolation to T (compressible u, δ* − gap).
-struct Primaries {
-    x: Dual,
-    u: Dual,
-    t: Dual,
-    d: Dual,
+struct Primaries<const N: usize = NVARS> {
+    x: Dual<N>,
+    u: Dual<N>,
+    t: Dual<N>,
+    d: Dual<N>,
 }
 
-impl Primaries {
+impl<const N: usize> Primaries<N> {
     fn new(v: &StationVars, offset: Option<usize>, model: &BlModel) -> Self {
         let var = |value: f64, k: usize| match offset {
             Some(o) => Dual::variable(value, o + k),
@@ -84,7 +84,11 @@ impl Primaries {
 /// Forced-transition fraction of the interval (XFOIL TRCHEK2 SFX): (ξ_f − ξ1)/(ξ2 − ξ1) if
 /// ξ1 < ξ_f < ξ2, else 1 (a trip at or upstream of ξ1 is ignored: station 1 should already
 /// be turbulent; a trip at or beyond ξ2 does not act inside the interval).
-fn forced_fraction(s1: &Station, p2: &Primaries, xi_forced: Option<f64>) -> Dual {
+fn forced_fraction<const N: usize>(
+    s1: &Station<N>,
+    p2: &Primaries<N>,
+    xi_forced: Option<f64>,
+) -> Dual<N> {
     match xi_forced {
         Some(xf) if xf > s1.x.v && xf < p2.x.v => (xf - s1.x) / (p2.x - s1.x),
         _ => Dual::constant(1.0),
@@ -94,13 +98,15 @@ fn forced_fraction(s1: &Station, p2: &Primaries, xi_forced: Option<f64>) -> Dual
 impl BlModel {
     /// Implicit amplification residual of TRCHEK2 for a trial N2 (`a2`):
     /// returns (R = N2 − N1 − ā(1,T)(ξ2 − ξ1), ξ_T, ā).
-    fn trchek_residual(
+    /// Generic in the number of derivative slots: the N2 iteration needs ∂/∂N2 only (one
+    /// slot), the transition-point sensitivities all ten interval variables.
+    fn trchek_residual<const N: usize>(
         &self,
-        s1: &Station,
-        p2: &Primaries,
-        a2: Dual,
+        s1: &Station<N>,
+        p2: &Primaries<N>,
+        a2: Dual<N>,
         xi_forced: Option<f64>,
-    ) -> (Dual, Dual, Dual) {
+    ) -> (Dual<N>, Dual<N>, Dual<N>) {
         let ncrit = self.flow.ncrit;
         let (amplt, sfa) = if a2.v <= ncrit {
             (a2, Dual::constant(1.0))
@@ -144,7 +150,7 @@ impl BlModel {
         validate(v1, Regime::Laminar)?;
         validate(&v2l, Regime::Laminar)?;
         check_advance(v1, v2)?;
-        let s1 = self.station(v1, None, Regime::Laminar);
+        let s1 = Station::constant(v1, Regime::Laminar, &self.flow, &self.params);
         let p2 = Primaries::new(v2, None, self);
         let check = self.solve_n2(&s1, &p2, v1, v2, xi_forced);
         if check.n2.is_finite() {
@@ -154,10 +160,12 @@ impl BlModel {
         }
     }
 
+    /// Newton iteration of TRCHEK2 for N2 on one-slot derivative numbers (∂/∂N2); `s1` and
+    /// `p2` are constants.
     fn solve_n2(
         &self,
-        s1: &Station,
-        p2: &Primaries,
+        s1: &Station<1>,
+        p2: &Primaries<1>,
         v1: &StationVars,
         v2: &StationVars,
         xi_forced: Option<f64>,
@@ -165,7 +173,12 @@ impl BlModel {
         let ncrit = self.flow.ncrit;
         let dx = v2.x - v1.x;
         // initial guess from the rate at the unclipped interval
-        let s2l = self.station(&StationVars { s: v1.s, ..*v2 }, None, Regime::Laminar);
+        let s2l: Station<1> = Station::constant(
+            &StationVars { s: v1.s, ..*v2 },
+            Regime::Laminar,
+            &self.flow,
+            &self.params,
+        );
         let ax0 = axset_d(s1.hk, s1.t, s1.rt, s1.s, s2l.hk, s2l.t, s2l.rt, s1.s, ncrit);
         let mut a2 = v1.s + ax0.v * dx;
         let mut converged = false;
@@ -232,18 +245,37 @@ impl BlModel {
         v2: &StationVars,
         xi_forced: Option<f64>,
     ) -> Result<Option<TransitionInterval>, BlError> {
+        self.transition_from(&UpstreamStation::new(v1, Regime::Laminar), v2, xi_forced)
+    }
+
+    /// [`BlModel::transition_interval`] with station 1 given as an [`UpstreamStation`] (its
+    /// laminar secondary variables evaluated once and reused across calls).
+    pub fn transition_from(
+        &self,
+        up: &UpstreamStation,
+        v2: &StationVars,
+        xi_forced: Option<f64>,
+    ) -> Result<Option<TransitionInterval>, BlError> {
+        let other;
+        let up = if up.regime() == Regime::Laminar {
+            up
+        } else {
+            other = UpstreamStation::new(up.vars(), Regime::Laminar);
+            &other
+        };
+        let v1 = up.vars();
         validate(v1, Regime::Laminar)?;
         validate(v2, Regime::Turbulent)?;
         check_advance(v1, v2)?;
-        let s1c = self.station(v1, None, Regime::Laminar);
+        let s1c = up.constant(self);
         let p2c = Primaries::new(v2, None, self);
-        let check = self.solve_n2(&s1c, &p2c, v1, v2, xi_forced);
+        let check = self.solve_n2(s1c, &p2c, v1, v2, xi_forced);
         let Some((xi_tr, kind)) = check.transition else {
             return Ok(None);
         };
 
         // ξ_T as a derivative number over the 10 interval variables
-        let s1 = self.station(v1, Some(0), Regime::Laminar);
+        let s1 = up.seeded(self);
         let p2 = Primaries::new(v2, Some(5), self);
         let xt = match kind {
             TransitionKind::Forced => Dual::constant(xi_tr),
@@ -251,9 +283,9 @@ impl BlModel {
                 // implicit function theorem on R(v, N2) = 0:
                 // dξ_T/dv = ∂ξ_T/∂v − (∂ξ_T/∂N2)(∂R/∂v)/(∂R/∂N2)
                 let (res_v, xt_v, _) =
-                    self.trchek_residual(&s1, &p2, Dual::constant(check.n2), xi_forced);
+                    self.trchek_residual(s1, &p2, Dual::constant(check.n2), xi_forced);
                 let (res_a, xt_a, _) =
-                    self.trchek_residual(&s1c, &p2c, Dual::variable(check.n2, 0), xi_forced);
+                    self.trchek_residual(s1c, &p2c, Dual::variable(check.n2, 0), xi_forced);
                 let ratio = xt_a.g[0] / res_a.g[0];
                 let mut g = xt_v.g;
                 for (gi, ri) in g.iter_mut().zip(res_v.g.iter()) {
@@ -283,7 +315,7 @@ impl BlModel {
             fc,
             pp,
         );
-        let bl = bldif(DiffKind::Laminar, &s1, &stl, fc, pp);
+        let bl = bldif(DiffKind::Laminar, s1, &stl, fc, pp);
 
         // turbulent part T → 2, with the initial √Cτ at T
         let stq = Station::from_primaries(

@@ -14,7 +14,7 @@ use super::error::ViscousError;
 
 /// Station variables, flow regime and interval equations are the boundary-layer layer's own
 /// types: the coupling works on exactly what the closures take and return.
-pub use crate::boundary_layer::{IntervalEquations, Regime, StationVars};
+pub use crate::boundary_layer::{IntervalEquations, Regime, StationVars, UpstreamStation};
 
 /// An interval in which the layer becomes turbulent.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -71,6 +71,17 @@ pub trait BoundaryLayerModel {
         regime: Regime,
         st1: &StationVars,
         st2: &StationVars,
+    ) -> Result<IntervalEquations, ViscousError> {
+        self.interval_from(regime, &UpstreamStation::new(st1, regime), st2)
+    }
+
+    /// [`BoundaryLayerModel::interval`] from an upstream station whose secondary variables are
+    /// kept between calls (the local iterations of a march vary station 2 only).
+    fn interval_from(
+        &self,
+        regime: Regime,
+        st1: &UpstreamStation,
+        st2: &StationVars,
     ) -> Result<IntervalEquations, ViscousError>;
 
     /// Transition check of a laminar interval (XFOIL TRCHEK2 + TRDIF): `Some` if free (N reaches
@@ -78,6 +89,17 @@ pub trait BoundaryLayerModel {
     fn transition(
         &self,
         st1: &StationVars,
+        st2: &StationVars,
+        xi_forced: Option<f64>,
+    ) -> Result<Option<TransitionInterval>, ViscousError> {
+        self.transition_from(&UpstreamStation::new(st1, Regime::Laminar), st2, xi_forced)
+    }
+
+    /// [`BoundaryLayerModel::transition`] from an upstream station whose secondary variables
+    /// are kept between calls.
+    fn transition_from(
+        &self,
+        st1: &UpstreamStation,
         st2: &StationVars,
         xi_forced: Option<f64>,
     ) -> Result<Option<TransitionInterval>, ViscousError>;

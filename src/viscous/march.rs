@@ -3,7 +3,9 @@
 //! mode) — the initial condition of the global Newton solve (XFOIL xbl.f MRCHUE,
 //! Drela 1989 §4.2).
 
-use super::bl_model::{BoundaryLayerModel, IntervalEquations, Regime, StationVars};
+use super::bl_model::{
+    BoundaryLayerModel, IntervalEquations, Regime, StationVars, UpstreamStation,
+};
 use super::newton::CachedEquations;
 use super::state::BlState;
 use super::stations::{StationKind, StationLayout, Surface};
@@ -358,6 +360,19 @@ pub fn remarch_mixed(
         // Equations of the last local iteration, the variables they were evaluated at
         // (s, θ, δ*, u) and whether the regime changed in that iteration.
         let mut last: Option<(CachedEquations, [f64; 4], bool)> = None;
+        // The upstream station is fixed during the local iterations: its closures are
+        // evaluated once (laminar: the transition check and the laminar interval share it).
+        let upstream = (st.kind == StationKind::Interval).then(|| {
+            let regime = if wake {
+                Regime::Wake
+            } else if surface_turbulent[side] {
+                Regime::Turbulent
+            } else {
+                Regime::Laminar
+            };
+            let p = st.upstream.unwrap_or(k - 1);
+            UpstreamStation::new(&state.vars(layout, p), regime)
+        });
         for itbl in 0..params.max_iterations {
             let s_now = if turbulent { cti } else { n_amp };
             let was_turbulent_now = turbulent;
@@ -390,16 +405,17 @@ pub fn remarch_mixed(
                     })
                 }
                 StationKind::Interval => {
-                    let p = st.upstream.unwrap_or(k - 1);
-                    let v1 = state.vars(layout, p);
+                    let Some(up) = upstream.as_ref() else {
+                        unreachable!("interval stations have an upstream station")
+                    };
                     if wake {
-                        model.interval(Regime::Wake, &v1, &v2)
+                        model.interval_from(Regime::Wake, up, &v2)
                     } else if surface_turbulent[side] {
-                        model.interval(Regime::Turbulent, &v1, &v2)
+                        model.interval_from(Regime::Turbulent, up, &v2)
                     } else {
                         // Laminar surface so far: check this interval for transition.
                         let v2t = StationVars { s: cti, ..v2 };
-                        match model.transition(&v1, &v2t, xi_forced[side]) {
+                        match model.transition_from(up, &v2t, xi_forced[side]) {
                             Ok(Some(t)) => {
                                 tr_info = Some((t.xi_transition, t.forced, cti));
                                 if !transitioned {
@@ -416,9 +432,9 @@ pub fn remarch_mixed(
                                     transitioned = false;
                                     turbulent = false;
                                 }
-                                model.interval(
+                                model.interval_from(
                                     Regime::Laminar,
-                                    &v1,
+                                    up,
                                     &StationVars { s: n_amp, ..v2 },
                                 )
                             }

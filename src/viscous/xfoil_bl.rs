@@ -5,7 +5,7 @@ use crate::boundary_layer as bl;
 
 use super::bl_model::{
     BoundaryLayerModel, IntervalEquations, JunctionEquations, Regime, StationProperties,
-    StationVars, TransitionInterval,
+    StationVars, TransitionInterval, UpstreamStation,
 };
 use super::error::ViscousError;
 
@@ -41,26 +41,26 @@ impl BoundaryLayerModel for XfoilBoundaryLayer {
         self.model.similarity(st).map_err(err(usize::MAX))
     }
 
-    fn interval(
+    fn interval_from(
         &self,
         regime: Regime,
-        st1: &StationVars,
+        st1: &UpstreamStation,
         st2: &StationVars,
     ) -> Result<IntervalEquations, ViscousError> {
         self.model
-            .interval(regime, st1, st2)
+            .interval_from(regime, st1, st2)
             .map_err(err(usize::MAX))
     }
 
-    fn transition(
+    fn transition_from(
         &self,
-        st1: &StationVars,
+        st1: &UpstreamStation,
         st2: &StationVars,
         xi_forced: Option<f64>,
     ) -> Result<Option<TransitionInterval>, ViscousError> {
         let t = self
             .model
-            .transition_interval(st1, st2, xi_forced)
+            .transition_from(st1, st2, xi_forced)
             .map_err(err(usize::MAX))?;
         Ok(t.map(|t| TransitionInterval {
             equations: t.eqs,
