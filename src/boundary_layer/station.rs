@@ -205,35 +205,25 @@ impl<const N: usize> Station<N> {
             p.ctcon(),
             p.gccon,
         );
-        let cf = match regime {
-            Regime::Wake => Dual::constant(0.0),
-            Regime::Laminar => cfl_d(hk, rt),
+        // Cf and 2CD/H* per regime; the turbulent Cf enters both.
+        let (cf, di) = match regime {
+            Regime::Laminar => (cfl_d(hk, rt), dil_d(hk, rt)),
             Regime::Turbulent => {
                 let ct = cft_d(hk, rt, msq);
                 let cl = cfl_d(hk, rt);
-                if cl.v > ct.v {
-                    cl
-                } else {
-                    ct
-                }
-            }
-        };
-        let di = match regime {
-            Regime::Laminar => dil_d(hk, rt),
-            Regime::Turbulent => {
-                let dt = dissipation_turbulent_d(hs, us, cft_d(hk, rt, msq), s, hk, rt);
+                let cf = if cl.v > ct.v { cl } else { ct };
+                let dt = dissipation_turbulent_d(hs, us, ct, s, hk, rt);
                 let dl = dil_d(hk, rt);
-                if dl.v > dt.v {
-                    dl
-                } else {
-                    dt
-                }
+                (cf, if dl.v > dt.v { dl } else { dt })
             }
             Regime::Wake => {
                 let dt = dissipation_outer_d(hs, us, s, rt);
                 let dl = dilw_d(hk, rt);
                 // two wake halves
-                (if dl.v > dt.v { dl } else { dt }) * 2.0
+                (
+                    Dual::constant(0.0),
+                    (if dl.v > dt.v { dl } else { dt }) * 2.0,
+                )
             }
         };
         let de = bl_thickness_d(hk, t, d);
