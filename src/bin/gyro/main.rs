@@ -3,7 +3,7 @@
 //! plots ([`plot`]) and the paper report ([`report`]).
 
 use anyhow::{bail, Context, Result};
-use clap::{Parser, Subcommand};
+use clap::{Args, Parser, Subcommand};
 use paper::{PAPER_TAKEOFF, PAPER_TRIM};
 use polargen::polar::PolarPoint;
 use polargen::rotor::cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds};
@@ -105,15 +105,8 @@ enum Command {
         /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
         #[arg(long)]
         table: PathBuf,
-        /// Lowest airspeed [kt].
-        #[arg(long, default_value_t = 30.0)]
-        from_kt: f64,
-        /// Highest airspeed [kt].
-        #[arg(long, default_value_t = 90.0)]
-        to_kt: f64,
-        /// Speed step [kt].
-        #[arg(long, default_value_t = 5.0)]
-        step_kt: f64,
+        #[command(flatten)]
+        speeds: SpeedRange,
         /// Mass [kg] (default: the preset's).
         #[arg(long)]
         mass: Option<f64>,
@@ -264,14 +257,35 @@ fn check_samples(samples: usize) -> Result<()> {
     Ok(())
 }
 
-/// The speeds of a sweep from `--from-kt`, `--to-kt`, `--step-kt`, checked.
-fn checked_speeds(from_kt: f64, to_kt: f64, step_kt: f64) -> Result<Vec<f64>> {
-    check_speed(from_kt)?;
-    check_speed(to_kt)?;
-    if !(step_kt.is_finite() && step_kt > 0.0) || to_kt < from_kt {
-        bail!("sweep needs --from-kt <= --to-kt and a positive --step-kt");
+/// Airspeed range of a speed sweep (`gyro sweep`, `gyro plot power`).
+#[derive(Args, Debug, Clone, Copy)]
+pub struct SpeedRange {
+    /// Lowest airspeed [kt].
+    #[arg(long, default_value_t = 30.0)]
+    pub from_kt: f64,
+    /// Highest airspeed [kt].
+    #[arg(long, default_value_t = 90.0)]
+    pub to_kt: f64,
+    /// Speed step [kt].
+    #[arg(long, default_value_t = 5.0)]
+    pub step_kt: f64,
+}
+
+impl SpeedRange {
+    /// The speeds of the sweep [kt], checked.
+    fn checked(&self) -> Result<Vec<f64>> {
+        let Self {
+            from_kt,
+            to_kt,
+            step_kt,
+        } = *self;
+        check_speed(from_kt)?;
+        check_speed(to_kt)?;
+        if !(step_kt.is_finite() && step_kt > 0.0) || to_kt < from_kt {
+            bail!("sweep needs --from-kt <= --to-kt and a positive --step-kt");
+        }
+        Ok(sweep_speeds(from_kt, to_kt, step_kt))
     }
-    Ok(sweep_speeds(from_kt, to_kt, step_kt))
 }
 
 #[derive(Serialize)]
@@ -638,13 +652,11 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
         Command::Sweep {
             aircraft,
             table,
-            from_kt,
-            to_kt,
-            step_kt,
+            speeds,
             mass,
             json,
         } => {
-            let speeds = checked_speeds(from_kt, to_kt, step_kt)?;
+            let speeds = speeds.checked()?;
             let ac = load_aircraft(&aircraft, mass)?;
             let section = load_section(&table)?;
             let rows: Vec<TrimJson> = trimmed_speeds(&ac, &section, &speeds, None)?

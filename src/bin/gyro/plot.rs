@@ -44,15 +44,8 @@ pub enum PlotKind {
     Power {
         #[command(flatten)]
         cases: CaseArgs,
-        /// Lowest airspeed [kt].
-        #[arg(long, default_value_t = 30.0)]
-        from_kt: f64,
-        /// Highest airspeed [kt].
-        #[arg(long, default_value_t = 90.0)]
-        to_kt: f64,
-        /// Speed step [kt].
-        #[arg(long, default_value_t = 5.0)]
-        step_kt: f64,
+        #[command(flatten)]
+        speeds: crate::SpeedRange,
     },
 }
 
@@ -251,13 +244,8 @@ pub fn run(kind: PlotKind) -> Result<()> {
                 .unwrap_or_else(|| format!("Takeoff to 15 m — {subject}"));
             takeoff_plot(&refs, &title)
         }
-        PlotKind::Power {
-            from_kt,
-            to_kt,
-            step_kt,
-            ..
-        } => {
-            let speeds = crate::checked_speeds(*from_kt, *to_kt, *step_kt)?;
+        PlotKind::Power { speeds, .. } => {
+            let speeds = speeds.checked()?;
             let sweeps = sections
                 .iter()
                 .zip(labels)
