@@ -505,13 +505,7 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
         check_inside("mach", mach, table.mach(), path)?;
         let (r, m, points) = table.nearest_polar(re, mach);
         let meta = table.meta();
-        let trip = if meta.xtr_top_set >= 1.0 && meta.xtr_bot_set >= 1.0 {
-            "free".to_string()
-        } else if meta.xtr_top_set == meta.xtr_bot_set {
-            format!("xtr {}", meta.xtr_top_set)
-        } else {
-            format!("xtr {}/{}", meta.xtr_top_set, meta.xtr_bot_set)
-        };
+        let trip = transition_label(meta.xtr_top_set, meta.xtr_bot_set);
         curves.push((format!("{} {trip}", meta.airfoil), points.to_vec()));
         conditions.push((r, m));
     }
@@ -591,11 +585,7 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
             ..ViscousParams::default()
         };
         let mut solver = ViscousSolver::new(&foil, params).context("viscous solver")?;
-        let label = if xtr >= 1.0 {
-            "free".to_string()
-        } else {
-            format!("xtr {xtr}")
-        };
+        let label = transition_label(xtr, xtr);
         let solution = match (args.alpha, args.cl) {
             (_, Some(cl)) => solve_at_cl(&mut solver, cl, &TargetClParams::default())
                 .with_context(|| label.clone())?,
@@ -749,6 +739,17 @@ fn write_point_csv(
         }
     }
     Ok(())
+}
+
+/// Legend text of a transition setting: `free`, `xtr 0.07`, or `xtr 0.05/0.1` (upper/lower).
+fn transition_label(xtr_top: f64, xtr_bot: f64) -> String {
+    if xtr_top >= 1.0 && xtr_bot >= 1.0 {
+        "free".to_string()
+    } else if xtr_top == xtr_bot {
+        format!("xtr {xtr_top}")
+    } else {
+        format!("xtr {xtr_top}/{xtr_bot}")
+    }
 }
 
 /// Read a table file; the error names the file when the reader's message does not.

@@ -343,9 +343,16 @@ pub fn remarch_mixed(
         let hk_floor = if wake { 1.00005 } else { 1.02 };
         let mut ds = (state.dstar(k) - st.wake_gap).max(hk_floor * th) + st.wake_gap;
         let (mut n_amp, mut cti) = if was_turbulent || wake {
-            (0.0, if state.s[k] > 0.0 { state.s[k] } else { 0.03 })
+            (
+                0.0,
+                if state.s[k] > 0.0 {
+                    state.s[k]
+                } else {
+                    params.ctau_sqrt_initial
+                },
+            )
         } else {
-            (state.s[k], 0.03)
+            (state.s[k], params.ctau_sqrt_initial)
         };
         let mut turbulent = wake || surface_turbulent[side];
         if turbulent && !was_turbulent && !wake {
@@ -408,37 +415,38 @@ pub fn remarch_mixed(
                     let Some(up) = upstream.as_ref() else {
                         unreachable!("interval stations have an upstream station")
                     };
-                    if wake {
-                        model.interval_from(Regime::Wake, up, &v2)
-                    } else if surface_turbulent[side] {
-                        model.interval_from(Regime::Turbulent, up, &v2)
-                    } else {
+                    match up.regime() {
+                        Regime::Wake | Regime::Turbulent => {
+                            model.interval_from(up.regime(), up, &v2)
+                        }
                         // Laminar surface so far: check this interval for transition.
-                        let v2t = StationVars { s: cti, ..v2 };
-                        match model.transition_from(up, &v2t, xi_forced[side]) {
-                            Ok(Some(t)) => {
-                                tr_info = Some((t.xi_transition, t.forced, cti));
-                                if !transitioned {
-                                    transitioned = true;
-                                    turbulent = true;
-                                    if !was_turbulent {
-                                        cti = 0.03;
+                        Regime::Laminar => {
+                            let v2t = StationVars { s: cti, ..v2 };
+                            match model.transition_from(up, &v2t, xi_forced[side]) {
+                                Ok(Some(t)) => {
+                                    tr_info = Some((t.xi_transition, t.forced, cti));
+                                    if !transitioned {
+                                        transitioned = true;
+                                        turbulent = true;
+                                        if !was_turbulent {
+                                            cti = params.ctau_sqrt_initial;
+                                        }
                                     }
+                                    Ok(t.equations)
                                 }
-                                Ok(t.equations)
-                            }
-                            Ok(None) => {
-                                if transitioned {
-                                    transitioned = false;
-                                    turbulent = false;
+                                Ok(None) => {
+                                    if transitioned {
+                                        transitioned = false;
+                                        turbulent = false;
+                                    }
+                                    model.interval_from(
+                                        Regime::Laminar,
+                                        up,
+                                        &StationVars { s: n_amp, ..v2 },
+                                    )
                                 }
-                                model.interval_from(
-                                    Regime::Laminar,
-                                    up,
-                                    &StationVars { s: n_amp, ..v2 },
-                                )
+                                Err(e) => Err(e),
                             }
-                            Err(e) => Err(e),
                         }
                     }
                 }
