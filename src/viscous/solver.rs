@@ -386,7 +386,14 @@ impl ViscousSolver {
     fn attempt(&self, alpha_deg: f64, warm: Option<WarmState>) -> Result<Attempt, ViscousError> {
         let n_af = self.panels.geometry.n_airfoil;
         let q_inv = self.q_inviscid(alpha_deg);
-        let mut layout = StationLayout::new(&self.panels.geometry, &q_inv[..n_af])?;
+        // The stagnation point of a warm start is where the warm state's viscous speed changes
+        // sign (XFOIL VISCAL: GAMQV then STFIND), so that the remapped state and its edge speeds
+        // agree; the Newton iterations then move it with the solution (STMOVE below).
+        let q_start = match &warm {
+            Some(w) => viscous_node_speed(&w.layout, &w.state, &q_inv),
+            None => q_inv.clone(),
+        };
+        let mut layout = StationLayout::new(&self.panels.geometry, &q_start[..n_af])?;
         let mut ue_inv = layout.edge_speed(&q_inv);
         let mut dv = self.system_influence(&layout);
         let mut xi_forced = self.forced_xi(&layout);
@@ -450,10 +457,7 @@ impl ViscousSolver {
             )?;
             residual = upd.rms_change;
             // Move the stagnation point with the viscous surface speed (XFOIL STMOVE).
-            let mut q_nodes = q_inv.clone();
-            for (k, st) in layout.stations.iter().enumerate() {
-                q_nodes[st.node] = st.vti * state.ue[k];
-            }
+            let q_nodes = viscous_node_speed(&layout, &state, &q_inv);
             if let Ok(new_layout) = StationLayout::new(&self.panels.geometry, &q_nodes[..n_af]) {
                 if new_layout.stagnation.ist != layout.stagnation.ist {
                     let map = new_layout.map_from(&layout);
@@ -612,6 +616,16 @@ fn panel_model(system: &PanelSystem, alpha_deg: f64) -> Result<PanelModel, Visco
         q_unit,
         dij,
     })
+}
+
+/// Surface speed at every node from a boundary-layer state (XFOIL GAMQV: q = ±Ue at the
+/// station's node); nodes without a station keep their value in `q_fallback`.
+fn viscous_node_speed(layout: &StationLayout, state: &BlState, q_fallback: &[f64]) -> Vec<f64> {
+    let mut q = q_fallback.to_vec();
+    for (k, st) in layout.stations.iter().enumerate() {
+        q[st.node] = st.vti * state.ue[k];
+    }
+    q
 }
 
 /// Gives stations whose node crossed the stagnation point the edge speed of the new layout and a
