@@ -369,7 +369,8 @@ impl OscillationDamping {
 /// extrapolation (weight 1) pushed its Hk towards the upstream value, which moved transition
 /// back into the interval and undid the global Newton step in every iteration (a fixed cycle;
 /// XFOIL 6.99 has it as well, e.g. NACA 8-H-12, Re 1.5e6, M 0.2, α −0.5° from α −0.25°).
-/// Oscillating local iterations are damped ([`OscillationDamping`]).
+/// A station whose local iteration oscillates between two states without converging (transition
+/// point inside the onset ramp of the amplification rate) has its relaxation halved per reversal.
 #[allow(clippy::too_many_arguments)]
 pub fn remarch_mixed(
     model: &dyn BoundaryLayerModel,
