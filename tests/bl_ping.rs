@@ -282,6 +282,103 @@ fn ping_transition_intervals() {
     );
 }
 
+/// Transition intervals from two NACA 8-H-12 solutions where the global iteration used to sit
+/// in a fixed cycle: (a) Re 1.5e6, M 0.2, α −0.5°, lower surface, ξ_tr at 98 % of the
+/// interval; (b) Re 2e6, M 0, α 7°, upper surface, N1 = 8.88 and the transition point inside
+/// the onset ramp of the amplification rate (rate 0 at station 2), where ξ_tr reacts strongly
+/// to δ*2. The Jacobians and the ξ_tr sensitivities must hold there too.
+#[test]
+fn ping_transition_near_interval_end_and_in_onset_ramp() {
+    let cases = [
+        (
+            model(1.5e6, 0.2),
+            StationVars {
+                x: 0.10539491842063398,
+                u: 1.1371131183427763,
+                theta: 0.00019328116674495062,
+                dstar: 0.0006084554904176235,
+                s: 8.221278055143598,
+                dw: 0.0,
+            },
+            StationVars {
+                x: 0.12058936150026933,
+                u: 1.125999239314099,
+                theta: 0.00020790689282567908,
+                dstar: 0.0006210973998565942,
+                s: 0.028659745593961627,
+                dw: 0.0,
+            },
+            (0.97, 0.99),
+        ),
+        (
+            model(2e6, 0.0),
+            StationVars {
+                x: 0.20985674060139714,
+                u: 1.5810042834249411,
+                theta: 0.00018275635517096993,
+                dstar: 0.00048747476559884425,
+                s: 8.881321381330785,
+                dw: 0.0,
+            },
+            StationVars {
+                x: 0.22441280144888243,
+                u: 1.5772,
+                theta: 0.00019055,
+                dstar: 0.0004590,
+                s: 0.0315,
+                dw: 0.0,
+            },
+            (0.5, 0.6),
+        ),
+    ];
+    for (m, v1, v2, (lo, hi)) in cases {
+        let tr = m
+            .transition_interval(&v1, &v2, None)
+            .unwrap()
+            .expect("transition");
+        let frac = (tr.xi_tr - v1.x) / (v2.x - v1.x);
+        assert!(frac > lo && frac < hi, "transition fraction {frac}");
+        let f1 = |p: &StationVars| {
+            m.transition_interval(p, &v2, None)
+                .unwrap()
+                .unwrap()
+                .eqs
+                .res
+        };
+        let f2 = |p: &StationVars| {
+            m.transition_interval(&v1, p, None)
+                .unwrap()
+                .unwrap()
+                .eqs
+                .res
+        };
+        ping("transition st1", &v1, &tr.eqs.d1, f1, 1e-4);
+        ping("transition st2", &v2, &tr.eqs.d2, f2, 1e-4);
+        for (v, grad, first) in [(&v1, tr.dxi_tr_d1, true), (&v2, tr.dxi_tr_d2, false)] {
+            for (k, an) in grad.into_iter().enumerate() {
+                let h = step(v, k);
+                let (mut p, mut q) = (*v, *v);
+                set(&mut p, k, get(v, k) + h);
+                set(&mut q, k, get(v, k) - h);
+                let xt = |w: &StationVars| {
+                    let t = if first {
+                        m.transition_interval(w, &v2, None)
+                    } else {
+                        m.transition_interval(&v1, w, None)
+                    };
+                    t.unwrap().unwrap().xi_tr
+                };
+                let fd = (xt(&p) - xt(&q)) / (2.0 * h);
+                assert!(
+                    (fd - an).abs() <= 1e-4 * an.abs().max(1e-3),
+                    "dxi_tr/dv{}[{k}]: {an:e} vs {fd:e}",
+                    if first { 1 } else { 2 }
+                );
+            }
+        }
+    }
+}
+
 #[test]
 fn ping_squire_young() {
     let m = model(1.9e6, 0.41);

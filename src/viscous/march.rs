@@ -312,17 +312,72 @@ pub fn march(
 /// Weight of the prescribed Ue–Hk combination of the mixed-mode march (XFOIL MRCHDU SENSWT).
 pub const MIXED_MODE_WEIGHT: f64 = 1000.0;
 
+/// Damping of a station's local Newton iteration that oscillates instead of converging.
+///
+/// Close to transition the interval equations are strongly nonlinear in the station variables:
+/// when the transition point lies where the amplification rate switches on (the onset ramp of
+/// XFOIL DAMPL, only 0.16 decades of Re_θ wide), a change of δ*2 by 1 % moves ξ_tr by several
+/// per cent of the interval, and the undamped Newton iteration jumps back and forth between
+/// two states on either side of the solution for all its iterations (the global iteration then
+/// sits in a fixed cycle too). A step that reverses the previous one (cosine below −½) without
+/// being at most half as long halves the relaxation factor for the remaining iterations of the
+/// station; a converging iteration is not affected.
+struct OscillationDamping {
+    /// Relative step (s, θ, δ*, Ue) of the previous iteration and whether it was turbulent.
+    previous: Option<([f64; 4], bool)>,
+    /// Current factor applied to the relaxation.
+    factor: f64,
+}
+
+impl OscillationDamping {
+    fn new() -> Self {
+        Self {
+            previous: None,
+            factor: 1.0,
+        }
+    }
+
+    /// Damping factor for the relative step `rel` of an iteration in the given regime
+    /// (steps across a regime change are not compared).
+    fn factor(&mut self, rel: [f64; 4], turbulent: bool) -> f64 {
+        if let Some((prev, prev_turbulent)) = self.previous {
+            let dot: f64 = rel.iter().zip(&prev).map(|(a, b)| a * b).sum();
+            let norm = |v: &[f64; 4]| v.iter().map(|a| a * a).sum::<f64>().sqrt();
+            let (n_new, n_old) = (norm(&rel), norm(&prev));
+            if prev_turbulent == turbulent && dot < -0.5 * n_new * n_old && n_new > 0.5 * n_old {
+                self.factor *= 0.5;
+            }
+        }
+        self.previous = Some((rel, turbulent));
+        self.factor
+    }
+}
+
 /// Re-marches the boundary layer in mixed mode from the current state (XFOIL xbl.f MRCHDU):
 /// at every station the three interval equations are solved together with a prescribed
 /// combination of Ue and Hk that lies quasi-normal to the local Ue–Hk characteristic, so that
 /// separation does not make the march singular. Transition is re-located on the way, which
 /// keeps the state consistent with the equations before each global Newton iteration.
 /// Stations whose local iteration fails keep an extrapolated state (XFOIL's fallback).
+///
+/// `turbulent_fraction` is, per surface (upper, lower), the fraction of the transition interval
+/// downstream of the transition point for the regimes stored in `state`
+/// ([`super::newton::TransitionPoint::turbulent_fraction`]; None: unknown). A station that was
+/// turbulent and is laminar now takes its reference Hk as in XFOIL from the upstream station,
+/// weighted by that fraction if it was the first turbulent station: a station whose old transition
+/// point lay just upstream of it carries an essentially laminar state, and XFOIL's full
+/// extrapolation (weight 1) pushed its Hk towards the upstream value, which moved transition
+/// back into the interval and undid the global Newton step in every iteration (a fixed cycle;
+/// XFOIL 6.99 has it as well, e.g. NACA 8-H-12, Re 1.5e6, M 0.2, α −0.5° from α −0.25°).
+/// A station whose local iteration oscillates between two states without converging (transition
+/// point inside the onset ramp of the amplification rate) has its relaxation halved per reversal.
+#[allow(clippy::too_many_arguments)]
 pub fn remarch_mixed(
     model: &dyn BoundaryLayerModel,
     layout: &StationLayout,
     state: &mut BlState,
     xi_forced: [Option<f64>; 2],
+    turbulent_fraction: [Option<f64>; 2],
     ante: f64,
     params: &MarchParams,
 ) -> Vec<Option<CachedEquations>> {
@@ -367,6 +422,7 @@ pub fn remarch_mixed(
         // Equations of the last local iteration, the variables they were evaluated at
         // (s, θ, δ*, u) and whether the regime changed in that iteration.
         let mut last: Option<(CachedEquations, [f64; 4], bool)> = None;
+        let mut damping = OscillationDamping::new();
         // The upstream station is fixed during the local iterations: its closures are
         // evaluated once (laminar: the transition check and the laminar interval share it).
         let upstream = (st.kind == StationKind::Interval).then(|| {
@@ -473,10 +529,16 @@ pub fn remarch_mixed(
                 ueref = u;
                 hkref = hk;
                 // A station that was turbulent and is laminar now: extrapolate the reference
-                // Hk from upstream (XFOIL MRCHDU).
+                // Hk from upstream (XFOIL MRCHDU), weighted by the turbulent fraction of the
+                // old transition interval if the station was the first turbulent one.
                 if !turbulent && was_turbulent && st.kind == StationKind::Interval {
                     let p = st.upstream.unwrap_or(k - 1);
-                    hkref = model.kinematic_shape_factor(&state.vars(layout, p)).0;
+                    let hk_upstream = model.kinematic_shape_factor(&state.vars(layout, p)).0;
+                    let weight = match turbulent_fraction[side] {
+                        Some(f) if !old_turbulent[p] => f,
+                        _ => 1.0,
+                    };
+                    hkref = hk + weight * (hk_upstream - hk);
                 }
             }
             let mut a = [[0.0; 4]; 4];
@@ -519,11 +581,18 @@ pub fn remarch_mixed(
                 dmax = dmax.max((dx[0] / (10.0 * cti)).abs());
             }
             last_dmax = dmax;
-            let rlx = if dmax > params.max_relative_step {
-                params.max_relative_step / dmax
-            } else {
-                1.0
-            };
+            let rel = [
+                if turbulent { dx[0] / cti } else { dx[0] / 10.0 },
+                dx[1] / th,
+                dx[2] / ds,
+                dx[3] / u,
+            ];
+            let rlx = damping.factor(rel, turbulent)
+                * if dmax > params.max_relative_step {
+                    params.max_relative_step / dmax
+                } else {
+                    1.0
+                };
             if turbulent {
                 cti = (cti + rlx * dx[0]).clamp(1e-7, 0.30);
             } else {

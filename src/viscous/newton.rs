@@ -27,6 +27,22 @@ pub struct TransitionPoint {
     pub forced: bool,
 }
 
+impl TransitionPoint {
+    /// Fraction of the transition interval (upstream station → `station`) that lies downstream
+    /// of the transition point, i.e. covered by the turbulent part of the interval equations
+    /// (XFOIL TRDIF): 0 when transition sits at the station, 1 at the upstream station.
+    pub fn turbulent_fraction(&self, layout: &StationLayout) -> f64 {
+        let st = layout.stations[self.station];
+        let p = st.upstream.unwrap_or(self.station.saturating_sub(1));
+        let xi_p = layout.stations[p].xi;
+        if st.xi > xi_p {
+            ((st.xi - self.xi) / (st.xi - xi_p)).clamp(0.0, 1.0)
+        } else {
+            1.0
+        }
+    }
+}
+
 /// Inputs of the assembly that do not change within one Newton iteration.
 pub struct Coupling<'a> {
     /// Station layout.

@@ -416,6 +416,7 @@ impl ViscousSolver {
         };
         let mut residual = f64::INFINITY;
         let mut transition = [None, None];
+        let mut turbulent_fraction = [None, None];
         for iter in 1..=self.params.max_iterations {
             // Mixed-mode re-march (XFOIL MRCHDU) while the iteration is still far from
             // converged; close to convergence the Newton steps alone are quadratic.
@@ -426,6 +427,7 @@ impl ViscousSolver {
                     &layout,
                     &mut state,
                     xi_forced,
+                    turbulent_fraction,
                     self.ante,
                     &self.params.march,
                 )
@@ -446,6 +448,9 @@ impl ViscousSolver {
                 asm.transition[0].map(|t| t.xi),
                 asm.transition[1].map(|t| t.xi),
             ];
+            turbulent_fraction = asm
+                .transition
+                .map(|t| t.map(|t| t.turbulent_fraction(&layout)));
             let w = asm.system.solve_in_place()?;
             let upd = apply_update(
                 &self.bl,
