@@ -321,7 +321,8 @@ pub const MIXED_MODE_WEIGHT: f64 = 1000.0;
 /// two states on either side of the solution for all its iterations (the global iteration then
 /// sits in a fixed cycle too). A step that reverses the previous one (cosine below −½) without
 /// being at most half as long halves the relaxation factor for the remaining iterations of the
-/// station; a converging iteration is not affected.
+/// station; a converging iteration is not affected. Used only for intervals checked for
+/// transition (laminar upstream station).
 struct OscillationDamping {
     /// Relative step (s, θ, δ*, Ue) of the previous iteration and whether it was turbulent.
     previous: Option<([f64; 4], bool)>,
@@ -587,7 +588,18 @@ pub fn remarch_mixed(
                 dx[2] / ds,
                 dx[3] / u,
             ];
-            let rlx = damping.factor(rel, turbulent)
+            // Damped only where the transition check runs (laminar upstream station), the case
+            // it is made for: on separated turbulent stations it steered negative-stall sweeps
+            // onto another solution branch than XFOIL's (NACA 23012, Re 5e5, M 0.2, α ≤ −6°).
+            let checks_transition = upstream
+                .as_ref()
+                .is_some_and(|u| u.regime() == Regime::Laminar);
+            let damping_factor = if checks_transition {
+                damping.factor(rel, turbulent)
+            } else {
+                1.0
+            };
+            let rlx = damping_factor
                 * if dmax > params.max_relative_step {
                     params.max_relative_step / dmax
                 } else {

@@ -40,6 +40,12 @@ pub struct ViscousParams {
     /// The mixed-mode re-march before each Newton iteration (XFOIL MRCHDU) is skipped once the
     /// RMS relative Newton change is below this value (0 = always re-march, as XFOIL).
     pub remarch_below: f64,
+    /// Lowest accepted pressure (form) drag cd − cdf. A Newton-converged state whose
+    /// Squire–Young drag lies further below its skin-friction drag has negative form drag: a
+    /// spurious solution branch (seen in negative stall), reported as not converged so that a
+    /// sweep retries the point. −2e-4 leaves room for the round-off of attached flow, where the
+    /// form drag is near zero.
+    pub min_pressure_drag: f64,
     /// Retry a failed warm-started point from a fresh march inside [`ViscousSolver::solve`].
     /// Sweeps turn this off and retry from a fresh start themselves, after sub-stepping from
     /// the converged neighbour (see [`crate::polar::SweepParams`]).
@@ -59,6 +65,7 @@ impl Default for ViscousParams {
             limits: UpdateLimits::default(),
             march: MarchParams::default(),
             remarch_below: 0.0,
+            min_pressure_drag: -2e-4,
             fresh_retry: true,
         }
     }
@@ -362,7 +369,8 @@ impl ViscousSolver {
         match result {
             Ok(a) => {
                 let sol = self.solution(alpha_deg, &a);
-                if a.converged && sol.point.cl.is_finite() && sol.point.cd.is_finite() {
+                let physical = sol.point.cd - sol.point.cdf >= self.params.min_pressure_drag;
+                if a.converged && sol.point.cl.is_finite() && sol.point.cd.is_finite() && physical {
                     self.warm = Some(WarmState {
                         layout: a.layout,
                         state: a.state,
