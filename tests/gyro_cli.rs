@@ -1,15 +1,9 @@
 //! The `gyro` binary: JSON keys, history file, comparison tables and one-line errors.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
+mod gyro_support;
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn aircraft() -> String {
-    root().join("aircraft/mtosport.toml").display().to_string()
-}
+use gyro_support::{aircraft, assert_ok, assert_one_line_error, gyro, root};
+use std::process::Output;
 
 /// XFOIL 6.99 polars of the NACA 8-H-12 at Re 1.9e6, M 0.41 (free transition / xtr 0.07).
 fn table(kind: &str) -> String {
@@ -21,28 +15,9 @@ fn table(kind: &str) -> String {
         .to_string()
 }
 
-fn gyro(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gyro"))
-        .args(args)
-        .output()
-        .expect("gyro runs")
-}
-
 fn json(out: &Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(out);
     serde_json::from_slice(&out.stdout).expect("valid JSON")
-}
-
-fn assert_one_line_error(out: &Output, needle: &str) {
-    assert!(!out.status.success());
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
-    assert!(err.starts_with("gyro: ") && err.contains(needle), "{err}");
-    assert!(!err.contains("panicked"), "{err}");
 }
 
 #[test]

@@ -2,45 +2,16 @@
 //! their series and axis labels, PNGs are real images, the report's tables hold the values
 //! `gyro trim/takeoff/alpha --json` compute for the same inputs, and errors are one line.
 
+mod gyro_support;
+
+use gyro_support::{aircraft, assert_ok, assert_one_line_error, gyro, root};
 use polargen::table::fixed_condition::alpha_at_cl;
 use polargen::table::read_table;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn aircraft() -> String {
-    root().join("aircraft/mtosport.toml").display().to_string()
-}
 
 /// A shipped default-grid table, e.g. `polars("naca8h12_free.csv")`.
 fn polars(name: &str) -> String {
     root().join("polars").join(name).display().to_string()
-}
-
-fn gyro(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gyro"))
-        .args(args)
-        .output()
-        .expect("gyro runs")
-}
-
-fn assert_ok(out: &Output) {
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-}
-
-fn assert_one_line_error(out: &Output, needle: &str) {
-    assert!(!out.status.success());
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
-    assert!(err.starts_with("gyro: ") && err.contains(needle), "{err}");
-    assert!(!err.contains("panicked"), "{err}");
 }
 
 /// A scratch folder of its own for each test (tests run concurrently and each removes its own).
