@@ -334,7 +334,9 @@ impl ViscousSolver {
     /// Solves the viscous flow at angle of attack `alpha_deg`, warm-starting from the previous
     /// converged state if there is one. A failed attempt is retried once from a fresh march
     /// (unless [`ViscousParams::fresh_retry`] is off, or a fresh start already failed at this
-    /// α); a point that still fails is returned with `converged = false`.
+    /// α); a point that still fails is returned with `converged = false`, and so is a
+    /// Newton-converged state with negative form drag ([`ViscousParams::min_pressure_drag`]),
+    /// which is also not kept as the next warm start.
     pub fn solve(&mut self, alpha_deg: f64) -> ViscousSolution {
         if !alpha_deg.is_finite() {
             return failed_solution(alpha_deg, 0);
