@@ -87,7 +87,7 @@ struct PlotPointArgs {
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     mach: f64,
 
-    /// Angle of attack [deg].
+    /// Angle of attack \[deg\].
     #[arg(
         long,
         allow_hyphen_values = true,

@@ -19,7 +19,7 @@ pub use viscous_sweep::ViscousSweep;
 /// their coefficients must never be used as results.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct PolarPoint {
-    /// Angle of attack [deg].
+    /// Angle of attack \[deg\].
     pub alpha: f64,
     /// Lift coefficient.
     pub cl: f64,

@@ -8,7 +8,7 @@ use crate::viscous::{ViscousSolution, ViscousSolver};
 pub struct TargetClParams {
     /// Accepted lift error |Cl − Cl_target|.
     pub tolerance: f64,
-    /// Largest α change per secant step [deg] (keeps warm starts close).
+    /// Largest α change per secant step \[deg\] (keeps warm starts close).
     pub max_step_deg: f64,
     /// Most viscous solutions tried before giving up.
     pub max_solves: usize,
@@ -38,7 +38,7 @@ pub enum TargetClError {
     NotConverged {
         /// Requested lift coefficient.
         target: f64,
-        /// α of the failed solution [deg].
+        /// α of the failed solution \[deg\].
         alpha: f64,
     },
     /// The iteration ran out of solutions (e.g. Cl beyond Cl_max).
@@ -48,7 +48,7 @@ pub enum TargetClError {
         target: f64,
         /// Closest lift coefficient reached.
         closest: f64,
-        /// α of that solution [deg].
+        /// α of that solution \[deg\].
         alpha: f64,
     },
 }

@@ -40,9 +40,9 @@ pub enum AircraftError {
 pub struct Aircraft {
     /// Aircraft name (for reports).
     pub name: String,
-    /// Takeoff mass [kg].
+    /// Takeoff mass \[kg\].
     pub mass_kg: f64,
-    /// Equivalent parasitic drag area S_P·C_DP of the airframe without rotor [m²].
+    /// Equivalent parasitic drag area S_P·C_DP of the airframe without rotor \[m²\].
     pub parasitic_drag_area_m2: f64,
     /// Rotor data.
     pub rotor: RotorParams,
@@ -56,23 +56,23 @@ pub struct Aircraft {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RotorParams {
-    /// Rotor radius R [m].
+    /// Rotor radius R \[m\].
     pub radius_m: f64,
     /// Number of blades (a teetering rotor has 2).
     pub blades: u32,
-    /// Blade chord c [m] (constant, untwisted blade).
+    /// Blade chord c \[m\] (constant, untwisted blade).
     pub chord_m: f64,
-    /// Blade incidence θ relative to the hub plane [deg] (fixed, no collective or cyclic).
+    /// Blade incidence θ relative to the hub plane \[deg\] (fixed, no collective or cyclic).
     pub incidence_deg: f64,
-    /// Root cut-out: radius where the aerodynamic blade starts [m].
+    /// Root cut-out: radius where the aerodynamic blade starts \[m\].
     pub root_cutout_m: f64,
-    /// Built-in coning of the hub bar β0 [deg] (a teetering rotor's coning is fixed by the hub).
+    /// Built-in coning of the hub bar β0 \[deg\] (a teetering rotor's coning is fixed by the hub).
     pub precone_deg: f64,
-    /// Mass of one blade [kg] (uniform spanwise distribution assumed for the inertia).
+    /// Mass of one blade \[kg\] (uniform spanwise distribution assumed for the inertia).
     pub blade_mass_kg: f64,
-    /// Polar moment of inertia of hub, teeter block and bolts about the shaft [kg m²].
+    /// Polar moment of inertia of hub, teeter block and bolts about the shaft \[kg m²\].
     pub hub_inertia_kg_m2: f64,
-    /// Teeter stops: largest teeter amplitude before the blades hit the stops [deg].
+    /// Teeter stops: largest teeter amplitude before the blades hit the stops \[deg\].
     pub flap_stop_deg: f64,
     /// Number of radial strips.
     pub radial_strips: usize,
@@ -98,21 +98,21 @@ fn ideal_induced_power_factor() -> f64 {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PropellerParams {
-    /// Propeller diameter D [m].
+    /// Propeller diameter D \[m\].
     pub diameter_m: f64,
     /// Propeller rpm / engine rpm (reduction gear).
     pub gear_ratio: f64,
-    /// Static thrust at full throttle [N].
+    /// Static thrust at full throttle \[N\].
     pub static_thrust_n: f64,
-    /// Engine rpm at full throttle, standing still [rpm].
+    /// Engine rpm at full throttle, standing still \[rpm\].
     pub static_engine_rpm: f64,
-    /// Calibration point: airspeed [kt] …
+    /// Calibration point: airspeed \[kt\] …
     pub calib_speed_kt: f64,
-    /// … thrust there [N] …
+    /// … thrust there \[N\] …
     pub calib_thrust_n: f64,
-    /// … and the engine rpm measured there [rpm].
+    /// … and the engine rpm measured there \[rpm\].
     pub calib_engine_rpm: f64,
-    /// Highest engine rpm allowed (full-throttle rpm never exceeds it) [rpm].
+    /// Highest engine rpm allowed (full-throttle rpm never exceeds it) \[rpm\].
     pub max_engine_rpm: f64,
     /// Zero-torque advance ratio of the propeller as a multiple of its zero-thrust advance
     /// ratio, k = J_Q/J0 ≥ 1 (see [`crate::rotor::propeller`]).
@@ -123,28 +123,28 @@ pub struct PropellerParams {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TakeoffParams {
-    /// Rotor speed when the brake is released [rpm].
+    /// Rotor speed when the brake is released \[rpm\].
     pub prerotation_rpm: f64,
-    /// Rotor head pitch with the stick full aft [deg] (fuselage level on the ground).
+    /// Rotor head pitch with the stick full aft \[deg\] (fuselage level on the ground).
     pub head_angle_max_deg: f64,
-    /// Smallest rotor-disc angle the pilot model commands in the climb [deg].
+    /// Smallest rotor-disc angle the pilot model commands in the climb \[deg\].
     pub head_angle_min_deg: f64,
     /// Rolling-friction coefficient of the wheels.
     pub rolling_friction: f64,
-    /// Airspeed the pilot accelerates to during the climb, reached at the screen height [kt]
+    /// Airspeed the pilot accelerates to during the climb, reached at the screen height \[kt\]
     /// (see [`crate::rotor::takeoff`] for the pilot model).
     pub climb_speed_kt: f64,
     /// Pilot gain: rate of change of the rotor-disc angle per airspeed error [deg/s per m/s].
     pub pilot_gain_deg_per_ms: f64,
-    /// Pilot (and control-system) time constant [s].
+    /// Pilot (and control-system) time constant \[s\].
     pub pilot_time_constant_s: f64,
-    /// Screen height [m].
+    /// Screen height \[m\].
     pub screen_height_m: f64,
-    /// Airfield altitude [m] (ISA).
+    /// Airfield altitude \[m\] (ISA).
     pub field_altitude_m: f64,
-    /// Integration time step [s].
+    /// Integration time step \[s\].
     pub time_step_s: f64,
-    /// Give up after this time [s].
+    /// Give up after this time \[s\].
     pub max_time_s: f64,
 }
 
@@ -168,7 +168,7 @@ impl Aircraft {
         Ok(aircraft)
     }
 
-    /// Aircraft weight G = m·g0 [N].
+    /// Aircraft weight G = m·g0 \[N\].
     pub fn weight_n(&self) -> f64 {
         self.mass_kg * super::G0
     }
@@ -310,7 +310,7 @@ impl Aircraft {
 }
 
 impl RotorParams {
-    /// Polar moment of inertia of the rotor about the shaft [kg m²]: hub plus N_b uniform
+    /// Polar moment of inertia of the rotor about the shaft \[kg m²\]: hub plus N_b uniform
     /// blades spanning root cut-out r0 … R, I_b = m_b (R³ − r0³) / (3 (R − r0)).
     pub fn polar_inertia(&self) -> f64 {
         let (r0, r1) = (self.root_cutout_m, self.radius_m);
@@ -318,7 +318,7 @@ impl RotorParams {
         self.hub_inertia_kg_m2 + f64::from(self.blades) * blade
     }
 
-    /// Rotor disc area A = πR² [m²].
+    /// Rotor disc area A = πR² \[m²\].
     pub fn disc_area(&self) -> f64 {
         std::f64::consts::PI * self.radius_m * self.radius_m
     }

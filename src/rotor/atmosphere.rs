@@ -1,8 +1,8 @@
 //! International Standard Atmosphere (ISO 2533 / ICAO Doc 7488) in the troposphere.
 
-/// Sea-level temperature [K] (ISA).
+/// Sea-level temperature \[K\] (ISA).
 const T0: f64 = 288.15;
-/// Sea-level pressure [Pa] (ISA).
+/// Sea-level pressure \[Pa\] (ISA).
 const P0: f64 = 101_325.0;
 /// Tropospheric temperature lapse rate [K/m] (ISA).
 const LAPSE: f64 = 0.0065;
@@ -12,23 +12,23 @@ const R_AIR: f64 = 287.052_87;
 const GAMMA: f64 = 1.4;
 /// Sutherland's law reference viscosity [Pa s] at `SUTH_T0` (ISA, ISO 2533).
 const SUTH_MU0: f64 = 1.716e-5;
-/// Sutherland reference temperature [K].
+/// Sutherland reference temperature \[K\].
 const SUTH_T0: f64 = 273.15;
-/// Sutherland constant [K].
+/// Sutherland constant \[K\].
 const SUTH_S: f64 = 110.4;
 
 /// Air state at one altitude.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Atmosphere {
-    /// Geopotential altitude [m].
+    /// Geopotential altitude \[m\].
     pub altitude_m: f64,
-    /// Temperature [K].
+    /// Temperature \[K\].
     pub temperature: f64,
-    /// Static pressure [Pa].
+    /// Static pressure \[Pa\].
     pub pressure: f64,
     /// Density [kg/m³].
     pub density: f64,
-    /// Speed of sound [m/s].
+    /// Speed of sound \[m/s\].
     pub speed_of_sound: f64,
     /// Dynamic viscosity [Pa s].
     pub viscosity: f64,
@@ -56,7 +56,7 @@ impl Atmosphere {
         }
     }
 
-    /// Dynamic pressure ½ρV² [Pa] at airspeed `v` [m/s].
+    /// Dynamic pressure ½ρV² \[Pa\] at airspeed `v` \[m/s\].
     pub fn dynamic_pressure(&self, v: f64) -> f64 {
         0.5 * self.density * v * v
     }

@@ -28,23 +28,23 @@ pub struct AirState {
     pub density: f64,
     /// Dynamic viscosity [Pa s].
     pub viscosity: f64,
-    /// Speed of sound [m/s].
+    /// Speed of sound \[m/s\].
     pub speed_of_sound: f64,
 }
 
 /// Local flow at one strip.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StripFlow {
-    /// In-plane (tangential) air speed, positive when the air meets the leading edge [m/s].
+    /// In-plane (tangential) air speed, positive when the air meets the leading edge \[m/s\].
     pub ut: f64,
-    /// Upflow through the rotor normal to the blade [m/s].
+    /// Upflow through the rotor normal to the blade \[m/s\].
     pub up: f64,
-    /// Radial (spanwise) air speed along the blade, outwards positive [m/s]; it adds profile
+    /// Radial (spanwise) air speed along the blade, outwards positive \[m/s\]; it adds profile
     /// drag only (see the module documentation). Zero unless set with [`StripFlow::with_radial`].
     pub ur: f64,
-    /// Resultant speed W = √(U_T² + U_P²) [m/s].
+    /// Resultant speed W = √(U_T² + U_P²) \[m/s\].
     pub speed: f64,
-    /// Section angle of attack α = θ + atan2(U_P, U_T), wrapped to (−180°, 180°] [deg].
+    /// Section angle of attack α = θ + atan2(U_P, U_T), wrapped to (−180°, 180°] \[deg\].
     pub alpha_deg: f64,
     /// Chord Reynolds number ρWc/μ.
     pub reynolds: f64,
@@ -53,7 +53,7 @@ pub struct StripFlow {
 }
 
 impl StripFlow {
-    /// Velocity triangle of a strip with pitch `theta` [rad] and chord `chord` [m].
+    /// Velocity triangle of a strip with pitch `theta` \[rad\] and chord `chord` \[m\].
     pub fn new(ut: f64, up: f64, theta: f64, chord: f64, air: &AirState) -> Self {
         let speed = ut.hypot(up);
         let phi = up.atan2(ut);
@@ -68,12 +68,12 @@ impl StripFlow {
         }
     }
 
-    /// The same strip with radial (spanwise) air speed `ur` [m/s], outwards positive.
+    /// The same strip with radial (spanwise) air speed `ur` \[m/s\], outwards positive.
     pub fn with_radial(self, ur: f64) -> Self {
         Self { ur, ..self }
     }
 
-    /// Resultant speed including the radial component, W₃ = √(W² + U_R²) [m/s].
+    /// Resultant speed including the radial component, W₃ = √(W² + U_R²) \[m/s\].
     pub fn speed_with_radial(&self) -> f64 {
         self.speed.hypot(self.ur)
     }

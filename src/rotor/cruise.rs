@@ -10,7 +10,7 @@ use super::KT_TO_MS;
 use crate::table::SectionAero;
 use rayon::prelude::*;
 
-/// One speed of a [`speed_sweep`]: the airspeed [kt] and its trim (or why there is none).
+/// One speed of a [`speed_sweep`]: the airspeed \[kt\] and its trim (or why there is none).
 pub type SweepPoint = (f64, Result<TrimResult, TrimError>);
 
 /// Airspeeds `from_kt`, `from_kt + step_kt`, … up to `to_kt` inclusive (a step landing within
@@ -50,7 +50,7 @@ pub fn speed_sweep<S: SectionAero + Sync + ?Sized>(
 /// Blade section angle of attack α(ψ) at radius fraction `r_over_r` in trimmed level flight at
 /// `speed_kt` (ISA `altitude_m`, the preset's mass): the rotor is trimmed with [`trim_rotor`]
 /// and its converged inflow and flapping give α at `samples` azimuths ψ_k = 360°·k/samples,
-/// ψ = 0 with the blade pointing to the rear (paper Fig. 10). Returns (ψ [deg], α [deg]) pairs.
+/// ψ = 0 with the blade pointing to the rear (paper Fig. 10). Returns (ψ \[deg\], α \[deg\]) pairs.
 pub fn cruise_blade_alpha<S: SectionAero + ?Sized>(
     aircraft: &Aircraft,
     section: &S,

@@ -7,22 +7,22 @@
 //! equation reduces to: the first harmonics of the aerodynamic flap moment about the teeter bolt
 //! vanish (Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §4.8 with ν_β = 1).
 
-/// Blade flap angle β(ψ) = β0 + β1c cos ψ + β1s sin ψ (ψ = 0 at the rear, blade 1) [rad].
+/// Blade flap angle β(ψ) = β0 + β1c cos ψ + β1s sin ψ (ψ = 0 at the rear, blade 1) \[rad\].
 ///
 /// With this sign convention β1c < 0 means the blade is highest over the nose: the tip-path
 /// plane is tilted *back* by −β1c; β1s > 0 tilts it towards the advancing side (ψ = 90°).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Teeter {
-    /// Hub-bar coning (precone) β0 [rad].
+    /// Hub-bar coning (precone) β0 \[rad\].
     pub beta0: f64,
-    /// Cosine coefficient β1c [rad].
+    /// Cosine coefficient β1c \[rad\].
     pub beta1c: f64,
-    /// Sine coefficient β1s [rad].
+    /// Sine coefficient β1s \[rad\].
     pub beta1s: f64,
 }
 
 impl Teeter {
-    /// Flap angle β(ψ) [rad].
+    /// Flap angle β(ψ) \[rad\].
     pub fn beta(&self, psi: f64) -> f64 {
         self.beta0 + self.beta1c * psi.cos() + self.beta1s * psi.sin()
     }
@@ -32,13 +32,13 @@ impl Teeter {
         -self.beta1c * psi.sin() + self.beta1s * psi.cos()
     }
 
-    /// Teeter amplitude √(β1c² + β1s²) [rad]: the angle the hub swings to, checked against the
+    /// Teeter amplitude √(β1c² + β1s²) \[rad\]: the angle the hub swings to, checked against the
     /// teeter stops.
     pub fn amplitude(&self) -> f64 {
         self.beta1c.hypot(self.beta1s)
     }
 
-    /// Backward tilt of the tip-path plane relative to the hub plane, −β1c [rad].
+    /// Backward tilt of the tip-path plane relative to the hub plane, −β1c \[rad\].
     pub fn tilt_back(&self) -> f64 {
         -self.beta1c
     }

@@ -13,8 +13,8 @@ const SCAN_INTERVALS: usize = 64;
 /// (Glauert 1926; Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §2.14, with the
 /// sign of the axial free-stream component reversed for an autorotating disc).
 ///
-/// `thrust` [N], `density` [kg/m³], `area` [m²], `airspeed` [m/s], `disc_aoa` [rad] (positive
-/// = disc tilted back, flow up through the disc). Returns v_i [m/s], positive downwards.
+/// `thrust` \[N\], `density` [kg/m³], `area` \[m²\], `airspeed` \[m/s\], `disc_aoa` \[rad\] (positive
+/// = disc tilted back, flow up through the disc). Returns v_i \[m/s\], positive downwards.
 /// For negative thrust the mirrored problem is solved. Where several momentum solutions exist
 /// (windmill-brake state) the smallest |v_i| is returned, the physical branch.
 pub fn glauert_induced_velocity(

@@ -33,7 +33,7 @@ pub enum PropellerError {
     /// The requested thrust needs more than the engine's maximum rpm.
     #[error("propeller thrust {thrust_n:.0} N needs {engine_rpm:.0} engine rpm, above the maximum {max_rpm:.0}")]
     Unavailable {
-        /// Thrust requested [N].
+        /// Thrust requested \[N\].
         thrust_n: f64,
         /// Engine rpm it would need.
         engine_rpm: f64,
@@ -45,7 +45,7 @@ pub enum PropellerError {
 /// Calibrated propeller/engine map.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PropellerMap {
-    /// Propeller diameter D [m].
+    /// Propeller diameter D \[m\].
     pub diameter: f64,
     /// Propeller rpm per engine rpm.
     pub gear_ratio: f64,
@@ -87,7 +87,7 @@ impl PropellerMap {
         })
     }
 
-    /// Thrust [N] at density `rho`, airspeed `v` [m/s] and engine rpm (zero beyond J0).
+    /// Thrust \[N\] at density `rho`, airspeed `v` \[m/s\] and engine rpm (zero beyond J0).
     pub fn thrust(&self, rho: f64, v: f64, engine_rpm: f64) -> f64 {
         let n = self.gear_ratio * engine_rpm / 60.0;
         if n <= 0.0 {
@@ -97,7 +97,7 @@ impl PropellerMap {
         (rho * n * n * self.diameter.powi(4) * self.ct0 * (1.0 - j / self.j0)).max(0.0)
     }
 
-    /// Engine rpm at full throttle and airspeed `v` [m/s]: the torque balance of the module
+    /// Engine rpm at full throttle and airspeed `v` \[m/s\]: the torque balance of the module
     /// documentation, n = [a + √(a² + 4 n_static²)]/2 with a = V/(D·J_Q), capped at the
     /// maximum engine rpm.
     pub fn full_throttle_engine_rpm(&self, v: f64) -> f64 {
@@ -107,12 +107,12 @@ impl PropellerMap {
         (n * 60.0 / self.gear_ratio).min(self.max_engine_rpm)
     }
 
-    /// Full-throttle thrust [N] at density `rho` and airspeed `v` [m/s].
+    /// Full-throttle thrust \[N\] at density `rho` and airspeed `v` \[m/s\].
     pub fn full_throttle_thrust(&self, rho: f64, v: f64) -> f64 {
         self.thrust(rho, v, self.full_throttle_engine_rpm(v))
     }
 
-    /// Engine rpm that gives `thrust` [N] at density `rho` and airspeed `v`: the positive root
+    /// Engine rpm that gives `thrust` \[N\] at density `rho` and airspeed `v`: the positive root
     /// of a n² − b n − T = 0 with a = ρD⁴C_T0, b = ρD³C_T0 V/J0.
     pub fn engine_rpm_for_thrust(
         &self,

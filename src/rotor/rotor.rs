@@ -49,7 +49,7 @@ pub struct RotorSolverParams {
     pub tolerance: f64,
     /// Finite-difference step for the Jacobian (same scaling).
     pub fd_step: f64,
-    /// Largest allowed change of a flap coefficient per iteration [rad].
+    /// Largest allowed change of a flap coefficient per iteration \[rad\].
     pub max_flap_step: f64,
 }
 
@@ -67,17 +67,17 @@ impl Default for RotorSolverParams {
 /// Rotor geometry and discretisation.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Rotor {
-    /// Radius R [m].
+    /// Radius R \[m\].
     pub radius: f64,
-    /// Chord c [m].
+    /// Chord c \[m\].
     pub chord: f64,
     /// Number of blades (2 for the teetering model).
     pub blades: u32,
-    /// Blade pitch relative to the hub plane θ [rad].
+    /// Blade pitch relative to the hub plane θ \[rad\].
     pub pitch: f64,
-    /// Root cut-out radius [m].
+    /// Root cut-out radius \[m\].
     pub root_cutout: f64,
-    /// Hub-bar coning β0 [rad].
+    /// Hub-bar coning β0 \[rad\].
     pub precone: f64,
     /// Number of radial strips.
     pub radial_strips: usize,
@@ -102,11 +102,11 @@ pub struct Rotor {
 /// Operating point of the rotor.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FlightCondition {
-    /// True airspeed V [m/s].
+    /// True airspeed V \[m/s\].
     pub airspeed: f64,
-    /// Hub (shaft-normal plane) angle of attack α_H [rad], positive = disc tilted back.
+    /// Hub (shaft-normal plane) angle of attack α_H \[rad\], positive = disc tilted back.
     pub hub_aoa: f64,
-    /// Rotor angular speed Ω [rad/s].
+    /// Rotor angular speed Ω \[rad/s\].
     pub omega: f64,
     /// Air state.
     pub atmosphere: Atmosphere,
@@ -117,23 +117,23 @@ pub struct FlightCondition {
 pub struct RotorSolution {
     /// Operating point solved.
     pub condition: FlightCondition,
-    /// Mean induced velocity v0 [m/s] (downwards positive).
+    /// Mean induced velocity v0 \[m/s\] (downwards positive).
     pub induced_velocity: f64,
     /// Teeter flapping.
     pub teeter: Teeter,
     /// Tip-loss factor B used.
     pub tip_loss_b: f64,
-    /// Thrust along the shaft T [N].
+    /// Thrust along the shaft T \[N\].
     pub thrust: f64,
-    /// In-plane force towards the rear (H-force) [N].
+    /// In-plane force towards the rear (H-force) \[N\].
     pub h_force: f64,
-    /// In-plane force towards the advancing side [N].
+    /// In-plane force towards the advancing side \[N\].
     pub side_force: f64,
-    /// Rotor lift, perpendicular to the flight path [N].
+    /// Rotor lift, perpendicular to the flight path \[N\].
     pub lift: f64,
-    /// Rotor drag, along the flight path, rearwards [N].
+    /// Rotor drag, along the flight path, rearwards \[N\].
     pub drag: f64,
-    /// Aerodynamic driving torque about the shaft [N m]; positive accelerates the rotor,
+    /// Aerodynamic driving torque about the shaft \[N m\]; positive accelerates the rotor,
     /// zero in autorotation (the shaft torque needed to drive the rotor is its negative).
     pub torque: f64,
     /// Advance ratio μ = V cos α_H/(ΩR).
@@ -149,12 +149,12 @@ pub struct RotorSolution {
 }
 
 impl RotorSolution {
-    /// Angle of attack of the tip-path plane α_R = α_H − β1c [rad] (the "rotor AoA").
+    /// Angle of attack of the tip-path plane α_R = α_H − β1c \[rad\] (the "rotor AoA").
     pub fn disc_aoa(&self) -> f64 {
         self.condition.hub_aoa + self.teeter.tilt_back()
     }
 
-    /// Resultant rotor force √(L² + D²) [N].
+    /// Resultant rotor force √(L² + D²) \[N\].
     pub fn resultant(&self) -> f64 {
         self.lift.hypot(self.drag)
     }
@@ -173,12 +173,12 @@ struct Loads {
 }
 
 impl Rotor {
-    /// Disc area πR² [m²].
+    /// Disc area πR² \[m²\].
     pub fn disc_area(&self) -> f64 {
         std::f64::consts::PI * self.radius * self.radius
     }
 
-    /// Radii of the strip centres and the strip width [m].
+    /// Radii of the strip centres and the strip width \[m\].
     pub fn strips(&self) -> (Vec<f64>, f64) {
         let dr = (self.radius - self.root_cutout) / self.strip_count();
         let r = (0..self.radial_strips)
@@ -214,7 +214,7 @@ impl Rotor {
         }
     }
 
-    /// Local induced velocity at (r, ψ) [m/s] for mean value `v0`.
+    /// Local induced velocity at (r, ψ) \[m/s\] for mean value `v0`.
     fn induced_at(&self, cond: &FlightCondition, v0: f64, r: f64, psi: f64) -> f64 {
         match self.inflow {
             InflowModel::Glauert => v0,
@@ -461,9 +461,9 @@ impl Rotor {
         }
     }
 
-    /// Section angle of attack α(ψ) [deg] at radius fraction `r_over_r` for `samples` azimuths
+    /// Section angle of attack α(ψ) \[deg\] at radius fraction `r_over_r` for `samples` azimuths
     /// ψ_k = 360°·k/samples (ψ = 0 at the rear), using a converged `solution`'s inflow and
-    /// flapping. Returns (ψ [deg], α [deg]) pairs.
+    /// flapping. Returns (ψ \[deg\], α \[deg\]) pairs.
     pub fn alpha_at_radius(
         &self,
         solution: &RotorSolution,

@@ -34,7 +34,7 @@ pub enum TakeoffError {
     /// The rotor solution failed during the run.
     #[error("rotor solution failed at t = {time_s:.2} s: {source}")]
     Rotor {
-        /// Simulation time [s].
+        /// Simulation time \[s\].
         time_s: f64,
         /// Underlying error.
         source: RotorError,
@@ -45,9 +45,9 @@ pub enum TakeoffError {
     /// The aircraft did not reach the screen height in time.
     #[error("takeoff did not reach {height_m:.0} m within {time_s:.0} s ({reason})")]
     NotReached {
-        /// Screen height [m].
+        /// Screen height \[m\].
         height_m: f64,
-        /// Time limit [s].
+        /// Time limit \[s\].
         time_s: f64,
         /// State at the end.
         reason: &'static str,
@@ -55,7 +55,7 @@ pub enum TakeoffError {
     /// The rotor stopped or the state became non-finite.
     #[error("takeoff simulation diverged at t = {time_s:.2} s: {reason}")]
     Diverged {
-        /// Simulation time [s].
+        /// Simulation time \[s\].
         time_s: f64,
         /// What went wrong.
         reason: &'static str,
@@ -65,42 +65,42 @@ pub enum TakeoffError {
 /// One row of the takeoff time history.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct TakeoffSample {
-    /// Time since brake release [s].
+    /// Time since brake release \[s\].
     pub t: f64,
-    /// Distance from brake release [m].
+    /// Distance from brake release \[m\].
     pub x: f64,
-    /// Height [m].
+    /// Height \[m\].
     pub h: f64,
-    /// Airspeed [m/s].
+    /// Airspeed \[m/s\].
     pub v: f64,
-    /// Rotor speed [rpm].
+    /// Rotor speed \[rpm\].
     pub rotor_rpm: f64,
-    /// Tip-path-plane angle of attack α_R [deg].
+    /// Tip-path-plane angle of attack α_R \[deg\].
     pub alpha_r_deg: f64,
-    /// Teeter amplitude β [deg].
+    /// Teeter amplitude β \[deg\].
     pub beta_deg: f64,
 }
 
 /// Result of a takeoff run.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TakeoffResult {
-    /// Ground roll to lift-off s_TO [m].
+    /// Ground roll to lift-off s_TO \[m\].
     pub takeoff_roll_m: f64,
-    /// Distance to the screen height s_15 [m].
+    /// Distance to the screen height s_15 \[m\].
     pub distance_15m_m: f64,
-    /// Largest teeter amplitude during the run β_max [deg].
+    /// Largest teeter amplitude during the run β_max \[deg\].
     pub max_flapping_deg: f64,
     /// Whether β_max reached the teeter stops.
     pub flap_stops_reached: bool,
-    /// Airspeed at lift-off [kt].
+    /// Airspeed at lift-off \[kt\].
     pub liftoff_speed_kt: f64,
-    /// Airspeed at the screen height [kt].
+    /// Airspeed at the screen height \[kt\].
     pub screen_speed_kt: f64,
-    /// Rotor speed at lift-off [rpm].
+    /// Rotor speed at lift-off \[rpm\].
     pub liftoff_rotor_rpm: f64,
-    /// Time from brake release to lift-off [s].
+    /// Time from brake release to lift-off \[s\].
     pub liftoff_time_s: f64,
-    /// Time from brake release to the screen height [s].
+    /// Time from brake release to the screen height \[s\].
     pub screen_time_s: f64,
     /// Time history (every integration step).
     #[serde(skip)]
@@ -131,7 +131,7 @@ struct Model<'a, S: SectionAero + ?Sized> {
     inertia: f64,
     /// Last rotor solution, the warm start of the next solve (local to this run).
     warm: Option<RotorSolution>,
-    /// Airspeed at lift-off [m/s] (start of the pilot's airspeed schedule).
+    /// Airspeed at lift-off \[m/s\] (start of the pilot's airspeed schedule).
     liftoff_speed: f64,
 }
 

@@ -30,9 +30,9 @@ pub enum TrimError {
     /// No rotor speed in the search range gives zero torque.
     #[error("no autorotation at V = {airspeed_ms:.1} m/s, α_H = {aoa_deg:.2}°: {reason}")]
     NoAutorotation {
-        /// Airspeed [m/s].
+        /// Airspeed \[m/s\].
         airspeed_ms: f64,
-        /// Hub angle of attack [deg].
+        /// Hub angle of attack \[deg\].
         aoa_deg: f64,
         /// What the scan found.
         reason: &'static str,
@@ -40,9 +40,9 @@ pub enum TrimError {
     /// No rotor angle of attack in the search range balances the weight.
     #[error("no trim at V = {airspeed_ms:.1} m/s, weight {weight_n:.0} N: {reason}")]
     NoTrim {
-        /// Airspeed [m/s].
+        /// Airspeed \[m/s\].
         airspeed_ms: f64,
-        /// Weight [N].
+        /// Weight \[N\].
         weight_n: f64,
         /// What the scan found.
         reason: &'static str,
@@ -55,21 +55,21 @@ pub enum TrimError {
 /// Search ranges and tolerances of the trim solvers.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TrimParams {
-    /// Highest rotor speed searched [rpm] (the scan starts here).
+    /// Highest rotor speed searched \[rpm\] (the scan starts here).
     pub rpm_max: f64,
-    /// Lowest rotor speed searched [rpm].
+    /// Lowest rotor speed searched \[rpm\].
     pub rpm_min: f64,
     /// Scan factor between successive rpm samples (< 1).
     pub rpm_scan_factor: f64,
-    /// Rotor speed tolerance [rpm].
+    /// Rotor speed tolerance \[rpm\].
     pub rpm_tolerance: f64,
-    /// Smallest hub angle of attack searched [deg].
+    /// Smallest hub angle of attack searched \[deg\].
     pub aoa_min_deg: f64,
-    /// Largest hub angle of attack searched [deg].
+    /// Largest hub angle of attack searched \[deg\].
     pub aoa_max_deg: f64,
-    /// Hub angle scan step [deg].
+    /// Hub angle scan step \[deg\].
     pub aoa_scan_step_deg: f64,
-    /// Hub angle tolerance [deg].
+    /// Hub angle tolerance \[deg\].
     pub aoa_tolerance_deg: f64,
     /// Maximum secant iterations of each bracketed solve.
     pub max_iterations: usize,
@@ -94,39 +94,39 @@ impl Default for TrimParams {
 /// Trimmed level flight.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TrimResult {
-    /// Airspeed [m/s].
+    /// Airspeed \[m/s\].
     pub airspeed_ms: f64,
-    /// Airspeed [kt].
+    /// Airspeed \[kt\].
     pub airspeed_kt: f64,
-    /// Rotor speed n_R [rpm].
+    /// Rotor speed n_R \[rpm\].
     pub rotor_rpm: f64,
-    /// Tip-path-plane angle of attack α_R [deg].
+    /// Tip-path-plane angle of attack α_R \[deg\].
     pub rotor_aoa_deg: f64,
-    /// Hub-plane angle of attack α_H [deg].
+    /// Hub-plane angle of attack α_H \[deg\].
     pub hub_aoa_deg: f64,
-    /// Engine speed from the propeller map [rpm] (`None` if above the engine's maximum).
+    /// Engine speed from the propeller map \[rpm\] (`None` if above the engine's maximum).
     pub engine_rpm: Option<f64>,
-    /// Rotor drag D_R [N].
+    /// Rotor drag D_R \[N\].
     pub rotor_drag_n: f64,
-    /// Rotor lift [N] (= weight at trim).
+    /// Rotor lift \[N\] (= weight at trim).
     pub rotor_lift_n: f64,
-    /// Airframe drag D_P [N].
+    /// Airframe drag D_P \[N\].
     pub parasitic_drag_n: f64,
-    /// Propeller thrust F_prop = D_R + D_P [N].
+    /// Propeller thrust F_prop = D_R + D_P \[N\].
     pub prop_thrust_n: f64,
     /// Lift-to-drag ratio G/(D_R + D_P).
     pub lift_to_drag: f64,
-    /// Power required F_prop·V [kW].
+    /// Power required F_prop·V \[kW\].
     pub power_required_kw: f64,
-    /// Longitudinal flapping β1c [deg] (negative = tip-path plane tilted back).
+    /// Longitudinal flapping β1c \[deg\] (negative = tip-path plane tilted back).
     pub beta1c_deg: f64,
-    /// Lateral flapping β1s [deg].
+    /// Lateral flapping β1s \[deg\].
     pub beta1s_deg: f64,
     /// Advance ratio μ.
     pub advance_ratio: f64,
     /// Thrust coefficient C_T.
     pub thrust_coefficient: f64,
-    /// Residual shaft torque at the trim point [N m] (≈ 0).
+    /// Residual shaft torque at the trim point \[N m\] (≈ 0).
     pub torque_nm: f64,
 }
 
@@ -169,7 +169,7 @@ fn bracketed_root<E>(
 }
 
 /// Autorotation: the rotor speed at which the aerodynamic torque vanishes, for airspeed `v`
-/// [m/s] and hub angle `hub_aoa` [rad]. The scan starts at the highest rpm and moves down, so
+/// \[m/s\] and hub angle `hub_aoa` \[rad\]. The scan starts at the highest rpm and moves down, so
 /// the equilibrium found is the stable one (torque falls with rpm there).
 pub fn autorotation<S: SectionAero + ?Sized>(
     rotor: &Rotor,
@@ -229,7 +229,7 @@ pub fn autorotation<S: SectionAero + ?Sized>(
 }
 
 /// Level-flight trim: hub angle and rotor speed such that the rotor autorotates and its lift
-/// equals `weight` [N] at airspeed `v` [m/s]. Returns the rotor solution.
+/// equals `weight` \[N\] at airspeed `v` \[m/s\]. Returns the rotor solution.
 pub fn trim_rotor<S: SectionAero + ?Sized>(
     rotor: &Rotor,
     section: &S,
@@ -293,7 +293,7 @@ pub fn trim_rotor<S: SectionAero + ?Sized>(
     Ok(excess(aoa)?.1)
 }
 
-/// Full cruise trim of `aircraft` at `speed_kt` [kt], `mass_kg` and ISA `altitude_m`: rotor
+/// Full cruise trim of `aircraft` at `speed_kt` \[kt\], `mass_kg` and ISA `altitude_m`: rotor
 /// trim, airframe drag, propeller thrust and engine rpm (paper Table 3).
 pub fn trim_aircraft<S: SectionAero + ?Sized>(
     aircraft: &Aircraft,

@@ -8,7 +8,7 @@
 use super::{Lookup, SectionAero};
 use crate::polar::PolarPoint;
 
-/// The polar of `section` at (`re`, `mach`), one point per α of `alphas` [deg], from lookups.
+/// The polar of `section` at (`re`, `mach`), one point per α of `alphas` \[deg\], from lookups.
 ///
 /// Lookups give only cl, cd and cm: `cdp`, `cdf`, `xtr_top`, `xtr_bot` and `residual` are NaN
 /// and `iterations` is 0. A point is marked `converged` unless it comes from the 360°
@@ -44,16 +44,16 @@ pub fn sample_polar<S: SectionAero + ?Sized>(
 /// Where the lift coefficient reaches a target: α and the coefficients there.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LiftMatch {
-    /// Angle of attack [deg] at which cl equals the target.
+    /// Angle of attack \[deg\] at which cl equals the target.
     pub alpha_deg: f64,
     /// The lookup at that α (cl = target to within the bisection tolerance, cd, cm, flags).
     pub lookup: Lookup,
 }
 
-/// Step of the upward α scan that brackets the target lift coefficient [deg].
+/// Step of the upward α scan that brackets the target lift coefficient \[deg\].
 const SCAN_STEP_DEG: f64 = 0.25;
 
-/// Bisection stops when the bracket is narrower than this [deg].
+/// Bisection stops when the bracket is narrower than this \[deg\].
 const ALPHA_TOLERANCE_DEG: f64 = 1e-9;
 
 /// The smallest α in [`alpha_min`, `alpha_max`] (deg) at which the lift coefficient of

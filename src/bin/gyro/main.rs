@@ -51,13 +51,13 @@ enum Command {
         /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
         #[arg(long)]
         table: PathBuf,
-        /// Airspeed [kt].
+        /// Airspeed \[kt\].
         #[arg(long, default_value_t = 60.0)]
         speed_kt: f64,
-        /// Mass [kg] (default: the preset's).
+        /// Mass \[kg\] (default: the preset's).
         #[arg(long)]
         mass: Option<f64>,
-        /// ISA altitude [m].
+        /// ISA altitude \[m\].
         #[arg(long, default_value_t = 0.0)]
         altitude_m: f64,
         /// Print JSON instead of text.
@@ -72,7 +72,7 @@ enum Command {
         /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
         #[arg(long)]
         table: PathBuf,
-        /// Mass [kg] (default: the preset's).
+        /// Mass \[kg\] (default: the preset's).
         #[arg(long)]
         mass: Option<f64>,
         /// Print JSON instead of text.
@@ -107,7 +107,7 @@ enum Command {
         table: PathBuf,
         #[command(flatten)]
         speeds: SpeedRange,
-        /// Mass [kg] (default: the preset's).
+        /// Mass \[kg\] (default: the preset's).
         #[arg(long)]
         mass: Option<f64>,
         /// Print JSON instead of text.
@@ -122,7 +122,7 @@ enum Command {
         /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
         #[arg(long)]
         table: PathBuf,
-        /// Airspeed [kt].
+        /// Airspeed \[kt\].
         #[arg(long, default_value_t = 60.0)]
         speed_kt: f64,
         /// Radius as a fraction of R.
@@ -260,19 +260,19 @@ fn check_samples(samples: usize) -> Result<()> {
 /// Airspeed range of a speed sweep (`gyro sweep`, `gyro plot power`).
 #[derive(Args, Debug, Clone, Copy)]
 pub struct SpeedRange {
-    /// Lowest airspeed [kt].
+    /// Lowest airspeed \[kt\].
     #[arg(long, default_value_t = 30.0)]
     pub from_kt: f64,
-    /// Highest airspeed [kt].
+    /// Highest airspeed \[kt\].
     #[arg(long, default_value_t = 90.0)]
     pub to_kt: f64,
-    /// Speed step [kt].
+    /// Speed step \[kt\].
     #[arg(long, default_value_t = 5.0)]
     pub step_kt: f64,
 }
 
 impl SpeedRange {
-    /// The speeds of the sweep [kt], checked.
+    /// The speeds of the sweep \[kt\], checked.
     fn checked(&self) -> Result<Vec<f64>> {
         let Self {
             from_kt,
@@ -438,7 +438,7 @@ fn trimmed_speeds(
     Ok(trims)
 }
 
-/// Airspeed of the paper's cruise trim (Table 3) [kt].
+/// Airspeed of the paper's cruise trim (Table 3) \[kt\].
 const PAPER_TRIM_SPEED_KT: f64 = 60.0;
 
 /// The paper's two computations for one blade section: trim at 60 kt, ISA sea level, the

@@ -21,15 +21,15 @@ pub const PAPER_TAKEOFF: [(&str, f64, f64); 3] = [
     ("max flapping beta_max [deg]", 3.5, 4.2),
 ];
 
-/// Paper text on the clean takeoff (Fig. 11): lift-off speed [kt], speed at 15 m [kt] and rotor
-/// speed at lift-off [rpm] (200 rpm prerotation → ≈ 300 rpm at lift-off).
+/// Paper text on the clean takeoff (Fig. 11): lift-off speed \[kt\], speed at 15 m \[kt\] and rotor
+/// speed at lift-off \[rpm\] (200 rpm prerotation → ≈ 300 rpm at lift-off).
 pub const PAPER_CLEAN_TAKEOFF_TEXT: (f64, f64, f64) = (43.0, 51.0, 300.0);
 
-/// Paper Fig. 10: maximum blade angle of attack at ≈ 90 % R in 60 kt cruise [deg] (clean,
+/// Paper Fig. 10: maximum blade angle of attack at ≈ 90 % R in 60 kt cruise \[deg\] (clean,
 /// contaminated), reached on the retreating side at ψ = 270° (ψ = 0 at the rear).
 pub const PAPER_FIG10_MAX_ALPHA: (f64, f64) = (5.9, 6.7);
 
-/// Azimuth of the paper's Fig. 10 maxima [deg].
+/// Azimuth of the paper's Fig. 10 maxima \[deg\].
 pub const PAPER_FIG10_PSI: f64 = 270.0;
 
 /// Reynolds and Mach number of the paper's airfoil analysis (blade section at ≈ 90 % R).
@@ -54,7 +54,7 @@ pub struct Table5Row {
     /// `tests/data/viscous/`), Cd at Cl = 0.8 by linear interpolation between its converged
     /// points: free, fixed at 7 %.
     pub xfoil: (f64, f64),
-    /// α [deg] at Cl = 0.8 in the same XFOIL 6.99 polars: free, fixed at 7 %.
+    /// α \[deg\] at Cl = 0.8 in the same XFOIL 6.99 polars: free, fixed at 7 %.
     pub xfoil_alpha: (f64, f64),
 }
 

@@ -25,7 +25,7 @@ pub enum PlotKind {
     Alpha {
         #[command(flatten)]
         cases: CaseArgs,
-        /// Airspeed [kt].
+        /// Airspeed \[kt\].
         #[arg(long, default_value_t = 60.0)]
         speed_kt: f64,
         /// Radius as a fraction of R.
@@ -82,7 +82,7 @@ pub fn case_style(i: usize) -> Style {
     }
 }
 
-/// Blade α vs azimuth for the cases given as (label, (ψ [deg], α [deg]) samples over one
+/// Blade α vs azimuth for the cases given as (label, (ψ \[deg\], α \[deg\]) samples over one
 /// revolution from ψ = 0); each curve is closed at ψ = 360° with its ψ = 0 value.
 pub fn alpha_figure(curves: &[(&str, &[(f64, f64)])], title: &str) -> Figure {
     let closed: Vec<(Vec<f64>, Vec<f64>)> = curves
@@ -111,8 +111,8 @@ pub fn alpha_figure(curves: &[(&str, &[(f64, f64)])], title: &str) -> Figure {
     alpha_azimuth_figure(&cases, title)
 }
 
-/// Takeoff time histories of the cases given as (label, result): speed [kt], height [m], rotor
-/// rpm and flapping [deg] vs time, lift-off marked.
+/// Takeoff time histories of the cases given as (label, result): speed \[kt\], height \[m\], rotor
+/// rpm and flapping \[deg\] vs time, lift-off marked.
 pub fn takeoff_plot(runs: &[(&str, &TakeoffResult)], title: &str) -> Figure {
     let columns: Vec<[Vec<f64>; 5]> = runs
         .iter()

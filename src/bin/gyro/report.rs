@@ -45,10 +45,10 @@ const FIG10_RADIUS: f64 = 0.9;
 /// Azimuth samples of the blade α(ψ) curve (1° resolution).
 const FIG10_SAMPLES: usize = 360;
 
-/// Speed range of the power-required sweep [kt]: from, to, step.
+/// Speed range of the power-required sweep \[kt\]: from, to, step.
 const SWEEP_KT: (f64, f64, f64) = (30.0, 90.0, 5.0);
 
-/// α interval searched for Cl = 0.8 [deg] (the attached-flow branch of both airfoils).
+/// α interval searched for Cl = 0.8 \[deg\] (the attached-flow branch of both airfoils).
 const TABLE5_ALPHA_RANGE: (f64, f64) = (-5.0, 15.0);
 
 /// Rounding of the paper's Table 5 values (printed with three decimals).
