@@ -70,10 +70,16 @@ impl<const N: usize> Dual<N> {
         self.map(r, 0.5 / r)
     }
 
-    /// Real power with a constant exponent.
+    /// Real power with a constant exponent (one `powf`: the derivative is p·f/v, except at
+    /// v = 0).
     pub fn powf(self, p: f64) -> Self {
         let f = self.v.powf(p);
-        self.map(f, p * self.v.powf(p - 1.0))
+        let df = if self.v != 0.0 {
+            p * f / self.v
+        } else {
+            p * self.v.powf(p - 1.0)
+        };
+        self.map(f, df)
     }
 
     /// Integer power.
@@ -164,10 +170,12 @@ impl<const N: usize> Mul for Dual<N> {
 impl<const N: usize> Div for Dual<N> {
     type Output = Dual<N>;
     fn div(self, o: Dual<N>) -> Dual<N> {
-        let q = self.v / o.v;
+        // One division: the gradient is scaled by the reciprocal.
+        let r = 1.0 / o.v;
+        let q = self.v * r;
         let mut g = [0.0; N];
         for (i, gi) in g.iter_mut().enumerate() {
-            *gi = (self.g[i] - q * o.g[i]) / o.v;
+            *gi = (self.g[i] - q * o.g[i]) * r;
         }
         Dual { v: q, g }
     }

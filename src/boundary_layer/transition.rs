@@ -160,6 +160,31 @@ impl BlModel {
         }
     }
 
+    /// Whether the interval certainly stays laminar, decided from one residual evaluation
+    /// instead of the N2 iteration of [`BlModel::solve_n2`] (same outcome, a fraction of the
+    /// cost on the many laminar intervals far from transition). With no trip in the interval
+    /// and N2 ≤ Ncrit, T is station 2 and only the onset term of ā depends on N2, so the
+    /// TRCHEK2 residual R(N2) is concave (R'' < 0). If R(Ncrit) > 0 and R'(Ncrit) > 0, R is
+    /// increasing below Ncrit with its root there, and the damped Newton iteration (started
+    /// below Ncrit, never stepping past a root of a concave increasing function) stays below
+    /// Ncrit: no free transition.
+    fn below_ncrit(
+        &self,
+        s1: &Station<1>,
+        p2: &Primaries<1>,
+        v1: &StationVars,
+        v2: &StationVars,
+        xi_forced: Option<f64>,
+    ) -> bool {
+        let ncrit = self.flow.ncrit;
+        let tripped = matches!(xi_forced, Some(xf) if xf > v1.x && xf <= v2.x);
+        if tripped || !(v1.s < ncrit) {
+            return false;
+        }
+        let (res, _, ax) = self.trchek_residual(s1, p2, Dual::variable(ncrit, 0), xi_forced);
+        ax.v > 0.0 && res.v > 0.0 && res.g[0] > 0.0
+    }
+
     /// Newton iteration of TRCHEK2 for N2 on one-slot derivative numbers (∂/∂N2); `s1` and
     /// `p2` are constants.
     fn solve_n2(
@@ -269,6 +294,9 @@ impl BlModel {
         check_advance(v1, v2)?;
         let s1c = up.constant(self);
         let p2c = Primaries::new(v2, None, self);
+        if self.below_ncrit(s1c, &p2c, v1, v2, xi_forced) {
+            return Ok(None);
+        }
         let check = self.solve_n2(s1c, &p2c, v1, v2, xi_forced);
         let Some((xi_tr, kind)) = check.transition else {
             return Ok(None);

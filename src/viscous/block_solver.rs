@@ -18,7 +18,7 @@
 
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::lu::partial_pivoting::{factor, solve};
-use faer::{Mat, Par};
+use faer::{Mat, MatMut, Par};
 
 use super::error::ViscousError;
 
@@ -110,71 +110,81 @@ impl BlockSystem {
                 for (r, tr) in t.iter_mut().enumerate() {
                     *tr -= b[r][0] * yp[0] + b[r][1] * yp[1] + b[r][2] * yp[2];
                 }
-                let (rows_p, _) = big_y.split_at(3 * (p + 1) * n);
-                let p0 = &rows_p[3 * p * n..(3 * p + 1) * n];
-                let p1 = &rows_p[(3 * p + 1) * n..(3 * p + 2) * n];
-                let p2 = &rows_p[(3 * p + 2) * n..(3 * p + 3) * n];
-                for r in 0..3 {
-                    let row = &mut t3[r * n..(r + 1) * n];
+                let rows_p = &big_y[3 * p * n..3 * (p + 1) * n];
+                let (p0, p12) = rows_p.split_at(n);
+                let (p1, p2) = p12.split_at(n);
+                for (r, row) in t3.chunks_exact_mut(n).enumerate() {
                     let (c0, c1, c2) = (b[r][0], b[r][1], b[r][2]);
-                    for j in 0..n {
-                        row[j] -= c0 * p0[j] + c1 * p1[j] + c2 * p2[j];
+                    for (((o, a0), a1), a2) in row.iter_mut().zip(p0).zip(p1).zip(p2) {
+                        *o -= c0 * a0 + c1 * a1 + c2 * a2;
                     }
                 }
             }
             let a = &inv[k];
             y[k] = mul3(a, &t);
+            let (t0, t12) = t3.split_at(n);
+            let (t1, t2) = t12.split_at(n);
             let out = &mut big_y[3 * k * n..3 * (k + 1) * n];
-            for j in 0..n {
-                let v = [t3[j], t3[n + j], t3[2 * n + j]];
-                out[j] = a[0][0] * v[0] + a[0][1] * v[1] + a[0][2] * v[2];
-                out[n + j] = a[1][0] * v[0] + a[1][1] * v[1] + a[1][2] * v[2];
-                out[2 * n + j] = a[2][0] * v[0] + a[2][1] * v[1] + a[2][2] * v[2];
+            let (o0, o12) = out.split_at_mut(n);
+            let (o1, o2) = o12.split_at_mut(n);
+            for (r, o) in [o0, o1, o2].into_iter().enumerate() {
+                let (c0, c1, c2) = (a[r][0], a[r][1], a[r][2]);
+                for (((o, v0), v1), v2) in o.iter_mut().zip(t0).zip(t1).zip(t2) {
+                    *o = c0 * v0 + c1 * v1 + c2 * v2;
+                }
             }
         }
 
-        // Schur complement on the mass unknowns: (I + P Y) m = P y.
-        let schur = Mat::<f64>::from_fn(n, n, |i, j| {
-            big_y[(3 * i + 2) * n + j] + if i == j { 1.0 } else { 0.0 }
-        });
+        // Schur complement on the mass unknowns: (I + P Y) m = P y. The mass rows of Y,
+        // read as columns (stride 3n), are Sᵀ in column-major order: Sᵀ is factored in place
+        // (no copy) and the transposed system solved.
         let mut m = Mat::<f64>::from_fn(n, 1, |i, _| y[i][2]);
-        // Sequential LU: the solver runs inside parallel sweeps, so no nested parallelism.
-        let mut schur = schur;
         let mut perm = vec![0usize; n];
         let mut perm_inv = vec![0usize; n];
-        let req = factor::lu_in_place_scratch::<usize, f64>(n, n, Par::Seq, Default::default())
-            .or(solve::solve_in_place_scratch::<usize, f64>(n, 1, Par::Seq));
+        let req = factor::lu_in_place_scratch::<usize, f64>(n, n, Par::Seq, Default::default()).or(
+            solve::solve_transpose_in_place_scratch::<usize, f64>(n, 1, Par::Seq),
+        );
         let mut buf = MemBuffer::new(req);
         let stack = MemStack::new(&mut buf);
-        let (_, p) = factor::lu_in_place(
-            schur.as_mut(),
-            &mut perm,
-            &mut perm_inv,
-            Par::Seq,
-            stack,
-            Default::default(),
-        );
-        solve::solve_in_place(
-            schur.as_ref(),
-            schur.as_ref(),
-            p,
-            m.as_mut(),
-            Par::Seq,
-            stack,
-        );
+        {
+            let mass_rows = &mut big_y[2 * n..];
+            let mut st = MatMut::from_column_major_slice_with_stride_mut(mass_rows, n, n, 3 * n);
+            for i in 0..n {
+                st[(i, i)] += 1.0;
+            }
+            // Sequential LU: the solver runs inside parallel sweeps, so no nested parallelism.
+            let (_, p) = factor::lu_in_place(
+                st.as_mut(),
+                &mut perm,
+                &mut perm_inv,
+                Par::Seq,
+                stack,
+                Default::default(),
+            );
+            solve::solve_transpose_in_place(
+                st.as_ref(),
+                st.as_ref(),
+                p,
+                m.as_mut(),
+                Par::Seq,
+                stack,
+            );
+        }
         if let Some(i) = (0..n).find(|&i| !m[(i, 0)].is_finite()) {
             return Err(ViscousError::SingularSystem { station: i });
         }
 
         let mdense: Vec<f64> = (0..n).map(|j| m[(j, 0)]).collect();
-        // Back substitution w = y − Y m.
+        // Back substitution w = y − Y m; on the mass rows this is m itself
+        // (P Y m = P y − m by the Schur system).
         let mut w = y;
         for (k, wk) in w.iter_mut().enumerate() {
-            for (r, wr) in wk.iter_mut().enumerate() {
+            for (r, wr) in wk.iter_mut().enumerate().take(2) {
                 let row = &big_y[(3 * k + r) * n..(3 * k + r + 1) * n];
                 let s: f64 = row.iter().zip(&mdense).map(|(a, b)| a * b).sum();
                 *wr -= s;
             }
+            wk[2] = mdense[k];
         }
         Ok(w)
     }
