@@ -178,7 +178,7 @@ impl BlModel {
     ) -> bool {
         let ncrit = self.flow.ncrit;
         let tripped = matches!(xi_forced, Some(xf) if xf > v1.x && xf <= v2.x);
-        if tripped || !(v1.s < ncrit) {
+        if tripped || v1.s.is_nan() || v1.s >= ncrit {
             return false;
         }
         let (res, _, ax) = self.trchek_residual(s1, p2, Dual::variable(ncrit, 0), xi_forced);
