@@ -82,5 +82,8 @@ fn shortcut_decides_transition_as_the_full_n2_iteration() {
     }
     // Both outcomes are well represented.
     assert_eq!(cases, 2 * 4 * 3 * 5 * 3 * 3 * 6 * 2);
-    assert!(transitions > cases / 5 && transitions < 4 * cases / 5, "{transitions} of {cases}");
+    assert!(
+        transitions > cases / 5 && transitions < 4 * cases / 5,
+        "{transitions} of {cases}"
+    );
 }

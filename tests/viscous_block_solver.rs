@@ -26,12 +26,19 @@ impl Lcg {
     }
 }
 
+/// A random mass influence matrix G (n × n row-major) with entries of size 0.3/n.
+fn random_influence(n: usize, seed: u64) -> Vec<f64> {
+    let mut g = Lcg(seed ^ 0x9e37_79b9);
+    (0..n * n).map(|_| 0.3 * g.next() / n as f64).collect()
+}
+
 /// Builds a system with XFOIL's topology: upper chain 0..nu, lower chain nu..nu+nl, wake chain
-/// whose first station depends on both trailing-edge stations, and a dense mass coupling.
-fn random_system(nu: usize, nl: usize, nw: usize, seed: u64) -> BlockSystem {
+/// whose first station depends on both trailing-edge stations, and a dense mass coupling whose
+/// rows combine the rows of G of the station and its upstream station(s), as the assembly does.
+fn random_system(nu: usize, nl: usize, nw: usize, seed: u64, influence: &[f64]) -> BlockSystem<'_> {
     let n = nu + nl + nw;
     let mut g = Lcg(seed);
-    let mut sys = BlockSystem::zeros(n);
+    let mut sys = BlockSystem::zeros(n, influence);
     for k in 0..n {
         sys.diag[k] = g.block(4.0);
         let first_lower = k == nu;
@@ -41,9 +48,12 @@ fn random_system(nu: usize, nl: usize, nw: usize, seed: u64) -> BlockSystem {
         if k == nu + nl {
             sys.upstream2[k] = Some((nu - 1, g.block(0.0)));
         }
+        let mut coupled = vec![k];
+        coupled.extend(sys.upstream[k].map(|(p, _)| p));
+        coupled.extend(sys.upstream2[k].map(|(q, _)| q));
         for r in 0..3 {
-            for j in 0..n {
-                sys.dense[(3 * k + r) * n + j] = 0.3 * g.next() / n as f64;
+            for &j in &coupled {
+                sys.mass_terms[3 * k + r].add(j, g.next());
             }
         }
         sys.rhs[k] = [g.next(), g.next(), g.next()];
@@ -54,8 +64,9 @@ fn random_system(nu: usize, nl: usize, nw: usize, seed: u64) -> BlockSystem {
 #[test]
 fn structured_solve_matches_dense_lu() {
     for (nu, nl, nw, seed) in [(5, 6, 3, 1), (40, 45, 20, 7), (80, 85, 30, 42)] {
-        let sys = random_system(nu, nl, nw, seed);
-        let n = sys.n;
+        let n = nu + nl + nw;
+        let influence = random_influence(n, seed);
+        let sys = random_system(nu, nl, nw, seed, &influence);
         let w = sys.solve().expect("solvable");
         let a = sys.to_dense();
         let mut b = Mat::<f64>::from_fn(3 * n, 1, |i, _| sys.rhs[i / 3][i % 3]);
@@ -74,6 +85,25 @@ fn structured_solve_matches_dense_lu() {
             "n={n}: max error {max_err:e} (max |x| {max_val:e})"
         );
     }
+}
+
+#[test]
+fn mass_terms_merge_rows_and_expand_to_v() {
+    let influence = [1.0, 2.0, 3.0, 4.0];
+    let mut sys = BlockSystem::zeros(2, &influence);
+    sys.mass_terms[4].add(0, 2.0);
+    sys.mass_terms[4].add(1, -1.0);
+    sys.mass_terms[4].add(0, 0.5);
+    assert_eq!(
+        sys.mass_terms[4].terms().collect::<Vec<_>>(),
+        vec![(0, 2.5), (1, -1.0)]
+    );
+    // Row 4 of V (station 1, equation 1) = 2.5·G[0] − G[1] = (2.5 − 3, 5 − 4); it sits in the
+    // mass columns (unknown 2 of each station) of the expanded matrix.
+    let a = sys.to_dense();
+    assert_eq!(a[(4, 2)], -0.5);
+    assert_eq!(a[(4, 5)], 1.0);
+    assert_eq!(a[(3, 2)], 0.0);
 }
 
 #[test]

@@ -11,7 +11,9 @@
 //!
 //! with p(k) < k the upstream station along the same surface and q(k) < k an optional second
 //! upstream station (the upper trailing-edge station for the first wake station, XFOIL TESYS).
-//! The 3×n block V carries the dense edge-velocity coupling Ue = Ue_inv + D·m.
+//! The 3×n block V carries the dense edge-velocity coupling Ue = Ue_inv + G·m: an equation
+//! depends on the edge speeds of at most three stations, so each row of V is a combination of
+//! at most three rows of G and is kept as those coefficients; V itself is never stored.
 //! Writing the block part as the lower block-triangular operator L, the solution is
 //! `w = L⁻¹(r − V m)` and `m = P w`, hence the n×n Schur system `(I + P L⁻¹ V) m = P L⁻¹ r`.
 //! The cost is O(n²) for the substitutions plus one n×n LU, instead of a 3n×3n dense LU.
@@ -25,9 +27,76 @@ use super::error::ViscousError;
 /// A 3×3 block, row-major.
 pub type Block3 = [[f64; 3]; 3];
 
+/// Row of the mass columns V as a combination of at most three rows of the mass influence
+/// matrix G: V_row = Σ c·G\[j\].
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct MassTerms {
+    rows: [usize; 3],
+    coefs: [f64; 3],
+    len: usize,
+}
+
+impl MassTerms {
+    /// Adds c·G\[j\] (merged with an earlier term on the same row of G).
+    ///
+    /// # Panics
+    /// If a fourth distinct row of G is added (an equation couples at most three stations).
+    pub fn add(&mut self, j: usize, c: f64) {
+        if let Some(i) = self.rows[..self.len].iter().position(|&r| r == j) {
+            self.coefs[i] += c;
+        } else {
+            assert!(
+                self.len < 3,
+                "an equation depends on at most three edge speeds"
+            );
+            self.rows[self.len] = j;
+            self.coefs[self.len] = c;
+            self.len += 1;
+        }
+    }
+
+    /// The terms (row of G, coefficient).
+    pub fn terms(&self) -> impl Iterator<Item = (usize, f64)> + '_ {
+        self.rows[..self.len]
+            .iter()
+            .copied()
+            .zip(self.coefs[..self.len].iter().copied())
+    }
+
+    /// Writes Σ c·G\[j\] into `out` (length n).
+    fn write_row(&self, g: &[f64], out: &mut [f64]) {
+        let n = out.len();
+        let row = |j: usize| &g[j * n..(j + 1) * n];
+        match self.len {
+            0 => out.fill(0.0),
+            1 => {
+                let (r0, c0) = (row(self.rows[0]), self.coefs[0]);
+                for (o, a) in out.iter_mut().zip(r0) {
+                    *o = c0 * a;
+                }
+            }
+            2 => {
+                let (r0, c0) = (row(self.rows[0]), self.coefs[0]);
+                let (r1, c1) = (row(self.rows[1]), self.coefs[1]);
+                for ((o, a), b) in out.iter_mut().zip(r0).zip(r1) {
+                    *o = c0 * a + c1 * b;
+                }
+            }
+            _ => {
+                let (r0, c0) = (row(self.rows[0]), self.coefs[0]);
+                let (r1, c1) = (row(self.rows[1]), self.coefs[1]);
+                let (r2, c2) = (row(self.rows[2]), self.coefs[2]);
+                for (((o, a), b), c) in out.iter_mut().zip(r0).zip(r1).zip(r2) {
+                    *o = c0 * a + c1 * b + c2 * c;
+                }
+            }
+        }
+    }
+}
+
 /// The structured Newton system of one viscous iteration.
 #[derive(Clone, Debug)]
-pub struct BlockSystem {
+pub struct BlockSystem<'a> {
     /// Number of stations n (3n unknowns).
     pub n: usize,
     /// Diagonal blocks A_k (coefficients of the station's own unknowns).
@@ -36,22 +105,34 @@ pub struct BlockSystem {
     pub upstream: Vec<Option<(usize, Block3)>>,
     /// Second upstream station q(k) (< k) with its block C_k (trailing-edge junction).
     pub upstream2: Vec<Option<(usize, Block3)>>,
-    /// Dense mass columns V, 3n × n stored row-major: entry `[(3k+r)·n + j]` is
-    /// ∂(equation r of station k)/∂m_j.
-    pub dense: Vec<f64>,
+    /// Mass influence matrix G, n × n row-major: `g[j·n + i]` = ∂Ue_j/∂m_i.
+    pub mass_influence: &'a [f64],
+    /// The mass columns V (3n × n) by rows: row 3k+r, ∂(equation r of station k)/∂m, is
+    /// Σ c·G\[j\] over the terms of `mass_terms[3k + r]`.
+    pub mass_terms: Vec<MassTerms>,
     /// Right-hand sides r_k.
     pub rhs: Vec<[f64; 3]>,
 }
 
-impl BlockSystem {
-    /// An all-zero system of `n` stations.
-    pub fn zeros(n: usize) -> Self {
+impl<'a> BlockSystem<'a> {
+    /// An all-zero system of `n` stations coupled through the n × n mass influence matrix
+    /// `mass_influence` (row-major).
+    ///
+    /// # Panics
+    /// If `mass_influence` does not hold n² values.
+    pub fn zeros(n: usize, mass_influence: &'a [f64]) -> Self {
+        assert_eq!(
+            mass_influence.len(),
+            n * n,
+            "mass influence matrix must be n × n"
+        );
         Self {
             n,
             diag: vec![[[0.0; 3]; 3]; n],
             upstream: vec![None; n],
             upstream2: vec![None; n],
-            dense: vec![0.0; 3 * n * n],
+            mass_influence,
+            mass_terms: vec![MassTerms::default(); 3 * n],
             rhs: vec![[0.0; 3]; n],
         }
     }
@@ -71,8 +152,10 @@ impl BlockSystem {
                         a[(3 * k + r, 3 * q + c)] += b[r][c];
                     }
                 }
-                for j in 0..n {
-                    a[(3 * k + r, 3 * j + 2)] += self.dense[(3 * k + r) * n + j];
+                for (j, c) in self.mass_terms[3 * k + r].terms() {
+                    for i in 0..n {
+                        a[(3 * k + r, 3 * i + 2)] += c * self.mass_influence[j * n + i];
+                    }
                 }
             }
         }
@@ -84,9 +167,8 @@ impl BlockSystem {
         self.clone().solve_in_place()
     }
 
-    /// Solves the system like [`solve`](Self::solve), using the storage of the dense mass
-    /// columns V for L⁻¹V (no copy of the 3n×n block; the system is consumed).
-    pub fn solve_in_place(mut self) -> Result<Vec<[f64; 3]>, ViscousError> {
+    /// Solves the system like [`solve`](Self::solve), consuming it.
+    pub fn solve_in_place(self) -> Result<Vec<[f64; 3]>, ViscousError> {
         let n = self.n;
         let inv: Vec<Block3> = self
             .diag
@@ -95,13 +177,16 @@ impl BlockSystem {
             .map(|(k, a)| invert3(a).ok_or(ViscousError::SingularSystem { station: k }))
             .collect::<Result<_, _>>()?;
 
-        // Forward substitution y = L⁻¹ r and Y = L⁻¹ V (Y row-major like V).
+        // Forward substitution y = L⁻¹ r and Y = L⁻¹ V (Y row-major, 3n × n, built row by
+        // row; the rows of V are formed from G as they are needed).
         let mut y = vec![[0.0; 3]; n];
-        let mut big_y = std::mem::take(&mut self.dense);
+        let mut big_y: Vec<f64> = Vec::with_capacity(3 * n * n);
         let mut t3 = vec![0.0; 3 * n];
         for k in 0..n {
             let mut t = self.rhs[k];
-            t3.copy_from_slice(&big_y[3 * k * n..3 * (k + 1) * n]);
+            for (r, row) in t3.chunks_exact_mut(n).enumerate() {
+                self.mass_terms[3 * k + r].write_row(self.mass_influence, row);
+            }
             for (p, b) in [&self.upstream[k], &self.upstream2[k]]
                 .into_iter()
                 .flatten()
@@ -124,14 +209,14 @@ impl BlockSystem {
             y[k] = mul3(a, &t);
             let (t0, t12) = t3.split_at(n);
             let (t1, t2) = t12.split_at(n);
-            let out = &mut big_y[3 * k * n..3 * (k + 1) * n];
-            let (o0, o12) = out.split_at_mut(n);
-            let (o1, o2) = o12.split_at_mut(n);
-            for (r, o) in [o0, o1, o2].into_iter().enumerate() {
-                let (c0, c1, c2) = (a[r][0], a[r][1], a[r][2]);
-                for (((o, v0), v1), v2) in o.iter_mut().zip(t0).zip(t1).zip(t2) {
-                    *o = c0 * v0 + c1 * v1 + c2 * v2;
-                }
+            for ar in a {
+                let (c0, c1, c2) = (ar[0], ar[1], ar[2]);
+                big_y.extend(
+                    t0.iter()
+                        .zip(t1)
+                        .zip(t2)
+                        .map(|((v0, v1), v2)| c0 * v0 + c1 * v1 + c2 * v2),
+                );
             }
         }
 

@@ -89,9 +89,9 @@ impl Coupling<'_> {
 }
 
 /// The assembled system and what was learnt while assembling it.
-pub struct Assembly {
+pub struct Assembly<'a> {
     /// The linear system for (δs, δθ, δm).
-    pub system: BlockSystem,
+    pub system: BlockSystem<'a>,
     /// Edge-speed mismatch e = (Ue_inv + D·m) − Ue per station.
     pub mismatch: Vec<f64>,
     /// RMS of all equation residuals.
@@ -103,15 +103,13 @@ pub struct Assembly {
 /// Adds the linearisation of 3 equations of station `k` with respect to station `j`'s
 /// variables (Jacobian columns (s, θ, δ*, u, ξ)) to the system.
 fn add_terms(
-    sys: &mut BlockSystem,
+    sys: &mut BlockSystem<'_>,
     k: usize,
     j: usize,
     d: &[[f64; 5]; 3],
     state: &BlState,
-    coupling: &Coupling<'_>,
     mismatch: &[f64],
 ) {
-    let n = sys.n;
     let uj = state.ue[j];
     let dsj = state.dstar(j);
     let mut block = [[0.0; 3]; 3];
@@ -119,13 +117,10 @@ fn add_terms(
         block[r][0] = d[r][0];
         block[r][1] = d[r][1];
         block[r][2] = d[r][2] / uj;
+        // ∂R/∂Ue_j at fixed m_j: its mass columns are cu times row j of Dv.
         let cu = d[r][3] - d[r][2] * dsj / uj;
         if cu != 0.0 {
-            let row = &mut sys.dense[(3 * k + r) * n..(3 * k + r + 1) * n];
-            let drow = &coupling.dv[j * n..(j + 1) * n];
-            for (a, b) in row.iter_mut().zip(drow) {
-                *a += cu * b;
-            }
+            sys.mass_terms[3 * k + r].add(j, cu);
             sys.rhs[k][r] -= cu * mismatch[j];
         }
     }
@@ -163,14 +158,14 @@ pub const CTAU_SQRT_INITIAL: f64 = 0.03;
 /// Assembles the Newton system. Regimes are decided here, station by station downstream, by
 /// the transition check of each laminar interval (XFOIL SETBL with TRCHEK); a station whose regime
 /// changes gets its `s` variable re-initialised.
-pub fn assemble(
+pub fn assemble<'a>(
     model: &dyn BoundaryLayerModel,
-    coupling: &Coupling<'_>,
+    coupling: &Coupling<'a>,
     state: &mut BlState,
-) -> Result<Assembly, ViscousError> {
+) -> Result<Assembly<'a>, ViscousError> {
     let layout = coupling.layout;
     let n = layout.len();
-    let mut sys = BlockSystem::zeros(n);
+    let mut sys = BlockSystem::zeros(n, coupling.dv);
     let ue_calc = coupling.ue_from_mass(&state.mass);
     let mismatch: Vec<f64> = ue_calc.iter().zip(&state.ue).map(|(c, u)| c - u).collect();
     let mut transition = [None, None];
@@ -191,20 +186,12 @@ pub fn assemble(
                 coupling.cached.and_then(|c| c[k].as_ref())
             {
                 if st.kind == StationKind::Similarity {
-                    add_terms(
-                        &mut sys,
-                        k,
-                        k,
-                        &e.combined_jacobian(),
-                        state,
-                        coupling,
-                        &mismatch,
-                    );
+                    add_terms(&mut sys, k, k, &e.combined_jacobian(), state, &mismatch);
                 } else {
                     let p = st.upstream.unwrap_or(k - 1);
                     sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                    add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
-                    add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
+                    add_terms(&mut sys, k, p, &e.d1, state, &mismatch);
+                    add_terms(&mut sys, k, k, &e.d2, state, &mismatch);
                 }
                 if let Some((xi, forced)) = tr {
                     turbulent = true;
@@ -226,7 +213,7 @@ pub fn assemble(
                 let v = state.vars(layout, k);
                 let e = model.similarity(&v).map_err(at(k))?;
                 let d = e.combined_jacobian();
-                add_terms(&mut sys, k, k, &d, state, coupling, &mismatch);
+                add_terms(&mut sys, k, k, &d, state, &mismatch);
                 eq = e.res;
             } else {
                 let p = st.upstream.unwrap_or(k - 1);
@@ -256,8 +243,8 @@ pub fn assemble(
                                 forced: t.forced,
                             });
                             sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                            add_terms(&mut sys, k, p, &t.equations.d1, state, coupling, &mismatch);
-                            add_terms(&mut sys, k, k, &t.equations.d2, state, coupling, &mismatch);
+                            add_terms(&mut sys, k, p, &t.equations.d1, state, &mismatch);
+                            add_terms(&mut sys, k, k, &t.equations.d2, state, &mismatch);
                             eq = t.equations.res;
                         }
                         None => {
@@ -268,8 +255,8 @@ pub fn assemble(
                             let v2 = state.vars(layout, k);
                             let e = model.interval(Regime::Laminar, &v1, &v2).map_err(at(k))?;
                             sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                            add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
-                            add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
+                            add_terms(&mut sys, k, p, &e.d1, state, &mismatch);
+                            add_terms(&mut sys, k, k, &e.d2, state, &mismatch);
                             eq = e.res;
                         }
                     }
@@ -282,8 +269,8 @@ pub fn assemble(
                     let v2 = state.vars(layout, k);
                     let e = model.interval(Regime::Turbulent, &v1, &v2).map_err(at(k))?;
                     sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                    add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
-                    add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
+                    add_terms(&mut sys, k, p, &e.d1, state, &mismatch);
+                    add_terms(&mut sys, k, k, &e.d2, state, &mismatch);
                     eq = e.res;
                 }
             }
@@ -303,9 +290,9 @@ pub fn assemble(
                 let (ku, kl) = (layout.upper_te(), layout.lower_te());
                 sys.upstream[k] = Some((kl, [[0.0; 3]; 3]));
                 sys.upstream2[k] = Some((ku, [[0.0; 3]; 3]));
-                add_terms(&mut sys, k, kl, &e.d_lower, state, coupling, &mismatch);
-                add_terms(&mut sys, k, ku, &e.d_upper, state, coupling, &mismatch);
-                add_terms(&mut sys, k, k, &e.d_wake, state, coupling, &mismatch);
+                add_terms(&mut sys, k, kl, &e.d_lower, state, &mismatch);
+                add_terms(&mut sys, k, ku, &e.d_upper, state, &mismatch);
+                add_terms(&mut sys, k, k, &e.d_wake, state, &mismatch);
                 for r in 0..3 {
                     sys.rhs[k][r] -= e.res[r];
                 }
@@ -315,8 +302,8 @@ pub fn assemble(
             Some(CachedEquations::Interval(e, _)) => {
                 let p = st.upstream.unwrap_or(k - 1);
                 sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
-                add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
+                add_terms(&mut sys, k, p, &e.d1, state, &mismatch);
+                add_terms(&mut sys, k, k, &e.d2, state, &mismatch);
                 for r in 0..3 {
                     sys.rhs[k][r] -= e.res[r];
                 }
@@ -336,9 +323,9 @@ pub fn assemble(
                 .map_err(at(k))?;
             sys.upstream[k] = Some((kl, [[0.0; 3]; 3]));
             sys.upstream2[k] = Some((ku, [[0.0; 3]; 3]));
-            add_terms(&mut sys, k, kl, &e.d_lower, state, coupling, &mismatch);
-            add_terms(&mut sys, k, ku, &e.d_upper, state, coupling, &mismatch);
-            add_terms(&mut sys, k, k, &e.d_wake, state, coupling, &mismatch);
+            add_terms(&mut sys, k, kl, &e.d_lower, state, &mismatch);
+            add_terms(&mut sys, k, ku, &e.d_upper, state, &mismatch);
+            add_terms(&mut sys, k, k, &e.d_wake, state, &mismatch);
             eq = e.res;
         } else {
             let p = st.upstream.unwrap_or(k - 1);
@@ -346,8 +333,8 @@ pub fn assemble(
             let v2 = state.vars(layout, k);
             let e = model.interval(Regime::Wake, &v1, &v2).map_err(at(k))?;
             sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-            add_terms(&mut sys, k, p, &e.d1, state, coupling, &mismatch);
-            add_terms(&mut sys, k, k, &e.d2, state, coupling, &mismatch);
+            add_terms(&mut sys, k, p, &e.d1, state, &mismatch);
+            add_terms(&mut sys, k, k, &e.d2, state, &mismatch);
             eq = e.res;
         }
         sys.rhs[k][0] -= eq[0];
