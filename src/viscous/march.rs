@@ -42,27 +42,40 @@ impl Default for MarchParams {
     }
 }
 
-/// Solves a 4×4 linear system by Gaussian elimination with partial pivoting.
+/// Solves a 4×4 linear system by Gaussian elimination with partial pivoting (the last of
+/// equally large pivot candidates is taken).
+#[inline]
 fn solve4(mut a: [[f64; 4]; 4], mut b: [f64; 4]) -> Option<[f64; 4]> {
     for c in 0..4 {
-        let p = (c..4).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))?;
-        if a[p][c].abs() < 1e-300 || !a[p][c].is_finite() {
+        let mut p = c;
+        let mut best = a[c][c].abs();
+        for (r, row) in a.iter().enumerate().skip(c + 1) {
+            let v = row[c].abs();
+            if v >= best || v.is_nan() {
+                best = v;
+                p = r;
+            }
+        }
+        if !(best >= 1e-300) || !best.is_finite() {
             return None;
         }
         a.swap(c, p);
         b.swap(c, p);
+        let pivot_row = a[c];
         for r in c + 1..4 {
-            let f = a[r][c] / a[c][c];
-            let pivot_row = a[c];
-            for (v, pv) in a[r].iter_mut().zip(&pivot_row).skip(c) {
-                *v -= f * pv;
+            let f = a[r][c] / pivot_row[c];
+            for k in c..4 {
+                a[r][k] -= f * pivot_row[k];
             }
             b[r] -= f * b[c];
         }
     }
     let mut x = [0.0; 4];
     for r in (0..4).rev() {
-        let s: f64 = (r + 1..4).map(|c| a[r][c] * x[c]).sum();
+        let mut s = 0.0;
+        for c in r + 1..4 {
+            s += a[r][c] * x[c];
+        }
         x[r] = (b[r] - s) / a[r][r];
     }
     x.iter().all(|v| v.is_finite()).then_some(x)
