@@ -56,7 +56,7 @@ fn solve4(mut a: [[f64; 4]; 4], mut b: [f64; 4]) -> Option<[f64; 4]> {
                 p = r;
             }
         }
-        if !(best >= 1e-300) || !best.is_finite() {
+        if best.is_nan() || best < 1e-300 || best.is_infinite() {
             return None;
         }
         a.swap(c, p);
