@@ -95,6 +95,11 @@ fn forced_fraction<const N: usize>(
     }
 }
 
+/// Whether the trip at ξ_f lies in the interval (ξ1, ξ2] (XFOIL TRCHEK2 TRFORC).
+fn trip_inside(xi_forced: Option<f64>, v1: &StationVars, v2: &StationVars) -> bool {
+    matches!(xi_forced, Some(xf) if xf > v1.x && xf <= v2.x)
+}
+
 impl BlModel {
     /// Implicit amplification residual of TRCHEK2 for a trial N2 (`a2`):
     /// returns (R = N2 − N1 − ā(1,T)(ξ2 − ξ1), ξ_T, ā).
@@ -177,7 +182,7 @@ impl BlModel {
         xi_forced: Option<f64>,
     ) -> bool {
         let ncrit = self.flow.ncrit;
-        let tripped = matches!(xi_forced, Some(xf) if xf > v1.x && xf <= v2.x);
+        let tripped = trip_inside(xi_forced, v1, v2);
         if tripped || v1.s.is_nan() || v1.s >= ncrit {
             return false;
         }
@@ -239,7 +244,7 @@ impl BlModel {
         }
         let (_, xt, _) = self.trchek_residual(s1, p2, Dual::constant(a2), xi_forced);
         let trfree = a2 >= ncrit;
-        let trforc = matches!(xi_forced, Some(xf) if xf > v1.x && xf <= v2.x);
+        let trforc = trip_inside(xi_forced, v1, v2);
         let transition = match (trfree, trforc) {
             (false, false) => None,
             (true, false) => Some((xt.v, TransitionKind::Free)),
