@@ -11,7 +11,7 @@
 //!
 //! with p(k) < k the upstream station along the same surface and q(k) < k an optional second
 //! upstream station (the upper trailing-edge station for the first wake station, XFOIL TESYS).
-//! The 3×n block V carries the dense edge-velocity coupling Ue = Ue_inv + G·m: an equation
+//! The 3n×n block V carries the dense edge-velocity coupling Ue = Ue_inv + G·m: an equation
 //! depends on the edge speeds of at most three stations, so each row of V is a combination of
 //! at most three rows of G and is kept as those coefficients; V itself is never stored.
 //! Writing the block part as the lower block-triangular operator L, the solution is
