@@ -436,7 +436,6 @@ pub fn remarch_mixed(
         // Equations of the last local iteration, the variables they were evaluated at
         // (s, θ, δ*, u) and whether the regime changed in that iteration.
         let mut last: Option<(CachedEquations, [f64; 4], bool)> = None;
-        let mut damping = OscillationDamping::new();
         // The upstream station is fixed during the local iterations: its closures are
         // evaluated once (laminar: the transition check and the laminar interval share it).
         let upstream = (st.kind == StationKind::Interval).then(|| {
@@ -450,6 +449,13 @@ pub fn remarch_mixed(
             let p = st.upstream.unwrap_or(k - 1);
             UpstreamStation::new(&state.vars(layout, p), regime)
         });
+        // Damping only where the transition check runs (laminar upstream station), the case it
+        // is made for: on separated turbulent stations it steered negative-stall sweeps onto
+        // another solution branch than XFOIL's (NACA 23012, Re 5e5, M 0.2, α ≤ −6°).
+        let mut damping = upstream
+            .as_ref()
+            .is_some_and(|u| u.regime() == Regime::Laminar)
+            .then(OscillationDamping::new);
         for itbl in 0..params.max_iterations {
             let s_now = if turbulent { cti } else { n_amp };
             let was_turbulent_now = turbulent;
@@ -595,22 +601,17 @@ pub fn remarch_mixed(
                 dmax = dmax.max((dx[0] / (10.0 * cti)).abs());
             }
             last_dmax = dmax;
-            let rel = [
-                if turbulent { dx[0] / cti } else { dx[0] / 10.0 },
-                dx[1] / th,
-                dx[2] / ds,
-                dx[3] / u,
-            ];
-            // Damped only where the transition check runs (laminar upstream station), the case
-            // it is made for: on separated turbulent stations it steered negative-stall sweeps
-            // onto another solution branch than XFOIL's (NACA 23012, Re 5e5, M 0.2, α ≤ −6°).
-            let checks_transition = upstream
-                .as_ref()
-                .is_some_and(|u| u.regime() == Regime::Laminar);
-            let damping_factor = if checks_transition {
-                damping.factor(rel, turbulent)
-            } else {
-                1.0
+            let damping_factor = match damping.as_mut() {
+                Some(d) => {
+                    let rel = [
+                        if turbulent { dx[0] / cti } else { dx[0] / 10.0 },
+                        dx[1] / th,
+                        dx[2] / ds,
+                        dx[3] / u,
+                    ];
+                    d.factor(rel, turbulent)
+                }
+                None => 1.0,
             };
             let rlx = damping_factor
                 * if dmax > params.max_relative_step {
