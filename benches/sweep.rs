@@ -16,13 +16,7 @@ fn bench_sweeps(c: &mut Criterion) {
     let mut group = c.benchmark_group("naca8h12_Re1.9e6_M0.41");
     group.sample_size(10);
     for (name, xtr) in [("free", 1.0), ("xtr0.07", 0.07)] {
-        let params = ViscousParams {
-            reynolds: 1.9e6,
-            mach: 0.41,
-            xtr_top: xtr,
-            xtr_bot: xtr,
-            ..ViscousParams::default()
-        };
+        let params = ViscousParams::at(1.9e6, 0.41, xtr);
         group.bench_function(name, |b| {
             b.iter(|| {
                 let mut solver = ViscousSweep::new(&foil, params).expect("solver");

@@ -47,13 +47,7 @@ fn run_foil(
     alphas: &[f64],
     recover: bool,
 ) -> Vec<PolarPoint> {
-    let params = ViscousParams {
-        reynolds: re,
-        mach,
-        xtr_top: xtr,
-        xtr_bot: xtr,
-        ..ViscousParams::default()
-    };
+    let params = ViscousParams::at(re, mach, xtr);
     let mut solver = ViscousSweep::new(foil, params).unwrap();
     let sweep_params = if recover {
         SweepParams::default()

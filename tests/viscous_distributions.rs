@@ -38,13 +38,7 @@ struct Deviation {
 }
 
 fn compare(foil: &str, case: &str, re: f64, mach: f64, xtr: f64, alpha: f64) -> Deviation {
-    let params = ViscousParams {
-        reynolds: re,
-        mach,
-        xtr_top: xtr,
-        xtr_bot: xtr,
-        ..ViscousParams::default()
-    };
+    let params = ViscousParams::at(re, mach, xtr);
     let airfoil = paneled(foil);
     let n = airfoil.x.len();
     let mut solver = ViscousSolver::new(&airfoil, params).unwrap();

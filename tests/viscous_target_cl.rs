@@ -10,13 +10,7 @@ const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/viscous/");
 fn solver(xtr: f64) -> ViscousSolver {
     let path = format!("{DATA}naca8h12_xfoil_paneled.dat");
     let foil = polargen::geometry::read_airfoil_file(std::path::Path::new(&path)).unwrap();
-    let params = ViscousParams {
-        reynolds: 1.9e6,
-        mach: 0.41,
-        xtr_top: xtr,
-        xtr_bot: xtr,
-        ..ViscousParams::default()
-    };
+    let params = ViscousParams::at(1.9e6, 0.41, xtr);
     ViscousSolver::new(&foil, params).unwrap()
 }
 

@@ -577,12 +577,8 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
     let mut runs = Vec::new();
     for &xtr in &xtrs {
         let params = ViscousParams {
-            reynolds: args.re,
-            mach: args.mach,
             ncrit: args.ncrit,
-            xtr_top: xtr,
-            xtr_bot: xtr,
-            ..ViscousParams::default()
+            ..ViscousParams::at(args.re, args.mach, xtr)
         };
         let mut solver = ViscousSolver::new(&foil, params).context("viscous solver")?;
         let label = transition_label(xtr, xtr);

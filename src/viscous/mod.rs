@@ -5,8 +5,7 @@
 //! # use polargen::geometry::Airfoil;
 //! # use polargen::viscous::{ViscousParams, ViscousSolver};
 //! # fn f(foil: &Airfoil) -> Result<(), polargen::viscous::ViscousError> {
-//! let params = ViscousParams { reynolds: 1.9e6, mach: 0.41, xtr_top: 0.07, xtr_bot: 0.07,
-//!                              ..ViscousParams::default() };
+//! let params = ViscousParams::at(1.9e6, 0.41, 0.07); // Re, M, trip at 7 % chord
 //! let mut solver = ViscousSolver::new(foil, params)?; // foil already paneled (XFOIL order)
 //! for i in 0..=16 {
 //!     let sol = solver.solve(0.5 * i as f64);        // warm start from the previous point

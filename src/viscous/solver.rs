@@ -71,6 +71,20 @@ impl Default for ViscousParams {
     }
 }
 
+impl ViscousParams {
+    /// The defaults at one flow condition: Reynolds number, Mach number, and transition forced
+    /// at x/c = `xtr` on both surfaces (1 = free transition).
+    pub fn at(reynolds: f64, mach: f64, xtr: f64) -> Self {
+        Self {
+            reynolds,
+            mach,
+            xtr_top: xtr,
+            xtr_bot: xtr,
+            ..Self::default()
+        }
+    }
+}
+
 /// Inviscid data the coupling needs (XFOIL QINVU, DIJ): node geometry including the wake,
 /// surface speeds of the α = 0° and 90° unit solutions, and the source influence matrix.
 #[derive(Clone, Debug)]
