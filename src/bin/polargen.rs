@@ -12,6 +12,7 @@
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::sync::Arc;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
@@ -30,7 +31,7 @@ use polargen::table::io::json::write_json_to;
 use polargen::table::io::{read_table, write_atomic, write_table, TableFormat};
 use polargen::table::{PolarTable, TableError, TableMeta};
 use polargen::viscous::forces::karman_tsien_cp;
-use polargen::viscous::{BlStation, ViscousParams, ViscousSolution, ViscousSolver};
+use polargen::viscous::{BlStation, SharedPanels, ViscousParams, ViscousSolution, ViscousSolver};
 
 /// Smallest and largest panel-node counts accepted by `--panels`.
 const PANEL_RANGE: (usize, usize) = (20, 1000);
@@ -414,14 +415,16 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         xtr_bot,
         ..ViscousParams::default()
     };
+    // One panel store for the whole grid: the per-α inviscid model does not depend on Re or M.
+    let panels = Arc::new(SharedPanels::new(&foil).context("viscous solver")?);
     let polars = run_grid(
         &nodes,
         &alphas,
         cli.threads,
         &SweepParams::default(),
         |reynolds, mach| {
-            ViscousSweep::new(
-                &foil,
+            ViscousSweep::with_panels(
+                Arc::clone(&panels),
                 ViscousParams {
                     reynolds,
                     mach,

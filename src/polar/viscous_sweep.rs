@@ -2,8 +2,10 @@
 
 use super::sweep::WarmStartSolver;
 use super::PolarPoint;
+use std::sync::Arc;
+
 use crate::geometry::Airfoil;
-use crate::viscous::{ViscousError, ViscousParams, ViscousSolver, WarmStart};
+use crate::viscous::{SharedPanels, ViscousError, ViscousParams, ViscousSolver, WarmStart};
 
 /// A [`ViscousSolver`] driven point by point by [`sweep`](super::sweep()).
 #[derive(Debug)]
@@ -17,12 +19,21 @@ impl ViscousSweep {
     /// fresh-start retry is turned off: the sweep retries from a fresh start itself, after
     /// sub-stepping from the converged neighbour (`SweepParams::fresh_retry`).
     pub fn new(airfoil: &Airfoil, params: ViscousParams) -> Result<Self, ViscousError> {
+        Self::with_panels(Arc::new(SharedPanels::new(airfoil)?), params)
+    }
+
+    /// Like [`new`](Self::new), on a panel store shared with the sweeps of other flow
+    /// conditions of the same airfoil (a grid builds each per-α inviscid model once).
+    pub fn with_panels(
+        panels: Arc<SharedPanels>,
+        params: ViscousParams,
+    ) -> Result<Self, ViscousError> {
         let params = ViscousParams {
             fresh_retry: false,
             ..params
         };
         Ok(Self {
-            solver: ViscousSolver::new(airfoil, params)?,
+            solver: ViscousSolver::with_panels(panels, params)?,
         })
     }
 }

@@ -17,7 +17,7 @@
 //!
 //! Files: [`stations`] (stagnation point, station ↔ node mapping, ξ, wake gap), [`state`]
 //! (Newton unknowns), [`march`] (MRCHUE initial march, MRCHDU mixed-mode re-march),
-//! [`newton`] (SETBL assembly), [`block_solver`] (structured solve), [`update`] (UPDATE/DSLIM
+//! [`newton`] (SETBL assembly), [`panel_model`] (per-α inviscid data, shared between solvers), [`block_solver`] (structured solve), [`update`] (UPDATE/DSLIM
 //! relaxation), [`forces`] (Cl, Cm, cdf, xtr), [`bl_model`] + [`xfoil_bl`] (the boundary-layer
 //! equations seen by the coupling), [`solver`] (the [`ViscousSolver`]).
 
@@ -27,6 +27,7 @@ pub mod error;
 pub mod forces;
 pub mod march;
 pub mod newton;
+pub mod panel_model;
 pub mod solver;
 pub mod state;
 pub mod stations;
@@ -34,4 +35,5 @@ pub mod update;
 pub mod xfoil_bl;
 
 pub use error::ViscousError;
-pub use solver::{BlStation, PanelModel, ViscousParams, ViscousSolution, ViscousSolver, WarmStart};
+pub use panel_model::{PanelModel, SharedPanels};
+pub use solver::{BlStation, ViscousParams, ViscousSolution, ViscousSolver, WarmStart};

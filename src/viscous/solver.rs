@@ -2,8 +2,9 @@
 //! Drela 1989): initial march, global Newton iterations with relaxation and stagnation-point
 //! moves, retry from a fresh march on failure, and the integrated results.
 
+use std::sync::Arc;
+
 use crate::geometry::Airfoil;
-use crate::inviscid::{PanelSystem, SourceInfluence, Wake};
 use crate::polar::PolarPoint;
 
 use super::bl_model::{BoundaryLayerModel, Regime};
@@ -11,8 +12,9 @@ use super::error::ViscousError;
 use super::forces::{friction_drag, lift_and_moment, transition_x};
 use super::march::{march, remarch_mixed, MarchParams};
 use super::newton::{assemble, Coupling};
+use super::panel_model::{PanelModel, SharedPanels};
 use super::state::BlState;
-use super::stations::{PanelGeometry, StationLayout, Surface};
+use super::stations::{StationLayout, Surface};
 use super::update::{apply_update, UpdateLimits};
 use super::xfoil_bl::XfoilBoundaryLayer;
 
@@ -85,21 +87,6 @@ impl ViscousParams {
     }
 }
 
-/// Inviscid data the coupling needs (XFOIL QINVU, DIJ): node geometry including the wake,
-/// surface speeds of the α = 0° and 90° unit solutions, and the source influence matrix.
-#[derive(Clone, Debug)]
-pub struct PanelModel {
-    /// Node geometry (airfoil nodes, then wake nodes) and airfoil arc length.
-    pub geometry: PanelGeometry,
-    /// Surface speed at all nodes for α = 0° and α = 90° (XFOIL QINVU, positive on the upper
-    /// surface in XFOIL's orientation).
-    pub q_unit: [Vec<f64>; 2],
-    /// Row-major (n+nw)² influence matrix: change of the surface speed q_i per unit mass defect
-    /// m_j = Ue_j·δ*_j at node j (XFOIL DIJ; the edge speed then changes by −vti_i·vti_j·DIJ_ij·m_j,
-    /// XFOIL UESET).
-    pub dij: Vec<f64>,
-}
-
 /// One boundary-layer station of a solution, for plots and debugging.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BlStation {
@@ -159,9 +146,9 @@ struct WarmState {
 enum PanelSource {
     /// Fixed data, independent of α (prepared by the caller).
     Fixed,
-    /// A panel system; wake and source influence are rebuilt for every new α (XFOIL re-traces
-    /// the wake when α changes: LWAKE, QDCALC).
-    Airfoil(Box<PanelSystem>),
+    /// A panel system; wake and source influence follow α (XFOIL re-traces the wake when α
+    /// changes: LWAKE, QDCALC), built once per α for all solvers sharing the store.
+    Airfoil(Arc<SharedPanels>),
 }
 
 /// Viscous–inviscid solver for one airfoil and one (Re, M, Ncrit, trip) condition.
@@ -171,7 +158,7 @@ pub struct ViscousSolver {
     params: ViscousParams,
     source: PanelSource,
     /// Inviscid data of the current α (or the fixed data).
-    panels: PanelModel,
+    panels: Arc<PanelModel>,
     /// α of `panels` for an airfoil source.
     panels_alpha: Option<f64>,
     bl: XfoilBoundaryLayer,
@@ -215,7 +202,7 @@ impl ViscousSolver {
         Ok(Self {
             params,
             source: PanelSource::Fixed,
-            panels,
+            panels: Arc::new(panels),
             panels_alpha: None,
             bl,
             ante,
@@ -227,21 +214,23 @@ impl ViscousSolver {
     /// Solver for an already paneled airfoil (XFOIL order, e.g. from the geometry module's
     /// repaneling): builds the panel system and its unit solutions once.
     pub fn new(airfoil: &Airfoil, params: ViscousParams) -> Result<Self, ViscousError> {
-        if airfoil.x.len() != airfoil.y.len() || airfoil.x.len() < 5 {
-            return Err(ViscousError::BadAirfoil {
-                min: 5,
-                got: airfoil.x.len().min(airfoil.y.len()),
-            });
-        }
         Self::check_params(&params)?;
-        let system =
-            PanelSystem::new(airfoil).map_err(|e| ViscousError::Inviscid(e.to_string()))?;
-        let panels = panel_model(&system, 0.0)?;
+        Self::with_panels(Arc::new(SharedPanels::new(airfoil)?), params)
+    }
+
+    /// Solver on a panel store shared with other solvers of the same airfoil (other flow
+    /// conditions, other threads): each per-α inviscid model is built once for all of them.
+    pub fn with_panels(
+        shared: Arc<SharedPanels>,
+        params: ViscousParams,
+    ) -> Result<Self, ViscousError> {
+        Self::check_params(&params)?;
+        let panels = shared.model(0.0)?;
         let bl = XfoilBoundaryLayer::new(params.reynolds, params.mach, params.ncrit)?;
-        let ante = system.geometry().te.gap_normal.abs();
+        let ante = shared.ante();
         Ok(Self {
             params,
-            source: PanelSource::Airfoil(Box::new(system)),
+            source: PanelSource::Airfoil(shared),
             panels,
             panels_alpha: Some(0.0),
             bl,
@@ -355,9 +344,9 @@ impl ViscousSolver {
         if !alpha_deg.is_finite() {
             return failed_solution(alpha_deg, 0);
         }
-        if let PanelSource::Airfoil(system) = &self.source {
+        if let PanelSource::Airfoil(shared) = &self.source {
             if self.panels_alpha != Some(alpha_deg) {
-                match panel_model(system, alpha_deg) {
+                match shared.model(alpha_deg) {
                     Ok(p) => {
                         self.panels = p;
                         self.panels_alpha = Some(alpha_deg);
@@ -610,41 +599,6 @@ impl ViscousSolver {
             wake,
         }
     }
-}
-
-/// Inviscid data for one α from a panel system: wake traced at α, unit speeds at airfoil and
-/// wake nodes, and the source influence matrix (XFOIL XYWAKE, QWCALC, QDCALC).
-fn panel_model(system: &PanelSystem, alpha_deg: f64) -> Result<PanelModel, ViscousError> {
-    let inv = |e: crate::inviscid::InviscidError| ViscousError::Inviscid(e.to_string());
-    let wake = Wake::new(system, alpha_deg).map_err(inv)?;
-    let d = SourceInfluence::new(system, &wake);
-    let g = system.geometry();
-    let mut x = g.x.clone();
-    let mut y = g.y.clone();
-    x.extend_from_slice(&wake.x);
-    y.extend_from_slice(&wake.y);
-    let q_unit = [0, 1].map(|k| {
-        let mut q = system.gamma_unit(k).to_vec();
-        q.extend_from_slice(&wake.qinv_unit[k]);
-        q
-    });
-    let nt = x.len();
-    let mut dij = vec![0.0; nt * nt];
-    for (i, row) in dij.chunks_mut(nt).enumerate() {
-        for (j, v) in row.iter_mut().enumerate() {
-            *v = d.d[(i, j)];
-        }
-    }
-    Ok(PanelModel {
-        geometry: PanelGeometry {
-            x,
-            y,
-            s: g.s.clone(),
-            n_airfoil: g.len(),
-        },
-        q_unit,
-        dij,
-    })
 }
 
 /// Surface speed at every node from a boundary-layer state (XFOIL GAMQV: q = ±Ue at the

@@ -1,0 +1,150 @@
+//! The inviscid data the viscous coupling needs at one angle of attack (XFOIL XYWAKE, QWCALC,
+//! QDCALC), and a store of them shared by the solvers of one airfoil.
+//!
+//! The wake streamline and the source influence matrix depend on the geometry and α only: the
+//! Mach number enters through the boundary layer's Karman–Tsien edge speed, and the Reynolds
+//! number, Ncrit and trips through the boundary layer alone. So every (Re, M, Ncrit, trip)
+//! condition of a table needs the same model at a given α, and [`SharedPanels`] builds it once
+//! per α for all of them. A model is a pure function of (geometry, α), so which solver or
+//! thread builds it first does not change any result.
+
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
+
+use crate::geometry::Airfoil;
+use crate::inviscid::{PanelSystem, SourceInfluence, Wake};
+
+use super::error::ViscousError;
+use super::stations::PanelGeometry;
+
+/// Inviscid data the coupling needs (XFOIL QINVU, DIJ): node geometry including the wake,
+/// surface speeds of the α = 0° and 90° unit solutions, and the source influence matrix.
+#[derive(Clone, Debug)]
+pub struct PanelModel {
+    /// Node geometry (airfoil nodes, then wake nodes) and airfoil arc length.
+    pub geometry: PanelGeometry,
+    /// Surface speed at all nodes for α = 0° and α = 90° (XFOIL QINVU, positive on the upper
+    /// surface in XFOIL's orientation).
+    pub q_unit: [Vec<f64>; 2],
+    /// Row-major (n+nw)² influence matrix: change of the surface speed q_i per unit mass defect
+    /// m_j = Ue_j·δ*_j at node j (XFOIL DIJ; the edge speed then changes by −vti_i·vti_j·DIJ_ij·m_j,
+    /// XFOIL UESET).
+    pub dij: Vec<f64>,
+}
+
+impl PanelModel {
+    /// Model of a panel system at angle of attack `alpha_deg`: wake traced at α, unit speeds at
+    /// airfoil and wake nodes, and the source influence matrix (XFOIL XYWAKE, QWCALC, QDCALC).
+    pub fn at_alpha(system: &PanelSystem, alpha_deg: f64) -> Result<Self, ViscousError> {
+        let inv = |e: crate::inviscid::InviscidError| ViscousError::Inviscid(e.to_string());
+        let wake = Wake::new(system, alpha_deg).map_err(inv)?;
+        let d = SourceInfluence::new(system, &wake);
+        let g = system.geometry();
+        let mut x = g.x.clone();
+        let mut y = g.y.clone();
+        x.extend_from_slice(&wake.x);
+        y.extend_from_slice(&wake.y);
+        let q_unit = [0, 1].map(|k| {
+            let mut q = system.gamma_unit(k).to_vec();
+            q.extend_from_slice(&wake.qinv_unit[k]);
+            q
+        });
+        let nt = x.len();
+        let mut dij = vec![0.0; nt * nt];
+        for (i, row) in dij.chunks_mut(nt).enumerate() {
+            for (j, v) in row.iter_mut().enumerate() {
+                *v = d.d[(i, j)];
+            }
+        }
+        Ok(Self {
+            geometry: PanelGeometry {
+                x,
+                y,
+                s: g.s.clone(),
+                n_airfoil: g.len(),
+            },
+            q_unit,
+            dij,
+        })
+    }
+}
+
+/// Memory the per-α models of one [`SharedPanels`] may take (their influence matrices); beyond
+/// it, further models are built for the asking solver only and not kept.
+pub const SHARED_MODEL_BYTES: usize = 256 << 20;
+
+/// One airfoil's panel system and its per-α [`PanelModel`]s, built on first request and then
+/// shared by every solver holding this store (any thread). Keys are the exact α values, so a
+/// model is reused only for the identical angle.
+#[derive(Debug)]
+pub struct SharedPanels {
+    /// The factorised panel system of the airfoil.
+    system: PanelSystem,
+    /// Trailing-edge gap normal to the TE bisector (XFOIL ANTE).
+    ante: f64,
+    /// Models by the bit pattern of α; each cell is filled once, by the first solver asking.
+    models: Mutex<HashMap<u64, Arc<ModelCell>>>,
+    /// Number of models kept at most ([`SHARED_MODEL_BYTES`] over one model's size).
+    capacity: usize,
+}
+
+/// A model slot, filled once with the model or the reason it could not be built at that α.
+type ModelCell = OnceLock<Result<Arc<PanelModel>, ViscousError>>;
+
+impl SharedPanels {
+    /// Panel system of an already paneled airfoil (XFOIL order).
+    pub fn new(airfoil: &Airfoil) -> Result<Self, ViscousError> {
+        if airfoil.x.len() != airfoil.y.len() || airfoil.x.len() < 5 {
+            return Err(ViscousError::BadAirfoil {
+                min: 5,
+                got: airfoil.x.len().min(airfoil.y.len()),
+            });
+        }
+        let system =
+            PanelSystem::new(airfoil).map_err(|e| ViscousError::Inviscid(e.to_string()))?;
+        let ante = system.geometry().te.gap_normal.abs();
+        // Nodes with the default wake (N/12 + 10 wake nodes, `WakeParams`).
+        let n = system.geometry().len();
+        let nt = n + n / 12 + 10;
+        let capacity = (SHARED_MODEL_BYTES / (8 * nt * nt)).max(1);
+        Ok(Self {
+            system,
+            ante,
+            models: Mutex::new(HashMap::new()),
+            capacity,
+        })
+    }
+
+    /// Trailing-edge gap normal to the TE bisector (XFOIL ANTE).
+    pub fn ante(&self) -> f64 {
+        self.ante
+    }
+
+    /// The model at `alpha_deg`, built now if no solver asked for this α before.
+    pub fn model(&self, alpha_deg: f64) -> Result<Arc<PanelModel>, ViscousError> {
+        let build = || PanelModel::at_alpha(&self.system, alpha_deg).map(Arc::new);
+        let cell = {
+            // A poisoned lock only means another thread panicked while holding it; the map
+            // itself is still consistent (cells are inserted whole).
+            let mut map = self.models.lock().unwrap_or_else(|e| e.into_inner());
+            let key = alpha_deg.to_bits();
+            match map.get(&key) {
+                Some(c) => Arc::clone(c),
+                None if map.len() < self.capacity => Arc::clone(map.entry(key).or_default()),
+                None => return build(),
+            }
+        };
+        // Other solvers asking for the same α meanwhile wait here for this one build.
+        cell.get_or_init(build).clone()
+    }
+
+    /// Number of models kept so far.
+    pub fn len(&self) -> usize {
+        self.models.lock().map(|m| m.len()).unwrap_or(0)
+    }
+
+    /// True when no model was built yet.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
