@@ -12,8 +12,9 @@
 //! with p(k) < k the upstream station along the same surface and q(k) < k an optional second
 //! upstream station (the upper trailing-edge station for the first wake station, XFOIL TESYS).
 //! The 3n×n block V carries the dense edge-velocity coupling Ue = Ue_inv + G·m: an equation
-//! depends on the edge speeds of at most three stations, so each row of V is a combination of
-//! at most three rows of G and is kept as those coefficients; V itself is never stored.
+//! depends on the edge speeds of at most three of its own stations and, through ξ, of the two
+//! stations next to the stagnation point, so each row of V is a combination of at most five
+//! rows of G and is kept as those coefficients; V itself is never stored.
 //! Writing the block part as the lower block-triangular operator L, the solution is
 //! `w = L⁻¹(r − V m)` and `m = P w`, hence the n×n Schur system `(I + P L⁻¹ V) m = P L⁻¹ r`.
 //! The cost is O(n²) for the substitutions plus one n×n LU, instead of a 3n×3n dense LU.
@@ -27,12 +28,17 @@ use super::error::ViscousError;
 /// A 3×3 block, row-major.
 pub type Block3 = [[f64; 3]; 3];
 
-/// Row of the mass columns V as a combination of at most three rows of the mass influence
-/// matrix G: V_row = Σ c·G\[j\].
+/// Most rows of G one row of V combines: the edge speeds of the equation's own stations (at
+/// most three, at the trailing-edge junction) and of the two stations next to the stagnation
+/// point (through ξ, see the assembly).
+pub const MAX_MASS_TERMS: usize = 5;
+
+/// Row of the mass columns V as a combination of at most [`MAX_MASS_TERMS`] rows of the mass
+/// influence matrix G: V_row = Σ c·G\[j\].
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct MassTerms {
-    rows: [usize; 3],
-    coefs: [f64; 3],
+    rows: [usize; MAX_MASS_TERMS],
+    coefs: [f64; MAX_MASS_TERMS],
     len: usize,
 }
 
@@ -40,14 +46,14 @@ impl MassTerms {
     /// Adds c·G\[j\] (merged with an earlier term on the same row of G).
     ///
     /// # Panics
-    /// If a fourth distinct row of G is added (an equation couples at most three stations).
+    /// If more than [`MAX_MASS_TERMS`] distinct rows of G are added.
     pub fn add(&mut self, j: usize, c: f64) {
         if let Some(i) = self.rows[..self.len].iter().position(|&r| r == j) {
             self.coefs[i] += c;
         } else {
             assert!(
-                self.len < 3,
-                "an equation depends on at most three edge speeds"
+                self.len < MAX_MASS_TERMS,
+                "an equation depends on at most {MAX_MASS_TERMS} edge speeds"
             );
             self.rows[self.len] = j;
             self.coefs[self.len] = c;
@@ -83,12 +89,33 @@ impl MassTerms {
                     *o = c0 * a + c1 * b;
                 }
             }
-            _ => {
+            3 => {
                 let (r0, c0) = (row(self.rows[0]), self.coefs[0]);
                 let (r1, c1) = (row(self.rows[1]), self.coefs[1]);
                 let (r2, c2) = (row(self.rows[2]), self.coefs[2]);
                 for (((o, a), b), c) in out.iter_mut().zip(r0).zip(r1).zip(r2) {
                     *o = c0 * a + c1 * b + c2 * c;
+                }
+            }
+            4 => {
+                let (r0, c0) = (row(self.rows[0]), self.coefs[0]);
+                let (r1, c1) = (row(self.rows[1]), self.coefs[1]);
+                let (r2, c2) = (row(self.rows[2]), self.coefs[2]);
+                let (r3, c3) = (row(self.rows[3]), self.coefs[3]);
+                for ((((o, a), b), c), d) in out.iter_mut().zip(r0).zip(r1).zip(r2).zip(r3) {
+                    *o = (c0 * a + c1 * b) + (c2 * c + c3 * d);
+                }
+            }
+            _ => {
+                let (r0, c0) = (row(self.rows[0]), self.coefs[0]);
+                let (r1, c1) = (row(self.rows[1]), self.coefs[1]);
+                let (r2, c2) = (row(self.rows[2]), self.coefs[2]);
+                let (r3, c3) = (row(self.rows[3]), self.coefs[3]);
+                let (r4, c4) = (row(self.rows[4]), self.coefs[4]);
+                for (((((o, a), b), c), d), e) in
+                    out.iter_mut().zip(r0).zip(r1).zip(r2).zip(r3).zip(r4)
+                {
+                    *o = (c0 * a + c1 * b) + (c2 * c + c3 * d) + c4 * e;
                 }
             }
         }

@@ -7,6 +7,12 @@
 //! `(f_u − f_δ*·δ*_j/Ue_j)·D_j,·` (mass influence on the edge speed). The stored edge speed may
 //! differ from Ue_inv + D·m (after an inverse march or a relaxed step); that mismatch e_j enters
 //! the right-hand side like XFOIL's DUE terms.
+//!
+//! Every station's ξ moves with the stagnation point, which moves with the edge speeds of the
+//! two stations next to it; those terms (XFOIL XI_ULE1/XI_ULE2) enter the mass columns of every
+//! equation (`StagnationSensitivity`). A forced-transition interval gets none: its trip moves
+//! with the stagnation point too, so a common shift of ξ acts on that interval mostly through
+//! differences of ξ, which it does not change (XFOIL adds the trip's own sensitivity, VSX).
 
 use super::bl_model::{
     BoundaryLayerModel, IntervalEquations, JunctionEquations, Regime, StationVars,
@@ -100,8 +106,70 @@ pub struct Assembly<'a> {
     pub transition: [Option<TransitionPoint>; 2],
 }
 
+/// Sensitivity of every station's ξ to the edge speeds of the two stations next to the
+/// stagnation point (XFOIL SETBL: SST_GO, SST_GP, XI_ULE1, XI_ULE2).
+///
+/// The stagnation point is the zero of the surface speed interpolated linearly between the
+/// first upper station (q = U₁) and the first lower station (q = −U₂) a distance Δs apart:
+/// s_st = s_i + Δs·U₁/(U₁ + U₂), so ∂s_st/∂U₁ = Δs·U₂/(U₁ + U₂)² and
+/// ∂s_st/∂U₂ = −Δs·U₁/(U₁ + U₂)². Upper-surface ξ = s_st − s moves with +δs_st; lower-surface
+/// and wake ξ = s − s_st with −δs_st. Without these terms a Newton step changes the edge
+/// speeds next to the stagnation point as if ξ stayed put, and the first stations (ξ → 0)
+/// ask for large relative changes that throttle the whole update.
+#[derive(Clone, Copy, Debug)]
+struct StagnationSensitivity {
+    /// System indices of the first upper and first lower station.
+    stations: [usize; 2],
+    /// ∂s_st/∂U₁ and ∂s_st/∂U₂.
+    dsst_du: [f64; 2],
+}
+
+impl StagnationSensitivity {
+    /// `ds`: arc length between the two stations' nodes.
+    fn new(layout: &StationLayout, state: &BlState, ds: f64) -> Option<Self> {
+        let k1 = layout.range(Surface::Upper).next()?;
+        let k2 = layout.range(Surface::Lower).next()?;
+        let (u1, u2) = (state.ue[k1], state.ue[k2]);
+        let sum = u1 + u2;
+        if !(sum > 0.0 && ds.is_finite()) {
+            return None;
+        }
+        let f = ds / (sum * sum);
+        Some(Self {
+            stations: [k1, k2],
+            dsst_du: [f * u2, -f * u1],
+        })
+    }
+
+    /// Adds the edge-speed columns of the ξ dependence `xi_coef` (∂R/∂s_st of the three
+    /// equations of station `k`) to the system.
+    fn add(&self, sys: &mut BlockSystem<'_>, k: usize, xi_coef: &[f64; 3], mismatch: &[f64]) {
+        for (r, &c) in xi_coef.iter().enumerate() {
+            if c == 0.0 {
+                continue;
+            }
+            for (&j, &dsdu) in self.stations.iter().zip(&self.dsst_du) {
+                let cu = c * dsdu;
+                sys.mass_terms[3 * k + r].add(j, cu);
+                sys.rhs[k][r] -= cu * mismatch[j];
+            }
+        }
+    }
+}
+
+/// Sign of ∂ξ/∂s_st at a station: +1 on the upper surface, −1 on the lower surface and wake.
+fn xi_sign(layout: &StationLayout, j: usize) -> f64 {
+    if layout.stations[j].surface == Surface::Upper {
+        1.0
+    } else {
+        -1.0
+    }
+}
+
 /// Adds the linearisation of 3 equations of station `k` with respect to station `j`'s
-/// variables (Jacobian columns (s, θ, δ*, u, ξ)) to the system.
+/// variables (Jacobian columns (s, θ, δ*, u, ξ)) to the system; the ξ column, times the
+/// station's [`xi_sign`], is accumulated in `xi_coef` for the stagnation-point terms.
+#[allow(clippy::too_many_arguments)]
 fn add_terms(
     sys: &mut BlockSystem<'_>,
     k: usize,
@@ -109,7 +177,13 @@ fn add_terms(
     d: &[[f64; 5]; 3],
     state: &BlState,
     mismatch: &[f64],
+    layout: &StationLayout,
+    xi_coef: &mut [f64; 3],
 ) {
+    let sign = xi_sign(layout, j);
+    for (x, dr) in xi_coef.iter_mut().zip(d) {
+        *x += sign * dr[4];
+    }
     let uj = state.ue[j];
     let dsj = state.dstar(j);
     let mut block = [[0.0; 3]; 3];
@@ -170,6 +244,25 @@ pub fn assemble<'a>(
     let mismatch: Vec<f64> = ue_calc.iter().zip(&state.ue).map(|(c, u)| c - u).collect();
     let mut transition = [None, None];
     let mut sumsq = 0.0;
+    let stagnation = {
+        let (k1, k2) = (
+            layout.range(Surface::Upper).next(),
+            layout.range(Surface::Lower).next(),
+        );
+        match (k1, k2) {
+            (Some(k1), Some(k2)) => StagnationSensitivity::new(
+                layout,
+                state,
+                layout.stations[k1].xi + layout.stations[k2].xi,
+            ),
+            _ => None,
+        }
+    };
+    let add_stagnation = |sys: &mut BlockSystem<'_>, k: usize, xi_coef: &[f64; 3]| {
+        if let Some(st) = &stagnation {
+            st.add(sys, k, xi_coef, &mismatch);
+        }
+    };
 
     for (side, surface) in [Surface::Upper, Surface::Lower].into_iter().enumerate() {
         let range = layout.range(surface);
@@ -182,16 +275,44 @@ pub fn assemble<'a>(
         let mut turbulent = false;
         for k in range {
             let st = layout.stations[k];
+            let mut xi_coef = [0.0; 3];
             if let Some(CachedEquations::Interval(e, tr)) =
                 coupling.cached.and_then(|c| c[k].as_ref())
             {
                 if st.kind == StationKind::Similarity {
-                    add_terms(&mut sys, k, k, &e.combined_jacobian(), state, &mismatch);
+                    add_terms(
+                        &mut sys,
+                        k,
+                        k,
+                        &e.combined_jacobian(),
+                        state,
+                        &mismatch,
+                        layout,
+                        &mut xi_coef,
+                    );
                 } else {
                     let p = st.upstream.unwrap_or(k - 1);
                     sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                    add_terms(&mut sys, k, p, &e.d1, state, &mismatch);
-                    add_terms(&mut sys, k, k, &e.d2, state, &mismatch);
+                    add_terms(
+                        &mut sys,
+                        k,
+                        p,
+                        &e.d1,
+                        state,
+                        &mismatch,
+                        layout,
+                        &mut xi_coef,
+                    );
+                    add_terms(
+                        &mut sys,
+                        k,
+                        k,
+                        &e.d2,
+                        state,
+                        &mismatch,
+                        layout,
+                        &mut xi_coef,
+                    );
                 }
                 if let Some((xi, forced)) = tr {
                     turbulent = true;
@@ -200,10 +321,14 @@ pub fn assemble<'a>(
                         station: k,
                         forced: *forced,
                     });
+                    if *forced {
+                        xi_coef = [0.0; 3];
+                    }
                 }
                 for r in 0..3 {
                     sys.rhs[k][r] -= e.res[r];
                 }
+                add_stagnation(&mut sys, k, &xi_coef);
                 sumsq += e.res.iter().map(|r| r * r).sum::<f64>();
                 continue;
             }
@@ -213,7 +338,7 @@ pub fn assemble<'a>(
                 let v = state.vars(layout, k);
                 let e = model.similarity(&v).map_err(at(k))?;
                 let d = e.combined_jacobian();
-                add_terms(&mut sys, k, k, &d, state, &mismatch);
+                add_terms(&mut sys, k, k, &d, state, &mismatch, layout, &mut xi_coef);
                 eq = e.res;
             } else {
                 let p = st.upstream.unwrap_or(k - 1);
@@ -243,8 +368,29 @@ pub fn assemble<'a>(
                                 forced: t.forced,
                             });
                             sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                            add_terms(&mut sys, k, p, &t.equations.d1, state, &mismatch);
-                            add_terms(&mut sys, k, k, &t.equations.d2, state, &mismatch);
+                            add_terms(
+                                &mut sys,
+                                k,
+                                p,
+                                &t.equations.d1,
+                                state,
+                                &mismatch,
+                                layout,
+                                &mut xi_coef,
+                            );
+                            add_terms(
+                                &mut sys,
+                                k,
+                                k,
+                                &t.equations.d2,
+                                state,
+                                &mismatch,
+                                layout,
+                                &mut xi_coef,
+                            );
+                            if t.forced {
+                                xi_coef = [0.0; 3];
+                            }
                             eq = t.equations.res;
                         }
                         None => {
@@ -255,8 +401,26 @@ pub fn assemble<'a>(
                             let v2 = state.vars(layout, k);
                             let e = model.interval(Regime::Laminar, &v1, &v2).map_err(at(k))?;
                             sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                            add_terms(&mut sys, k, p, &e.d1, state, &mismatch);
-                            add_terms(&mut sys, k, k, &e.d2, state, &mismatch);
+                            add_terms(
+                                &mut sys,
+                                k,
+                                p,
+                                &e.d1,
+                                state,
+                                &mismatch,
+                                layout,
+                                &mut xi_coef,
+                            );
+                            add_terms(
+                                &mut sys,
+                                k,
+                                k,
+                                &e.d2,
+                                state,
+                                &mismatch,
+                                layout,
+                                &mut xi_coef,
+                            );
                             eq = e.res;
                         }
                     }
@@ -269,14 +433,33 @@ pub fn assemble<'a>(
                     let v2 = state.vars(layout, k);
                     let e = model.interval(Regime::Turbulent, &v1, &v2).map_err(at(k))?;
                     sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                    add_terms(&mut sys, k, p, &e.d1, state, &mismatch);
-                    add_terms(&mut sys, k, k, &e.d2, state, &mismatch);
+                    add_terms(
+                        &mut sys,
+                        k,
+                        p,
+                        &e.d1,
+                        state,
+                        &mismatch,
+                        layout,
+                        &mut xi_coef,
+                    );
+                    add_terms(
+                        &mut sys,
+                        k,
+                        k,
+                        &e.d2,
+                        state,
+                        &mismatch,
+                        layout,
+                        &mut xi_coef,
+                    );
                     eq = e.res;
                 }
             }
             sys.rhs[k][0] -= eq[0];
             sys.rhs[k][1] -= eq[1];
             sys.rhs[k][2] -= eq[2];
+            add_stagnation(&mut sys, k, &xi_coef);
             sumsq += eq.iter().map(|r| r * r).sum::<f64>();
         }
     }
@@ -285,28 +468,76 @@ pub fn assemble<'a>(
     for k in layout.range(Surface::Wake) {
         state.turbulent[k] = true;
         let st = layout.stations[k];
+        let mut xi_coef = [0.0; 3];
         match coupling.cached.and_then(|c| c[k].as_ref()) {
             Some(CachedEquations::Junction(e)) => {
                 let (ku, kl) = (layout.upper_te(), layout.lower_te());
                 sys.upstream[k] = Some((kl, [[0.0; 3]; 3]));
                 sys.upstream2[k] = Some((ku, [[0.0; 3]; 3]));
-                add_terms(&mut sys, k, kl, &e.d_lower, state, &mismatch);
-                add_terms(&mut sys, k, ku, &e.d_upper, state, &mismatch);
-                add_terms(&mut sys, k, k, &e.d_wake, state, &mismatch);
+                add_terms(
+                    &mut sys,
+                    k,
+                    kl,
+                    &e.d_lower,
+                    state,
+                    &mismatch,
+                    layout,
+                    &mut xi_coef,
+                );
+                add_terms(
+                    &mut sys,
+                    k,
+                    ku,
+                    &e.d_upper,
+                    state,
+                    &mismatch,
+                    layout,
+                    &mut xi_coef,
+                );
+                add_terms(
+                    &mut sys,
+                    k,
+                    k,
+                    &e.d_wake,
+                    state,
+                    &mismatch,
+                    layout,
+                    &mut xi_coef,
+                );
                 for r in 0..3 {
                     sys.rhs[k][r] -= e.res[r];
                 }
+                add_stagnation(&mut sys, k, &xi_coef);
                 sumsq += e.res.iter().map(|r| r * r).sum::<f64>();
                 continue;
             }
             Some(CachedEquations::Interval(e, _)) => {
                 let p = st.upstream.unwrap_or(k - 1);
                 sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                add_terms(&mut sys, k, p, &e.d1, state, &mismatch);
-                add_terms(&mut sys, k, k, &e.d2, state, &mismatch);
+                add_terms(
+                    &mut sys,
+                    k,
+                    p,
+                    &e.d1,
+                    state,
+                    &mismatch,
+                    layout,
+                    &mut xi_coef,
+                );
+                add_terms(
+                    &mut sys,
+                    k,
+                    k,
+                    &e.d2,
+                    state,
+                    &mismatch,
+                    layout,
+                    &mut xi_coef,
+                );
                 for r in 0..3 {
                     sys.rhs[k][r] -= e.res[r];
                 }
+                add_stagnation(&mut sys, k, &xi_coef);
                 sumsq += e.res.iter().map(|r| r * r).sum::<f64>();
                 continue;
             }
@@ -323,9 +554,36 @@ pub fn assemble<'a>(
                 .map_err(at(k))?;
             sys.upstream[k] = Some((kl, [[0.0; 3]; 3]));
             sys.upstream2[k] = Some((ku, [[0.0; 3]; 3]));
-            add_terms(&mut sys, k, kl, &e.d_lower, state, &mismatch);
-            add_terms(&mut sys, k, ku, &e.d_upper, state, &mismatch);
-            add_terms(&mut sys, k, k, &e.d_wake, state, &mismatch);
+            add_terms(
+                &mut sys,
+                k,
+                kl,
+                &e.d_lower,
+                state,
+                &mismatch,
+                layout,
+                &mut xi_coef,
+            );
+            add_terms(
+                &mut sys,
+                k,
+                ku,
+                &e.d_upper,
+                state,
+                &mismatch,
+                layout,
+                &mut xi_coef,
+            );
+            add_terms(
+                &mut sys,
+                k,
+                k,
+                &e.d_wake,
+                state,
+                &mismatch,
+                layout,
+                &mut xi_coef,
+            );
             eq = e.res;
         } else {
             let p = st.upstream.unwrap_or(k - 1);
@@ -333,13 +591,32 @@ pub fn assemble<'a>(
             let v2 = state.vars(layout, k);
             let e = model.interval(Regime::Wake, &v1, &v2).map_err(at(k))?;
             sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-            add_terms(&mut sys, k, p, &e.d1, state, &mismatch);
-            add_terms(&mut sys, k, k, &e.d2, state, &mismatch);
+            add_terms(
+                &mut sys,
+                k,
+                p,
+                &e.d1,
+                state,
+                &mismatch,
+                layout,
+                &mut xi_coef,
+            );
+            add_terms(
+                &mut sys,
+                k,
+                k,
+                &e.d2,
+                state,
+                &mismatch,
+                layout,
+                &mut xi_coef,
+            );
             eq = e.res;
         }
         sys.rhs[k][0] -= eq[0];
         sys.rhs[k][1] -= eq[1];
         sys.rhs[k][2] -= eq[2];
+        add_stagnation(&mut sys, k, &xi_coef);
         sumsq += eq.iter().map(|r| r * r).sum::<f64>();
     }
 
