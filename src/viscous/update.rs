@@ -1,6 +1,7 @@
 //! Relaxed Newton update of the boundary-layer state (XFOIL xbl.f UPDATE and DSLIM,
 //! Drela 1989 §4): one under-relaxation factor for all stations, chosen so that no relative
 //! change of √Cτ/N, θ, δ* or Ue exceeds the limits, then clipping of √Cτ and of the shape factor.
+//! One departure from XFOIL: see [`UpdateLimits::clip_first_turbulent`].
 
 use super::bl_model::BoundaryLayerModel;
 use super::error::ViscousError;
@@ -25,6 +26,13 @@ pub struct UpdateLimits {
     pub hk_min_airfoil: f64,
     /// Minimum Hk in the wake (XFOIL 1.00005).
     pub hk_min_wake: f64,
+    /// A decrease of √Cτ at the first turbulent station of each surface does not set the
+    /// relaxation factor; that one value is clipped at the `dlo` limit instead. Where free
+    /// transition moves, the station next to it is re-initialised turbulent each iteration,
+    /// and the Newton step asks for √Cτ to fall by a factor 10–20 there; in XFOIL that alone
+    /// sets RLX to 0.03–0.1 for the whole update, and transition then creeps one station per
+    /// iteration. (Not in XFOIL.)
+    pub clip_first_turbulent: bool,
 }
 
 impl Default for UpdateLimits {
@@ -37,6 +45,7 @@ impl Default for UpdateLimits {
             ctau_sqrt_max: 0.25,
             hk_min_airfoil: 1.02,
             hk_min_wake: 1.00005,
+            clip_first_turbulent: true,
         }
     }
 }
@@ -74,6 +83,14 @@ pub fn apply_update(
     let mut rlx: f64 = 1.0;
     let mut sumsq = 0.0;
     let mut max_change: f64 = 0.0;
+    // First turbulent station of each airfoil surface, if its √Cτ decrease is clipped.
+    let first_turbulent = [Surface::Upper, Surface::Lower].map(|surface| {
+        limits
+            .clip_first_turbulent
+            .then(|| layout.range(surface).find(|&k| state.turbulent[k]))
+            .flatten()
+    });
+    let clipped = |k: usize| first_turbulent.contains(&Some(k));
     for k in 0..n {
         let [ds, dth, dmk] = w[k];
         let u = state.ue[k];
@@ -87,9 +104,14 @@ pub fn apply_update(
         let dn2 = dth / state.theta[k];
         let dn3 = ddstar / dstar;
         let dn4 = due[k].abs() / limits.ue_scale;
-        for dn in [dn1, dn2, dn3, dn4] {
+        for (i, dn) in [dn1, dn2, dn3, dn4].into_iter().enumerate() {
             if !dn.is_finite() {
                 return Err(ViscousError::NonFinite { station: k });
+            }
+            sumsq += dn * dn;
+            max_change = max_change.max(dn.abs());
+            if i == 0 && dn < 0.0 && clipped(k) {
+                continue;
             }
             if rlx * dn > limits.dhi {
                 rlx = limits.dhi / dn;
@@ -97,14 +119,16 @@ pub fn apply_update(
             if rlx * dn < limits.dlo {
                 rlx = limits.dlo / dn;
             }
-            sumsq += dn * dn;
-            max_change = max_change.max(dn.abs());
         }
     }
     for k in 0..n {
         let [ds, dth, dmk] = w[k];
         let wake = layout.stations[k].surface == Surface::Wake;
+        let s_old = state.s[k];
         state.s[k] += rlx * ds;
+        if clipped(k) {
+            state.s[k] = state.s[k].max(s_old * (1.0 + limits.dlo));
+        }
         if state.turbulent[k] || wake {
             state.s[k] = state.s[k].clamp(1e-7, limits.ctau_sqrt_max);
         } else {
