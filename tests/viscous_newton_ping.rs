@@ -94,6 +94,7 @@ impl Setup {
             xi_forced: Self::xi_forced(&layout),
             ante: self.ante,
             regimes_known: false,
+            stagnation_terms: true,
             cached: None,
         };
         let asm = assemble(&self.bl, &coupling, &mut st).unwrap();

@@ -66,6 +66,9 @@ pub struct Coupling<'a> {
     /// state, so only the interval ending at the first turbulent station is checked for
     /// transition (the others are known not to transition).
     pub regimes_known: bool,
+    /// Include the stagnation-point terms of ξ (see `StagnationSensitivity`). The solver
+    /// leaves them out for one iteration after a step that blew up.
+    pub stagnation_terms: bool,
     /// Equations of each station left by the mixed-mode march, linearly corrected to the final
     /// state of the march (None: evaluate here).
     pub cached: Option<&'a [Option<CachedEquations>]>,
@@ -250,7 +253,7 @@ pub fn assemble<'a>(
             layout.range(Surface::Lower).next(),
         );
         match (k1, k2) {
-            (Some(k1), Some(k2)) => StagnationSensitivity::new(
+            (Some(k1), Some(k2)) if coupling.stagnation_terms => StagnationSensitivity::new(
                 layout,
                 state,
                 layout.stations[k1].xi + layout.stations[k2].xi,

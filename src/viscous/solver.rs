@@ -18,6 +18,10 @@ use super::stations::{StationLayout, Surface};
 use super::update::{apply_update, UpdateLimits};
 use super::xfoil_bl::XfoilBoundaryLayer;
 
+/// Largest relative change of a Newton step (XFOIL RMXBL) above which the step is taken to
+/// come from a near-singular system.
+const EXPLODED_STEP: f64 = 1e6;
+
 /// Parameters of a viscous solution.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ViscousParams {
@@ -428,6 +432,7 @@ impl ViscousSolver {
             ),
         };
         let mut residual = f64::INFINITY;
+        let mut stagnation_terms = true;
         let mut transition = [None, None];
         let mut turbulent_fraction = [None, None];
         for iter in 1..=self.params.max_iterations {
@@ -454,6 +459,7 @@ impl ViscousSolver {
                 xi_forced,
                 ante: self.ante,
                 regimes_known: remarch,
+                stagnation_terms,
                 cached: remarch.then_some(cache.as_slice()),
             };
             let asm = assemble(&self.bl, &coupling, &mut state)?;
@@ -474,6 +480,11 @@ impl ViscousSolver {
                 &self.params.limits,
             )?;
             residual = upd.rms_change;
+            // A step whose relative changes reach 1e6 came from a near-singular system (the
+            // stagnation point almost on a node, ξ → 0 at the first station): the next
+            // iteration goes without the stagnation-point terms, whose linearisation is then
+            // far outside its range.
+            stagnation_terms = upd.max_change < EXPLODED_STEP;
             // Move the stagnation point with the viscous surface speed (XFOIL STMOVE).
             let q_nodes = viscous_node_speed(&layout, &state, &q_inv);
             if let Ok(new_layout) = StationLayout::new(&self.panels.geometry, &q_nodes[..n_af]) {
