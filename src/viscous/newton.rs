@@ -172,18 +172,15 @@ fn xi_sign(layout: &StationLayout, j: usize) -> f64 {
 /// Adds the linearisation of 3 equations of station `k` with respect to station `j`'s
 /// variables (Jacobian columns (s, θ, δ*, u, ξ)) to the system; the ξ column, times the
 /// station's [`xi_sign`], is accumulated in `xi_coef` for the stagnation-point terms.
-#[allow(clippy::too_many_arguments)]
 fn add_terms(
     sys: &mut BlockSystem<'_>,
-    k: usize,
-    j: usize,
+    (k, j): (usize, usize),
     d: &[[f64; 5]; 3],
     state: &BlState,
     mismatch: &[f64],
-    layout: &StationLayout,
     xi_coef: &mut [f64; 3],
+    sign: f64,
 ) {
-    let sign = xi_sign(layout, j);
     for (x, dr) in xi_coef.iter_mut().zip(d) {
         *x += sign * dr[4];
     }
@@ -232,6 +229,80 @@ fn add_terms(
 /// Initial √Cτ given to a station that just became turbulent and has no turbulent history.
 pub const CTAU_SQRT_INITIAL: f64 = 0.03;
 
+/// The system being assembled and what every station's terms need.
+struct Assembler<'a, 'l> {
+    sys: BlockSystem<'a>,
+    layout: &'l StationLayout,
+    /// Edge-speed mismatch e = (Ue_inv + D·m) − Ue per station.
+    mismatch: Vec<f64>,
+    /// ξ sensitivity to the edge speeds next to the stagnation point (None: left out).
+    stagnation: Option<StagnationSensitivity>,
+    /// Sum of the squared residuals so far.
+    sumsq: f64,
+}
+
+impl Assembler<'_, '_> {
+    /// Adds the three equations of station `k`: residuals `res` and their Jacobians with
+    /// respect to the listed stations (upstream stations first, in the order the block solver
+    /// keeps them). `xi_terms: false` leaves out the stagnation-point terms (forced-transition
+    /// intervals).
+    fn station(
+        &mut self,
+        state: &BlState,
+        k: usize,
+        jacobians: &[(usize, &[[f64; 5]; 3])],
+        res: &[f64; 3],
+        xi_terms: bool,
+    ) {
+        let mut xi_coef = [0.0; 3];
+        for &(j, d) in jacobians {
+            let sign = xi_sign(self.layout, j);
+            add_terms(
+                &mut self.sys,
+                (k, j),
+                d,
+                state,
+                &self.mismatch,
+                &mut xi_coef,
+                sign,
+            );
+        }
+        for (rhs, r) in self.sys.rhs[k].iter_mut().zip(res) {
+            *rhs -= r;
+        }
+        if xi_terms {
+            if let Some(st) = &self.stagnation {
+                st.add(&mut self.sys, k, &xi_coef, &self.mismatch);
+            }
+        }
+        self.sumsq += res.iter().map(|r| r * r).sum::<f64>();
+    }
+
+    /// Adds interval (or similarity) equations: similarity stations have one combined
+    /// Jacobian, interval stations one per end.
+    fn interval(&mut self, state: &BlState, k: usize, e: &IntervalEquations, forced: bool) {
+        let st = self.layout.stations[k];
+        if st.kind == StationKind::Similarity {
+            self.station(state, k, &[(k, &e.combined_jacobian())], &e.res, !forced);
+        } else {
+            let p = st.upstream.unwrap_or(k - 1);
+            self.station(state, k, &[(p, &e.d1), (k, &e.d2)], &e.res, !forced);
+        }
+    }
+
+    /// Adds the trailing-edge junction equations of the first wake station.
+    fn junction(&mut self, state: &BlState, k: usize, e: &JunctionEquations) {
+        let (ku, kl) = (self.layout.upper_te(), self.layout.lower_te());
+        self.station(
+            state,
+            k,
+            &[(kl, &e.d_lower), (ku, &e.d_upper), (k, &e.d_wake)],
+            &e.res,
+            true,
+        );
+    }
+}
+
 /// Assembles the Newton system. Regimes are decided here, station by station downstream, by
 /// the transition check of each laminar interval (XFOIL SETBL with TRCHEK); a station whose regime
 /// changes gets its `s` variable re-initialised.
@@ -242,30 +313,28 @@ pub fn assemble<'a>(
 ) -> Result<Assembly<'a>, ViscousError> {
     let layout = coupling.layout;
     let n = layout.len();
-    let mut sys = BlockSystem::zeros(n, coupling.dv);
     let ue_calc = coupling.ue_from_mass(&state.mass);
     let mismatch: Vec<f64> = ue_calc.iter().zip(&state.ue).map(|(c, u)| c - u).collect();
+    let stagnation = match (
+        layout.range(Surface::Upper).next(),
+        layout.range(Surface::Lower).next(),
+    ) {
+        (Some(k1), Some(k2)) if coupling.stagnation_terms => StagnationSensitivity::new(
+            layout,
+            state,
+            layout.stations[k1].xi + layout.stations[k2].xi,
+        ),
+        _ => None,
+    };
+    let mut asm = Assembler {
+        sys: BlockSystem::zeros(n, coupling.dv),
+        layout,
+        mismatch,
+        stagnation,
+        sumsq: 0.0,
+    };
     let mut transition = [None, None];
-    let mut sumsq = 0.0;
-    let stagnation = {
-        let (k1, k2) = (
-            layout.range(Surface::Upper).next(),
-            layout.range(Surface::Lower).next(),
-        );
-        match (k1, k2) {
-            (Some(k1), Some(k2)) if coupling.stagnation_terms => StagnationSensitivity::new(
-                layout,
-                state,
-                layout.stations[k1].xi + layout.stations[k2].xi,
-            ),
-            _ => None,
-        }
-    };
-    let add_stagnation = |sys: &mut BlockSystem<'_>, k: usize, xi_coef: &[f64; 3]| {
-        if let Some(st) = &stagnation {
-            st.add(sys, k, xi_coef, &mismatch);
-        }
-    };
+    let cached = |k: usize| coupling.cached.and_then(|c| c[k].as_ref());
 
     for (side, surface) in [Surface::Upper, Surface::Lower].into_iter().enumerate() {
         let range = layout.range(surface);
@@ -278,45 +347,7 @@ pub fn assemble<'a>(
         let mut turbulent = false;
         for k in range {
             let st = layout.stations[k];
-            let mut xi_coef = [0.0; 3];
-            if let Some(CachedEquations::Interval(e, tr)) =
-                coupling.cached.and_then(|c| c[k].as_ref())
-            {
-                if st.kind == StationKind::Similarity {
-                    add_terms(
-                        &mut sys,
-                        k,
-                        k,
-                        &e.combined_jacobian(),
-                        state,
-                        &mismatch,
-                        layout,
-                        &mut xi_coef,
-                    );
-                } else {
-                    let p = st.upstream.unwrap_or(k - 1);
-                    sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                    add_terms(
-                        &mut sys,
-                        k,
-                        p,
-                        &e.d1,
-                        state,
-                        &mismatch,
-                        layout,
-                        &mut xi_coef,
-                    );
-                    add_terms(
-                        &mut sys,
-                        k,
-                        k,
-                        &e.d2,
-                        state,
-                        &mismatch,
-                        layout,
-                        &mut xi_coef,
-                    );
-                }
+            if let Some(CachedEquations::Interval(e, tr)) = cached(k) {
                 if let Some((xi, forced)) = tr {
                     turbulent = true;
                     transition[side] = Some(TransitionPoint {
@@ -324,309 +355,98 @@ pub fn assemble<'a>(
                         station: k,
                         forced: *forced,
                     });
-                    if *forced {
-                        xi_coef = [0.0; 3];
-                    }
                 }
-                for r in 0..3 {
-                    sys.rhs[k][r] -= e.res[r];
-                }
-                add_stagnation(&mut sys, k, &xi_coef);
-                sumsq += e.res.iter().map(|r| r * r).sum::<f64>();
+                let forced = matches!(tr, Some((_, true)));
+                asm.interval(state, k, e, forced);
                 continue;
             }
-            let eq;
             if st.kind == StationKind::Similarity {
                 state.turbulent[k] = false;
                 let v = state.vars(layout, k);
                 let e = model.similarity(&v).map_err(at(k))?;
-                let d = e.combined_jacobian();
-                add_terms(&mut sys, k, k, &d, state, &mismatch, layout, &mut xi_coef);
-                eq = e.res;
+                asm.interval(state, k, &e, false);
+                continue;
+            }
+            let p = st.upstream.unwrap_or(k - 1);
+            if turbulent {
+                if !state.turbulent[k] {
+                    state.turbulent[k] = true;
+                    state.s[k] = state.s[p].clamp(1e-4, 0.25);
+                }
+                let v1 = state.vars(layout, p);
+                let v2 = state.vars(layout, k);
+                let e = model.interval(Regime::Turbulent, &v1, &v2).map_err(at(k))?;
+                asm.interval(state, k, &e, false);
+                continue;
+            }
+            let v1 = state.vars(layout, p);
+            let mut v2 = state.vars(layout, k);
+            if !state.turbulent[k] {
+                v2.s = s_turb_ref;
+            }
+            let tr = if coupling.regimes_known && !state.turbulent[k] {
+                None
             } else {
-                let p = st.upstream.unwrap_or(k - 1);
-                if !turbulent {
-                    let v1 = state.vars(layout, p);
-                    let mut v2 = state.vars(layout, k);
+                model
+                    .transition(&v1, &v2, coupling.xi_forced[side])
+                    .map_err(at(k))?
+            };
+            match tr {
+                Some(t) => {
                     if !state.turbulent[k] {
-                        v2.s = s_turb_ref;
-                    }
-                    let tr = if coupling.regimes_known && !state.turbulent[k] {
-                        None
-                    } else {
-                        model
-                            .transition(&v1, &v2, coupling.xi_forced[side])
-                            .map_err(at(k))?
-                    };
-                    match tr {
-                        Some(t) => {
-                            if !state.turbulent[k] {
-                                state.s[k] = s_turb_ref;
-                                state.turbulent[k] = true;
-                            }
-                            turbulent = true;
-                            transition[side] = Some(TransitionPoint {
-                                xi: t.xi_transition,
-                                station: k,
-                                forced: t.forced,
-                            });
-                            sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                            add_terms(
-                                &mut sys,
-                                k,
-                                p,
-                                &t.equations.d1,
-                                state,
-                                &mismatch,
-                                layout,
-                                &mut xi_coef,
-                            );
-                            add_terms(
-                                &mut sys,
-                                k,
-                                k,
-                                &t.equations.d2,
-                                state,
-                                &mismatch,
-                                layout,
-                                &mut xi_coef,
-                            );
-                            if t.forced {
-                                xi_coef = [0.0; 3];
-                            }
-                            eq = t.equations.res;
-                        }
-                        None => {
-                            if state.turbulent[k] {
-                                state.turbulent[k] = false;
-                                state.s[k] = state.s[p].max(0.0);
-                            }
-                            let v2 = state.vars(layout, k);
-                            let e = model.interval(Regime::Laminar, &v1, &v2).map_err(at(k))?;
-                            sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                            add_terms(
-                                &mut sys,
-                                k,
-                                p,
-                                &e.d1,
-                                state,
-                                &mismatch,
-                                layout,
-                                &mut xi_coef,
-                            );
-                            add_terms(
-                                &mut sys,
-                                k,
-                                k,
-                                &e.d2,
-                                state,
-                                &mismatch,
-                                layout,
-                                &mut xi_coef,
-                            );
-                            eq = e.res;
-                        }
-                    }
-                } else {
-                    if !state.turbulent[k] {
+                        state.s[k] = s_turb_ref;
                         state.turbulent[k] = true;
-                        state.s[k] = state.s[p].clamp(1e-4, 0.25);
                     }
-                    let v1 = state.vars(layout, p);
+                    turbulent = true;
+                    transition[side] = Some(TransitionPoint {
+                        xi: t.xi_transition,
+                        station: k,
+                        forced: t.forced,
+                    });
+                    asm.interval(state, k, &t.equations, t.forced);
+                }
+                None => {
+                    if state.turbulent[k] {
+                        state.turbulent[k] = false;
+                        state.s[k] = state.s[p].max(0.0);
+                    }
                     let v2 = state.vars(layout, k);
-                    let e = model.interval(Regime::Turbulent, &v1, &v2).map_err(at(k))?;
-                    sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                    add_terms(
-                        &mut sys,
-                        k,
-                        p,
-                        &e.d1,
-                        state,
-                        &mismatch,
-                        layout,
-                        &mut xi_coef,
-                    );
-                    add_terms(
-                        &mut sys,
-                        k,
-                        k,
-                        &e.d2,
-                        state,
-                        &mismatch,
-                        layout,
-                        &mut xi_coef,
-                    );
-                    eq = e.res;
+                    let e = model.interval(Regime::Laminar, &v1, &v2).map_err(at(k))?;
+                    asm.interval(state, k, &e, false);
                 }
             }
-            sys.rhs[k][0] -= eq[0];
-            sys.rhs[k][1] -= eq[1];
-            sys.rhs[k][2] -= eq[2];
-            add_stagnation(&mut sys, k, &xi_coef);
-            sumsq += eq.iter().map(|r| r * r).sum::<f64>();
         }
     }
 
     // Wake: junction of both trailing-edge layers, then wake intervals.
     for k in layout.range(Surface::Wake) {
         state.turbulent[k] = true;
-        let st = layout.stations[k];
-        let mut xi_coef = [0.0; 3];
-        match coupling.cached.and_then(|c| c[k].as_ref()) {
-            Some(CachedEquations::Junction(e)) => {
-                let (ku, kl) = (layout.upper_te(), layout.lower_te());
-                sys.upstream[k] = Some((kl, [[0.0; 3]; 3]));
-                sys.upstream2[k] = Some((ku, [[0.0; 3]; 3]));
-                add_terms(
-                    &mut sys,
-                    k,
-                    kl,
-                    &e.d_lower,
-                    state,
-                    &mismatch,
-                    layout,
-                    &mut xi_coef,
-                );
-                add_terms(
-                    &mut sys,
-                    k,
-                    ku,
-                    &e.d_upper,
-                    state,
-                    &mismatch,
-                    layout,
-                    &mut xi_coef,
-                );
-                add_terms(
-                    &mut sys,
-                    k,
-                    k,
-                    &e.d_wake,
-                    state,
-                    &mismatch,
-                    layout,
-                    &mut xi_coef,
-                );
-                for r in 0..3 {
-                    sys.rhs[k][r] -= e.res[r];
-                }
-                add_stagnation(&mut sys, k, &xi_coef);
-                sumsq += e.res.iter().map(|r| r * r).sum::<f64>();
-                continue;
+        match cached(k) {
+            Some(CachedEquations::Junction(e)) => asm.junction(state, k, e),
+            Some(CachedEquations::Interval(e, _)) => asm.interval(state, k, e, false),
+            None if layout.stations[k].kind == StationKind::WakeStart => {
+                let vu = state.vars(layout, layout.upper_te());
+                let vl = state.vars(layout, layout.lower_te());
+                let vw = state.vars(layout, k);
+                let e = model
+                    .junction(&vu, &vl, &vw, coupling.ante)
+                    .map_err(at(k))?;
+                asm.junction(state, k, &e);
             }
-            Some(CachedEquations::Interval(e, _)) => {
-                let p = st.upstream.unwrap_or(k - 1);
-                sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-                add_terms(
-                    &mut sys,
-                    k,
-                    p,
-                    &e.d1,
-                    state,
-                    &mismatch,
-                    layout,
-                    &mut xi_coef,
-                );
-                add_terms(
-                    &mut sys,
-                    k,
-                    k,
-                    &e.d2,
-                    state,
-                    &mismatch,
-                    layout,
-                    &mut xi_coef,
-                );
-                for r in 0..3 {
-                    sys.rhs[k][r] -= e.res[r];
-                }
-                add_stagnation(&mut sys, k, &xi_coef);
-                sumsq += e.res.iter().map(|r| r * r).sum::<f64>();
-                continue;
+            None => {
+                let p = layout.stations[k].upstream.unwrap_or(k - 1);
+                let v1: StationVars = state.vars(layout, p);
+                let v2 = state.vars(layout, k);
+                let e = model.interval(Regime::Wake, &v1, &v2).map_err(at(k))?;
+                asm.interval(state, k, &e, false);
             }
-            None => {}
         }
-        let eq;
-        if st.kind == StationKind::WakeStart {
-            let (ku, kl) = (layout.upper_te(), layout.lower_te());
-            let vu = state.vars(layout, ku);
-            let vl = state.vars(layout, kl);
-            let vw = state.vars(layout, k);
-            let e = model
-                .junction(&vu, &vl, &vw, coupling.ante)
-                .map_err(at(k))?;
-            sys.upstream[k] = Some((kl, [[0.0; 3]; 3]));
-            sys.upstream2[k] = Some((ku, [[0.0; 3]; 3]));
-            add_terms(
-                &mut sys,
-                k,
-                kl,
-                &e.d_lower,
-                state,
-                &mismatch,
-                layout,
-                &mut xi_coef,
-            );
-            add_terms(
-                &mut sys,
-                k,
-                ku,
-                &e.d_upper,
-                state,
-                &mismatch,
-                layout,
-                &mut xi_coef,
-            );
-            add_terms(
-                &mut sys,
-                k,
-                k,
-                &e.d_wake,
-                state,
-                &mismatch,
-                layout,
-                &mut xi_coef,
-            );
-            eq = e.res;
-        } else {
-            let p = st.upstream.unwrap_or(k - 1);
-            let v1: StationVars = state.vars(layout, p);
-            let v2 = state.vars(layout, k);
-            let e = model.interval(Regime::Wake, &v1, &v2).map_err(at(k))?;
-            sys.upstream[k] = Some((p, [[0.0; 3]; 3]));
-            add_terms(
-                &mut sys,
-                k,
-                p,
-                &e.d1,
-                state,
-                &mismatch,
-                layout,
-                &mut xi_coef,
-            );
-            add_terms(
-                &mut sys,
-                k,
-                k,
-                &e.d2,
-                state,
-                &mismatch,
-                layout,
-                &mut xi_coef,
-            );
-            eq = e.res;
-        }
-        sys.rhs[k][0] -= eq[0];
-        sys.rhs[k][1] -= eq[1];
-        sys.rhs[k][2] -= eq[2];
-        add_stagnation(&mut sys, k, &xi_coef);
-        sumsq += eq.iter().map(|r| r * r).sum::<f64>();
     }
 
     Ok(Assembly {
-        system: sys,
-        mismatch,
-        rms_residual: (sumsq / (3 * n.max(1)) as f64).sqrt(),
+        system: asm.sys,
+        mismatch: asm.mismatch,
+        rms_residual: (asm.sumsq / (3 * n.max(1)) as f64).sqrt(),
         transition,
     })
 }
