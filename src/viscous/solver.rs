@@ -18,10 +18,6 @@ use super::stations::{StationLayout, Surface};
 use super::update::{apply_update, UpdateLimits};
 use super::xfoil_bl::XfoilBoundaryLayer;
 
-/// Largest relative change of a Newton step (XFOIL RMXBL) above which the step is taken to
-/// come from a near-singular system.
-const EXPLODED_STEP: f64 = 1e6;
-
 /// Parameters of a viscous solution.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ViscousParams {
@@ -56,6 +52,10 @@ pub struct ViscousParams {
     /// Sweeps turn this off and retry from a fresh start themselves, after sub-stepping from
     /// the converged neighbour (see [`crate::polar::SweepParams`]).
     pub fresh_retry: bool,
+    /// Largest relative change of a Newton step (XFOIL RMXBL) above which the step is taken to
+    /// come from a near-singular system (stagnation point almost on a node); the next
+    /// iteration then goes without the stagnation-point terms of ξ.
+    pub exploded_step: f64,
 }
 
 impl Default for ViscousParams {
@@ -73,6 +73,7 @@ impl Default for ViscousParams {
             remarch_below: 0.0,
             min_pressure_drag: -2e-4,
             fresh_retry: true,
+            exploded_step: 1e6,
         }
     }
 }
@@ -484,7 +485,7 @@ impl ViscousSolver {
             // stagnation point almost on a node, ξ → 0 at the first station): the next
             // iteration goes without the stagnation-point terms, whose linearisation is then
             // far outside its range.
-            stagnation_terms = upd.max_change < EXPLODED_STEP;
+            stagnation_terms = upd.max_change < self.params.exploded_step;
             // Move the stagnation point with the viscous surface speed (XFOIL STMOVE).
             let q_nodes = viscous_node_speed(&layout, &state, &q_inv);
             if let Ok(new_layout) = StationLayout::new(&self.panels.geometry, &q_nodes[..n_af]) {
