@@ -37,12 +37,7 @@ impl Setup {
         let foil = paneled();
         let system = PanelSystem::new(&foil).unwrap();
         let model = PanelModel::at_alpha(&system, ALPHA).unwrap();
-        let (sa, ca) = ALPHA.to_radians().sin_cos();
-        let q_inv = model.q_unit[0]
-            .iter()
-            .zip(&model.q_unit[1])
-            .map(|(a, b)| ca * a + sa * b)
-            .collect();
+        let q_inv = model.speeds(ALPHA);
         Self {
             model,
             q_inv,
@@ -56,19 +51,6 @@ impl Setup {
         StationLayout::new(&self.model.geometry, &q[..self.model.geometry.n_airfoil]).unwrap()
     }
 
-    /// Dv_kj = −vti_k·vti_j·DIJ(node_k, node_j) in system order.
-    fn influence(&self, layout: &StationLayout) -> Vec<f64> {
-        let nn = self.model.geometry.x.len();
-        let n = layout.len();
-        let mut dv = vec![0.0; n * n];
-        for (k, sk) in layout.stations.iter().enumerate() {
-            for (j, sj) in layout.stations.iter().enumerate() {
-                dv[k * n + j] = -sk.vti * sj.vti * self.model.dij[sk.node * nn + sj.node];
-            }
-        }
-        dv
-    }
-
     /// Free transition: the latest transition point is the trailing edge of each surface.
     fn xi_forced(layout: &StationLayout) -> [Option<f64>; 2] {
         [Surface::Upper, Surface::Lower]
@@ -79,7 +61,7 @@ impl Setup {
     /// edge speeds are first made consistent with its mass defects and whose layout follows
     /// the stagnation point of those edge speeds.
     fn system(&self, base: &StationLayout, state: &BlState) -> (Vec<f64>, Vec<Vec<f64>>) {
-        let dv = self.influence(base);
+        let dv = self.model.edge_speed_influence(base);
         let ue_inv = base.edge_speed(&self.q_inv);
         let n = base.len();
         let mut st = state.clone();
@@ -112,7 +94,7 @@ impl Setup {
     /// Edge speeds Ue_inv + D·m of `state` on `layout`, and the layout their stagnation point
     /// gives.
     fn consistent(&self, layout: &StationLayout, state: &BlState) -> (Vec<f64>, StationLayout) {
-        let dv = self.influence(layout);
+        let dv = self.model.edge_speed_influence(layout);
         let ue_inv = layout.edge_speed(&self.q_inv);
         let n = layout.len();
         let ue: Vec<f64> = (0..n)

@@ -41,5 +41,5 @@ pub use forces::{integrate_pressure, SectionForces};
 pub use panels::{PanelGeometry, PanelParams, TrailingEdge};
 pub use simd_state::reset_simd_state;
 pub use source_influence::{speeds_with_sources, SourceInfluence};
-pub use system::{InviscidSolution, PanelSystem};
+pub use system::{superpose, InviscidSolution, PanelSystem};
 pub use wake::{Wake, WakeParams};

@@ -69,6 +69,17 @@ pub struct InviscidSolution {
     pub supercritical: bool,
 }
 
+/// Superposition of the α = 0° and α = 90° unit solutions at angle of attack α:
+/// cos α·u⁰ + sin α·u⁹⁰ (the panel method is linear in the free stream; XFOIL QISET/GAMQV).
+pub fn superpose(unit0: &[f64], unit90: &[f64], alpha_deg: f64) -> Vec<f64> {
+    let (sa, ca) = alpha_deg.to_radians().sin_cos();
+    unit0
+        .iter()
+        .zip(unit90)
+        .map(|(a, b)| ca * a + sa * b)
+        .collect()
+}
+
 impl PanelSystem {
     /// Builds, factorises and solves the panel system for `airfoil` (nodes used as given,
     /// XFOIL order) with the default [`PanelParams`].
@@ -195,12 +206,7 @@ impl PanelSystem {
 
     /// Incompressible surface speed distribution γ(α) = cos α·γ⁰ + sin α·γ⁹⁰ (signed, per V∞).
     pub fn gamma(&self, alpha_deg: f64) -> Vec<f64> {
-        let (sa, ca) = alpha_deg.to_radians().sin_cos();
-        self.gamma_unit[0]
-            .iter()
-            .zip(&self.gamma_unit[1])
-            .map(|(g0, g90)| ca * g0 + sa * g90)
-            .collect()
+        superpose(&self.gamma_unit[0], &self.gamma_unit[1], alpha_deg)
     }
 
     /// dγ/dα (per radian) at `alpha_deg`: −sin α·γ⁰ + cos α·γ⁹⁰ (XFOIL QINV_A).

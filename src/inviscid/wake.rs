@@ -5,7 +5,7 @@
 use super::error::InviscidError;
 use super::panels::{airfoil_vortex_gradient, FieldPoint, Probe};
 use super::simd_state::reset_simd_state;
-use super::system::PanelSystem;
+use super::system::{superpose, PanelSystem};
 
 /// Tunable constants of the wake geometry (XFOIL defaults).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -194,12 +194,7 @@ impl Wake {
     /// Inviscid wake speeds at `alpha_deg`, `cos α·q⁰ + sin α·q⁹⁰` (signed as described on
     /// [`Wake`]; the geometry stays the one traced at `self.alpha_deg`).
     pub fn qinv(&self, alpha_deg: f64) -> Vec<f64> {
-        let (sa, ca) = alpha_deg.to_radians().sin_cos();
-        self.qinv_unit[0]
-            .iter()
-            .zip(&self.qinv_unit[1])
-            .map(|(a, b)| ca * a + sa * b)
-            .collect()
+        superpose(&self.qinv_unit[0], &self.qinv_unit[1], alpha_deg)
     }
 }
 

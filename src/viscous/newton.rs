@@ -128,10 +128,11 @@ struct StagnationSensitivity {
 }
 
 impl StagnationSensitivity {
-    /// `ds`: arc length between the two stations' nodes.
-    fn new(layout: &StationLayout, state: &BlState, ds: f64) -> Option<Self> {
+    fn new(layout: &StationLayout, state: &BlState) -> Option<Self> {
         let k1 = layout.range(Surface::Upper).next()?;
         let k2 = layout.range(Surface::Lower).next()?;
+        // Arc length between the two stations' nodes: the stagnation point lies between them.
+        let ds = layout.stations[k1].xi + layout.stations[k2].xi;
         let (u1, u2) = (state.ue[k1], state.ue[k2]);
         let sum = u1 + u2;
         if !(sum > 0.0 && ds.is_finite()) {
@@ -315,17 +316,10 @@ pub fn assemble<'a>(
     let n = layout.len();
     let ue_calc = coupling.ue_from_mass(&state.mass);
     let mismatch: Vec<f64> = ue_calc.iter().zip(&state.ue).map(|(c, u)| c - u).collect();
-    let stagnation = match (
-        layout.range(Surface::Upper).next(),
-        layout.range(Surface::Lower).next(),
-    ) {
-        (Some(k1), Some(k2)) if coupling.stagnation_terms => StagnationSensitivity::new(
-            layout,
-            state,
-            layout.stations[k1].xi + layout.stations[k2].xi,
-        ),
-        _ => None,
-    };
+    let stagnation = coupling
+        .stagnation_terms
+        .then(|| StagnationSensitivity::new(layout, state))
+        .flatten();
     let mut asm = Assembler {
         sys: BlockSystem::zeros(n, coupling.dv),
         layout,

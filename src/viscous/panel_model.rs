@@ -12,10 +12,10 @@ use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
 use crate::geometry::Airfoil;
-use crate::inviscid::{PanelSystem, SourceInfluence, Wake};
+use crate::inviscid::{superpose, PanelSystem, SourceInfluence, Wake};
 
 use super::error::ViscousError;
-use super::stations::PanelGeometry;
+use super::stations::{PanelGeometry, StationLayout};
 
 /// Inviscid data the coupling needs (XFOIL QINVU, DIJ): node geometry including the wake,
 /// surface speeds of the α = 0° and 90° unit solutions, and the source influence matrix.
@@ -66,6 +66,27 @@ impl PanelModel {
             q_unit,
             dij,
         })
+    }
+
+    /// Inviscid surface speed at all nodes for angle of attack α (XFOIL QISET).
+    pub fn speeds(&self, alpha_deg: f64) -> Vec<f64> {
+        superpose(&self.q_unit[0], &self.q_unit[1], alpha_deg)
+    }
+
+    /// Edge-speed influence matrix of a station layout, row-major in system order:
+    /// Dv_kj = −vti_k·vti_j·DIJ(node_k, node_j) (XFOIL UESET), so Ue = Ue_inv + Dv·m.
+    pub fn edge_speed_influence(&self, layout: &StationLayout) -> Vec<f64> {
+        let nn = self.geometry.x.len();
+        let n = layout.len();
+        let mut dv = vec![0.0; n * n];
+        for (k, sk) in layout.stations.iter().enumerate() {
+            let row = &self.dij[sk.node * nn..(sk.node + 1) * nn];
+            let out = &mut dv[k * n..(k + 1) * n];
+            for (o, sj) in out.iter_mut().zip(&layout.stations) {
+                *o = -sk.vti * sj.vti * row[sj.node];
+            }
+        }
+        dv
     }
 }
 

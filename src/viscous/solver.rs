@@ -283,31 +283,6 @@ impl ViscousSolver {
         self.warm = None;
     }
 
-    /// Inviscid surface speed at all nodes for angle of attack α (XFOIL QISET).
-    fn q_inviscid(&self, alpha_deg: f64) -> Vec<f64> {
-        let (sa, ca) = alpha_deg.to_radians().sin_cos();
-        self.panels.q_unit[0]
-            .iter()
-            .zip(&self.panels.q_unit[1])
-            .map(|(a, b)| ca * a + sa * b)
-            .collect()
-    }
-
-    /// Edge-speed influence matrix in system order: Dv_kj = −vti_k·vti_j·DIJ(node_k, node_j).
-    fn system_influence(&self, layout: &StationLayout) -> Vec<f64> {
-        let nn = self.panels.geometry.x.len();
-        let n = layout.len();
-        let mut dv = vec![0.0; n * n];
-        for (k, sk) in layout.stations.iter().enumerate() {
-            let row = &self.panels.dij[sk.node * nn..(sk.node + 1) * nn];
-            let out = &mut dv[k * n..(k + 1) * n];
-            for (o, sj) in out.iter_mut().zip(&layout.stations) {
-                *o = -sk.vti * sj.vti * row[sj.node];
-            }
-        }
-        dv
-    }
-
     /// ξ of forced transition on each surface: the trip x/c converted to ξ along that surface
     /// (XFOIL XIFSET), at most the TE ξ (XFOIL forces transition at the TE at the latest).
     fn forced_xi(&self, layout: &StationLayout) -> [Option<f64>; 2] {
@@ -403,7 +378,7 @@ impl ViscousSolver {
     /// One Newton attempt from a warm state or a fresh march.
     fn attempt(&self, alpha_deg: f64, warm: Option<WarmState>) -> Result<Attempt, ViscousError> {
         let n_af = self.panels.geometry.n_airfoil;
-        let q_inv = self.q_inviscid(alpha_deg);
+        let q_inv = self.panels.speeds(alpha_deg);
         // The stagnation point of a warm start is where the warm state's viscous speed changes
         // sign (XFOIL VISCAL: GAMQV then STFIND), so that the remapped state and its edge speeds
         // agree; the Newton iterations then move it with the solution (STMOVE below).
@@ -413,7 +388,7 @@ impl ViscousSolver {
         };
         let mut layout = StationLayout::new(&self.panels.geometry, &q_start[..n_af])?;
         let mut ue_inv = layout.edge_speed(&q_inv);
-        let mut dv = self.system_influence(&layout);
+        let mut dv = self.panels.edge_speed_influence(&layout);
         let mut xi_forced = self.forced_xi(&layout);
         let mut state = match warm {
             Some(w) => {
@@ -496,7 +471,7 @@ impl ViscousSolver {
                     fix_crossed(&mut s, &map, &layout, &new_layout, &ue_new);
                     state = s;
                     ue_inv = new_layout.edge_speed(&q_inv);
-                    dv = self.system_influence(&new_layout);
+                    dv = self.panels.edge_speed_influence(&new_layout);
                 }
                 layout = new_layout;
                 xi_forced = self.forced_xi(&layout);
