@@ -1,8 +1,9 @@
 //! "Ping" tests: every Jacobian entry of the interval equations (laminar, turbulent, wake,
 //! similarity, transition, TE junction, Squire–Young) against central finite differences,
-//! for randomised realistic station pairs.
+//! for randomised realistic station pairs. Each interval is also evaluated in two parts (station
+//! 2's Jacobian, then station 1's added), which must give the same numbers bit for bit.
 
-use polargen::boundary_layer::{BlModel, Regime, StationVars};
+use polargen::boundary_layer::{BlModel, Regime, StationVars, UpstreamStation};
 
 mod bl_support;
 use bl_support::model;
@@ -90,6 +91,17 @@ fn station(x: f64, u: f64, theta: f64, h: f64, s: f64, dw: f64) -> StationVars {
 
 fn check_interval(m: &BlModel, regime: Regime, v1: &StationVars, v2: &StationVars, tol: f64) {
     let eq = m.interval(regime, v1, v2).expect("valid interval");
+    let up = UpstreamStation::new(v1, regime);
+    let part = m
+        .interval_downstream(regime, &up, v2)
+        .expect("valid interval");
+    assert_eq!(
+        (part.res, part.d2),
+        (eq.res, eq.d2),
+        "{regime:?} station-2 part"
+    );
+    let whole = m.complete_interval(&up, &part).expect("valid interval");
+    assert_eq!(whole, eq, "{regime:?} completed equations");
     ping(
         &format!("{regime:?} st1"),
         v1,

@@ -6,6 +6,7 @@
 use super::amplification::axset_d;
 use super::closures::{cfl_d, cft_d};
 use super::dual::{Dual, NVARS};
+use super::params::Regime;
 use super::params::{BlParams, FlowConstants};
 use super::station::Station;
 
@@ -58,6 +59,27 @@ impl IntervalEquations {
     }
 }
 
+/// Residuals of an interval with their Jacobian with respect to station 2 only: what the
+/// local iterations of a march need, since they vary station 2 alone. The Jacobian with respect
+/// to station 1 is added later, for the last iteration only
+/// ([`BlModel::complete_interval`](super::BlModel::complete_interval)). The residuals and both
+/// Jacobians are bit-identical to those of one evaluation on 10-slot numbers
+/// ([`BlModel::interval_from`](super::BlModel::interval_from)): every slot of a derivative
+/// number is computed on its own, so the 5-slot evaluation with station 2 seeded and station 1
+/// held fixed computes exactly the station-2 slots, and the one with the roles swapped exactly
+/// the station-1 slots, at about half the cost each.
+#[derive(Clone, Debug)]
+pub struct DownstreamEquations {
+    /// Residuals R of the three equations (as [`IntervalEquations::res`]).
+    pub res: [f64; 3],
+    /// ∂R/∂(s, θ, δ*, u, ξ) of station 2 (as [`IntervalEquations::d2`]).
+    pub d2: [[f64; 5]; 3],
+    /// Regime of the interval.
+    pub(crate) regime: Regime,
+    /// Station 2 with derivatives with respect to its own variables.
+    pub(crate) station: Station<5>,
+}
+
 /// Which finite-difference system BLDIF sets up.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum DiffKind {
@@ -71,9 +93,20 @@ pub(crate) enum DiffKind {
     Wake,
 }
 
+impl DiffKind {
+    /// The system of an interval whose stations are in `regime`.
+    pub(crate) fn of(regime: Regime) -> Self {
+        match regime {
+            Regime::Laminar => DiffKind::Laminar,
+            Regime::Turbulent => DiffKind::Turbulent,
+            Regime::Wake => DiffKind::Wake,
+        }
+    }
+}
+
 /// Midpoint skin friction Cf(Hk_a, Re_θa, M²_a) at the interval averages (XFOIL BLMID):
 /// laminar CFL, turbulent max(CFT, CFL), zero in the wake.
-fn midpoint_cf(kind: DiffKind, s1: &Station, s2: &Station) -> Dual {
+fn midpoint_cf<const N: usize>(kind: DiffKind, s1: &Station<N>, s2: &Station<N>) -> Dual<N> {
     let hka = (s1.hk + s2.hk) * 0.5;
     let rta = (s1.rt + s2.rt) * 0.5;
     let ma = (s1.msq + s2.msq) * 0.5;
@@ -95,7 +128,12 @@ fn midpoint_cf(kind: DiffKind, s1: &Station, s2: &Station) -> Dual {
 /// Local upwinding weight UPW ∈ [0.5, 1) from the change of ln(Hk − 1) over the interval
 /// (XFOIL BLDIF): UPW = 1 − ½exp(−min(ln²|(Hk2−1)/(Hk1−1)|, 15)·HDCON), HDCON = 5·HUPWT/Hk2²
 /// on the wall and HUPWT/Hk2² in the wake. 0.5 is trapezoidal, 1 backward Euler.
-fn upwinding(kind: DiffKind, s1: &Station, s2: &Station, p: &BlParams) -> Dual {
+fn upwinding<const N: usize>(
+    kind: DiffKind,
+    s1: &Station<N>,
+    s2: &Station<N>,
+    p: &BlParams,
+) -> Dual<N> {
     let hdcon = if kind == DiffKind::Wake {
         p.hupwt / s2.hk.sq()
     } else {
@@ -108,13 +146,13 @@ fn upwinding(kind: DiffKind, s1: &Station, s2: &Station, p: &BlParams) -> Dual {
 
 /// Residuals of the three interval equations as derivative numbers (XFOIL BLDIF; residual
 /// R, not XFOIL's −R). For [`DiffKind::Similarity`] pass the same station twice.
-pub(crate) fn bldif(
+pub(crate) fn bldif<const N: usize>(
     kind: DiffKind,
-    s1: &Station,
-    s2: &Station,
+    s1: &Station<N>,
+    s2: &Station<N>,
     fc: &FlowConstants,
     p: &BlParams,
-) -> [Dual; 3] {
+) -> [Dual<N>; 3] {
     let (xlog, ulog, tlog, hlog) = if kind == DiffKind::Similarity {
         (
             Dual::constant(1.0),
@@ -175,15 +213,15 @@ pub(crate) fn bldif(
 /// K_C/(1+Us)·(√Cτ_eq − λ√Cτ)Δξ − 2δ·Δln√Cτ + 2δ·(Q·Δξ − Δln Ue)·DUXCON = 0, with
 /// K_C = SCCON·1.333, λ = DLCON in the wake, and the equilibrium 1/Ue dUe/dξ
 /// Q = (CFFAC·Cf/2 − ((Hk − 1 − GCCON/Re_θ)/(GACON·λ·Hk))²)/(GBCON·δ*).
-fn shear_lag(
+fn shear_lag<const N: usize>(
     kind: DiffKind,
-    s1: &Station,
-    s2: &Station,
-    upw: Dual,
-    upw1: Dual,
-    ulog: Dual,
+    s1: &Station<N>,
+    s2: &Station<N>,
+    upw: Dual<N>,
+    upw1: Dual<N>,
+    ulog: Dual<N>,
     p: &BlParams,
-) -> Dual {
+) -> Dual<N> {
     let sa = upw1 * s1.s + upw * s2.s;
     let cqa = upw1 * s1.cq + upw * s2.cq;
     let cfa = upw1 * s1.cf + upw * s2.cf;

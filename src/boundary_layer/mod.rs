@@ -44,7 +44,7 @@ pub mod station;
 pub mod trailing_edge;
 pub mod transition;
 
-pub use equations::IntervalEquations;
+pub use equations::{DownstreamEquations, IntervalEquations};
 pub use params::{BlConditions, BlParams, FlowConstants, Regime};
 pub use station::{StationProperties, StationVars};
 pub use trailing_edge::{SquireYoung, TeJunction};
@@ -97,6 +97,10 @@ pub struct UpstreamStation {
     vars: StationVars,
     regime: Regime,
     valid: Result<(), BlError>,
+    /// With derivatives with respect to its own variables (s, θ, δ*, u, ξ).
+    own: OnceCell<Station<5>>,
+    /// Values with five zero derivative slots (station 1 of a station-2-only evaluation).
+    frozen: OnceCell<Station<5>>,
     /// Seeded in the station-1 slots of an interval (0..5).
     seeded: OnceCell<Station>,
     /// Values with one zero derivative slot (the transition check's fixed station 1).
@@ -110,6 +114,8 @@ impl UpstreamStation {
             vars: *vars,
             regime,
             valid: validate(vars, regime),
+            own: OnceCell::new(),
+            frozen: OnceCell::new(),
             seeded: OnceCell::new(),
             constant: OnceCell::new(),
         }
@@ -125,15 +131,43 @@ impl UpstreamStation {
         self.regime
     }
 
+    pub(crate) fn own(&self, model: &BlModel) -> &Station<5> {
+        self.own
+            .get_or_init(|| Station::own(&self.vars, self.regime, &model.flow, &model.params))
+    }
+
+    pub(crate) fn frozen(&self, model: &BlModel) -> &Station<5> {
+        self.frozen.get_or_init(|| self.own(model).frozen())
+    }
+
     pub(crate) fn seeded(&self, model: &BlModel) -> &Station {
-        self.seeded
-            .get_or_init(|| model.station(&self.vars, Some(0), self.regime))
+        self.seeded.get_or_init(|| self.own(model).embed(0))
     }
 
     pub(crate) fn constant(&self, model: &BlModel) -> &Station<1> {
         self.constant
             .get_or_init(|| Station::constant(&self.vars, self.regime, &model.flow, &model.params))
     }
+}
+
+/// Station 1 evaluated with the closures of `regime` (`up` itself, or a copy stored in
+/// `other` if `up` was built for another regime), after checking both stations and that the
+/// interval advances.
+fn checked_upstream<'a>(
+    regime: Regime,
+    up: &'a UpstreamStation,
+    other: &'a mut Option<UpstreamStation>,
+    v2: &StationVars,
+) -> Result<&'a UpstreamStation, BlError> {
+    let up = if up.regime == regime {
+        up
+    } else {
+        other.insert(UpstreamStation::new(&up.vars, regime))
+    };
+    up.valid.clone()?;
+    validate(v2, regime)?;
+    check_advance(&up.vars, v2)?;
+    Ok(up)
 }
 
 /// Checks that station 2 lies strictly downstream of station 1.
@@ -214,25 +248,84 @@ impl BlModel {
         up: &UpstreamStation,
         v2: &StationVars,
     ) -> Result<IntervalEquations, BlError> {
-        let other;
-        let up = if up.regime == regime {
-            up
-        } else {
-            other = UpstreamStation::new(&up.vars, regime);
-            &other
-        };
-        up.valid.clone()?;
-        validate(v2, regime)?;
-        check_advance(&up.vars, v2)?;
+        let mut other = None;
+        let up = checked_upstream(regime, up, &mut other, v2)?;
         let s1 = up.seeded(self);
         let s2 = self.station(v2, Some(5), regime);
-        let kind = match regime {
-            Regime::Laminar => DiffKind::Laminar,
-            Regime::Turbulent => DiffKind::Turbulent,
-            Regime::Wake => DiffKind::Wake,
-        };
         check_finite(
-            IntervalEquations::from_duals(&bldif(kind, s1, &s2, &self.flow, &self.params)),
+            IntervalEquations::from_duals(&bldif(
+                DiffKind::of(regime),
+                s1,
+                &s2,
+                &self.flow,
+                &self.params,
+            )),
+            "interval equations",
+        )
+    }
+
+    /// [`BlModel::interval_from`] without the station-1 Jacobian, for the local iterations of a
+    /// march, which vary station 2 alone; [`BlModel::complete_interval`] adds it for the
+    /// iteration whose equations are kept. About half the cost of an evaluation with both
+    /// Jacobians, and bit-identical to it (see [`DownstreamEquations`]).
+    pub fn interval_downstream(
+        &self,
+        regime: Regime,
+        up: &UpstreamStation,
+        v2: &StationVars,
+    ) -> Result<DownstreamEquations, BlError> {
+        let mut other = None;
+        let up = checked_upstream(regime, up, &mut other, v2)?;
+        let station = Station::own(v2, regime, &self.flow, &self.params);
+        let r = bldif(
+            DiffKind::of(regime),
+            up.frozen(self),
+            &station,
+            &self.flow,
+            &self.params,
+        );
+        let res = r.map(|d| d.v);
+        let d2 = r.map(|d| d.g);
+        if res.iter().chain(d2.iter().flatten()).all(|v| v.is_finite()) {
+            Ok(DownstreamEquations {
+                res,
+                d2,
+                regime,
+                station,
+            })
+        } else {
+            Err(BlError::NonFinite("interval equations"))
+        }
+    }
+
+    /// The full equations of an interval evaluated by [`BlModel::interval_downstream`] from
+    /// the same upstream station: adds the station-1 Jacobian (station 1 seeded, station 2
+    /// held fixed).
+    pub fn complete_interval(
+        &self,
+        up: &UpstreamStation,
+        eq: &DownstreamEquations,
+    ) -> Result<IntervalEquations, BlError> {
+        let other;
+        let up = if up.regime == eq.regime {
+            up
+        } else {
+            other = UpstreamStation::new(&up.vars, eq.regime);
+            &other
+        };
+        let r = bldif(
+            DiffKind::of(eq.regime),
+            up.own(self),
+            &eq.station.frozen(),
+            &self.flow,
+            &self.params,
+        );
+        check_finite(
+            IntervalEquations {
+                res: eq.res,
+                d1: r.map(|d| d.g),
+                d2: eq.d2,
+            },
             "interval equations",
         )
     }

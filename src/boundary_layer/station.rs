@@ -97,16 +97,23 @@ impl Station {
         fc: &FlowConstants,
         p: &BlParams,
     ) -> Self {
-        let var = |value: f64, k: usize| match offset {
-            Some(_) => Dual::<5>::variable(value, k),
-            None => Dual::constant(value),
-        };
-        let s = var(v.s, 0);
-        let t = var(v.theta, 1);
-        let d = var(v.dstar, 2) - v.dw;
-        let u = compressible_speed_d(var(v.u, 3), fc);
-        let x = var(v.x, 4);
-        Station::from_primaries(x, u, t, d, s, v.dw, regime, fc, p).embed(offset.unwrap_or(0))
+        match offset {
+            Some(offset) => Station::own(v, regime, fc, p).embed(offset),
+            None => Station::<5>::constant(v, regime, fc, p).embed(0),
+        }
+    }
+}
+
+impl Station<5> {
+    /// Station from its primary variables with derivatives with respect to its own variables
+    /// only, in the slot order (s, θ, δ*, u, ξ).
+    pub fn own(v: &StationVars, regime: Regime, fc: &FlowConstants, p: &BlParams) -> Self {
+        let s = Dual::variable(v.s, 0);
+        let t = Dual::variable(v.theta, 1);
+        let d = Dual::variable(v.dstar, 2) - v.dw;
+        let u = compressible_speed_d(Dual::variable(v.u, 3), fc);
+        let x = Dual::variable(v.x, 4);
+        Station::from_primaries(x, u, t, d, s, v.dw, regime, fc, p)
     }
 }
 
@@ -128,7 +135,7 @@ impl<const N: usize> Station<N> {
 
 impl Station<5> {
     /// The station with its derivatives placed at slots `offset..offset+5` of an interval.
-    fn embed(&self, offset: usize) -> Station {
+    pub fn embed(&self, offset: usize) -> Station {
         let e = |d: Dual<5>| d.embed::<NVARS>(offset);
         Station {
             x: e(self.x),
@@ -154,6 +161,34 @@ impl Station<5> {
 }
 
 impl<const N: usize> Station<N> {
+    /// The same station with every derivative slot zero: a station held fixed while the
+    /// derivatives with respect to another station's variables are taken. The values are
+    /// unchanged, and so is every slot computed from it (each slot of a derivative number is
+    /// computed on its own, so a slot that is zero here is zero in the embedded form too).
+    pub fn frozen(&self) -> Self {
+        let z = |d: Dual<N>| Dual::<N>::constant(d.v);
+        Station {
+            x: z(self.x),
+            u: z(self.u),
+            t: z(self.t),
+            d: z(self.d),
+            s: z(self.s),
+            dw: self.dw,
+            msq: z(self.msq),
+            rho: z(self.rho),
+            h: z(self.h),
+            hk: z(self.hk),
+            rt: z(self.rt),
+            hc: z(self.hc),
+            hs: z(self.hs),
+            us: z(self.us),
+            cq: z(self.cq),
+            cf: z(self.cf),
+            di: z(self.di),
+            de: z(self.de),
+        }
+    }
+
     /// Secondary variables from primaries given as derivative numbers (compressible `u`,
     /// `d` = δ* − wake gap): XFOIL BLKIN followed by BLVAR.
     #[allow(clippy::too_many_arguments)]

@@ -14,7 +14,9 @@ use super::error::ViscousError;
 
 /// Station variables, flow regime and interval equations are the boundary-layer layer's own
 /// types: the coupling works on exactly what the closures take and return.
-pub use crate::boundary_layer::{IntervalEquations, Regime, StationVars, UpstreamStation};
+pub use crate::boundary_layer::{
+    DownstreamEquations, IntervalEquations, Regime, StationVars, UpstreamStation,
+};
 
 /// An interval in which the layer becomes turbulent.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -82,6 +84,23 @@ pub trait BoundaryLayerModel {
         regime: Regime,
         st1: &UpstreamStation,
         st2: &StationVars,
+    ) -> Result<IntervalEquations, ViscousError>;
+
+    /// [`BoundaryLayerModel::interval_from`] with the Jacobian of station 2 only (the local
+    /// iterations of a march); [`BoundaryLayerModel::complete_interval`] adds station 1's.
+    fn interval_downstream(
+        &self,
+        regime: Regime,
+        st1: &UpstreamStation,
+        st2: &StationVars,
+    ) -> Result<DownstreamEquations, ViscousError>;
+
+    /// The full equations of an interval evaluated by
+    /// [`BoundaryLayerModel::interval_downstream`] from the same upstream station.
+    fn complete_interval(
+        &self,
+        st1: &UpstreamStation,
+        eq: &DownstreamEquations,
     ) -> Result<IntervalEquations, ViscousError>;
 
     /// Transition check of a laminar interval (XFOIL TRCHEK2 + TRDIF): `Some` if free (N reaches

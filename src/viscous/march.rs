@@ -4,7 +4,8 @@
 //! Drela 1989 §4.2).
 
 use super::bl_model::{
-    BoundaryLayerModel, IntervalEquations, Regime, StationVars, UpstreamStation,
+    BoundaryLayerModel, DownstreamEquations, IntervalEquations, Regime, StationVars,
+    UpstreamStation,
 };
 use super::newton::CachedEquations;
 use super::state::BlState;
@@ -367,6 +368,17 @@ impl OscillationDamping {
     }
 }
 
+/// Equations of a local iteration of the re-march, kept for the global assembly. (It lives on
+/// the stack for one station; boxing the large variant would cost an allocation per local
+/// iteration.)
+#[allow(clippy::large_enum_variant)]
+enum KeptEquations {
+    /// Complete equations (similarity, junction, transition interval).
+    Complete(CachedEquations),
+    /// An interval without transition, still without the Jacobian of its upstream station.
+    Downstream(DownstreamEquations),
+}
+
 /// Re-marches the boundary layer in mixed mode from the current state (XFOIL xbl.f MRCHDU):
 /// at every station the three interval equations are solved together with a prescribed
 /// combination of Ue and Hk that lies quasi-normal to the local Ue–Hk characteristic, so that
@@ -435,7 +447,7 @@ pub fn remarch_mixed(
         let mut last_dmax = f64::INFINITY;
         // Equations of the last local iteration, the variables they were evaluated at
         // (s, θ, δ*, u) and whether the regime changed in that iteration.
-        let mut last: Option<(CachedEquations, [f64; 4], bool)> = None;
+        let mut last: Option<(KeptEquations, [f64; 4], bool)> = None;
         // The upstream station is fixed during the local iterations: its closures are
         // evaluated once (laminar: the transition check and the laminar interval share it).
         let upstream = (st.kind == StationKind::Interval).then(|| {
@@ -460,6 +472,7 @@ pub fn remarch_mixed(
             let s_now = if turbulent { cti } else { n_amp };
             let was_turbulent_now = turbulent;
             let mut junction = None;
+            let mut downstream = None;
             let mut tr_info = None;
             let v2 = StationVars {
                 x: st.xi,
@@ -491,10 +504,21 @@ pub fn remarch_mixed(
                     let Some(up) = upstream.as_ref() else {
                         unreachable!("interval stations have an upstream station")
                     };
+                    // Intervals without transition: station 2's Jacobian only (all the local
+                    // iteration uses); station 1's is added for the kept iteration.
+                    let mut station2_only = |regime: Regime, v: &StationVars| {
+                        model.interval_downstream(regime, up, v).map(|d| {
+                            let e = IntervalEquations {
+                                res: d.res,
+                                d1: [[0.0; 5]; 3],
+                                d2: d.d2,
+                            };
+                            downstream = Some(d);
+                            e
+                        })
+                    };
                     match up.regime() {
-                        Regime::Wake | Regime::Turbulent => {
-                            model.interval_from(up.regime(), up, &v2)
-                        }
+                        Regime::Wake | Regime::Turbulent => station2_only(up.regime(), &v2),
                         // Laminar surface so far: check this interval for transition.
                         Regime::Laminar => {
                             let v2t = StationVars { s: cti, ..v2 };
@@ -515,11 +539,7 @@ pub fn remarch_mixed(
                                         transitioned = false;
                                         turbulent = false;
                                     }
-                                    model.interval_from(
-                                        Regime::Laminar,
-                                        up,
-                                        &StationVars { s: n_amp, ..v2 },
-                                    )
+                                    station2_only(Regime::Laminar, &StationVars { s: n_amp, ..v2 })
                                 }
                                 Err(e) => Err(e),
                             }
@@ -535,9 +555,13 @@ pub fn remarch_mixed(
                 Some((_, _, c)) => c,
                 None => s_now,
             };
-            let cached = match junction {
-                Some(j) => CachedEquations::Junction(j),
-                None => CachedEquations::Interval(eq, tr_info.map(|(x, f, _)| (x, f))),
+            let cached = match (junction, downstream) {
+                (Some(j), _) => KeptEquations::Complete(CachedEquations::Junction(j)),
+                (None, Some(d)) => KeptEquations::Downstream(d),
+                (None, None) => KeptEquations::Complete(CachedEquations::Interval(
+                    eq,
+                    tr_info.map(|(x, f, _)| (x, f)),
+                )),
             };
             last = Some((cached, [s_eval, th, ds, u], turbulent != was_turbulent_now));
             let v2 = StationVars {
@@ -648,7 +672,18 @@ pub fn remarch_mixed(
             }
         }
         let sane = th > 0.0 && u > 0.0 && ds.is_finite() && th.is_finite() && u.is_finite();
-        if let (true, Some((eqs, at, false))) = (converged && sane, last) {
+        // The kept equations, completed with station 1's Jacobian if they lack it.
+        let kept = match last {
+            Some((kept, at, false)) if converged && sane => match kept {
+                KeptEquations::Complete(c) => Some((c, at)),
+                KeptEquations::Downstream(d) => upstream
+                    .as_ref()
+                    .and_then(|up| model.complete_interval(up, &d).ok())
+                    .map(|e| (CachedEquations::Interval(e, None), at)),
+            },
+            _ => None,
+        };
+        if let Some((eqs, at)) = kept {
             // Residuals moved linearly to the final local state.
             let s_final = if turbulent { cti } else { n_amp };
             let delta = [s_final - at[0], th - at[1], ds - at[2], u - at[3]];

@@ -4,8 +4,8 @@
 use crate::boundary_layer as bl;
 
 use super::bl_model::{
-    BoundaryLayerModel, IntervalEquations, JunctionEquations, Regime, StationProperties,
-    StationVars, TransitionInterval, UpstreamStation,
+    BoundaryLayerModel, DownstreamEquations, IntervalEquations, JunctionEquations, Regime,
+    StationProperties, StationVars, TransitionInterval, UpstreamStation,
 };
 use super::error::ViscousError;
 
@@ -49,6 +49,27 @@ impl BoundaryLayerModel for XfoilBoundaryLayer {
     ) -> Result<IntervalEquations, ViscousError> {
         self.model
             .interval_from(regime, st1, st2)
+            .map_err(err(usize::MAX))
+    }
+
+    fn interval_downstream(
+        &self,
+        regime: Regime,
+        st1: &UpstreamStation,
+        st2: &StationVars,
+    ) -> Result<DownstreamEquations, ViscousError> {
+        self.model
+            .interval_downstream(regime, st1, st2)
+            .map_err(err(usize::MAX))
+    }
+
+    fn complete_interval(
+        &self,
+        st1: &UpstreamStation,
+        eq: &DownstreamEquations,
+    ) -> Result<IntervalEquations, ViscousError> {
+        self.model
+            .complete_interval(st1, eq)
             .map_err(err(usize::MAX))
     }
 
