@@ -76,8 +76,8 @@ pub struct DownstreamEquations {
     pub d2: [[f64; 5]; 3],
     /// Regime of the interval.
     pub(crate) regime: Regime,
-    /// Station 2 with derivatives with respect to its own variables.
-    pub(crate) station: Station<5>,
+    /// Station 2's values (held fixed when station 1's Jacobian is added).
+    pub(crate) station: Station<0>,
 }
 
 /// Which finite-difference system BLDIF sets up.

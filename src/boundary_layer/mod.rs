@@ -291,7 +291,7 @@ impl BlModel {
                 res,
                 d2,
                 regime,
-                station,
+                station: station.frozen(),
             })
         } else {
             Err(BlError::NonFinite("interval equations"))

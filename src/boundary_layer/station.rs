@@ -161,12 +161,12 @@ impl Station<5> {
 }
 
 impl<const N: usize> Station<N> {
-    /// The same station with every derivative slot zero: a station held fixed while the
-    /// derivatives with respect to another station's variables are taken. The values are
-    /// unchanged, and so is every slot computed from it (each slot of a derivative number is
-    /// computed on its own, so a slot that is zero here is zero in the embedded form too).
-    pub fn frozen(&self) -> Self {
-        let z = |d: Dual<N>| Dual::<N>::constant(d.v);
+    /// The same station's values with `M` zero derivative slots: a station held fixed while
+    /// the derivatives with respect to another station's variables are taken (each slot of a
+    /// derivative number is computed on its own, so a slot that is zero here is zero in the
+    /// embedded form too), or with `M` = 0 its values alone.
+    pub fn frozen<const M: usize>(&self) -> Station<M> {
+        let z = |d: Dual<N>| Dual::<M>::constant(d.v);
         Station {
             x: z(self.x),
             u: z(self.u),

@@ -368,10 +368,7 @@ impl OscillationDamping {
     }
 }
 
-/// Equations of a local iteration of the re-march, kept for the global assembly. (It lives on
-/// the stack for one station; boxing the large variant would cost an allocation per local
-/// iteration.)
-#[allow(clippy::large_enum_variant)]
+/// Equations of a local iteration of the re-march, kept for the global assembly.
 enum KeptEquations {
     /// Complete equations (similarity, junction, transition interval).
     Complete(CachedEquations),
