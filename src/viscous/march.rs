@@ -461,6 +461,8 @@ pub fn remarch_mixed(
         // Damping only where the transition check runs (laminar upstream station), the case it
         // is made for: on separated turbulent stations it steered negative-stall sweeps onto
         // another solution branch than XFOIL's (NACA 23012, Re 5e5, M 0.2, α ≤ −6°).
+        // Hk and its sensitivities at the current (u, θ, δ*), if already known.
+        let mut hk_at_state = None;
         let mut damping = upstream
             .as_ref()
             .is_some_and(|u| u.regime() == Regime::Laminar)
@@ -565,7 +567,9 @@ pub fn remarch_mixed(
                 s: if turbulent { cti } else { n_amp },
                 ..v2
             };
-            let (hk, hk_d) = model.kinematic_shape_factor(&v2);
+            let (hk, hk_d) = hk_at_state
+                .take()
+                .unwrap_or_else(|| model.kinematic_shape_factor(&v2));
             if itbl == 0 {
                 ueref = u;
                 hkref = hk;
@@ -662,6 +666,9 @@ pub fn remarch_mixed(
             });
             if hk_new < hk_floor && hk_d_new[1] > 0.0 {
                 ds += (hk_floor - hk_new) / hk_d_new[1];
+            } else {
+                // Hk does not depend on the shear variable: the next iteration's Hk.
+                hk_at_state = Some((hk_new, hk_d_new));
             }
             if dmax <= params.mixed_mode_tolerance {
                 converged = true;
