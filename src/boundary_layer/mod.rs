@@ -7,6 +7,8 @@
 //!   N or √Cτ, wake gap.
 //! * [`BlModel::interval`] / [`BlModel::similarity`] — the three equations of an interval
 //!   (BLSYS/BLDIF) with Jacobians in the column order (s, θ, δ*, u, ξ).
+//! * [`BlModel::interval_downstream`] / [`BlModel::complete_interval`] — the same equations in
+//!   two parts for a march's local iterations: station 2's Jacobian, then station 1's.
 //! * [`BlModel::amplification_check`] / [`BlModel::transition_interval`] — implicit transition
 //!   inside an interval (TRCHEK2) and the combined laminar + turbulent equations (TRDIF).
 //! * [`BlModel::te_junction`] — first wake station from the two trailing-edge stations (TESYS).
