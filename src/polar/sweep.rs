@@ -6,7 +6,8 @@
 //! start; if it still fails it is kept with `converged = false` and the march continues from the
 //! last converged state, so one bad point does not poison its neighbours. After a few failures
 //! in a row (deep stall) the remaining points of the branch are solved once each, without the
-//! costly recovery, so a sweep's cost stays bounded.
+//! costly recovery, so a sweep's cost stays bounded. A solve that repeats one already done from
+//! the same converged state along the same α path is not redone (see [`AnchorMemo`]).
 
 use super::range::march_order;
 use super::PolarPoint;
@@ -15,7 +16,9 @@ use super::PolarPoint;
 pub trait WarmStartSolver {
     /// Everything needed to resume from a solved point.
     type State: Clone;
-    /// Solve at `alpha_deg`, warm-starting from the current state.
+    /// Solve at `alpha_deg`, warm-starting from the current state. The result and the state
+    /// after it must depend on the current state and `alpha_deg` alone (a sweep reuses the
+    /// outcome of a solve it repeats exactly, see [`AnchorMemo`]).
     fn solve(&mut self, alpha_deg: f64) -> PolarPoint;
     /// Forget the warm-start state: the next solve starts from the inviscid solution.
     fn reset(&mut self);
@@ -86,14 +89,20 @@ fn march<S: WarmStartSolver>(
 ) -> Option<S::State> {
     let mut first_state = None;
     let mut failures_in_a_row = 0;
+    let mut memo = AnchorMemo::default();
     for (k, &i) in order.iter().enumerate() {
         let alpha = alphas[i];
-        let mut point = solver.solve(alpha);
+        // The solver holds the anchor's state here (or none before the first converged point).
+        let mut point = match anchor {
+            Some(_) => memo.solve(solver, &mut Vec::new(), alpha),
+            None => solver.solve(alpha),
+        };
         if !point.converged && failures_in_a_row < params.recover_limit {
-            point = recover(solver, alpha, anchor.as_ref(), params).unwrap_or(point);
+            point = recover(solver, alpha, anchor.as_ref(), params, &mut memo).unwrap_or(point);
         }
         if point.converged {
             failures_in_a_row = 0;
+            memo.clear();
             let state = solver.save();
             if k == 0 {
                 first_state = Some(state.clone());
@@ -111,27 +120,73 @@ fn march<S: WarmStartSolver>(
     first_state
 }
 
+/// Outcomes of the solves done from the current anchor (the last converged state), keyed by
+/// the α path taken from it. A recovery often repeats such a solve exactly: the half step towards
+/// the point after a failed one is that failed point again, from the same converged neighbour.
+/// Solves are deterministic ([`WarmStartSolver::solve`]), so the stored point and end state are
+/// exactly what the repeat would give. Cleared whenever the anchor changes.
+struct AnchorMemo<T> {
+    /// (α path from the anchor as bit patterns, its last point, the state after it).
+    entries: Vec<(Vec<u64>, PolarPoint, T)>,
+}
+
+impl<T> Default for AnchorMemo<T> {
+    fn default() -> Self {
+        Self {
+            entries: Vec::new(),
+        }
+    }
+}
+
+impl<T: Clone> AnchorMemo<T> {
+    /// Forgets every outcome (the anchor changed).
+    fn clear(&mut self) {
+        self.entries.clear();
+    }
+
+    /// Solves `alpha` after the solves of `path` from the anchor (the solver holds the state
+    /// they left), or replays the outcome if this path was solved before; `path` then ends with
+    /// `alpha`.
+    fn solve<S: WarmStartSolver<State = T>>(
+        &mut self,
+        solver: &mut S,
+        path: &mut Vec<u64>,
+        alpha: f64,
+    ) -> PolarPoint {
+        path.push(alpha.to_bits());
+        if let Some((_, point, state)) = self.entries.iter().find(|(p, _, _)| p == path) {
+            solver.restore(state);
+            return *point;
+        }
+        let point = solver.solve(alpha);
+        self.entries.push((path.clone(), point, solver.save()));
+        point
+    }
+}
+
 /// Retry a failed point: sub-steps from the last converged neighbour, then a fresh start.
 fn recover<S: WarmStartSolver>(
     solver: &mut S,
     alpha: f64,
     anchor: Option<&(f64, S::State)>,
     params: &SweepParams,
+    memo: &mut AnchorMemo<S::State>,
 ) -> Option<PolarPoint> {
     if let Some((a0, state)) = anchor {
         for level in 1..=params.substep_levels {
             let n = 1u32 << level;
             solver.restore(state);
+            let mut path = Vec::new();
             let mut ok = true;
             for j in 1..n {
                 let a = a0 + (alpha - a0) * f64::from(j) / f64::from(n);
-                if !solver.solve(a).converged {
+                if !memo.solve(solver, &mut path, a).converged {
                     ok = false;
                     break;
                 }
             }
             if ok {
-                let p = solver.solve(alpha);
+                let p = memo.solve(solver, &mut path, alpha);
                 if p.converged {
                     return Some(p);
                 }
@@ -226,7 +281,8 @@ mod tests {
     fn recovery_stops_after_failures_in_a_row() {
         // Past 2° every point fails; with a limit of 2 only the first two failures get the
         // recovery. Solves: 0° and 1° one each; 2°: 1 + half step 1.5° + 2° + fresh = 4;
-        // 3°: 1 + half step 2° (fails, ends the sub-steps) + fresh = 3; 4°, 5°, 6°: one each.
+        // 3°: 1 + fresh = 2, its half step 2° from 1° being a repeat of 2°'s first solve
+        // (replayed, and it fails, ending the sub-steps); 4°, 5°, 6°: one each.
         let alphas = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0];
         let mut m = Mock {
             state: None,
@@ -242,6 +298,32 @@ mod tests {
         let pts = sweep(&mut m, &alphas, &params);
         assert_eq!(pts.iter().filter(|p| p.converged).count(), 2);
         assert!(pts.iter().all(|p| p.converged == (p.alpha < 2.0)));
-        assert_eq!(m.calls, 12);
+        assert_eq!(m.calls, 11);
+    }
+
+    #[test]
+    fn repeated_solves_from_the_anchor_are_replayed() {
+        // 3° fails; so does 4°, whose recovery starts with a half step to 3° from 2° (a repeat
+        // of 3°'s first solve, replayed) and then quarter steps 2.5° (new), 3° from 2.5° (new,
+        // fails). The result equals that of a solver that repeats every solve.
+        let alphas = [0.0, 1.0, 2.0, 3.0, 4.0];
+        let params = SweepParams {
+            substep_levels: 2,
+            fresh_retry: false,
+            recover_limit: 3,
+        };
+        let mut m = Mock {
+            state: None,
+            max_step: 1.0,
+            bad: vec![3.0],
+            calls: 0,
+        };
+        let pts = sweep(&mut m, &alphas, &params);
+        let conv: Vec<bool> = pts.iter().map(|p| p.converged).collect();
+        assert_eq!(conv, vec![true, true, true, false, false]);
+        // 0°, 1°, 2°: 3. 3°: 1 + half 2.5° + 3° + quarters 2.25°, 2.5° (from 2.25°), 2.75°, 3°
+        // = 7. 4°: 1 + half step 3° replayed + quarters 2.5° (from 2°: replayed) and 3° (from
+        // 2.5°: replayed) = 1.
+        assert_eq!(m.calls, 11);
     }
 }
