@@ -7,7 +7,7 @@
 //! last converged state, so one bad point does not poison its neighbours. After a few failures
 //! in a row (deep stall) the remaining points of the branch are solved once each, without the
 //! costly recovery, so a sweep's cost stays bounded. A solve that repeats one already done from
-//! the same converged state along the same α path is not redone (see [`AnchorMemo`]).
+//! the same converged state along the same α path is not redone: its outcome is replayed.
 
 use super::range::march_order;
 use super::PolarPoint;
@@ -17,8 +17,8 @@ pub trait WarmStartSolver {
     /// Everything needed to resume from a solved point.
     type State: Clone;
     /// Solve at `alpha_deg`, warm-starting from the current state. The result and the state
-    /// after it must depend on the current state and `alpha_deg` alone (a sweep reuses the
-    /// outcome of a solve it repeats exactly, see [`AnchorMemo`]).
+    /// after it must depend on the current state and `alpha_deg` alone (a sweep replays the
+    /// outcome of a solve it would repeat exactly).
     fn solve(&mut self, alpha_deg: f64) -> PolarPoint;
     /// Forget the warm-start state: the next solve starts from the inviscid solution.
     fn reset(&mut self);
