@@ -6,8 +6,7 @@
 use super::amplification::axset_d;
 use super::closures::{cfl_d, cft_d};
 use super::dual::{Dual, NVARS};
-use super::params::Regime;
-use super::params::{BlParams, FlowConstants};
+use super::params::{BlParams, FlowConstants, Regime};
 use super::station::Station;
 
 /// Residuals of the three equations of one interval and their Jacobians.
