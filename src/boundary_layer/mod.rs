@@ -107,6 +107,8 @@ pub struct UpstreamStation {
     seeded: OnceCell<Station>,
     /// Values with one zero derivative slot (the transition check's fixed station 1).
     constant: OnceCell<Station<1>>,
+    // `frozen`, `seeded` and `constant` are all taken from `own`: the closures are evaluated
+    // once per station (values do not depend on the number of derivative slots).
 }
 
 impl UpstreamStation {
@@ -147,8 +149,7 @@ impl UpstreamStation {
     }
 
     pub(crate) fn constant(&self, model: &BlModel) -> &Station<1> {
-        self.constant
-            .get_or_init(|| Station::constant(&self.vars, self.regime, &model.flow, &model.params))
+        self.constant.get_or_init(|| self.own(model).frozen())
     }
 }
 

@@ -458,11 +458,11 @@ pub fn remarch_mixed(
             let p = st.upstream.unwrap_or(k - 1);
             UpstreamStation::new(&state.vars(layout, p), regime)
         });
+        // Hk and its sensitivities at the current (u, θ, δ*), if already known.
+        let mut hk_at_state = None;
         // Damping only where the transition check runs (laminar upstream station), the case it
         // is made for: on separated turbulent stations it steered negative-stall sweeps onto
         // another solution branch than XFOIL's (NACA 23012, Re 5e5, M 0.2, α ≤ −6°).
-        // Hk and its sensitivities at the current (u, θ, δ*), if already known.
-        let mut hk_at_state = None;
         let mut damping = upstream
             .as_ref()
             .is_some_and(|u| u.regime() == Regime::Laminar)
