@@ -78,6 +78,40 @@ fn single_polar_matches_xfoil_and_has_required_columns() {
     assert!((cd / 0.00728 - 1.0).abs() < 0.05, "cd {cd}");
 }
 
+/// `--tolerance` sets the Newton threshold: every point's last RMS change (the `residual`
+/// column) is below it, and a tighter threshold takes more iterations than the default.
+#[test]
+fn tolerance_flag_sets_the_newton_threshold() {
+    let run = |extra: &[&str]| -> Vec<(f64, u32)> {
+        let mut args = vec!["--airfoil", "naca0012", "--re", "1e6", "--alpha", "0:4:1"];
+        args.extend_from_slice(extra);
+        let o = polargen(&args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let text = String::from_utf8(o.stdout).unwrap();
+        let h = text.lines().next().unwrap().to_string();
+        text.lines()
+            .skip(1)
+            .map(|l| {
+                let row: Vec<&str> = l.split(',').collect();
+                assert_eq!(row[col(&h, "converged")], "true", "{l}");
+                (
+                    row[col(&h, "residual")].parse().unwrap(),
+                    row[col(&h, "iterations")].parse().unwrap(),
+                )
+            })
+            .collect()
+    };
+    let default = run(&[]);
+    let tight = run(&["--tolerance", "1e-8"]);
+    assert!(default.iter().all(|&(r, _)| r < 1e-3), "{default:?}");
+    assert!(tight.iter().all(|&(r, _)| r < 1e-8), "{tight:?}");
+    let iterations = |v: &[(f64, u32)]| v.iter().map(|p| p.1).sum::<u32>();
+    assert!(
+        iterations(&tight) > iterations(&default),
+        "{tight:?} {default:?}"
+    );
+}
+
 #[test]
 fn forced_transition_is_reported() {
     let o = polargen(&[
@@ -204,6 +238,9 @@ fn errors_name_the_flag() {
         (&["--xtr", "0.1", "--xtr-top", "0.2"], "--xtr"),
         (&["--ncrit", "0"], "--ncrit 0"),
         (&["--ncrit", "-3"], "--ncrit -3"),
+        (&["--tolerance", "0"], "--tolerance 0"),
+        (&["--tolerance", "1"], "--tolerance 1"),
+        (&["--tolerance", "nan"], "--tolerance NaN"),
         (&["--alpha", "0:4:0"], "step is 0"),
         (&["--alpha", "4:0:1"], "empty"),
         (&["--format", "xls"], "xls"),

@@ -118,6 +118,11 @@ struct PlotPointArgs {
     #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES)]
     panels: usize,
 
+    /// Newton convergence threshold on the RMS relative change of the boundary-layer
+    /// variables (XFOIL uses 1e-4).
+    #[arg(long, default_value_t = ViscousParams::default().tolerance, allow_hyphen_values = true)]
+    tolerance: f64,
+
     /// Output image: FILE.svg or FILE.png.
     #[arg(long, value_name = "FILE")]
     out: PathBuf,
@@ -215,6 +220,11 @@ struct RunArgs {
     /// Number of panel nodes after curvature-based repaneling (XFOIL PANE).
     #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES)]
     panels: usize,
+
+    /// Newton convergence threshold on the RMS relative change of the boundary-layer
+    /// variables (XFOIL uses 1e-4).
+    #[arg(long, default_value_t = ViscousParams::default().tolerance, allow_hyphen_values = true)]
+    tolerance: f64,
 
     /// Worker threads for independent polars (0 = all cores).
     #[arg(long, default_value_t = 0)]
@@ -392,6 +402,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     if !(cli.ncrit.is_finite() && cli.ncrit > 0.0) {
         bail!("--ncrit {}: must be a positive number", cli.ncrit);
     }
+    check_tolerance(cli.tolerance)?;
     let format = match (&cli.format, &cli.out) {
         (Some(f), _) => f.parse::<TableFormat>().context("--format")?,
         (None, Some(path)) => TableFormat::from_path(path).context("--out")?,
@@ -411,6 +422,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     let start = Instant::now();
     let base = ViscousParams {
         ncrit: cli.ncrit,
+        tolerance: cli.tolerance,
         xtr_top,
         xtr_bot,
         ..ViscousParams::default()
@@ -483,6 +495,14 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
             }
             write_stdout(&buf)?;
         }
+    }
+    Ok(())
+}
+
+/// The `--tolerance` flag: a Newton threshold in (0, 1).
+fn check_tolerance(tolerance: f64) -> Result<()> {
+    if !(tolerance > 0.0 && tolerance < 1.0) {
+        bail!("--tolerance {tolerance}: must be a number in (0, 1)");
     }
     Ok(())
 }
@@ -572,6 +592,7 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
     if !(args.ncrit.is_finite() && args.ncrit > 0.0) {
         bail!("--ncrit {}: must be a positive number", args.ncrit);
     }
+    check_tolerance(args.tolerance)?;
     let xtrs = parse_list("xtr", &args.xtr)?;
     if let Some(x) = xtrs.iter().find(|x| !(0.0..=1.0).contains(*x)) {
         bail!("--xtr {x}: the transition location must be in [0, 1] (1 = free)");
@@ -581,6 +602,7 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
     for &xtr in &xtrs {
         let params = ViscousParams {
             ncrit: args.ncrit,
+            tolerance: args.tolerance,
             ..ViscousParams::at(args.re, args.mach, xtr)
         };
         let mut solver = ViscousSolver::new(&foil, params).context("viscous solver")?;

@@ -33,7 +33,14 @@ pub struct ViscousParams {
     pub xtr_bot: f64,
     /// Newton iteration cap per attempt.
     pub max_iterations: u32,
-    /// Convergence threshold on the RMS relative Newton change (XFOIL EPS1 = 1e-4).
+    /// Convergence threshold on the RMS relative Newton change. XFOIL's EPS1 is 1e-4; the
+    /// default here is 1e-3. Newton converges quadratically at this stage, so the change a
+    /// further iteration would make is far smaller: logged over the four default rotor grids,
+    /// its median was 8e-7 and its 99th percentile 5e-5 (largest 9e-4, a slowly converging
+    /// stall point). Against 1e-4, the points of those grids moved by a median |ΔCl| of 1e-8
+    /// (99th percentile 1.5e-5) and |ΔCd|/Cd of 1e-7 (4e-5), except stall points that changed
+    /// branch; the agreement with XFOIL's printed polars is unchanged. The paper's free sweep
+    /// needs 179 Newton iterations instead of 275.
     pub tolerance: f64,
     /// Relaxation and clipping limits of the update (XFOIL UPDATE).
     pub limits: UpdateLimits,
@@ -67,7 +74,7 @@ impl Default for ViscousParams {
             xtr_top: 1.0,
             xtr_bot: 1.0,
             max_iterations: 100,
-            tolerance: 1e-4,
+            tolerance: 1e-3,
             limits: UpdateLimits::default(),
             march: MarchParams::default(),
             remarch_below: 0.0,
