@@ -47,30 +47,12 @@ impl Default for MarchParams {
 /// equally large pivot candidates is taken).
 #[inline]
 fn solve4(mut a: [[f64; 4]; 4], mut b: [f64; 4]) -> Option<[f64; 4]> {
-    for c in 0..4 {
-        let mut p = c;
-        let mut best = a[c][c].abs();
-        for (r, row) in a.iter().enumerate().skip(c + 1) {
-            let v = row[c].abs();
-            if v >= best || v.is_nan() {
-                best = v;
-                p = r;
-            }
-        }
-        if best.is_nan() || best < 1e-300 || best.is_infinite() {
-            return None;
-        }
-        a.swap(c, p);
-        b.swap(c, p);
-        let pivot_row = a[c];
-        for r in c + 1..4 {
-            let f = a[r][c] / pivot_row[c];
-            for k in c..4 {
-                a[r][k] -= f * pivot_row[k];
-            }
-            b[r] -= f * b[c];
-        }
-    }
+    // One column per call with constant indices, so that the matrix stays in registers (a
+    // loop over the columns swapped rows through memory; same operations, same results).
+    eliminate_column::<0>(&mut a, &mut b)?;
+    eliminate_column::<1>(&mut a, &mut b)?;
+    eliminate_column::<2>(&mut a, &mut b)?;
+    eliminate_column::<3>(&mut a, &mut b)?;
     let mut x = [0.0; 4];
     for r in (0..4).rev() {
         let mut s = 0.0;
@@ -80,6 +62,41 @@ fn solve4(mut a: [[f64; 4]; 4], mut b: [f64; 4]) -> Option<[f64; 4]> {
         x[r] = (b[r] - s) / a[r][r];
     }
     x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// Step `C` of [`solve4`]: moves the largest entry of column `C` at or below the diagonal (the
+/// last of equal ones, or a NaN) onto the diagonal and eliminates the column below it. `None`
+/// if that pivot is zero, infinite or NaN.
+#[inline(always)]
+fn eliminate_column<const C: usize>(a: &mut [[f64; 4]; 4], b: &mut [f64; 4]) -> Option<()> {
+    let mut p = C;
+    let mut best = a[C][C].abs();
+    for (r, row) in a.iter().enumerate().skip(C + 1) {
+        let v = row[C].abs();
+        if v >= best || v.is_nan() {
+            best = v;
+            p = r;
+        }
+    }
+    if best.is_nan() || best < 1e-300 || best.is_infinite() {
+        return None;
+    }
+    for r in C + 1..4 {
+        if r == p {
+            a.swap(C, r);
+            b.swap(C, r);
+        }
+    }
+    let pivot_row = a[C];
+    let pivot_rhs = b[C];
+    for r in C + 1..4 {
+        let f = a[r][C] / pivot_row[C];
+        for k in C..4 {
+            a[r][k] -= f * pivot_row[k];
+        }
+        b[r] -= f * pivot_rhs;
+    }
+    Some(())
 }
 
 /// Local equations of a station as a function of its own variables.
@@ -737,4 +754,33 @@ pub fn remarch_mixed(
         state.turbulent[k] = turbulent || wake;
     }
     cache
+}
+
+#[cfg(test)]
+mod tests {
+    use super::solve4;
+
+    /// A system that needs row exchanges (zero leading entries) is solved to round-off; a
+    /// singular or NaN system gives `None`.
+    #[test]
+    fn solve4_pivots_and_rejects_singular_systems() {
+        let a = [
+            [0.0, 2.0, 1.0, -1.0],
+            [0.0, 0.0, 3.0, 2.0],
+            [4.0, 1.0, 0.0, 1.0],
+            [1.0, -1.0, 2.0, 0.0],
+        ];
+        let x = [1.0, -2.0, 0.5, 3.0];
+        let b: [f64; 4] = std::array::from_fn(|r| (0..4).map(|c| a[r][c] * x[c]).sum());
+        let got = solve4(a, b).unwrap();
+        for (g, e) in got.iter().zip(&x) {
+            assert!((g - e).abs() < 1e-14, "{got:?}");
+        }
+        let mut singular = a;
+        singular[3] = singular[2];
+        assert!(solve4(singular, b).is_none());
+        let mut nan = a;
+        nan[1][2] = f64::NAN;
+        assert!(solve4(nan, b).is_none());
+    }
 }
