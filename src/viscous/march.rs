@@ -66,7 +66,7 @@ fn solve4(mut a: [[f64; 4]; 4], mut b: [f64; 4]) -> Option<[f64; 4]> {
 
 /// Step `C` of [`solve4`]: moves the largest entry of column `C` at or below the diagonal (the
 /// last of equal ones, or a NaN) onto the diagonal and eliminates the column below it. `None`
-/// if that pivot is zero, infinite or NaN.
+/// if that pivot is zero (below 1e-300), infinite or NaN.
 #[inline(always)]
 fn eliminate_column<const C: usize>(a: &mut [[f64; 4]; 4], b: &mut [f64; 4]) -> Option<()> {
     let mut p = C;
