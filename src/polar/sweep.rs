@@ -4,7 +4,9 @@
 //! start point and marches down — the way XFOIL users run polars. A point that fails is retried
 //! by sub-stepping from the last converged neighbour (half, then quarter steps), then from a fresh
 //! start; if it still fails it is kept with `converged = false` and the march continues from the
-//! last converged state, so one bad point does not poison its neighbours. After a few failures
+//! last converged state, so one bad point does not poison its neighbours. A start point that
+//! fails (it has no converged neighbour yet) is retried the same way from the first point above
+//! it that converges, and the march down then starts from it. After a few failures
 //! in a row (deep stall) the remaining points of the branch are solved once each, without the
 //! costly recovery, so a sweep's cost stays bounded. A solve that repeats one already done from
 //! the same converged state along the same α path is not redone: its outcome is replayed.
@@ -62,7 +64,18 @@ pub fn sweep<S: WarmStartSolver>(
     let mut out: Vec<Option<PolarPoint>> = vec![None; alphas.len()];
     let (up, down) = march_order(alphas);
     solver.reset();
-    let start_state = march(solver, alphas, &up, None, params, &mut out);
+    let start_state = match march(solver, alphas, &up, None, params, &mut out) {
+        Some((0, state)) => Some(state),
+        // The start point failed (it had no converged neighbour to start from): retry it warm
+        // from the first converged point above it, with the usual recovery.
+        Some((k, state)) => retry_start(solver, alphas[up[0]], (alphas[up[k]], state), params).map(
+            |(point, state)| {
+                out[up[0]] = Some(point);
+                state
+            },
+        ),
+        None => None,
+    };
     if !down.is_empty() {
         // The downward branch starts from the start point's state (if it converged).
         let anchor = start_state.map(|s| (alphas[up[0]], s));
@@ -77,8 +90,26 @@ pub fn sweep<S: WarmStartSolver>(
         .collect()
 }
 
+/// Retries a failed start point at `alpha` from the converged point `from` = (α, state): a warm
+/// solve, then the sub-steps and fresh start of [`recover`]. The point and the state after it
+/// if it converged.
+fn retry_start<S: WarmStartSolver>(
+    solver: &mut S,
+    alpha: f64,
+    from: (f64, S::State),
+    params: &SweepParams,
+) -> Option<(PolarPoint, S::State)> {
+    let mut memo = AnchorMemo::default();
+    solver.restore(&from.1);
+    let mut point = memo.solve(solver, &mut Vec::new(), alpha);
+    if !point.converged {
+        point = recover(solver, alpha, Some(&from), params, &mut memo)?;
+    }
+    point.converged.then(|| (point, solver.save()))
+}
+
 /// March through `order`; `anchor` is the last converged (α, state) before the first point.
-/// Returns the state at the first point of `order` if it converged.
+/// Returns the position in `order` and the state of the first point that converged.
 fn march<S: WarmStartSolver>(
     solver: &mut S,
     alphas: &[f64],
@@ -86,7 +117,7 @@ fn march<S: WarmStartSolver>(
     mut anchor: Option<(f64, S::State)>,
     params: &SweepParams,
     out: &mut [Option<PolarPoint>],
-) -> Option<S::State> {
+) -> Option<(usize, S::State)> {
     let mut first_state = None;
     let mut failures_in_a_row = 0;
     let mut memo = AnchorMemo::default();
@@ -104,8 +135,8 @@ fn march<S: WarmStartSolver>(
             failures_in_a_row = 0;
             memo.clear();
             let state = solver.save();
-            if k == 0 {
-                first_state = Some(state.clone());
+            if first_state.is_none() {
+                first_state = Some((k, state.clone()));
             }
             anchor = Some((alpha, state));
         } else {
@@ -213,6 +244,8 @@ mod tests {
         state: Option<f64>,
         max_step: f64,
         bad: Vec<f64>,
+        /// α where a fresh start (no state) fails.
+        bad_fresh: Vec<f64>,
         calls: usize,
     }
 
@@ -221,7 +254,10 @@ mod tests {
         fn solve(&mut self, alpha: f64) -> PolarPoint {
             self.calls += 1;
             let from = self.state.unwrap_or(0.0);
-            let ok = (alpha - from).abs() <= self.max_step + 1e-12 && !self.bad.contains(&alpha);
+            let fresh_fails = self.state.is_none() && self.bad_fresh.contains(&alpha);
+            let ok = (alpha - from).abs() <= self.max_step + 1e-12
+                && !self.bad.contains(&alpha)
+                && !fresh_fails;
             self.state = if ok { Some(alpha) } else { Some(f64::NAN) };
             PolarPoint {
                 alpha,
@@ -256,6 +292,7 @@ mod tests {
             state: None,
             max_step: 1.0,
             bad: vec![],
+            bad_fresh: vec![],
             calls: 0,
         };
         let pts = sweep(&mut m, &alphas, &SweepParams::default());
@@ -270,6 +307,7 @@ mod tests {
             state: None,
             max_step: 2.0,
             bad: vec![2.0, -1.0],
+            bad_fresh: vec![],
             calls: 0,
         };
         let pts = sweep(&mut m, &alphas, &SweepParams::default());
@@ -288,6 +326,7 @@ mod tests {
             state: None,
             max_step: 1.0,
             bad: vec![2.0, 3.0, 4.0, 5.0, 6.0],
+            bad_fresh: vec![],
             calls: 0,
         };
         let params = SweepParams {
@@ -316,6 +355,7 @@ mod tests {
             state: None,
             max_step: 1.0,
             bad: vec![3.0],
+            bad_fresh: vec![],
             calls: 0,
         };
         let pts = sweep(&mut m, &alphas, &params);
@@ -325,5 +365,22 @@ mod tests {
         // = 7. 4°: 1 + half step 3° replayed + quarters 2.5° (from 2°: replayed) and 3° (from
         // 2.5°: replayed) = 1.
         assert_eq!(m.calls, 11);
+    }
+
+    #[test]
+    fn failed_start_point_is_retried_from_its_converged_neighbour() {
+        // Fresh starts fail at 0° and −1°. 0° then converges warm from 1°, and the march down
+        // starts from it; before, 0° stayed failed and −1° (fresh) failed too.
+        let alphas = [-2.0, -1.0, 0.0, 1.0, 2.0];
+        let mut m = Mock {
+            state: None,
+            max_step: 1.0,
+            bad: vec![],
+            bad_fresh: vec![0.0, -1.0],
+            calls: 0,
+        };
+        let pts = sweep(&mut m, &alphas, &SweepParams::default());
+        assert!(pts.iter().all(|p| p.converged), "{pts:?}");
+        assert_eq!(pts.iter().map(|p| p.alpha).collect::<Vec<_>>(), alphas);
     }
 }
