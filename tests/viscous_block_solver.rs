@@ -120,3 +120,30 @@ fn invert3_inverts_and_rejects_singular() {
     let singular = [[1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [0.0, 1.0, 1.0]];
     assert!(invert3(&singular).is_none());
 }
+
+/// A regular block whose columns differ by orders of magnitude is inverted, not rejected as
+/// singular: the similarity station of the 8-H-12 at Re 2e6, M 0.2, α −3° with the stagnation
+/// point 2e-7 from a node (columns of 1, 3e5 and 5e9). Rejecting it failed that point in every
+/// retry, where XFOIL converges (Cl −0.2407). A nearly singular block with the same scales is
+/// still rejected.
+#[test]
+fn invert3_accepts_badly_scaled_regular_blocks() {
+    let a = [
+        [1.0, 0.0, 0.0],
+        [0.0, -697_036.283_242_453_6, 7_214_639_720.909_253],
+        [0.0, 926_018.947_203_428_3, -5_341_905_754.138_013],
+    ];
+    let ai = invert3(&a).expect("regular, only badly scaled");
+    for (r, row) in a.iter().enumerate() {
+        for c in 0..3 {
+            let s: f64 = row.iter().zip(&ai).map(|(x, ai_row)| x * ai_row[c]).sum();
+            let e = if r == c { 1.0 } else { 0.0 };
+            assert!((s - e).abs() < 1e-12, "A·A⁻¹[{r}][{c}] = {s}");
+        }
+    }
+    // Column 2 made parallel to column 1 up to 1e-17 relative: singular to round-off.
+    let mut nearly = a;
+    let f = a[1][2] / a[1][1];
+    nearly[2][2] = a[2][1] * f * (1.0 + 1e-17);
+    assert!(invert3(&nearly).is_none());
+}

@@ -326,18 +326,24 @@ impl<'a> BlockSystem<'a> {
     }
 }
 
-/// Inverse of a 3×3 matrix by cofactors; `None` if it is (numerically) singular.
+/// Inverse of a 3×3 matrix by cofactors; `None` if it is (numerically) singular: its
+/// determinant is lost to cancellation, at most 1e-15 of the sum of the magnitudes of the six
+/// products it is made of. That measure does not change when rows or columns are scaled, so a
+/// block whose columns differ by orders of magnitude (the similarity station with the
+/// stagnation point almost on a node: columns of 1, 1e5 and 1e9) is not mistaken for a singular
+/// one.
 pub fn invert3(a: &Block3) -> Option<Block3> {
     let c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1];
     let c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
     let c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
     let det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
-    let scale = a
-        .iter()
-        .flatten()
-        .fold(0.0_f64, |s, v| s.max(v.abs()))
-        .max(f64::MIN_POSITIVE);
-    if !det.is_finite() || det.abs() <= 1e-14 * scale * scale * scale {
+    let terms = (a[0][0] * a[1][1] * a[2][2]).abs()
+        + (a[0][0] * a[1][2] * a[2][1]).abs()
+        + (a[0][1] * a[1][2] * a[2][0]).abs()
+        + (a[0][1] * a[1][0] * a[2][2]).abs()
+        + (a[0][2] * a[1][0] * a[2][1]).abs()
+        + (a[0][2] * a[1][1] * a[2][0]).abs();
+    if !det.is_finite() || det.abs() <= 1e-15 * terms {
         return None;
     }
     let d = 1.0 / det;
