@@ -106,17 +106,21 @@ fn mass_terms_merge_rows_and_expand_to_v() {
     assert_eq!(a[(3, 2)], 0.0);
 }
 
+/// A·A⁻¹ is the identity to `tol`.
+fn assert_inverse(a: &[[f64; 3]; 3], ai: &[[f64; 3]; 3], tol: f64) {
+    for (r, row) in a.iter().enumerate() {
+        for c in 0..3 {
+            let s: f64 = row.iter().zip(ai).map(|(x, ai_row)| x * ai_row[c]).sum();
+            let e = if r == c { 1.0 } else { 0.0 };
+            assert!((s - e).abs() < tol, "A·A⁻¹[{r}][{c}] = {s}");
+        }
+    }
+}
+
 #[test]
 fn invert3_inverts_and_rejects_singular() {
     let a = [[2.0, 1.0, 0.5], [0.3, 3.0, -1.0], [1.0, -0.5, 4.0]];
-    let ai = invert3(&a).expect("regular");
-    for (r, row) in a.iter().enumerate() {
-        for c in 0..3 {
-            let s: f64 = row.iter().zip(&ai).map(|(x, ai_row)| x * ai_row[c]).sum();
-            let e = if r == c { 1.0 } else { 0.0 };
-            assert!((s - e).abs() < 1e-14, "A·A⁻¹[{r}][{c}] = {s}");
-        }
-    }
+    assert_inverse(&a, &invert3(&a).expect("regular"), 1e-14);
     let singular = [[1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [0.0, 1.0, 1.0]];
     assert!(invert3(&singular).is_none());
 }
@@ -133,14 +137,7 @@ fn invert3_accepts_badly_scaled_regular_blocks() {
         [0.0, -697_036.283_242_453_6, 7_214_639_720.909_253],
         [0.0, 926_018.947_203_428_3, -5_341_905_754.138_013],
     ];
-    let ai = invert3(&a).expect("regular, only badly scaled");
-    for (r, row) in a.iter().enumerate() {
-        for c in 0..3 {
-            let s: f64 = row.iter().zip(&ai).map(|(x, ai_row)| x * ai_row[c]).sum();
-            let e = if r == c { 1.0 } else { 0.0 };
-            assert!((s - e).abs() < 1e-12, "A·A⁻¹[{r}][{c}] = {s}");
-        }
-    }
+    assert_inverse(&a, &invert3(&a).expect("regular, only badly scaled"), 1e-12);
     // Column 2 made parallel to column 1 up to 1e-17 relative: singular to round-off.
     let mut nearly = a;
     let f = a[1][2] / a[1][1];
