@@ -153,20 +153,28 @@ impl UpstreamStation {
     }
 }
 
-/// Station 1 evaluated with the closures of `regime` (`up` itself, or a copy stored in
-/// `other` if `up` was built for another regime), after checking both stations and that the
-/// interval advances.
+/// Station 1 evaluated with the closures of `regime`: `up` itself, or a copy stored in `other`
+/// if `up` was built for another regime.
+fn in_regime<'a>(
+    regime: Regime,
+    up: &'a UpstreamStation,
+    other: &'a mut Option<UpstreamStation>,
+) -> &'a UpstreamStation {
+    if up.regime == regime {
+        up
+    } else {
+        other.insert(UpstreamStation::new(&up.vars, regime))
+    }
+}
+
+/// [`in_regime`] after checking both stations and that the interval advances.
 fn checked_upstream<'a>(
     regime: Regime,
     up: &'a UpstreamStation,
     other: &'a mut Option<UpstreamStation>,
     v2: &StationVars,
 ) -> Result<&'a UpstreamStation, BlError> {
-    let up = if up.regime == regime {
-        up
-    } else {
-        other.insert(UpstreamStation::new(&up.vars, regime))
-    };
+    let up = in_regime(regime, up, other);
     up.valid.clone()?;
     validate(v2, regime)?;
     check_advance(&up.vars, v2)?;
@@ -309,13 +317,8 @@ impl BlModel {
         up: &UpstreamStation,
         eq: &DownstreamEquations,
     ) -> Result<IntervalEquations, BlError> {
-        let other;
-        let up = if up.regime == eq.regime {
-            up
-        } else {
-            other = UpstreamStation::new(&up.vars, eq.regime);
-            &other
-        };
+        let mut other = None;
+        let up = in_regime(eq.regime, up, &mut other);
         let r = bldif(
             DiffKind::of(eq.regime),
             up.own(self),

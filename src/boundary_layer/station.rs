@@ -99,7 +99,7 @@ impl Station {
     ) -> Self {
         match offset {
             Some(offset) => Station::own(v, regime, fc, p).embed(offset),
-            None => Station::<5>::constant(v, regime, fc, p).embed(0),
+            None => Station::constant(v, regime, fc, p),
         }
     }
 }
