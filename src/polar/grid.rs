@@ -1,12 +1,13 @@
 //! Many polars at once: one warm-started sweep per (Re, M) node, run in parallel.
 //!
-//! Each node gets its own solver (no shared mutable state), so the points of a node do not
-//! depend on which thread ran it or in which order: the output is identical for any thread
-//! count.
+//! Each node gets its own two solvers (no shared mutable state): one for the upward α branch
+//! and one for the downward branch, which run in parallel once the start point has converged
+//! ([`sweep_split`]). The points of a node do not depend on which thread ran them or in which
+//! order: the output is identical for any thread count.
 
 use rayon::prelude::*;
 
-use super::sweep::{sweep, SweepParams, WarmStartSolver};
+use super::sweep::{sweep_split, SweepParams, WarmStartSolver};
 use super::PolarPoint;
 
 /// One computed polar of a grid.
@@ -33,7 +34,8 @@ pub fn run_grid<S, E, F, P>(
     on_polar_done: P,
 ) -> Result<Vec<GridPolar>, E>
 where
-    S: WarmStartSolver,
+    S: WarmStartSolver + Send,
+    S::State: Send,
     E: Send,
     F: Fn(f64, f64) -> Result<S, E> + Sync,
     P: Fn(&GridPolar) + Sync,
@@ -43,11 +45,14 @@ where
             .par_iter()
             .with_max_len(1)
             .map(|&(re, mach)| {
+                // A second solver lets the node's two α branches run in parallel too, so that
+                // the last polars of a grid do not leave a core idle.
                 let mut solver = make_solver(re, mach)?;
+                let second = make_solver(re, mach)?;
                 let polar = GridPolar {
                     re,
                     mach,
-                    points: sweep(&mut solver, alphas, params),
+                    points: sweep_split(&mut solver, Some(second), alphas, params),
                 };
                 on_polar_done(&polar);
                 Ok(polar)

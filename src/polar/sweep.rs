@@ -56,35 +56,99 @@ impl Default for SweepParams {
 }
 
 /// Solve every α in `alphas` and return the points in the order of `alphas`.
-pub fn sweep<S: WarmStartSolver>(
+pub fn sweep<S>(solver: &mut S, alphas: &[f64], params: &SweepParams) -> Vec<PolarPoint>
+where
+    S: WarmStartSolver + Send,
+    S::State: Send,
+{
+    sweep_split(solver, None, alphas, params)
+}
+
+/// [`sweep`] with an optional second solver of the same condition. Once the start point has
+/// converged, the upward branch continues on `solver` while the downward branch runs on
+/// `second` (restored to the start point's state) in parallel (`rayon::join`). The points are
+/// the same as [`sweep`]'s: each branch depends on the start point's state alone
+/// ([`WarmStartSolver::solve`]). Without `second`, or when the start point failed (the
+/// downward branch then depends on the upward one), the branches run one after the other.
+pub fn sweep_split<S>(
     solver: &mut S,
+    second: Option<S>,
     alphas: &[f64],
     params: &SweepParams,
-) -> Vec<PolarPoint> {
+) -> Vec<PolarPoint>
+where
+    S: WarmStartSolver + Send,
+    S::State: Send,
+{
     let mut out: Vec<Option<PolarPoint>> = vec![None; alphas.len()];
     let (up, down) = march_order(alphas);
+    if up.is_empty() {
+        return Vec::new();
+    }
     solver.reset();
-    let start_state = match march(solver, alphas, &up, None, params, &mut out) {
-        Some((0, state)) => Some(state),
+    let start = (up[0], &up[1..]);
+    let start_state = match march(solver, alphas, &up[..1], None, 0, params, &mut out) {
+        Some((_, state)) => {
+            let anchor = (alphas[start.0], state);
+            match second {
+                Some(mut other) if !down.is_empty() => {
+                    other.restore(&anchor.1);
+                    let mut out_down: Vec<Option<PolarPoint>> = vec![None; alphas.len()];
+                    let anchor_down = anchor.clone();
+                    rayon::join(
+                        || march(solver, alphas, start.1, Some(anchor), 0, params, &mut out),
+                        || {
+                            march(
+                                &mut other,
+                                alphas,
+                                &down,
+                                Some(anchor_down),
+                                0,
+                                params,
+                                &mut out_down,
+                            )
+                        },
+                    );
+                    for &i in &down {
+                        out[i] = out_down[i];
+                    }
+                    return collect(out);
+                }
+                _ => {
+                    let state = anchor.1.clone();
+                    march(solver, alphas, start.1, Some(anchor), 0, params, &mut out);
+                    Some(state)
+                }
+            }
+        }
         // The start point failed (it had no converged neighbour to start from): retry it warm
         // from the first converged point above it, with the usual recovery.
-        Some((k, state)) => retry_start(solver, alphas[up[0]], (alphas[up[k]], state), params).map(
-            |(point, state)| {
-                out[up[0]] = Some(point);
-                state
-            },
-        ),
-        None => None,
+        None => match march(solver, alphas, start.1, None, 1, params, &mut out) {
+            Some((k, state)) => {
+                retry_start(solver, alphas[start.0], (alphas[start.1[k]], state), params).map(
+                    |(point, state)| {
+                        out[start.0] = Some(point);
+                        state
+                    },
+                )
+            }
+            None => None,
+        },
     };
     if !down.is_empty() {
         // The downward branch starts from the start point's state (if it converged).
-        let anchor = start_state.map(|s| (alphas[up[0]], s));
+        let anchor = start_state.map(|s| (alphas[start.0], s));
         match &anchor {
             Some((_, s)) => solver.restore(s),
             None => solver.reset(),
         }
-        march(solver, alphas, &down, anchor, params, &mut out);
+        march(solver, alphas, &down, anchor, 0, params, &mut out);
     }
+    collect(out)
+}
+
+/// The points of a sweep in the order of its α values.
+fn collect(out: Vec<Option<PolarPoint>>) -> Vec<PolarPoint> {
     out.into_iter()
         .map(|p| p.expect("every alpha visited once"))
         .collect()
@@ -108,18 +172,20 @@ fn retry_start<S: WarmStartSolver>(
     point.converged.then(|| (point, solver.save()))
 }
 
-/// March through `order`; `anchor` is the last converged (α, state) before the first point.
-/// Returns the position in `order` and the state of the first point that converged.
+/// March through `order`; `anchor` is the last converged (α, state) before the first point,
+/// and `failures_in_a_row` the number of failed points just before it (for
+/// [`SweepParams::recover_limit`]). Returns the position in `order` and the state of the first
+/// point that converged.
 fn march<S: WarmStartSolver>(
     solver: &mut S,
     alphas: &[f64],
     order: &[usize],
     mut anchor: Option<(f64, S::State)>,
+    mut failures_in_a_row: u32,
     params: &SweepParams,
     out: &mut [Option<PolarPoint>],
 ) -> Option<(usize, S::State)> {
     let mut first_state = None;
-    let mut failures_in_a_row = 0;
     let mut memo = AnchorMemo::default();
     for (k, &i) in order.iter().enumerate() {
         let alpha = alphas[i];
@@ -261,7 +327,8 @@ mod tests {
             self.state = if ok { Some(alpha) } else { Some(f64::NAN) };
             PolarPoint {
                 alpha,
-                cl: 0.1 * alpha,
+                // Depends on the state solved from, so that a sweep's path shows in its points.
+                cl: 0.1 * alpha + if from.is_nan() { -1.0 } else { 0.01 * from },
                 cd: 0.01,
                 cdp: 0.005,
                 cdf: 0.005,
@@ -281,6 +348,33 @@ mod tests {
         }
         fn restore(&mut self, s: &Self::State) {
             self.state = *s;
+        }
+    }
+
+    /// The split sweep (the downward branch on a second solver, in parallel) gives the points
+    /// of the sequential sweep, with the start point converged or failed.
+    #[test]
+    fn split_sweep_gives_the_sequential_points() {
+        // The start point (nearest 0°) is 0.25°, not the 0° a fresh mock starts from.
+        let alphas: Vec<f64> = (-8..=10).map(|a| f64::from(a) * 0.5 + 0.25).collect();
+        for (bad, bad_fresh) in [
+            (vec![], vec![]),
+            (vec![1.75, 2.25, -1.75, -2.25, -2.75, -3.25], vec![]),
+            (vec![3.25], vec![0.25]),
+        ] {
+            let mock = || Mock {
+                state: None,
+                max_step: 0.6,
+                bad: bad.clone(),
+                bad_fresh: bad_fresh.clone(),
+                calls: 0,
+            };
+            let params = SweepParams::default();
+            let sequential = sweep(&mut mock(), &alphas, &params);
+            let split = sweep_split(&mut mock(), Some(mock()), &alphas, &params);
+            assert_eq!(split, sequential);
+            assert_eq!(sequential.len(), alphas.len());
+            assert_eq!(sequential.iter().any(|p| !p.converged), !bad.is_empty());
         }
     }
 
