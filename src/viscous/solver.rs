@@ -50,6 +50,15 @@ pub struct ViscousParams {
     /// The mixed-mode re-march before each Newton iteration (XFOIL MRCHDU) is skipped once the
     /// RMS relative Newton change is below this value (0 = always re-march, as XFOIL).
     pub remarch_below: f64,
+    /// In warm-started attempts, the re-march starts turbulent and wake stations from their
+    /// upstream station's corrections ([`MarchParams::carried_correction_limit`]) after a Newton
+    /// step whose RMS relative change was below this value. After larger steps (the first
+    /// iteration of an attempt, and the wandering iterations of hard points) and in fresh
+    /// starts, XFOIL's plain start is kept: with the carried start there too, hard points at
+    /// Re 2.5e5 (NACA 8-H-12 xtr 0.07, M 0.2, α 12–18°; NACA 23012 free, M 0.3, α 11–16°)
+    /// wandered onto a branch with 6–8 % less lift than XFOIL's, which they had followed, and
+    /// the fresh start of the 8-H-12 at Re 5e5, M 0.3, α 0° no longer converged.
+    pub carry_corrections_below: f64,
     /// Lowest accepted pressure (form) drag cd − cdf. A Newton-converged state whose
     /// Squire–Young drag lies further below its skin-friction drag has negative form drag: a
     /// spurious solution branch (seen in negative stall), reported as not converged so that a
@@ -79,6 +88,7 @@ impl Default for ViscousParams {
             limits: UpdateLimits::default(),
             march: MarchParams::default(),
             remarch_below: 0.0,
+            carry_corrections_below: 1.0,
             min_pressure_drag: -2e-4,
             fresh_retry: true,
             exploded_step: 1e6,
@@ -387,6 +397,7 @@ impl ViscousSolver {
     fn attempt(&self, alpha_deg: f64, warm: Option<WarmState>) -> Result<Attempt, ViscousError> {
         let n_af = self.panels.geometry.n_airfoil;
         let q_inv = self.panels.speeds(alpha_deg);
+        let warm_started = warm.is_some();
         // The stagnation point of a warm start is where the warm state's viscous speed changes
         // sign (XFOIL VISCAL: GAMQV then STFIND), so that the remapped state and its edge speeds
         // agree; the Newton iterations then move it with the solution (STMOVE below).
@@ -430,6 +441,7 @@ impl ViscousSolver {
                     &mut state,
                     xi_forced,
                     turbulent_fraction,
+                    warm_started && residual < self.params.carry_corrections_below,
                     self.ante,
                     &self.params.march,
                 )
