@@ -86,17 +86,18 @@ where
         return Vec::new();
     }
     solver.reset();
-    let start = (up[0], &up[1..]);
+    // The start point (the α nearest 0°) and the rest of the upward branch.
+    let (start, rest) = (up[0], &up[1..]);
     let start_state = match march(solver, alphas, &up[..1], None, 0, params, &mut out) {
         Some((_, state)) => {
-            let anchor = (alphas[start.0], state);
+            let anchor = (alphas[start], state);
             match second {
                 Some(mut other) if !down.is_empty() => {
                     other.restore(&anchor.1);
                     let mut out_down: Vec<Option<PolarPoint>> = vec![None; alphas.len()];
                     let anchor_down = anchor.clone();
                     rayon::join(
-                        || march(solver, alphas, start.1, Some(anchor), 0, params, &mut out),
+                        || march(solver, alphas, rest, Some(anchor), 0, params, &mut out),
                         || {
                             march(
                                 &mut other,
@@ -116,18 +117,18 @@ where
                 }
                 _ => {
                     let state = anchor.1.clone();
-                    march(solver, alphas, start.1, Some(anchor), 0, params, &mut out);
+                    march(solver, alphas, rest, Some(anchor), 0, params, &mut out);
                     Some(state)
                 }
             }
         }
         // The start point failed (it had no converged neighbour to start from): retry it warm
         // from the first converged point above it, with the usual recovery.
-        None => match march(solver, alphas, start.1, None, 1, params, &mut out) {
+        None => match march(solver, alphas, rest, None, 1, params, &mut out) {
             Some((k, state)) => {
-                retry_start(solver, alphas[start.0], (alphas[start.1[k]], state), params).map(
+                retry_start(solver, alphas[start], (alphas[rest[k]], state), params).map(
                     |(point, state)| {
-                        out[start.0] = Some(point);
+                        out[start] = Some(point);
                         state
                     },
                 )
@@ -137,7 +138,7 @@ where
     };
     if !down.is_empty() {
         // The downward branch starts from the start point's state (if it converged).
-        let anchor = start_state.map(|s| (alphas[start.0], s));
+        let anchor = start_state.map(|s| (alphas[start], s));
         match &anchor {
             Some((_, s)) => solver.restore(s),
             None => solver.reset(),
