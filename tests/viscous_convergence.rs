@@ -279,3 +279,27 @@ fn step_from_a_near_singular_system_is_not_repeated() {
         p.cd
     );
 }
+
+#[test]
+fn fallback_chain_does_not_explode_the_newton_step() {
+    // 8-H-12, Re 1e6, M 0.3, sweep 0° → −3.5°: at −2.5° (from −2°) the stagnation point moves
+    // by one node in the first iteration, a laminar bubble near the leading edge on the lower
+    // surface then transitions one station earlier in the re-march, the next station cannot
+    // follow from H ≈ 9.6 and falls back, and with XFOIL's fallback (extrapolation from the
+    // extrapolated neighbour) all 63 stations after it did too. The Newton step at that state
+    // exploded (RMS change 1e47) and the point took 18–20 iterations, −3.5° 14. With the
+    // stations of such a chain keeping the Newton step's state: 5 and 6. XFOIL 6.99, same α
+    // path: Cl −0.1735 / Cd 0.00988 at −2.5°, −0.2916 / 0.01116 at −3.5°.
+    let points = run(1e6, 0.3, &range(-3.5, 0.0, 0.5), false);
+    for (alpha, cl, cd) in [(-2.5, -0.1735, 0.00988), (-3.5, -0.2916, 0.01116)] {
+        let p = points.iter().find(|p| p.alpha == alpha).unwrap();
+        assert!(p.converged, "{alpha}: not converged");
+        assert!(p.iterations <= 8, "{alpha}: {} iterations", p.iterations);
+        assert!(
+            (p.cl - cl).abs() <= 1e-3 && (p.cd / cd - 1.0).abs() <= 0.01,
+            "{alpha}: cl {} cd {} vs XFOIL {cl} {cd}",
+            p.cl,
+            p.cd
+        );
+    }
+}
