@@ -417,8 +417,8 @@ enum KeptEquations {
 /// has a solution growing ≈ 7× per station downstream: an "exploded" step of RMS change up to
 /// 1e48, followed by 15–60 wandering iterations. Those stations keep the state the Newton step
 /// gave them. On the four default rotor grids this took the exploded attempts from 13–18 % of
-/// the Newton iterations to ≈ 1 % and the time by ≈ 9 %; 7 fewer negative- or post-stall
-/// points converged (none in the normal range).
+/// the Newton iterations to 1–3 % and the modelled time down by ≈ 9 %; 7 fewer negative- or
+/// post-stall points converged (none in the normal range).
 ///
 /// `turbulent_fraction` is, per surface (upper, lower), the fraction of the transition interval
 /// downstream of the transition point for the regimes stored in `state`
