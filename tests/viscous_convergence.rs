@@ -51,8 +51,6 @@ fn run_foil(
     alphas: &[f64],
     recover: bool,
 ) -> Vec<PolarPoint> {
-    let params = ViscousParams::at(re, mach, xtr);
-    let mut solver = ViscousSweep::new(foil, params).unwrap();
     let sweep_params = if recover {
         SweepParams::default()
     } else {
@@ -62,7 +60,28 @@ fn run_foil(
             recover_limit: 0,
         }
     };
-    sweep(&mut solver, alphas, &sweep_params)
+    run_params(
+        foil,
+        ViscousParams::at(re, mach, xtr),
+        alphas,
+        &sweep_params,
+    )
+}
+
+/// A sweep with the given solver parameters.
+fn run_params(
+    foil: &Airfoil,
+    params: ViscousParams,
+    alphas: &[f64],
+    sweep_params: &SweepParams,
+) -> Vec<PolarPoint> {
+    let mut solver = ViscousSweep::new(foil, params).unwrap();
+    sweep(&mut solver, alphas, sweep_params)
+}
+
+/// Newton iterations of a sweep's points (their final attempts).
+fn total_iterations(points: &[PolarPoint]) -> u32 {
+    points.iter().map(|p| p.iterations).sum()
 }
 
 fn range(a0: f64, a1: f64, da: f64) -> Vec<f64> {
@@ -94,7 +113,7 @@ fn former_transition_cycles_converge_quickly() {
 fn paper_sweep_needs_few_newton_iterations() {
     let points = run(1.9e6, 0.41, &range(-4.0, 12.0, 0.5), true);
     assert!(points.iter().all(|p| p.converged));
-    let total: u32 = points.iter().map(|p| p.iterations).sum();
+    let total = total_iterations(&points);
     // 181 on the development machine; the bound leaves room for last-bit differences of the
     // math library on other machines and fails with XFOIL's Newton tolerance of 1e-4 (275) and
     // with the old warm start (315).
@@ -115,8 +134,7 @@ fn default_tolerance_gives_the_converged_polar() {
                 tolerance,
                 ..ViscousParams::at(1.9e6, 0.41, xtr)
             };
-            let mut solver = ViscousSweep::new(&foil, params).unwrap();
-            sweep(&mut solver, &alphas, &SweepParams::default())
+            run_params(&foil, params, &alphas, &SweepParams::default())
         };
         let (loose, tight) = (solve(ViscousParams::default().tolerance), solve(1e-8));
         let (mut dcl, mut dcd, mut dcm) = (0.0_f64, 0.0_f64, 0.0_f64);
@@ -128,18 +146,20 @@ fn default_tolerance_gives_the_converged_polar() {
             dcd = dcd.max((a.cd / b.cd - 1.0).abs());
             dcm = dcm.max((a.cm - b.cm).abs());
         }
-        let its = |p: &[PolarPoint]| p.iter().map(|p| p.iterations).sum::<u32>();
         eprintln!(
             "xtr {xtr}: max |dCl| {dcl:.1e}, |dCd|/Cd {dcd:.1e}, |dCm| {dcm:.1e}, iterations \
              {} vs {}, fewer at {fewer} of {} points",
-            its(&loose),
-            its(&tight),
+            total_iterations(&loose),
+            total_iterations(&tight),
             loose.len()
         );
         assert!(dcl <= 1e-4 && dcd <= 2e-4 && dcm <= 1e-5, "xtr {xtr}");
         // Fewer iterations in all but the odd wandering point (the laminar-bucket corner at
         // α 1°, whose warm start differs between the two runs, can take one more).
-        assert!(its(&loose) < its(&tight), "xtr {xtr}");
+        assert!(
+            total_iterations(&loose) < total_iterations(&tight),
+            "xtr {xtr}"
+        );
         assert!(fewer * 10 >= loose.len() * 9, "xtr {xtr}: {fewer}");
     }
 }
@@ -163,8 +183,7 @@ fn carried_correction_moves_only_the_start() {
                 ..ViscousParams::at(1.9e6, 0.41, xtr)
             };
             params.march.carried_correction_limit = limit;
-            let mut solver = ViscousSweep::new(&foil, params).unwrap();
-            sweep(&mut solver, &alphas, &SweepParams::default())
+            run_params(&foil, params, &alphas, &SweepParams::default())
         };
         let (carried, plain) = (solve(limit), solve(0.0));
         let (mut dcl, mut dcd) = (0.0_f64, 0.0_f64);
@@ -173,15 +192,14 @@ fn carried_correction_moves_only_the_start() {
             dcl = dcl.max((a.cl - b.cl).abs());
             dcd = dcd.max((a.cd / b.cd - 1.0).abs());
         }
-        let its = |p: &[PolarPoint]| p.iter().map(|p| p.iterations).sum::<u32>();
         eprintln!(
             "xtr {xtr}: max |dCl| {dcl:.1e}, |dCd|/Cd {dcd:.1e}, iterations {} vs {}",
-            its(&carried),
-            its(&plain)
+            total_iterations(&carried),
+            total_iterations(&plain)
         );
         assert!(dcl <= 1e-10 && dcd <= 1e-9, "xtr {xtr}");
-        iterations[0] += its(&carried);
-        iterations[1] += its(&plain);
+        iterations[0] += total_iterations(&carried);
+        iterations[1] += total_iterations(&plain);
     }
     assert!(iterations[0] <= iterations[1], "{iterations:?}");
 }

@@ -93,18 +93,16 @@ where
             let anchor = (alphas[start], state);
             match second {
                 Some(mut other) if !down.is_empty() => {
-                    other.restore(&anchor.1);
                     let mut out_down: Vec<Option<PolarPoint>> = vec![None; alphas.len()];
-                    let anchor_down = anchor.clone();
+                    let anchor_down = Some(anchor.clone());
                     rayon::join(
                         || march(solver, alphas, rest, Some(anchor), 0, params, &mut out),
                         || {
-                            march(
+                            march_from(
                                 &mut other,
                                 alphas,
                                 &down,
-                                Some(anchor_down),
-                                0,
+                                anchor_down,
                                 params,
                                 &mut out_down,
                             )
@@ -139,13 +137,25 @@ where
     if !down.is_empty() {
         // The downward branch starts from the start point's state (if it converged).
         let anchor = start_state.map(|s| (alphas[start], s));
-        match &anchor {
-            Some((_, s)) => solver.restore(s),
-            None => solver.reset(),
-        }
-        march(solver, alphas, &down, anchor, 0, params, &mut out);
+        march_from(solver, alphas, &down, anchor, params, &mut out);
     }
     collect(out)
+}
+
+/// [`march`] from `anchor` with the solver set to its state first (reset without one).
+fn march_from<S: WarmStartSolver>(
+    solver: &mut S,
+    alphas: &[f64],
+    order: &[usize],
+    anchor: Option<(f64, S::State)>,
+    params: &SweepParams,
+    out: &mut [Option<PolarPoint>],
+) {
+    match &anchor {
+        Some((_, s)) => solver.restore(s),
+        None => solver.reset(),
+    }
+    march(solver, alphas, order, anchor, 0, params, out);
 }
 
 /// The points of a sweep in the order of its α values.
