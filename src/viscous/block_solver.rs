@@ -17,7 +17,9 @@
 //! rows of G and is kept as those coefficients; V itself is never stored.
 //! Writing the block part as the lower block-triangular operator L, the solution is
 //! `w = L⁻¹(r − V m)` and `m = P w`, hence the n×n Schur system `(I + P L⁻¹ V) m = P L⁻¹ r`.
-//! The cost is O(n²) for the substitutions plus one n×n LU, instead of a 3n×3n dense LU.
+//! The cost is O(n²) for the substitutions plus one n×n LU, instead of a 3n×3n dense LU. Only
+//! the mass rows P L⁻¹ V are stored; once m is known, w follows from a second block
+//! substitution with V m = (rows of) G m.
 
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::lu::partial_pivoting::{factor, solve};
@@ -32,6 +34,9 @@ pub type Block3 = [[f64; 3]; 3];
 /// most three, at the trailing-edge junction) and of the two stations next to the stagnation
 /// point (through ξ, see the assembly).
 pub const MAX_MASS_TERMS: usize = 5;
+
+/// Columns per block of the forward substitution's row operations.
+const LANES: usize = 8;
 
 /// Row of the mass columns V as a combination of at most [`MAX_MASS_TERMS`] rows of the mass
 /// influence matrix G: V_row = Σ c·G\[j\].
@@ -67,58 +72,6 @@ impl MassTerms {
             .iter()
             .copied()
             .zip(self.coefs[..self.len].iter().copied())
-    }
-
-    /// Writes Σ c·G\[j\] into `out` (length n).
-    #[inline(always)]
-    fn write_row(&self, g: &[f64], out: &mut [f64]) {
-        let n = out.len();
-        let row = |j: usize| &g[j * n..(j + 1) * n];
-        match self.len {
-            0 => out.fill(0.0),
-            1 => {
-                let (r0, c0) = (row(self.rows[0]), self.coefs[0]);
-                for (o, a) in out.iter_mut().zip(r0) {
-                    *o = c0 * a;
-                }
-            }
-            2 => {
-                let (r0, c0) = (row(self.rows[0]), self.coefs[0]);
-                let (r1, c1) = (row(self.rows[1]), self.coefs[1]);
-                for ((o, a), b) in out.iter_mut().zip(r0).zip(r1) {
-                    *o = c0 * a + c1 * b;
-                }
-            }
-            3 => {
-                let (r0, c0) = (row(self.rows[0]), self.coefs[0]);
-                let (r1, c1) = (row(self.rows[1]), self.coefs[1]);
-                let (r2, c2) = (row(self.rows[2]), self.coefs[2]);
-                for (((o, a), b), c) in out.iter_mut().zip(r0).zip(r1).zip(r2) {
-                    *o = c0 * a + c1 * b + c2 * c;
-                }
-            }
-            4 => {
-                let (r0, c0) = (row(self.rows[0]), self.coefs[0]);
-                let (r1, c1) = (row(self.rows[1]), self.coefs[1]);
-                let (r2, c2) = (row(self.rows[2]), self.coefs[2]);
-                let (r3, c3) = (row(self.rows[3]), self.coefs[3]);
-                for ((((o, a), b), c), d) in out.iter_mut().zip(r0).zip(r1).zip(r2).zip(r3) {
-                    *o = (c0 * a + c1 * b) + (c2 * c + c3 * d);
-                }
-            }
-            _ => {
-                let (r0, c0) = (row(self.rows[0]), self.coefs[0]);
-                let (r1, c1) = (row(self.rows[1]), self.coefs[1]);
-                let (r2, c2) = (row(self.rows[2]), self.coefs[2]);
-                let (r3, c3) = (row(self.rows[3]), self.coefs[3]);
-                let (r4, c4) = (row(self.rows[4]), self.coefs[4]);
-                for (((((o, a), b), c), d), e) in
-                    out.iter_mut().zip(r0).zip(r1).zip(r2).zip(r3).zip(r4)
-                {
-                    *o = (c0 * a + c1 * b) + (c2 * c + c3 * d) + c4 * e;
-                }
-            }
-        }
     }
 }
 
@@ -195,11 +148,16 @@ impl<'a> BlockSystem<'a> {
         self.clone().solve_in_place()
     }
 
-    /// Forward substitution y = L⁻¹ r and Y = L⁻¹ V (Y row-major, 3n × n, built row by row;
-    /// the rows of V are formed from G as they are needed). Compiled twice: with AVX2 enabled
-    /// where the CPU has it (wider vectors for the O(n²) row operations, same operations and
-    /// therefore the same results, no fused multiply-add), and for the baseline target.
-    /// AVX-512 was measured too: no faster (these loops are bound by memory traffic).
+    /// Forward substitution y = L⁻¹ r and the mass rows of Y = L⁻¹ V (n × n, row k the mass
+    /// row of station k, row-major). Station k's three rows of Y are
+    /// Σ_j (A_k⁻¹W_k)_j G_j − Σ_p (A_k⁻¹B_p) Y_p, with W_k the coefficients of its rows of V;
+    /// they are formed block of columns by block, so that every input row is read and every
+    /// output row written once. The first two rows are kept only while a later station needs
+    /// them (the next station, or a trailing-edge station for the wake junction): the back
+    /// substitution does not use them (see [`solve_in_place`](Self::solve_in_place)).
+    /// Compiled twice: with AVX2 enabled where the CPU has it (wider vectors, same operations
+    /// and therefore the same results, no fused multiply-add), and for the baseline target.
+    /// An AVX-512 build was measured too: no faster beyond the noise.
     fn forward_substitute(&self, inv: &[Block3]) -> (Vec<[f64; 3]>, Vec<f64>) {
         #[cfg(target_arch = "x86_64")]
         if std::arch::is_x86_feature_detected!("avx2") {
@@ -218,14 +176,37 @@ impl<'a> BlockSystem<'a> {
     #[inline(always)]
     fn forward_substitute_generic(&self, inv: &[Block3]) -> (Vec<[f64; 3]>, Vec<f64>) {
         let n = self.n;
-        let mut y = vec![[0.0; 3]; n];
-        let mut big_y: Vec<f64> = Vec::with_capacity(3 * n * n);
-        let mut t3 = vec![0.0; 3 * n];
+        let g = self.mass_influence;
+        // Stations whose first two rows of Y a later station other than the next one needs
+        // (the mass rows are all kept anyway).
+        let mut kept_slot = vec![usize::MAX; n];
+        let mut n_kept = 0;
         for k in 0..n {
-            let mut t = self.rhs[k];
-            for (r, row) in t3.chunks_exact_mut(n).enumerate() {
-                self.mass_terms[3 * k + r].write_row(self.mass_influence, row);
+            for (p, _) in [&self.upstream[k], &self.upstream2[k]]
+                .into_iter()
+                .flatten()
+            {
+                if *p + 1 != k && kept_slot[*p] == usize::MAX {
+                    kept_slot[*p] = n_kept;
+                    n_kept += 1;
+                }
             }
+        }
+        let mut kept = vec![0.0; 2 * n * n_kept];
+        let mut y = vec![[0.0; 3]; n];
+        let mut mass_rows = vec![0.0; n * n];
+        // Rows 0 and 1 of Y for the previous station and the current one.
+        let mut prev = vec![0.0; 2 * n];
+        let mut cur = vec![0.0; 2 * n];
+        for k in 0..n {
+            let a = &inv[k];
+            // Y_k = Σ_j (A⁻¹W_k)_j G_j − Σ_p (A⁻¹B_p) Y_p: every input row read once and every
+            // output row written once, in blocks of LANES columns.
+            let mut t = self.rhs[k];
+            let (done, rest) = mass_rows.split_at_mut(k * n);
+            let out2 = &mut rest[..n];
+            let mut ups: [UpstreamRows<'_>; 2] = [(&[], &[], &[], [[0.0; 3]; 3]); 2];
+            let mut n_ups = 0;
             for (p, b) in [&self.upstream[k], &self.upstream2[k]]
                 .into_iter()
                 .flatten()
@@ -234,31 +215,63 @@ impl<'a> BlockSystem<'a> {
                 for (r, tr) in t.iter_mut().enumerate() {
                     *tr -= b[r][0] * yp[0] + b[r][1] * yp[1] + b[r][2] * yp[2];
                 }
-                let rows_p = &big_y[3 * p * n..3 * (p + 1) * n];
-                let (p0, p12) = rows_p.split_at(n);
-                let (p1, p2) = p12.split_at(n);
-                for (r, row) in t3.chunks_exact_mut(n).enumerate() {
-                    let (c0, c1, c2) = (b[r][0], b[r][1], b[r][2]);
-                    for (((o, a0), a1), a2) in row.iter_mut().zip(p0).zip(p1).zip(p2) {
-                        *o -= c0 * a0 + c1 * a1 + c2 * a2;
-                    }
+                let rows01 = if *p + 1 == k {
+                    &prev[..]
+                } else {
+                    let slot = kept_slot[*p];
+                    &kept[2 * n * slot..2 * n * (slot + 1)]
+                };
+                let (p0, p1) = rows01.split_at(n);
+                let p2 = &done[*p * n..(*p + 1) * n];
+                ups[n_ups] = (p0, p1, p2, mul33(a, b));
+                n_ups += 1;
+            }
+            y[k] = mul3(a, &t);
+            // The distinct rows of G in the station's three equations, with their coefficients
+            // per equation, multiplied by A⁻¹.
+            let mut rows: [&[f64]; 3 * MAX_MASS_TERMS] = [&[]; 3 * MAX_MASS_TERMS];
+            let mut row_index = [usize::MAX; 3 * MAX_MASS_TERMS];
+            let mut coef = [[0.0; 3]; 3 * MAX_MASS_TERMS];
+            let mut n_rows = 0;
+            for (r, terms) in self.mass_terms[3 * k..3 * k + 3].iter().enumerate() {
+                for (j, c) in terms.terms() {
+                    let u = match row_index[..n_rows].iter().position(|&x| x == j) {
+                        Some(u) => u,
+                        None => {
+                            row_index[n_rows] = j;
+                            rows[n_rows] = &g[j * n..(j + 1) * n];
+                            n_rows += 1;
+                            n_rows - 1
+                        }
+                    };
+                    coef[u][r] += c;
                 }
             }
-            let a = &inv[k];
-            y[k] = mul3(a, &t);
-            let (t0, t12) = t3.split_at(n);
-            let (t1, t2) = t12.split_at(n);
-            for ar in a {
-                let (c0, c1, c2) = (ar[0], ar[1], ar[2]);
-                big_y.extend(
-                    t0.iter()
-                        .zip(t1)
-                        .zip(t2)
-                        .map(|((v0, v1), v2)| c0 * v0 + c1 * v1 + c2 * v2),
-                );
+            for c in coef[..n_rows].iter_mut() {
+                *c = mul3(a, c);
             }
+            let (ups, rows, coef) = (&ups[..n_ups], &rows[..n_rows], &coef[..n_rows]);
+            let (out0, out1) = cur.split_at_mut(n);
+            let full = n - n % LANES;
+            for i0 in (0..full).step_by(LANES) {
+                let acc = station_columns::<LANES>(ups, rows, coef, i0);
+                out0[i0..i0 + LANES].copy_from_slice(&acc[0]);
+                out1[i0..i0 + LANES].copy_from_slice(&acc[1]);
+                out2[i0..i0 + LANES].copy_from_slice(&acc[2]);
+            }
+            for i in full..n {
+                let acc = station_columns::<1>(ups, rows, coef, i);
+                out0[i] = acc[0][0];
+                out1[i] = acc[1][0];
+                out2[i] = acc[2][0];
+            }
+            if kept_slot[k] != usize::MAX {
+                let slot = kept_slot[k];
+                kept[2 * n * slot..2 * n * (slot + 1)].copy_from_slice(&cur);
+            }
+            std::mem::swap(&mut prev, &mut cur);
         }
-        (y, big_y)
+        (y, mass_rows)
     }
 
     /// Solves the system like [`solve`](Self::solve), consuming it.
@@ -271,11 +284,11 @@ impl<'a> BlockSystem<'a> {
             .map(|(k, a)| invert3(a).ok_or(ViscousError::SingularSystem { station: k }))
             .collect::<Result<_, _>>()?;
 
-        let (y, mut big_y) = self.forward_substitute(&inv);
+        let (y, mut mass_rows) = self.forward_substitute(&inv);
 
-        // Schur complement on the mass unknowns: (I + P Y) m = P y. The mass rows of Y,
-        // read as columns (stride 3n), are Sᵀ in column-major order: Sᵀ is factored in place
-        // (no copy) and the transposed system solved.
+        // Schur complement on the mass unknowns: (I + P Y) m = P y. The mass rows of Y, read
+        // as columns, are Sᵀ in column-major order: Sᵀ is factored in place (no copy) and the
+        // transposed system solved.
         let mut m = Mat::<f64>::from_fn(n, 1, |i, _| y[i][2]);
         let mut perm = vec![0usize; n];
         let mut perm_inv = vec![0usize; n];
@@ -285,8 +298,7 @@ impl<'a> BlockSystem<'a> {
         let mut buf = MemBuffer::new(req);
         let stack = MemStack::new(&mut buf);
         {
-            let mass_rows = &mut big_y[2 * n..];
-            let mut st = MatMut::from_column_major_slice_with_stride_mut(mass_rows, n, n, 3 * n);
+            let mut st = MatMut::from_column_major_slice_mut(&mut mass_rows, n, n);
             for i in 0..n {
                 st[(i, i)] += 1.0;
             }
@@ -312,15 +324,34 @@ impl<'a> BlockSystem<'a> {
             return Err(ViscousError::SingularSystem { station: i });
         }
 
+        // Back substitution w = L⁻¹(r − V m), block by block, with V m formed from G m; the
+        // mass unknowns are m itself.
         let mdense: Vec<f64> = (0..n).map(|j| m[(j, 0)]).collect();
-        // Back substitution w = y − Y m; on the mass rows this is m itself
-        // (P Y m = P y − m by the Schur system).
-        let mut w = y;
-        for (k, wk) in w.iter_mut().enumerate() {
-            for (r, wr) in wk.iter_mut().enumerate().take(2) {
-                *wr -= dot(&big_y[(3 * k + r) * n..(3 * k + r + 1) * n], &mdense);
+        let gm: Vec<f64> = self
+            .mass_influence
+            .chunks_exact(n)
+            .map(|row| dot(row, &mdense))
+            .collect();
+        let mut w = vec![[0.0; 3]; n];
+        for k in 0..n {
+            let mut t = self.rhs[k];
+            for (r, tr) in t.iter_mut().enumerate() {
+                *tr -= self.mass_terms[3 * k + r]
+                    .terms()
+                    .map(|(j, c)| c * gm[j])
+                    .sum::<f64>();
             }
-            wk[2] = mdense[k];
+            for (p, b) in [&self.upstream[k], &self.upstream2[k]]
+                .into_iter()
+                .flatten()
+            {
+                let t_p = mul3(b, &w[*p]);
+                for (tr, d) in t.iter_mut().zip(t_p) {
+                    *tr -= d;
+                }
+            }
+            w[k] = mul3(&inv[k], &t);
+            w[k][2] = mdense[k];
         }
         Ok(w)
     }
@@ -384,6 +415,47 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
     (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
 }
 
+/// The upstream rows and their 3×3 factors (A⁻¹B) of one station in the forward substitution.
+type UpstreamRows<'r> = (&'r [f64], &'r [f64], &'r [f64], Block3);
+
+/// Columns i0..i0+L of a station's three rows of Y = L⁻¹V:
+/// Σ_j (A⁻¹W)_j G_j − Σ_p (A⁻¹B_p) Y_p, with the rows of G and Y_p given as slices.
+#[inline(always)]
+fn station_columns<const L: usize>(
+    ups: &[UpstreamRows<'_>],
+    rows: &[&[f64]],
+    coef: &[[f64; 3]],
+    i0: usize,
+) -> [[f64; L]; 3] {
+    let mut acc = [[0.0; L]; 3];
+    for (p0, p1, p2, mb) in ups {
+        let a0: &[f64; L] = p0[i0..i0 + L].try_into().expect("L columns");
+        let a1: &[f64; L] = p1[i0..i0 + L].try_into().expect("L columns");
+        let a2: &[f64; L] = p2[i0..i0 + L].try_into().expect("L columns");
+        for (accr, m) in acc.iter_mut().zip(mb) {
+            for l in 0..L {
+                accr[l] -= m[0] * a0[l] + m[1] * a1[l] + m[2] * a2[l];
+            }
+        }
+    }
+    for (gr, c) in rows.iter().zip(coef) {
+        let gv: &[f64; L] = gr[i0..i0 + L].try_into().expect("L columns");
+        for (accr, cr) in acc.iter_mut().zip(c) {
+            for l in 0..L {
+                accr[l] += cr * gv[l];
+            }
+        }
+    }
+    acc
+}
+
+/// Product of two 3×3 blocks.
+fn mul33(a: &Block3, b: &Block3) -> Block3 {
+    std::array::from_fn(|r| {
+        std::array::from_fn(|c| a[r][0] * b[0][c] + a[r][1] * b[1][c] + a[r][2] * b[2][c])
+    })
+}
+
 /// Product of a 3×3 block with a 3-vector.
 pub fn mul3(a: &Block3, v: &[f64; 3]) -> [f64; 3] {
     [
@@ -439,6 +511,6 @@ mod tests {
             .iter()
             .zip(&big2)
             .all(|(a, b)| a.to_bits() == b.to_bits()));
-        assert_eq!(big1.len(), 3 * n * n);
+        assert_eq!(big1.len(), n * n);
     }
 }

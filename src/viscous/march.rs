@@ -678,17 +678,20 @@ pub fn remarch_mixed(
                 a[3] = [0.0, 0.0, 0.0, 1.0];
                 b[3] = ueref - u;
             } else {
-                // Ue–Hk characteristic slope: response of Ue to a unit Hk change.
-                let mut at = a;
-                let mut bt = b;
-                at[3] = [0.0, hk_d[0], hk_d[1], hk_d[2]];
-                bt[3] = 1.0;
-                if let Some(z) = solve4(at, bt) {
-                    let sennew = MIXED_MODE_WEIGHT * z[3] * hkref / ueref;
-                    if itbl < 5 {
-                        sens = sennew;
-                    } else if itbl < 15 {
-                        sens = 0.5 * (sens + sennew);
+                // Ue–Hk characteristic slope: response of Ue to a unit Hk change (XFOIL
+                // MRCHDU: set in the first 5 iterations, averaged until the 15th, then frozen).
+                if itbl < 15 {
+                    let mut at = a;
+                    let mut bt = b;
+                    at[3] = [0.0, hk_d[0], hk_d[1], hk_d[2]];
+                    bt[3] = 1.0;
+                    if let Some(z) = solve4(at, bt) {
+                        let sennew = MIXED_MODE_WEIGHT * z[3] * hkref / ueref;
+                        if itbl < 5 {
+                            sens = sennew;
+                        } else {
+                            sens = 0.5 * (sens + sennew);
+                        }
                     }
                 }
                 a[3] = [
