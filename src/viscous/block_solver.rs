@@ -118,6 +118,14 @@ impl<'a> BlockSystem<'a> {
         }
     }
 
+    /// The upstream stations of station k with their blocks: p(k) and, at the trailing-edge
+    /// junction, q(k).
+    fn upstreams(&self, k: usize) -> impl Iterator<Item = &(usize, Block3)> {
+        [&self.upstream[k], &self.upstream2[k]]
+            .into_iter()
+            .flatten()
+    }
+
     /// Expands the system into a dense 3n×3n matrix (for tests and diagnostics).
     pub fn to_dense(&self) -> Mat<f64> {
         let n = self.n;
@@ -126,11 +134,8 @@ impl<'a> BlockSystem<'a> {
             for r in 0..3 {
                 for c in 0..3 {
                     a[(3 * k + r, 3 * k + c)] += self.diag[k][r][c];
-                    if let Some((p, b)) = &self.upstream[k] {
+                    for (p, b) in self.upstreams(k) {
                         a[(3 * k + r, 3 * p + c)] += b[r][c];
-                    }
-                    if let Some((q, b)) = &self.upstream2[k] {
-                        a[(3 * k + r, 3 * q + c)] += b[r][c];
                     }
                 }
                 for (j, c) in self.mass_terms[3 * k + r].terms() {
@@ -179,15 +184,12 @@ impl<'a> BlockSystem<'a> {
         let g = self.mass_influence;
         // Stations whose first two rows of Y a later station other than the next one needs
         // (the mass rows are all kept anyway).
-        let mut kept_slot = vec![usize::MAX; n];
+        let mut kept_slot: Vec<Option<usize>> = vec![None; n];
         let mut n_kept = 0;
         for k in 0..n {
-            for (p, _) in [&self.upstream[k], &self.upstream2[k]]
-                .into_iter()
-                .flatten()
-            {
-                if *p + 1 != k && kept_slot[*p] == usize::MAX {
-                    kept_slot[*p] = n_kept;
+            for (p, _) in self.upstreams(k) {
+                if *p + 1 != k && kept_slot[*p].is_none() {
+                    kept_slot[*p] = Some(n_kept);
                     n_kept += 1;
                 }
             }
@@ -207,19 +209,14 @@ impl<'a> BlockSystem<'a> {
             let out2 = &mut rest[..n];
             let mut ups: [UpstreamRows<'_>; 2] = [(&[], &[], &[], [[0.0; 3]; 3]); 2];
             let mut n_ups = 0;
-            for (p, b) in [&self.upstream[k], &self.upstream2[k]]
-                .into_iter()
-                .flatten()
-            {
+            for (p, b) in self.upstreams(k) {
                 let yp = y[*p];
                 for (r, tr) in t.iter_mut().enumerate() {
                     *tr -= b[r][0] * yp[0] + b[r][1] * yp[1] + b[r][2] * yp[2];
                 }
-                let rows01 = if *p + 1 == k {
-                    &prev[..]
-                } else {
-                    let slot = kept_slot[*p];
-                    &kept[2 * n * slot..2 * n * (slot + 1)]
+                let rows01 = match kept_slot[*p] {
+                    Some(slot) if *p + 1 != k => &kept[2 * n * slot..2 * n * (slot + 1)],
+                    _ => &prev[..],
                 };
                 let (p0, p1) = rows01.split_at(n);
                 let p2 = &done[*p * n..(*p + 1) * n];
@@ -265,8 +262,7 @@ impl<'a> BlockSystem<'a> {
                 out1[i] = acc[1][0];
                 out2[i] = acc[2][0];
             }
-            if kept_slot[k] != usize::MAX {
-                let slot = kept_slot[k];
+            if let Some(slot) = kept_slot[k] {
                 kept[2 * n * slot..2 * n * (slot + 1)].copy_from_slice(&cur);
             }
             std::mem::swap(&mut prev, &mut cur);
@@ -341,10 +337,7 @@ impl<'a> BlockSystem<'a> {
                     .map(|(j, c)| c * gm[j])
                     .sum::<f64>();
             }
-            for (p, b) in [&self.upstream[k], &self.upstream2[k]]
-                .into_iter()
-                .flatten()
-            {
+            for (p, b) in self.upstreams(k) {
                 let t_p = mul3(b, &w[*p]);
                 for (tr, d) in t.iter_mut().zip(t_p) {
                     *tr -= d;
