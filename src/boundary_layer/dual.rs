@@ -5,8 +5,9 @@
 //! slots 5..10 (the column order of XFOIL's VS1/VS2 matrices, xblsys.f BLSYS). Closures and
 //! station variables are evaluated on these numbers, so the Jacobians of the discrete
 //! equations follow exactly from the residual expressions without hand-expanded sensitivity
-//! bookkeeping. A station's secondary variables depend on its own 5 variables only; they are
-//! computed with 5-slot numbers and then embedded ([`Dual::embed`]).
+//! bookkeeping. A station's secondary variables depend on its own (s, θ, δ*, u) only, not on
+//! ξ; they are computed with 4-slot numbers and then embedded ([`Dual::embed`]), ξ getting a
+//! slot of its own.
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 

@@ -64,15 +64,17 @@ impl IntervalEquations {
 /// ([`BlModel::complete_interval`](super::BlModel::complete_interval)). The residuals and both
 /// Jacobians are bit-identical to those of one evaluation on 10-slot numbers
 /// ([`BlModel::interval_from`](super::BlModel::interval_from)): every slot of a derivative
-/// number is computed on its own, so the 5-slot evaluation with station 2 seeded and station 1
-/// held fixed computes exactly the station-2 slots, and the one with the roles swapped exactly
-/// the station-1 slots, at about half the cost each.
+/// number is computed on its own, so the 4-slot evaluation with station 2's (s, θ, δ*, u)
+/// seeded and station 1 held fixed computes exactly those slots, and the 6-slot one with
+/// station 1's five variables and station 2's ξ seeded exactly the others, at about half the
+/// cost each.
 #[derive(Clone, Debug)]
 pub struct DownstreamEquations {
     /// Residuals R of the three equations (as [`IntervalEquations::res`]).
     pub res: [f64; 3],
-    /// ∂R/∂(s, θ, δ*, u, ξ) of station 2 (as [`IntervalEquations::d2`]).
-    pub d2: [[f64; 5]; 3],
+    /// ∂R/∂(s, θ, δ*, u) of station 2 (the first four columns of [`IntervalEquations::d2`];
+    /// ξ, fixed in a local iteration, gets its column with station 1's Jacobian).
+    pub d2: [[f64; 4]; 3],
     /// Regime of the interval.
     pub(crate) regime: Regime,
     /// Station 2's values (held fixed when station 1's Jacobian is added).

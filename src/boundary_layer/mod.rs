@@ -99,10 +99,10 @@ pub struct UpstreamStation {
     vars: StationVars,
     regime: Regime,
     valid: Result<(), BlError>,
-    /// With derivatives with respect to its own variables (s, θ, δ*, u, ξ).
-    own: OnceCell<Station<5>>,
-    /// Values with five zero derivative slots (station 1 of a station-2-only evaluation).
-    frozen: OnceCell<Station<5>>,
+    /// With derivatives with respect to its own variables (s, θ, δ*, u) at fixed ξ.
+    own: OnceCell<Station<4>>,
+    /// Values with four zero derivative slots (station 1 of a station-2-only evaluation).
+    frozen: OnceCell<Station<4>>,
     /// Seeded in the station-1 slots of an interval (0..5).
     seeded: OnceCell<Station>,
     /// Values with one zero derivative slot (the transition check's fixed station 1).
@@ -135,12 +135,12 @@ impl UpstreamStation {
         self.regime
     }
 
-    pub(crate) fn own(&self, model: &BlModel) -> &Station<5> {
+    pub(crate) fn own(&self, model: &BlModel) -> &Station<4> {
         self.own
             .get_or_init(|| Station::own(&self.vars, self.regime, &model.flow, &model.params))
     }
 
-    pub(crate) fn frozen(&self, model: &BlModel) -> &Station<5> {
+    pub(crate) fn frozen(&self, model: &BlModel) -> &Station<4> {
         self.frozen.get_or_init(|| self.own(model).frozen())
     }
 
@@ -287,7 +287,7 @@ impl BlModel {
     ) -> Result<DownstreamEquations, BlError> {
         let mut other = None;
         let up = checked_upstream(regime, up, &mut other, v2)?;
-        let station = Station::own(v2, regime, &self.flow, &self.params);
+        let station = Station::<4>::own(v2, regime, &self.flow, &self.params);
         let r = bldif(
             DiffKind::of(regime),
             up.frozen(self),
@@ -311,7 +311,8 @@ impl BlModel {
 
     /// The full equations of an interval evaluated by [`BlModel::interval_downstream`] from
     /// the same upstream station: adds the station-1 Jacobian (station 1 seeded, station 2
-    /// held fixed).
+    /// held fixed) and the ξ column of station 2's (slot 5, the only station-2 variable
+    /// seeded), bit-identical to an evaluation of both Jacobians at once.
     pub fn complete_interval(
         &self,
         up: &UpstreamStation,
@@ -321,16 +322,20 @@ impl BlModel {
         let up = in_regime(eq.regime, up, &mut other);
         let r = bldif(
             DiffKind::of(eq.regime),
-            up.own(self),
-            &eq.station.frozen(),
+            &up.own(self).embed::<6>(0),
+            &eq.station.frozen_but_xi::<6>(5),
             &self.flow,
             &self.params,
         );
+        let d2 = std::array::from_fn(|i| {
+            let [ds, dt, dd, du] = eq.d2[i];
+            [ds, dt, dd, du, r[i].g[5]]
+        });
         check_finite(
             IntervalEquations {
                 res: eq.res,
-                d1: r.map(|d| d.g),
-                d2: eq.d2,
+                d1: r.map(|d| d.station_grad(0)),
+                d2,
             },
             "interval equations",
         )

@@ -89,7 +89,7 @@ pub(crate) fn compressible_speed_d<const N: usize>(ui: Dual<N>, fc: &FlowConstan
 impl Station {
     /// Station from its primary variables, seeded in gradient slots
     /// `offset..offset+5` in the order (s, θ, δ*, u, ξ); `None` makes all constants.
-    /// The secondary variables are computed on 5-slot numbers and then embedded.
+    /// The secondary variables are computed on 4-slot numbers and then embedded.
     pub fn seeded(
         v: &StationVars,
         offset: Option<usize>,
@@ -104,15 +104,17 @@ impl Station {
     }
 }
 
-impl Station<5> {
+impl Station<4> {
     /// Station from its primary variables with derivatives with respect to its own variables
-    /// only, in the slot order (s, θ, δ*, u, ξ).
+    /// (s, θ, δ*, u) in slots 0..4; ξ is held fixed. No secondary variable depends on ξ, so
+    /// [`Station::embed`] adds its slot afterwards: the local iterations of a march, which
+    /// vary (s, θ, δ*, u) at fixed ξ, need no more, and the others one slot more.
     pub fn own(v: &StationVars, regime: Regime, fc: &FlowConstants, p: &BlParams) -> Self {
         let s = Dual::variable(v.s, 0);
         let t = Dual::variable(v.theta, 1);
         let d = Dual::variable(v.dstar, 2) - v.dw;
         let u = compressible_speed_d(Dual::variable(v.u, 3), fc);
-        let x = Dual::variable(v.x, 4);
+        let x = Dual::constant(v.x);
         Station::from_primaries(x, u, t, d, s, v.dw, regime, fc, p)
     }
 }
@@ -133,12 +135,15 @@ impl<const N: usize> Station<N> {
     }
 }
 
-impl Station<5> {
-    /// The station with its derivatives placed at slots `offset..offset+5` of an interval.
-    pub fn embed(&self, offset: usize) -> Station {
-        let e = |d: Dual<5>| d.embed::<NVARS>(offset);
+impl Station<4> {
+    /// The station with its derivatives with respect to (s, θ, δ*, u) placed at slots
+    /// `offset..offset+4` of an `M`-slot number and ξ seeded in slot `offset + 4`: the same
+    /// numbers as an evaluation with all five variables seeded there (each slot of a
+    /// derivative number is computed on its own, and no secondary variable depends on ξ).
+    pub fn embed<const M: usize>(&self, offset: usize) -> Station<M> {
+        let e = |d: Dual<4>| d.embed::<M>(offset);
         Station {
-            x: e(self.x),
+            x: Dual::variable(self.x.v, offset + 4),
             u: e(self.u),
             t: e(self.t),
             d: e(self.d),
@@ -186,6 +191,15 @@ impl<const N: usize> Station<N> {
             cf: z(self.cf),
             di: z(self.di),
             de: z(self.de),
+        }
+    }
+
+    /// [`Station::frozen`] with ξ alone seeded, in slot `slot`: a station held fixed except
+    /// for its position (the ξ column of its Jacobian).
+    pub fn frozen_but_xi<const M: usize>(&self, slot: usize) -> Station<M> {
+        Station {
+            x: Dual::variable(self.x.v, slot),
+            ..self.frozen()
         }
     }
 

@@ -586,14 +586,15 @@ pub fn remarch_mixed(
                     let Some(up) = upstream.as_ref() else {
                         unreachable!("interval stations have an upstream station")
                     };
-                    // Intervals without transition: station 2's Jacobian only (all the local
-                    // iteration uses); station 1's is added for the kept iteration.
+                    // Intervals without transition: station 2's Jacobian with respect to
+                    // (s, θ, δ*, u) only (all the local iteration uses, at fixed ξ); station 1's
+                    // and the ξ column are added for the kept iteration.
                     let mut station2_only = |regime: Regime, v: &StationVars| {
                         model.interval_downstream(regime, up, v).map(|d| {
                             let e = IntervalEquations {
                                 res: d.res,
                                 d1: [[0.0; 5]; 3],
-                                d2: d.d2,
+                                d2: d.d2.map(|[ds, dt, dd, du]| [ds, dt, dd, du, 0.0]),
                             };
                             downstream = Some(d);
                             e
