@@ -54,21 +54,17 @@ pub(crate) fn dampl_d<const N: usize>(hk: Dual<N>, theta: Dual<N>, rt: Dual<N>) 
 
 /// Average amplification rate over an interval (XFOIL AXSET, second-order rms version):
 /// ā = √(½(a1² + a2²)) + 0.002/(θ1+θ2)·exp(−min(20(Ncrit − ½(N1+N2)), 20)) — the small
-/// extra term keeps dN/dξ > 0 near N = Ncrit. Inputs are station quantities as [`Dual`]s.
-#[allow(clippy::too_many_arguments)]
+/// extra term keeps dN/dξ > 0 near N = Ncrit. Inputs are the stations' rates a = dN/dξ
+/// ([`dampl_d`], kept with each station), θ and N as [`Dual`]s.
 pub(crate) fn axset_d<const N: usize>(
-    hk1: Dual<N>,
+    ax1: Dual<N>,
     t1: Dual<N>,
-    rt1: Dual<N>,
     a1: Dual<N>,
-    hk2: Dual<N>,
+    ax2: Dual<N>,
     t2: Dual<N>,
-    rt2: Dual<N>,
     a2: Dual<N>,
     ncrit: f64,
 ) -> Dual<N> {
-    let ax1 = dampl_d(hk1, t1, rt1);
-    let ax2 = dampl_d(hk2, t2, rt2);
     let axsq = (ax1.sq() + ax2.sq()) * 0.5;
     let axa = if axsq.v <= 0.0 {
         Dual::constant(0.0)

@@ -178,7 +178,7 @@ pub(crate) fn bldif<const N: usize>(
         DiffKind::Similarity => s2.s,
         // dN/dξ = average envelope rate (XFOIL AXSET, Drela & Giles 1987 eq. 20)
         DiffKind::Laminar => {
-            let ax = axset_d(s1.hk, s1.t, s1.rt, s1.s, s2.hk, s2.t, s2.rt, s2.s, fc.ncrit);
+            let ax = axset_d(s1.ax, s1.t, s1.s, s2.ax, s2.t, s2.s, fc.ncrit);
             s2.s - s1.s - ax * (s2.x - s1.x)
         }
         // shear-lag (Drela 1989 eq. for d ln Cτ/dξ; Green's lag-entrainment form)

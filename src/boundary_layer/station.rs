@@ -2,6 +2,7 @@
 //! them (XFOIL xblsys.f BLPRV → BLKIN → BLVAR), including the Karman–Tsien edge-speed
 //! correction, the edge Mach number and the Sutherland viscosity.
 
+use super::amplification::dampl_d;
 use super::closures::{
     bl_thickness_d, cfl_d, cft_d, ctau_eq_sqrt_d, dil_d, dilw_d, dissipation_outer_d,
     dissipation_turbulent_d, hct_d, hkin_d, hsl_d, hst_d, slip_velocity_d,
@@ -51,6 +52,10 @@ pub(crate) struct Station<const N: usize = NVARS> {
     pub cf: Dual<N>,
     pub di: Dual<N>,
     pub de: Dual<N>,
+    /// Envelope amplification rate dN/dξ (laminar stations; zero in the other regimes),
+    /// evaluated once with the station and shared by every interval and transition check
+    /// that averages it.
+    pub ax: Dual<N>,
 }
 
 /// Checks that a station's primary variables are usable (finite, positive where needed).
@@ -161,6 +166,7 @@ impl Station<4> {
             cf: e(self.cf),
             di: e(self.di),
             de: e(self.de),
+            ax: e(self.ax),
         }
     }
 }
@@ -191,6 +197,7 @@ impl<const N: usize> Station<N> {
             cf: z(self.cf),
             di: z(self.di),
             de: z(self.de),
+            ax: z(self.ax),
         }
     }
 
@@ -276,6 +283,10 @@ impl<const N: usize> Station<N> {
             }
         };
         let de = bl_thickness_d(hk, t, d);
+        let ax = match regime {
+            Regime::Laminar => dampl_d(hk, t, rt),
+            _ => Dual::constant(0.0),
+        };
         Self {
             x,
             u,
@@ -295,6 +306,7 @@ impl<const N: usize> Station<N> {
             cf,
             di,
             de,
+            ax,
         }
     }
 }

@@ -136,7 +136,7 @@ impl BlModel {
             &self.flow,
             &self.params,
         );
-        let ax = axset_d(s1.hk, s1.t, s1.rt, s1.s, st.hk, st.t, st.rt, amplt, ncrit);
+        let ax = axset_d(s1.ax, s1.t, s1.s, st.ax, st.t, amplt, ncrit);
         let res = a2 - s1.s - ax * (p2.x - s1.x);
         (res, xt, ax)
     }
@@ -209,7 +209,7 @@ impl BlModel {
             &self.flow,
             &self.params,
         );
-        let ax0 = axset_d(s1.hk, s1.t, s1.rt, s1.s, s2l.hk, s2l.t, s2l.rt, s1.s, ncrit);
+        let ax0 = axset_d(s1.ax, s1.t, s1.s, s2l.ax, s2l.t, s1.s, ncrit);
         let mut a2 = v1.s + ax0.v * dx;
         let mut converged = false;
         for _ in 0..30 {
