@@ -92,11 +92,18 @@ fn eliminate_column<const C: usize>(a: &mut [[f64; 4]; 4], b: &mut [f64; 4]) -> 
     if best.is_nan() || best < 1e-300 || best.is_infinite() {
         return None;
     }
+    // Row exchange by selects rather than a branch on the data-dependent pivot row (the
+    // same values; a mispredicted branch per column cost more than the selects).
     for r in C + 1..4 {
-        if r == p {
-            a.swap(C, r);
-            b.swap(C, r);
+        let take = r == p;
+        for k in C..4 {
+            let (x, y) = (a[C][k], a[r][k]);
+            a[C][k] = if take { y } else { x };
+            a[r][k] = if take { x } else { y };
         }
+        let (x, y) = (b[C], b[r]);
+        b[C] = if take { y } else { x };
+        b[r] = if take { x } else { y };
     }
     let pivot_row = a[C];
     let pivot_rhs = b[C];
