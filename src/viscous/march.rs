@@ -93,7 +93,9 @@ fn eliminate_column<const C: usize>(a: &mut [[f64; 4]; 4], b: &mut [f64; 4]) -> 
         return None;
     }
     // Row exchange by selects rather than a branch on the data-dependent pivot row (the
-    // same values; a mispredicted branch per column cost more than the selects).
+    // same values; a mispredicted branch per column cost more than the selects). Only columns
+    // C.. are exchanged: the ones left of C in rows C.. are never read again (the elimination
+    // and the back substitution use a[r][c] with c ≥ r only).
     for r in C + 1..4 {
         let take = r == p;
         for k in C..4 {
