@@ -25,6 +25,7 @@ use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::lu::partial_pivoting::{factor, solve};
 use faer::{Mat, MatMut, Par};
 
+use super::dense::dot;
 use super::error::ViscousError;
 
 /// A 3×3 block, row-major.
@@ -153,8 +154,8 @@ impl<'a> BlockSystem<'a> {
         self.clone().solve_in_place()
     }
 
-    /// Forward substitution y = L⁻¹ r and the mass rows of Y = L⁻¹ V (n × n, row k the mass
-    /// row of station k, row-major). Station k's three rows of Y are
+    /// Forward substitution y = L⁻¹ r, returned, and the mass rows of Y = L⁻¹ V, written into
+    /// `mass_rows` (n × n, row k the mass row of station k, row-major; any contents on entry). Station k's three rows of Y are
     /// Σ_j (A_k⁻¹W_k)_j G_j − Σ_p (A_k⁻¹B_p) Y_p, with W_k the coefficients of its rows of V;
     /// they are formed block of columns by block, so that every input row is read and every
     /// output row written once. The first two rows are kept only while a later station needs
@@ -163,23 +164,27 @@ impl<'a> BlockSystem<'a> {
     /// Compiled twice: with AVX2 enabled where the CPU has it (wider vectors, same operations
     /// and therefore the same results, no fused multiply-add), and for the baseline target.
     /// An AVX-512 build was measured too: no faster beyond the noise.
-    fn forward_substitute(&self, inv: &[Block3]) -> (Vec<[f64; 3]>, Vec<f64>) {
+    fn forward_substitute(&self, inv: &[Block3], mass_rows: &mut Vec<f64>) -> Vec<[f64; 3]> {
         #[cfg(target_arch = "x86_64")]
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2, checked just above.
-            return unsafe { self.forward_substitute_avx2(inv) };
+            return unsafe { self.forward_substitute_avx2(inv, mass_rows) };
         }
-        self.forward_substitute_generic(inv)
+        self.forward_substitute_generic(inv, mass_rows)
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    fn forward_substitute_avx2(&self, inv: &[Block3]) -> (Vec<[f64; 3]>, Vec<f64>) {
-        self.forward_substitute_generic(inv)
+    fn forward_substitute_avx2(&self, inv: &[Block3], mass_rows: &mut Vec<f64>) -> Vec<[f64; 3]> {
+        self.forward_substitute_generic(inv, mass_rows)
     }
 
     #[inline(always)]
-    fn forward_substitute_generic(&self, inv: &[Block3]) -> (Vec<[f64; 3]>, Vec<f64>) {
+    fn forward_substitute_generic(
+        &self,
+        inv: &[Block3],
+        mass_rows: &mut Vec<f64>,
+    ) -> Vec<[f64; 3]> {
         let n = self.n;
         let g = self.mass_influence;
         // Stations whose first two rows of Y a later station other than the next one needs
@@ -196,7 +201,11 @@ impl<'a> BlockSystem<'a> {
         }
         let mut kept = vec![0.0; 2 * n * n_kept];
         let mut y = vec![[0.0; 3]; n];
-        let mut mass_rows = vec![0.0; n * n];
+        // Every entry is written below, so a buffer of the right size is used as it is.
+        if mass_rows.len() != n * n {
+            mass_rows.clear();
+            mass_rows.resize(n * n, 0.0);
+        }
         // Rows 0 and 1 of Y for the previous station and the current one.
         let mut prev = vec![0.0; 2 * n];
         let mut cur = vec![0.0; 2 * n];
@@ -267,11 +276,18 @@ impl<'a> BlockSystem<'a> {
             }
             std::mem::swap(&mut prev, &mut cur);
         }
-        (y, mass_rows)
+        y
     }
 
     /// Solves the system like [`solve`](Self::solve), consuming it.
     pub fn solve_in_place(self) -> Result<Vec<[f64; 3]>, ViscousError> {
+        self.solve_with(&mut Vec::new())
+    }
+
+    /// [`solve_in_place`](Self::solve_in_place) with `schur` as the memory of the n × n Schur
+    /// complement (any contents on entry, overwritten): a Newton loop passes the same buffer
+    /// every iteration, which is then still in cache and needs no zero-filling.
+    pub fn solve_with(self, schur: &mut Vec<f64>) -> Result<Vec<[f64; 3]>, ViscousError> {
         let n = self.n;
         let inv: Vec<Block3> = self
             .diag
@@ -280,7 +296,8 @@ impl<'a> BlockSystem<'a> {
             .map(|(k, a)| invert3(a).ok_or(ViscousError::SingularSystem { station: k }))
             .collect::<Result<_, _>>()?;
 
-        let (y, mut mass_rows) = self.forward_substitute(&inv);
+        let y = self.forward_substitute(&inv, schur);
+        let mass_rows = schur;
 
         // Schur complement on the mass unknowns: (I + P Y) m = P y. The mass rows of Y, read
         // as columns, are Sᵀ in column-major order: Sᵀ is factored in place (no copy) and the
@@ -294,7 +311,7 @@ impl<'a> BlockSystem<'a> {
         let mut buf = MemBuffer::new(req);
         let stack = MemStack::new(&mut buf);
         {
-            let mut st = MatMut::from_column_major_slice_mut(&mut mass_rows, n, n);
+            let mut st = MatMut::from_column_major_slice_mut(mass_rows, n, n);
             for i in 0..n {
                 st[(i, i)] += 1.0;
             }
@@ -390,24 +407,6 @@ pub fn invert3(a: &Block3) -> Option<Block3> {
     ])
 }
 
-/// Dot product with four partial sums (vectorisable, unlike a strict left-to-right sum).
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    let mut acc = [0.0; 4];
-    let (ac, bc) = (a.chunks_exact(4), b.chunks_exact(4));
-    let tail: f64 = ac
-        .remainder()
-        .iter()
-        .zip(bc.remainder())
-        .map(|(x, y)| x * y)
-        .sum();
-    for (x, y) in ac.zip(bc) {
-        for i in 0..4 {
-            acc[i] += x[i] * y[i];
-        }
-    }
-    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
-}
-
 /// The upstream rows and their 3×3 factors (A⁻¹B) of one station in the forward substitution.
 type UpstreamRows<'r> = (&'r [f64], &'r [f64], &'r [f64], Block3);
 
@@ -497,8 +496,9 @@ mod tests {
             sys.rhs[k] = [next(), next(), next()];
         }
         let inv: Vec<Block3> = sys.diag.iter().map(|a| invert3(a).unwrap()).collect();
-        let (y1, big1) = sys.forward_substitute(&inv);
-        let (y2, big2) = sys.forward_substitute_generic(&inv);
+        let (mut big1, mut big2) = (Vec::new(), vec![f64::NAN; n * n]);
+        let y1 = sys.forward_substitute(&inv, &mut big1);
+        let y2 = sys.forward_substitute_generic(&inv, &mut big2);
         assert_eq!(y1, y2);
         assert!(big1
             .iter()

@@ -98,6 +98,8 @@ fn eliminate_column<const C: usize>(a: &mut [[f64; 4]; 4], b: &mut [f64; 4]) -> 
     // and the back substitution use a[r][c] with c ≥ r only).
     for r in C + 1..4 {
         let take = r == p;
+        // Two rows of `a` in step: indices read plainer than zipped row iterators.
+        #[allow(clippy::needless_range_loop)]
         for k in C..4 {
             let (x, y) = (a[C][k], a[r][k]);
             a[C][k] = if take { y } else { x };

@@ -18,6 +18,7 @@ use super::bl_model::{
     BoundaryLayerModel, IntervalEquations, JunctionEquations, Regime, StationVars,
 };
 use super::block_solver::BlockSystem;
+use super::dense::mat_vec;
 use super::error::ViscousError;
 use super::state::BlState;
 use super::stations::{StationKind, StationLayout, Surface};
@@ -87,13 +88,11 @@ pub enum CachedEquations {
 impl Coupling<'_> {
     /// Edge speed implied by the mass defects, Ue_inv + D·m.
     pub fn ue_from_mass(&self, mass: &[f64]) -> Vec<f64> {
-        let n = mass.len();
-        (0..n)
-            .map(|k| {
-                let row = &self.dv[k * n..(k + 1) * n];
-                self.ue_inv[k] + row.iter().zip(mass).map(|(d, m)| d * m).sum::<f64>()
-            })
-            .collect()
+        let mut ue = mat_vec(self.dv, mass);
+        for (u, inv) in ue.iter_mut().zip(self.ue_inv) {
+            *u += inv;
+        }
+        ue
     }
 }
 

@@ -76,17 +76,27 @@ impl PanelModel {
     /// Edge-speed influence matrix of a station layout, row-major in system order:
     /// Dv_kj = −vti_k·vti_j·DIJ(node_k, node_j) (XFOIL UESET), so Ue = Ue_inv + Dv·m.
     pub fn edge_speed_influence(&self, layout: &StationLayout) -> Vec<f64> {
+        let mut dv = Vec::new();
+        self.edge_speed_influence_into(layout, &mut dv);
+        dv
+    }
+
+    /// [`edge_speed_influence`](Self::edge_speed_influence) written into `dv` (resized to n²),
+    /// so that a solver rebuilding it when the stagnation point moves reuses the memory, which
+    /// is then still in cache.
+    pub fn edge_speed_influence_into(&self, layout: &StationLayout, dv: &mut Vec<f64>) {
         let nn = self.geometry.x.len();
         let n = layout.len();
-        let mut dv = vec![0.0; n * n];
-        for (k, sk) in layout.stations.iter().enumerate() {
+        let nodes: Vec<usize> = layout.stations.iter().map(|s| s.node).collect();
+        let vti: Vec<f64> = layout.stations.iter().map(|s| s.vti).collect();
+        dv.resize(n * n, 0.0);
+        for (out, sk) in dv.chunks_exact_mut(n).zip(&layout.stations) {
             let row = &self.dij[sk.node * nn..(sk.node + 1) * nn];
-            let out = &mut dv[k * n..(k + 1) * n];
-            for (o, sj) in out.iter_mut().zip(&layout.stations) {
-                *o = -sk.vti * sj.vti * row[sj.node];
+            let c = -sk.vti;
+            for ((o, &j), &v) in out.iter_mut().zip(&nodes).zip(&vti) {
+                *o = c * v * row[j];
             }
         }
-        dv
     }
 }
 

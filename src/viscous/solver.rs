@@ -427,6 +427,8 @@ impl ViscousSolver {
             ),
         };
         let mut residual = f64::INFINITY;
+        // Memory of the n × n Schur complement, reused by every iteration's solve.
+        let mut schur = Vec::new();
         let mut stagnation_terms = true;
         let mut transition = [None, None];
         let mut turbulent_fraction = [None, None];
@@ -466,7 +468,7 @@ impl ViscousSolver {
             turbulent_fraction = asm
                 .transition
                 .map(|t| t.map(|t| t.turbulent_fraction(&layout)));
-            let w = asm.system.solve_in_place()?;
+            let w = asm.system.solve_with(&mut schur)?;
             let upd = apply_update(
                 &self.bl,
                 &coupling,
@@ -491,7 +493,7 @@ impl ViscousSolver {
                     fix_crossed(&mut s, &map, &layout, &new_layout, &ue_new);
                     state = s;
                     ue_inv = new_layout.edge_speed(&q_inv);
-                    dv = self.panels.edge_speed_influence(&new_layout);
+                    self.panels.edge_speed_influence_into(&new_layout, &mut dv);
                 }
                 layout = new_layout;
                 xi_forced = self.forced_xi(&layout);

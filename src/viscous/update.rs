@@ -4,6 +4,7 @@
 //! One departure from XFOIL: see [`UpdateLimits::clip_first_turbulent`].
 
 use super::bl_model::BoundaryLayerModel;
+use super::dense::mat_vec;
 use super::error::ViscousError;
 use super::newton::Coupling;
 use super::state::BlState;
@@ -74,12 +75,10 @@ pub fn apply_update(
     let dm: Vec<f64> = w.iter().map(|x| x[2]).collect();
     let layout = coupling.layout;
     // δUe = e + D·δm.
-    let due: Vec<f64> = (0..n)
-        .map(|k| {
-            let row = &coupling.dv[k * n..(k + 1) * n];
-            mismatch[k] + row.iter().zip(&dm).map(|(d, m)| d * m).sum::<f64>()
-        })
-        .collect();
+    let mut due = mat_vec(coupling.dv, &dm);
+    for (d, e) in due.iter_mut().zip(mismatch) {
+        *d += e;
+    }
     let mut rlx: f64 = 1.0;
     let mut sumsq = 0.0;
     let mut max_change: f64 = 0.0;
