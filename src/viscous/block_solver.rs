@@ -155,7 +155,8 @@ impl<'a> BlockSystem<'a> {
     }
 
     /// Forward substitution y = L⁻¹ r, returned, and the mass rows of Y = L⁻¹ V, written into
-    /// `mass_rows` (n × n, row k the mass row of station k, row-major; any contents on entry). Station k's three rows of Y are
+    /// `mass_rows` (n × n, row k the mass row of station k, row-major; any contents on entry).
+    /// Station k's three rows of Y are
     /// Σ_j (A_k⁻¹W_k)_j G_j − Σ_p (A_k⁻¹B_p) Y_p, with W_k the coefficients of its rows of V;
     /// they are formed block of columns by block, so that every input row is read and every
     /// output row written once. The first two rows are kept only while a later station needs
