@@ -19,8 +19,8 @@
 //! (Newton unknowns), [`march`] (MRCHUE initial march, MRCHDU mixed-mode re-march),
 //! [`newton`] (SETBL assembly), [`panel_model`] (per-α inviscid data, shared between solvers),
 //! [`block_solver`] (structured solve), `dense` (influence-matrix products), [`update`]
-//! (UPDATE/DSLIM relaxation), [`forces`] (Cl, Cm, cdf, xtr), [`bl_model`] + [`xfoil_bl`] (the boundary-layer
-//! equations seen by the coupling), [`solver`] (the [`ViscousSolver`]).
+//! (UPDATE/DSLIM relaxation), [`forces`] (Cl, Cm, cdf, xtr), [`bl_model`] + [`xfoil_bl`] (the
+//! boundary-layer equations seen by the coupling), [`solver`] (the [`ViscousSolver`]).
 
 pub mod bl_model;
 pub mod block_solver;
