@@ -151,7 +151,7 @@ impl<'a> BlockSystem<'a> {
 
     /// Solves the system; returns w_k = (δs_k, δθ_k, δm_k) for every station.
     pub fn solve(&self) -> Result<Vec<[f64; 3]>, ViscousError> {
-        self.clone().solve_in_place()
+        self.clone().solve_with(&mut Vec::new())
     }
 
     /// Forward substitution y = L⁻¹ r, returned, and the mass rows of Y = L⁻¹ V, written into
@@ -161,7 +161,7 @@ impl<'a> BlockSystem<'a> {
     /// they are formed block of columns by block, so that every input row is read and every
     /// output row written once. The first two rows are kept only while a later station needs
     /// them (the next station, or a trailing-edge station for the wake junction): the back
-    /// substitution does not use them (see [`solve_in_place`](Self::solve_in_place)).
+    /// substitution does not use them (see [`solve_with`](Self::solve_with)).
     /// Compiled twice: with AVX2 enabled where the CPU has it (wider vectors, same operations
     /// and therefore the same results, no fused multiply-add), and for the baseline target.
     /// An AVX-512 build was measured too: no faster beyond the noise.
@@ -280,14 +280,9 @@ impl<'a> BlockSystem<'a> {
         y
     }
 
-    /// Solves the system like [`solve`](Self::solve), consuming it.
-    pub fn solve_in_place(self) -> Result<Vec<[f64; 3]>, ViscousError> {
-        self.solve_with(&mut Vec::new())
-    }
-
-    /// [`solve_in_place`](Self::solve_in_place) with `schur` as the memory of the n × n Schur
-    /// complement (any contents on entry, overwritten): a Newton loop passes the same buffer
-    /// every iteration, which is then still in cache and needs no zero-filling.
+    /// Solves the system like [`solve`](Self::solve), consuming it, with `schur` as the memory
+    /// of the n × n Schur complement (any contents on entry, overwritten): a Newton loop passes
+    /// the same buffer every iteration, which is then still in cache and needs no zero-filling.
     pub fn solve_with(self, schur: &mut Vec<f64>) -> Result<Vec<[f64; 3]>, ViscousError> {
         let n = self.n;
         let inv: Vec<Block3> = self

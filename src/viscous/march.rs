@@ -415,6 +415,19 @@ enum KeptEquations {
     Downstream(DownstreamEquations),
 }
 
+impl KeptEquations {
+    /// What the local iteration solves: the residuals and their derivatives with respect to
+    /// the station's own (s, θ, δ*, u).
+    fn local_system(&self) -> ([f64; 3], [[f64; 4]; 3]) {
+        let own4 = |d: &[[f64; 5]; 3]| d.map(|[ds, dt, dd, du, _]| [ds, dt, dd, du]);
+        match self {
+            Self::Complete(CachedEquations::Interval(e, _)) => (e.res, own4(&e.d2)),
+            Self::Complete(CachedEquations::Junction(j)) => (j.res, own4(&j.d_wake)),
+            Self::Downstream(d) => (d.res, d.d2),
+        }
+    }
+}
+
 /// Re-marches the boundary layer in mixed mode from the current state (XFOIL xbl.f MRCHDU):
 /// at every station the three interval equations are solved together with a prescribed
 /// combination of Ue and Hk that lies quasi-normal to the local Ue–Hk characteristic, so that
@@ -564,9 +577,9 @@ pub fn remarch_mixed(
         for itbl in 0..params.max_iterations {
             let s_now = if turbulent { cti } else { n_amp };
             let was_turbulent_now = turbulent;
-            let mut junction = None;
-            let mut downstream = None;
-            let mut tr_info = None;
+            // √Cτ the transition check evaluated the interval's turbulent part at, if it found
+            // transition.
+            let mut transition_ctau = None;
             let v2 = StationVars {
                 x: st.xi,
                 u,
@@ -575,23 +588,21 @@ pub fn remarch_mixed(
                 s: s_now,
                 dw: st.wake_gap,
             };
-            let eq = match st.kind {
-                StationKind::Similarity => model.similarity(&v2).map(|e| IntervalEquations {
-                    res: e.res,
-                    d1: [[0.0; 5]; 3],
-                    d2: e.combined_jacobian(),
+            let kept = match st.kind {
+                StationKind::Similarity => model.similarity(&v2).map(|e| {
+                    let eq = IntervalEquations {
+                        res: e.res,
+                        d1: [[0.0; 5]; 3],
+                        d2: e.combined_jacobian(),
+                    };
+                    KeptEquations::Complete(CachedEquations::Interval(eq, None))
                 }),
                 StationKind::WakeStart => {
                     let (ku, kl) = (layout.upper_te(), layout.lower_te());
                     let (vu, vl) = (state.vars(layout, ku), state.vars(layout, kl));
-                    model.junction(&vu, &vl, &v2, ante).map(|j| {
-                        junction = Some(j);
-                        IntervalEquations {
-                            res: j.res,
-                            d1: [[0.0; 5]; 3],
-                            d2: j.d_wake,
-                        }
-                    })
+                    model
+                        .junction(&vu, &vl, &v2, ante)
+                        .map(|j| KeptEquations::Complete(CachedEquations::Junction(j)))
                 }
                 StationKind::Interval => {
                     let Some(up) = upstream.as_ref() else {
@@ -600,16 +611,10 @@ pub fn remarch_mixed(
                     // Intervals without transition: station 2's Jacobian with respect to
                     // (s, θ, δ*, u) only (all the local iteration uses, at fixed ξ); station 1's
                     // and the ξ column are added for the kept iteration.
-                    let mut station2_only = |regime: Regime, v: &StationVars| {
-                        model.interval_downstream(regime, up, v).map(|d| {
-                            let e = IntervalEquations {
-                                res: d.res,
-                                d1: [[0.0; 5]; 3],
-                                d2: d.d2.map(|[ds, dt, dd, du]| [ds, dt, dd, du, 0.0]),
-                            };
-                            downstream = Some(d);
-                            e
-                        })
+                    let station2_only = |regime: Regime, v: &StationVars| {
+                        model
+                            .interval_downstream(regime, up, v)
+                            .map(KeptEquations::Downstream)
                     };
                     match up.regime() {
                         Regime::Wake | Regime::Turbulent => station2_only(up.regime(), &v2),
@@ -618,7 +623,7 @@ pub fn remarch_mixed(
                             let v2t = StationVars { s: cti, ..v2 };
                             match model.transition_from(up, &v2t, xi_forced[side]) {
                                 Ok(Some(t)) => {
-                                    tr_info = Some((t.xi_transition, t.forced, cti));
+                                    transition_ctau = Some(cti);
                                     if !transitioned {
                                         transitioned = true;
                                         turbulent = true;
@@ -626,7 +631,10 @@ pub fn remarch_mixed(
                                             cti = params.ctau_sqrt_initial;
                                         }
                                     }
-                                    Ok(t.equations)
+                                    Ok(KeptEquations::Complete(CachedEquations::Interval(
+                                        t.equations,
+                                        Some((t.xi_transition, t.forced)),
+                                    )))
                                 }
                                 Ok(None) => {
                                     if transitioned {
@@ -641,22 +649,12 @@ pub fn remarch_mixed(
                     }
                 }
             };
-            let Ok(eq) = eq else {
+            let Ok(cached) = kept else {
                 last = None;
                 break;
             };
-            let s_eval = match tr_info {
-                Some((_, _, c)) => c,
-                None => s_now,
-            };
-            let cached = match (junction, downstream) {
-                (Some(j), _) => KeptEquations::Complete(CachedEquations::Junction(j)),
-                (None, Some(d)) => KeptEquations::Downstream(d),
-                (None, None) => KeptEquations::Complete(CachedEquations::Interval(
-                    eq,
-                    tr_info.map(|(x, f, _)| (x, f)),
-                )),
-            };
+            let (res, jac) = cached.local_system();
+            let s_eval = transition_ctau.unwrap_or(s_now);
             last = Some((cached, [s_eval, th, ds, u], turbulent != was_turbulent_now));
             let v2 = StationVars {
                 s: if turbulent { cti } else { n_amp },
@@ -683,8 +681,8 @@ pub fn remarch_mixed(
             let mut a = [[0.0; 4]; 4];
             let mut b = [0.0; 4];
             for r in 0..3 {
-                a[r] = [eq.d2[r][0], eq.d2[r][1], eq.d2[r][2], eq.d2[r][3]];
-                b[r] = -eq.res[r];
+                a[r] = jac[r];
+                b[r] = -res[r];
             }
             if matches!(st.kind, StationKind::Similarity | StationKind::WakeStart) {
                 a[3] = [0.0, 0.0, 0.0, 1.0];

@@ -87,14 +87,11 @@ impl PanelModel {
     pub fn edge_speed_influence_into(&self, layout: &StationLayout, dv: &mut Vec<f64>) {
         let nn = self.geometry.x.len();
         let n = layout.len();
-        let nodes: Vec<usize> = layout.stations.iter().map(|s| s.node).collect();
-        let vti: Vec<f64> = layout.stations.iter().map(|s| s.vti).collect();
         dv.resize(n * n, 0.0);
         for (out, sk) in dv.chunks_exact_mut(n).zip(&layout.stations) {
             let row = &self.dij[sk.node * nn..(sk.node + 1) * nn];
-            let c = -sk.vti;
-            for ((o, &j), &v) in out.iter_mut().zip(&nodes).zip(&vti) {
-                *o = c * v * row[j];
+            for (o, sj) in out.iter_mut().zip(&layout.stations) {
+                *o = -sk.vti * sj.vti * row[sj.node];
             }
         }
     }
