@@ -379,24 +379,33 @@ impl BlModel {
         }
     }
 
-    /// Kinematic shape parameter Hk = HKIN(δ*/θ, Me²) of a station without the regime's lower
-    /// clamp (XFOIL BLKIN HK2), with ∂Hk/∂(s, θ, δ*, u, ξ) (u incompressible, δ* total) —
-    /// the sensitivities XFOIL's inverse march (MRCHUE) uses to drive Hk to a target.
-    pub fn kinematic_shape(&self, v: &StationVars) -> Result<closures::Partials<5>, BlError> {
-        validate(v, Regime::Laminar)?;
-        let t = dual::Dual::<5>::variable(v.theta, 1);
-        let d = dual::Dual::variable(v.dstar, 2) - v.dw;
-        let u = station::compressible_speed_d(dual::Dual::variable(v.u, 3), &self.flow);
-        let u2h = u.sq() * self.flow.hstinv;
-        let msq = u2h / ((1.0 - u2h * 0.5) * self.flow.gm1);
-        let hk = closures::hkin_d(d / t, msq);
-        if hk.v.is_finite() {
-            Ok(closures::Partials {
-                value: hk.v,
-                d: hk.g,
-            })
-        } else {
-            Err(BlError::NonFinite("kinematic shape parameter"))
+    /// Kinematic shape parameter Hk = (H − 0.29 Me²)/(1 + 0.113 Me²) of a station (Whitfield's
+    /// correlation as in XFOIL HKIN, without the regime's lower clamp; H = (δ* − dw)/θ, Me² from
+    /// the Kármán–Tsien edge speed as in XFOIL BLPRV/BLKIN), with ∂Hk/∂(θ, δ*, u) (u
+    /// incompressible, δ* total). These are the sensitivities XFOIL's inverse marches
+    /// (MRCHUE, MRCHDU) use to drive Hk to a target; derived by hand because the march
+    /// evaluates Hk in every local iteration. Unchecked: a non-physical station gives a
+    /// non-finite Hk, which the callers test.
+    pub fn kinematic_shape(&self, v: &StationVars) -> closures::Partials<3> {
+        let f = &self.flow;
+        let (t, q) = (f.tkbl, f.qinfbl);
+        // Kármán–Tsien compressible edge speed and its derivative (XFOIL BLPRV).
+        let r = v.u / q;
+        let den = 1.0 - t * r * r;
+        let uc = v.u * (1.0 - t) / den;
+        let uc_u = (1.0 - t) * (1.0 + t * r * r) / (den * den);
+        // Edge Mach number squared (XFOIL BLKIN).
+        let a = uc * uc * f.hstinv;
+        let msq = a / (f.gm1 * (1.0 - 0.5 * a));
+        let msq_u = 2.0 * uc * f.hstinv * uc_u / (f.gm1 * (1.0 - 0.5 * a) * (1.0 - 0.5 * a));
+        let h = (v.dstar - v.dw) / v.theta;
+        let d = 1.0 + 0.113 * msq;
+        let hk = (h - 0.29 * msq) / d;
+        let hk_h = 1.0 / d;
+        let hk_msq = (-0.29 * d - 0.113 * (h - 0.29 * msq)) / (d * d);
+        closures::Partials {
+            value: hk,
+            d: [-hk_h * h / v.theta, hk_h / v.theta, hk_msq * msq_u],
         }
     }
 

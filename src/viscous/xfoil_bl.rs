@@ -139,23 +139,8 @@ impl BoundaryLayerModel for XfoilBoundaryLayer {
     }
 
     fn kinematic_shape_factor(&self, st: &StationVars) -> (f64, [f64; 3]) {
-        let f = &self.model.flow;
-        let (t, q) = (f.tkbl, f.qinfbl);
-        // Karman–Tsien compressible edge speed and its derivative (XFOIL BLPRV).
-        let r = st.u / q;
-        let den = 1.0 - t * r * r;
-        let uc = st.u * (1.0 - t) / den;
-        let uc_u = (1.0 - t) * (1.0 + t * r * r) / (den * den);
-        // Edge Mach number squared (XFOIL BLKIN).
-        let a = uc * uc * f.hstinv;
-        let msq = a / (f.gm1 * (1.0 - 0.5 * a));
-        let msq_u = 2.0 * uc * f.hstinv * uc_u / (f.gm1 * (1.0 - 0.5 * a) * (1.0 - 0.5 * a));
-        let h = (st.dstar - st.dw) / st.theta;
-        let d = 1.0 + 0.113 * msq;
-        let hk = (h - 0.29 * msq) / d;
-        let hk_h = 1.0 / d;
-        let hk_msq = (-0.29 * d - 0.113 * (h - 0.29 * msq)) / (d * d);
-        (hk, [-hk_h * h / st.theta, hk_h / st.theta, hk_msq * msq_u])
+        let hk = self.model.kinematic_shape(st);
+        (hk.value, hk.d)
     }
 
     fn ncrit(&self) -> f64 {
