@@ -137,6 +137,13 @@ fn errors_are_one_line() {
     let bad_path = dir.join("bad.csv");
     std::fs::write(&bad_path, "alpha,cl\n1,garbage\n").unwrap();
     let bad = bad_path.to_str().unwrap().to_string();
+    let empty_path = dir.join("empty.csv");
+    std::fs::write(&empty_path, "").unwrap();
+    let empty = empty_path.to_str().unwrap().to_string();
+    // a regular file where a folder should be; a CSV that must not appear when the image fails
+    let not_under_a_folder = format!("{bad}/x.svg");
+    let csv = dir.join("point.csv").to_str().unwrap().to_string();
+    let txt = dir.join("point.txt").to_str().unwrap().to_string();
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec!["plot", &free, "--out", out], "give --re and --mach"),
         (
@@ -258,6 +265,43 @@ fn errors_are_one_line() {
             ],
             "cannot write plot /proc/no/x.png",
         ),
+        (
+            vec![
+                "plot-point",
+                "--airfoil",
+                "naca0012",
+                "--re",
+                "1e6",
+                "--alpha",
+                "2",
+                "--out",
+                &not_under_a_folder,
+                "--csv",
+                &csv,
+            ],
+            "is not a folder",
+        ),
+        (
+            vec![
+                "plot-point",
+                "--airfoil",
+                "naca0012",
+                "--re",
+                "1e6",
+                "--alpha",
+                "2",
+                "--out",
+                &txt,
+                "--csv",
+                &csv,
+            ],
+            "unknown file extension",
+        ),
+        (vec!["plot", &empty, "--out", out], "CSV line 1: empty file"),
+        (
+            vec!["plot", &free, "--re", "-1", "--mach", "0", "--out", out],
+            "--re -1",
+        ),
     ];
     for (args, needle) in cases {
         let o = polargen(&args);
@@ -267,5 +311,6 @@ fn errors_are_one_line() {
         assert!(err.contains(needle), "{args:?}: {err}");
     }
     assert!(!dir.join("e.svg").exists());
+    assert!(!dir.join("point.csv").exists());
     std::fs::remove_dir_all(dir).unwrap();
 }

@@ -225,6 +225,11 @@ fn formats_by_extension_and_flag() {
 /// exit, before any solving.
 #[test]
 fn errors_name_the_flag() {
+    let dir = temp_dir("flag-errors");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("plain");
+    std::fs::write(&file, "x").unwrap();
+    let not_under_a_folder = file.join("t.csv").to_str().unwrap().to_string();
     let base = ["--airfoil", "naca0012"];
     let cases: &[(&[&str], &str)] = &[
         (&["--re", "0"], "--re 0"),
@@ -234,7 +239,21 @@ fn errors_name_the_flag() {
         (&["--mach", "1"], "--mach 1"),
         (&["--mach", "0,-0.2"], "--mach -0.2"),
         (&["--xtr", "1.5"], "--xtr 1.5"),
-        (&["--xtr-top", "-0.1"], "--xtr -0.1"),
+        (&["--xtr-top", "-0.1"], "--xtr-top -0.1"),
+        (&["--xtr-bot", "2"], "--xtr-bot 2"),
+        (
+            &["--re", "1e6,2e6,1e6"],
+            "--re '1e6,2e6,1e6': '1e6' is given twice",
+        ),
+        (&["--mach", "0.3,0.3"], "given twice"),
+        (&["--re", "nan"], "--re 'nan'"),
+        (&["--alpha", "nan:1:1"], "--alpha"),
+        (&["--alpha", "170:190:10"], "'190' is outside -180…180 deg"),
+        (&["--threads", "-1"], "--threads"),
+        (&["--panels", "-3"], "--panels"),
+        (&["--airfoil", "/"], "--airfoil: airfoil '/' is a folder"),
+        (&["--out", "/"], "--out: /: is a folder"),
+        (&["--out", &not_under_a_folder], "is not a folder"),
         (&["--xtr", "0.1", "--xtr-top", "0.2"], "--xtr"),
         (&["--ncrit", "0"], "--ncrit 0"),
         (&["--ncrit", "-3"], "--ncrit -3"),
@@ -249,7 +268,11 @@ fn errors_name_the_flag() {
         (&["--threads", "x"], "--threads"),
     ];
     for (extra, needle) in cases {
-        let mut a: Vec<&str> = base.to_vec();
+        let mut a: Vec<&str> = if extra.contains(&"--airfoil") {
+            Vec::new()
+        } else {
+            base.to_vec()
+        };
         a.extend_from_slice(extra);
         let o = polargen(&a);
         let err = stderr(&o);
@@ -257,4 +280,35 @@ fn errors_name_the_flag() {
         assert_eq!(err.lines().count(), 1, "{extra:?}: {err}");
         assert!(err.contains(needle), "{extra:?}: {err}");
     }
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// A run in which no point converges writes no table (not even a folder) and fails.
+#[test]
+fn no_converged_point_writes_nothing() {
+    let dir = temp_dir("none-converged");
+    let out = dir.join("t.csv");
+    let o = polargen(&[
+        "--airfoil",
+        "naca0012",
+        "--re",
+        "1e6",
+        "--mach",
+        "0",
+        "--alpha",
+        "89:91:1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = stderr(&o);
+    assert!(!o.status.success());
+    assert!(
+        err.ends_with("polargen: error: no point converged; no table written\n"),
+        "{err}"
+    );
+    assert!(
+        err.starts_with("polargen: 0 of 3 points converged"),
+        "{err}"
+    );
+    assert!(!dir.exists(), "nothing is created");
 }

@@ -71,3 +71,15 @@ fn malformed_naca_names_say_why() {
         "invalid NACA designation 'NACA 12345': third digit must be 0 (normal) or 1 (reflexed)"
     );
 }
+
+#[test]
+fn a_folder_is_named_as_a_folder() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/geometry");
+    let name = dir.to_str().unwrap();
+    let e = airfoil_by_name_or_path(name).unwrap_err();
+    assert!(matches!(e, GeometryError::AirfoilIsFolder { .. }), "{e:?}");
+    assert_eq!(
+        e.to_string(),
+        format!("airfoil '{name}' is a folder, not a coordinate file")
+    );
+}

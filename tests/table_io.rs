@@ -7,8 +7,8 @@ use polargen::polar::PolarPoint;
 use polargen::table::io::c81::{write_c81, C81Options};
 use polargen::table::io::csv::parse_csv;
 use polargen::table::io::json::parse_json;
-use polargen::table::io::write_atomic;
 use polargen::table::io::xfoil_polar::{polar_file_name, re_label};
+use polargen::table::io::{check_output_path, write_atomic};
 use polargen::table::{read_table, write_table, PolarTable, SectionAero, TableError, TableFormat};
 use std::path::{Path, PathBuf};
 use table_support::*;
@@ -138,6 +138,8 @@ fn csv_errors_name_the_line_and_problem() {
     ));
     assert_eq!(e, "CSV line 3: airfoil differs from line 2");
     assert_eq!(csv_err(HEAD), "CSV line 2: no data rows (empty table)");
+    assert_eq!(csv_err(""), "CSV line 1: empty file: no header line");
+    assert_eq!(csv_err("\n\n"), "CSV line 1: empty file: no header line");
     // Ragged: Re 2e6 has only M 0, Re 1e6 only M 0.2.
     let e = csv_err(&format!(
         "{HEAD}f,1e6,0.2,9,1,1,0,0,0.01,0,0,1,1,true\nf,1e6,0.2,9,1,1,1,0,0.01,0,0,1,1,true\n\
@@ -463,6 +465,39 @@ fn atomic_write_creates_folders_and_leaves_no_temp_files() {
     assert!(msg.starts_with("value ") && msg.ends_with(" does not fit a 7-character field"));
     assert!(!dir.join("h.c81").exists());
     assert_eq!(files_in(&dir), vec!["a"]);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn output_paths_are_checked_before_writing() {
+    let dir = scratch("outpath");
+    std::fs::create_dir_all(dir.join("folder.csv")).unwrap();
+    std::fs::write(dir.join("plain"), "x").unwrap();
+    let msg = |p: PathBuf| check_output_path(&p).unwrap_err().to_string();
+    let d = dir.display();
+    assert_eq!(
+        msg(dir.join("folder.csv")),
+        format!("{d}/folder.csv: is a folder, not a file name")
+    );
+    assert_eq!(
+        msg(PathBuf::from(format!("{d}/new/"))),
+        format!("{d}/new/: is a folder, not a file name")
+    );
+    assert_eq!(
+        msg(dir.join("plain/sub/t.csv")),
+        format!("{d}/plain: is not a folder")
+    );
+    // Missing folders are fine (the writers create them); nothing was created by the checks.
+    check_output_path(&dir.join("a/b/t.csv")).unwrap();
+    check_output_path(Path::new("t.csv")).unwrap();
+    assert_eq!(files_in(&dir), vec!["folder.csv", "plain"]);
+    // The writers make the same checks.
+    let t = awkward_table();
+    let e = write_table(&t, &dir.join("folder.csv"), None).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        format!("{d}/folder.csv: is a folder, not a file name")
+    );
     std::fs::remove_dir_all(dir).unwrap();
 }
 

@@ -22,13 +22,13 @@ use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
 use polargen::inviscid::PanelSystem;
 use polargen::plot::point_plots::{point_figure, PointCase};
 use polargen::plot::polar_plots::polar_figure;
-use polargen::plot::{render, Style};
+use polargen::plot::{check_image_path, render, Style};
 use polargen::polar::{
     parse_alpha_range, run_grid, solve_at_cl, PolarPoint, SweepParams, TargetClParams, ViscousSweep,
 };
 use polargen::table::io::csv::write_csv_to;
 use polargen::table::io::json::write_json_to;
-use polargen::table::io::{read_table, write_atomic, write_table, TableFormat};
+use polargen::table::io::{check_output_path, read_table, write_atomic, write_table, TableFormat};
 use polargen::table::{PolarTable, TableError, TableMeta};
 use polargen::viscous::forces::karman_tsien_cp;
 use polargen::viscous::{BlStation, SharedPanels, ViscousParams, ViscousSolution, ViscousSolver};
@@ -115,7 +115,7 @@ struct PlotPointArgs {
     ncrit: f64,
 
     /// Number of panel nodes.
-    #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES)]
+    #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES, allow_hyphen_values = true)]
     panels: usize,
 
     /// Newton convergence threshold on the RMS relative change of the boundary-layer
@@ -165,7 +165,7 @@ struct PlotArgs {
     out: PathBuf,
 
     /// Reynolds number of the polar to draw from a grid table (nearest node).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     re: Option<f64>,
 
     /// Mach number of the polar to draw from a grid table (nearest node).
@@ -218,7 +218,7 @@ struct RunArgs {
     ncrit: f64,
 
     /// Number of panel nodes after curvature-based repaneling (XFOIL PANE).
-    #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES)]
+    #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES, allow_hyphen_values = true)]
     panels: usize,
 
     /// Newton convergence threshold on the RMS relative change of the boundary-layer
@@ -226,8 +226,9 @@ struct RunArgs {
     #[arg(long, default_value_t = ViscousParams::default().tolerance, allow_hyphen_values = true)]
     tolerance: f64,
 
-    /// Worker threads for independent polars (0 = all cores).
-    #[arg(long, default_value_t = 0)]
+    /// Worker threads (0 = all cores); a polar's two α branches run in parallel, so more
+    /// than two threads per polar are not started.
+    #[arg(long, default_value_t = 0, allow_hyphen_values = true)]
     threads: usize,
 
     /// Output format: csv, json, xfoil (one .pol per Re, M) or c81 (one file per Re);
@@ -294,19 +295,27 @@ fn one_line(e: &anyhow::Error) -> String {
     line.replace('\n', " ")
 }
 
-/// Parse a comma-separated list of finite numbers, naming the flag in the error.
+/// Parse a comma-separated list of distinct finite numbers, naming the flag in the error.
 fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>> {
-    let mut out = Vec::new();
-    for item in text.split(',') {
-        match item.trim().parse::<f64>() {
-            Ok(v) if v.is_finite() => out.push(v),
-            _ => bail!(
-                "--{flag} '{text}': '{}' is not a finite number",
-                item.trim()
-            ),
+    let mut out: Vec<f64> = Vec::new();
+    for item in text.split(',').map(str::trim) {
+        match item.parse::<f64>() {
+            Ok(v) if v.is_finite() => {
+                if out.contains(&v) {
+                    bail!("--{flag} '{text}': '{item}' is given twice");
+                }
+                out.push(v)
+            }
+            _ => bail!("--{flag} '{text}': '{item}' is not a finite number"),
         }
     }
     Ok(out)
+}
+
+/// Check `--out` before any computation: a file name (not a folder), below a folder.
+fn check_out(path: &std::path::Path) -> Result<()> {
+    check_output_path(path).context("--out")?;
+    Ok(())
 }
 
 /// Mach numbers from `--mach` (or `default`), each checked to lie in [0, 1).
@@ -331,7 +340,7 @@ fn load_airfoil(spec: Option<&str>, panels: usize) -> Result<Airfoil> {
         );
     }
     let spec = spec.context("--airfoil is required")?;
-    let given = airfoil_by_name_or_path(spec)?;
+    let given = airfoil_by_name_or_path(spec).context("--airfoil")?;
     let (raw, normalised) = given
         .in_chord_units()
         .with_context(|| format!("locating the chord of {}", given.name))?;
@@ -355,6 +364,9 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
     };
     let alphas =
         parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA)).context("--alpha")?;
+    if let Some(path) = &cli.out {
+        check_out(path)?;
+    }
     let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels)?;
     let system = PanelSystem::new(&foil).context("panel system")?;
     let mut csv = String::from("alpha,cl,cd,cm,converged\n");
@@ -394,7 +406,11 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         Some(x) => (x, x),
         None => (cli.xtr_top.unwrap_or(1.0), cli.xtr_bot.unwrap_or(1.0)),
     };
-    for (flag, x) in [("xtr", xtr_top), ("xtr", xtr_bot)] {
+    let flags = match cli.xtr {
+        Some(_) => ["xtr", "xtr"],
+        None => ["xtr-top", "xtr-bot"],
+    };
+    for (flag, x) in flags.into_iter().zip([xtr_top, xtr_bot]) {
         if !(0.0..=1.0).contains(&x) {
             bail!("--{flag} {x}: the transition location must be in [0, 1] (1 = free)");
         }
@@ -403,6 +419,9 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         bail!("--ncrit {}: must be a positive number", cli.ncrit);
     }
     check_tolerance(cli.tolerance)?;
+    if let Some(path) = &cli.out {
+        check_out(path)?;
+    }
     let format = match (&cli.format, &cli.out) {
         (Some(f), _) => f.parse::<TableFormat>().context("--format")?,
         (None, Some(path)) => TableFormat::from_path(path).context("--out")?,
@@ -463,6 +482,9 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         100.0 * converged as f64 / total.max(1) as f64,
         start.elapsed().as_secs_f64()
     );
+    if converged == 0 {
+        bail!("no point converged; no table written");
+    }
 
     let meta = TableMeta {
         airfoil: foil.name.clone(),
@@ -479,7 +501,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
             .map(|p| (p.re, p.mach, p.points))
             .collect(),
     )
-    .context("building the table (too few converged points?)")?;
+    .context("building the table")?;
     match &cli.out {
         Some(path) => {
             let files = write_table(&table, path, Some(format))?;
@@ -509,6 +531,7 @@ fn check_tolerance(tolerance: f64) -> Result<()> {
 
 /// `polargen plot`: overlay one polar from each table.
 fn plot_tables(args: &PlotArgs) -> Result<()> {
+    check_image_path(&args.out).context("--out")?;
     let mut curves: Vec<(String, Vec<PolarPoint>)> = Vec::new();
     let mut conditions: Vec<(f64, f64)> = Vec::new();
     for path in &args.tables {
@@ -527,6 +550,13 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
         check_inside("re", re, table.re(), path)?;
         check_inside("mach", mach, table.mach(), path)?;
         let (r, m, points) = table.nearest_polar(re, mach);
+        if !points.iter().any(|p| p.converged) {
+            bail!(
+                "{}: the polar at Re {}, M {m} has no converged point to draw",
+                path.display(),
+                sci(r)
+            );
+        }
         let meta = table.meta();
         let trip = transition_label(meta.xtr_top_set, meta.xtr_bot_set);
         curves.push((format!("{} {trip}", meta.airfoil), points.to_vec()));
@@ -562,6 +592,7 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
 
 /// `polargen convert`: read a table and write it in another format.
 fn convert_table(args: &ConvertArgs) -> Result<()> {
+    check_out(&args.out)?;
     let format = match &args.format {
         Some(f) => f.parse::<TableFormat>().context("--format")?,
         None => TableFormat::from_path(&args.out).context("--out")?,
@@ -596,6 +627,10 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
     let xtrs = parse_list("xtr", &args.xtr)?;
     if let Some(x) = xtrs.iter().find(|x| !(0.0..=1.0).contains(*x)) {
         bail!("--xtr {x}: the transition location must be in [0, 1] (1 = free)");
+    }
+    check_image_path(&args.out).context("--out")?;
+    if let Some(path) = &args.csv {
+        check_output_path(path).context("--csv")?;
     }
     let foil = load_airfoil(Some(&args.airfoil), args.panels)?;
     let mut runs = Vec::new();
@@ -681,10 +716,11 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
             format!("{} — Re {}, M {}, {at}", foil.name, sci(args.re), args.mach)
         }
     };
+    // The image first: if it cannot be written, no CSV is left behind either.
+    render(&point_figure(&cases, &title, Some(args.ncrit)), &args.out)?;
     if let Some(path) = &args.csv {
         write_atomic(path, |w| write_point_csv(&runs, args.mach, w))?;
     }
-    render(&point_figure(&cases, &title, Some(args.ncrit)), &args.out)?;
     Ok(())
 }
 

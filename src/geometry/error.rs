@@ -143,6 +143,12 @@ pub enum GeometryError {
         /// The name as given.
         name: String,
     },
+    /// The name is a folder, not a coordinate file.
+    #[error("airfoil '{name}' is a folder, not a coordinate file")]
+    AirfoilIsFolder {
+        /// The name as given.
+        name: String,
+    },
     /// A spline could not be built or evaluated.
     #[error("spline: {0}")]
     Spline(String),

@@ -23,8 +23,9 @@ pub fn naca8h12() -> Result<Airfoil, GeometryError> {
 ///   XFOIL's conventions ([`NacaOptions::default`]), e.g. `naca23012`;
 /// * otherwise an existing file path → coordinate-file reader.
 ///
-/// A NACA-looking name with an invalid designation reports why; anything else that is not
-/// a file gives [`GeometryError::UnknownAirfoil`] listing what is accepted.
+/// A NACA-looking name with an invalid designation reports why, a folder gives
+/// [`GeometryError::AirfoilIsFolder`], and anything else that is not a file gives
+/// [`GeometryError::UnknownAirfoil`] listing what is accepted.
 pub fn airfoil_by_name_or_path(s: &str) -> Result<Airfoil, GeometryError> {
     let trimmed = s.trim();
     let key: String = trimmed
@@ -49,6 +50,11 @@ pub fn airfoil_by_name_or_path(s: &str) -> Result<Airfoil, GeometryError> {
     }
     if !trimmed.is_empty() && path.is_file() {
         return read_airfoil_file(path);
+    }
+    if !trimmed.is_empty() && path.is_dir() {
+        return Err(GeometryError::AirfoilIsFolder {
+            name: trimmed.to_string(),
+        });
     }
     Err(GeometryError::UnknownAirfoil {
         name: trimmed.to_string(),

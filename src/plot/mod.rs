@@ -33,4 +33,4 @@ pub mod rotor_plots;
 
 pub use error::PlotError;
 pub use figure::{AxisRange, Figure, Line, Marker, MarkerKind, Panel, Series, Style};
-pub use render::{render, render_svg_string, render_with, RenderParams};
+pub use render::{check_image_path, render, render_svg_string, render_with, RenderParams};

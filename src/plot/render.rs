@@ -136,6 +136,28 @@ fn format_of(path: &Path) -> Result<Format, PlotError> {
     }
 }
 
+/// Checks, before any drawing, that `path` names an image [`render`] can write: a `.svg` or
+/// `.png` file name that is not a folder and whose nearest existing parent is a folder
+/// ([`check_output_path`](crate::table::io::check_output_path)). Missing folders are fine;
+/// `render` creates them.
+pub fn check_image_path(path: &Path) -> Result<(), PlotError> {
+    format_of(path)?;
+    crate::table::io::check_output_path(path).map_err(|e| PlotError::Unwritable {
+        path: path.to_path_buf(),
+        reason: io_reason(e, path),
+    })
+}
+
+/// The reason of an output-path error for [`PlotError::Unwritable`], which names `requested`
+/// itself (so the path is repeated only when the error concerns a folder above it).
+fn io_reason(e: crate::table::TableError, requested: &Path) -> String {
+    match e {
+        crate::table::TableError::Io { path, source } if path == requested => source.to_string(),
+        crate::table::TableError::Io { path, source } => format!("{}: {source}", path.display()),
+        other => other.to_string(),
+    }
+}
+
 /// Renders `figure` to `path` (SVG or PNG by extension) with default [`RenderParams`].
 pub fn render(figure: &Figure, path: impl AsRef<Path>) -> Result<(), PlotError> {
     render_with(figure, path, &RenderParams::default())
@@ -152,6 +174,10 @@ pub fn render_with(
     let path = path.as_ref();
     let format = format_of(path)?;
     validate(figure)?;
+    crate::table::io::prepare_output_path(path).map_err(|e| PlotError::Unwritable {
+        path: path.to_path_buf(),
+        reason: io_reason(e, path),
+    })?;
     register_shipped_font()?;
     let layout = Layout::new(figure, params)?;
     let tmp = temp_path(path, format);

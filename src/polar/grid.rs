@@ -22,7 +22,9 @@ pub struct GridPolar {
 }
 
 /// Run one sweep over `alphas` for every `(re, mach)` node on a pool of `threads` threads
-/// (0 = all cores). `make_solver(re, mach)` builds a node's solver; a node whose solver cannot
+/// (0 = all cores). A node runs at most two tasks at once (its two α branches), so the pool
+/// never gets more than two threads per node: more could not be used, and thousands of idle
+/// threads cost seconds to start. `make_solver(re, mach)` builds a node's solver; a node whose solver cannot
 /// be built fails the whole grid with that error. `on_polar_done` is called after each node
 /// (from worker threads; for progress display). Polars come back in the order of `nodes`.
 pub fn run_grid<S, E, F, P>(
@@ -59,9 +61,15 @@ where
             })
             .collect::<Result<Vec<_>, E>>()
     };
+    let threads = if threads == 0 {
+        0
+    } else {
+        threads.min(2 * nodes.len().max(1))
+    };
     match rayon::ThreadPoolBuilder::new().num_threads(threads).build() {
         Ok(pool) => pool.install(work),
-        // A pool that cannot be built (resource limits) falls back to the calling thread.
+        // A pool that cannot be built (resource limits) falls back to rayon's global pool
+        // (one thread per core); the output does not depend on the thread count.
         Err(_) => work(),
     }
 }

@@ -22,6 +22,14 @@ pub enum RangeError {
     /// The step does not lead from A0 to A1 (wrong sign).
     #[error("alpha range '{0}' is empty: the step does not lead from A0 to A1")]
     Empty(String),
+    /// An angle beyond ±180° (tables and their 360° extension cover one revolution).
+    #[error("alpha range '{text}': '{field}' is outside -180…180 deg")]
+    OutOfRange {
+        /// The whole range text.
+        text: String,
+        /// The offending field.
+        field: String,
+    },
     /// Too many points (a typo such as a tiny step).
     #[error("alpha range '{text}' has {count} points (at most {max})")]
     TooMany {
@@ -37,7 +45,11 @@ pub enum RangeError {
 /// Largest number of α values one range may produce.
 pub const MAX_ALPHA_POINTS: usize = 100_000;
 
-/// Parse `A0:A1:DA` (degrees, inclusive of A1 within 1e-9 of a step) or a single value `A`.
+/// Largest |α| (deg) a range may reach.
+pub const MAX_ALPHA_DEG: f64 = 180.0;
+
+/// Parse `A0:A1:DA` (degrees, inclusive of A1 within 1e-9 of a step) or a single value `A`;
+/// every angle must lie within ±[`MAX_ALPHA_DEG`].
 ///
 /// The values are `A0 + i·DA`, rounded to 1e-9 so that `-4:12:0.1` yields exactly `0.3` rather
 /// than `0.30000000000000004`.
@@ -52,10 +64,20 @@ pub fn parse_alpha_range(text: &str) -> Result<Vec<f64>, RangeError> {
             }),
         }
     };
+    let angle = |f: &str| -> Result<f64, RangeError> {
+        let v = num(f)?;
+        if v.abs() > MAX_ALPHA_DEG {
+            return Err(RangeError::OutOfRange {
+                text: text.to_string(),
+                field: f.to_string(),
+            });
+        }
+        Ok(v)
+    };
     match fields.as_slice() {
-        [a] => Ok(vec![num(a)?]),
+        [a] => Ok(vec![angle(a)?]),
         [a0, a1, da] => {
-            let (a0, a1, da) = (num(a0)?, num(a1)?, num(da)?);
+            let (a0, a1, da) = (angle(a0)?, angle(a1)?, num(da)?);
             if da == 0.0 {
                 return Err(RangeError::ZeroStep(text.to_string()));
             }
@@ -148,9 +170,16 @@ mod tests {
             Err(RangeError::Syntax(_))
         ));
         assert!(matches!(
-            parse_alpha_range("0:1e9:1e-3"),
+            parse_alpha_range("0:180:1e-4"),
             Err(RangeError::TooMany { .. })
         ));
+        assert_eq!(parse_alpha_range("-180:180:90").unwrap().len(), 5);
+        for bad in ["170:190:10", "1e300", "-180.5:0:1"] {
+            assert!(
+                matches!(parse_alpha_range(bad), Err(RangeError::OutOfRange { .. })),
+                "{bad}"
+            );
+        }
     }
 
     #[test]

@@ -107,6 +107,12 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
         .iter()
         .map(str::to_string)
         .collect::<Vec<_>>();
+    if header.iter().all(String::is_empty) {
+        return Err(TableError::Csv {
+            line: 1,
+            message: "empty file: no header line".to_string(),
+        });
+    }
     let mut col = [usize::MAX; COLUMNS.len()];
     for (k, name) in COLUMNS.iter().enumerate() {
         match header.iter().position(|h| h == name) {

@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
 pub use self::c81::C81Options;
-pub use atomic::write_atomic;
+pub use atomic::{check_output_path, prepare_output_path, write_atomic};
 
 /// A table file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
