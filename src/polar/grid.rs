@@ -133,6 +133,31 @@ mod tests {
     }
 
     #[test]
+    fn at_most_two_threads_per_polar() {
+        let pool_size = |nodes: &[(f64, f64)], threads| {
+            let seen = std::sync::Mutex::new(Vec::new());
+            run_grid(
+                nodes,
+                &[0.0, 1.0],
+                threads,
+                &SweepParams::default(),
+                |re, mach| {
+                    seen.lock().unwrap().push(rayon::current_num_threads());
+                    Ok::<_, ()>(Analytic { re, mach })
+                },
+                |_| {},
+            )
+            .unwrap();
+            let seen = seen.into_inner().unwrap();
+            assert!(seen.windows(2).all(|w| w[0] == w[1]));
+            seen[0]
+        };
+        assert_eq!(pool_size(&[(1e6, 0.0)], 100_000), 2);
+        assert_eq!(pool_size(&[(1e6, 0.0), (2e6, 0.0)], 100_000), 4);
+        assert_eq!(pool_size(&[(1e6, 0.0), (2e6, 0.0)], 3), 3);
+    }
+
+    #[test]
     fn solver_error_fails_the_grid() {
         let r = run_grid(
             &[(1e6, 0.0), (2e6, 0.0)],
