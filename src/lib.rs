@@ -19,10 +19,12 @@
 //! * [`table`] — Re × Mach × α tables, lookup with 360° extension, file formats.
 //! * [`rotor`] — blade-element model of a teetering gyroplane rotor: trim and takeoff.
 //! * [`plot`] — SVG/PNG plots of polars, point distributions and rotor results.
+//! * [`diagnostics`] — one-line error text for the command-line tools.
 
 #![warn(missing_docs)]
 
 pub mod boundary_layer;
+pub mod diagnostics;
 pub mod geometry;
 pub mod inviscid;
 pub mod plot;

@@ -287,3 +287,155 @@ fn errors_are_one_line() {
     );
     std::fs::remove_file(&dead).ok();
 }
+
+/// Flags name themselves with their value; impossible ranges, absurd step counts and bad
+/// output paths are refused before any computation, and a polargen table with an error is
+/// reported as such (not through the XFOIL-polar fallback's complaint).
+#[test]
+fn bad_values_and_paths_are_refused_up_front() {
+    let (a, t) = (aircraft(), table("free"));
+    let dir = std::env::temp_dir().join(format!("gyro_paths_{}", std::process::id()));
+    std::fs::create_dir_all(dir.join("folder")).unwrap();
+    let file = dir.join("plain");
+    std::fs::write(&file, "x").unwrap();
+    let under_file = format!("{}/h.csv", file.display());
+    let folder = dir.join("folder").display().to_string();
+    let trim = |extra: &[&str]| {
+        let mut args = vec!["trim", "--aircraft", &a, "--table", &t];
+        args.extend_from_slice(extra);
+        gyro(&args)
+    };
+    let sweep = |extra: &[&str]| {
+        let mut args = vec!["sweep", "--aircraft", &a, "--table", &t];
+        args.extend_from_slice(extra);
+        gyro(&args)
+    };
+    let cases: Vec<(Output, &str)> = vec![
+        (
+            trim(&["--speed-kt", "-60"]),
+            "--speed-kt -60: must be above 0 and below 300 kt",
+        ),
+        (
+            trim(&["--altitude-m", "1e9"]),
+            "--altitude-m 1000000000: must be within the ISA troposphere",
+        ),
+        (trim(&["--altitude-m", "-100"]), "--altitude-m -100"),
+        (trim(&["--altitude-m", "nan"]), "--altitude-m NaN"),
+        (sweep(&["--from-kt", "0"]), "--from-kt 0: must be above 0"),
+        (sweep(&["--to-kt", "300"]), "--to-kt 300: must be above 0"),
+        (
+            sweep(&["--step-kt", "1e-9"]),
+            "speeds from 30 to 90 kt (at most 1000)",
+        ),
+        (
+            sweep(&["--step-kt", "-1"]),
+            "--step-kt -1: must be a positive number",
+        ),
+        (
+            gyro(&["alpha", "--aircraft", &a, "--table", &t, "--radius", "0.05"]),
+            "--radius 0.05: must be a fraction of R on the blade",
+        ),
+        (
+            gyro(&[
+                "takeoff",
+                "--aircraft",
+                &a,
+                "--table",
+                &t,
+                "--history",
+                &folder,
+            ]),
+            "--history: ",
+        ),
+        (
+            gyro(&[
+                "takeoff",
+                "--aircraft",
+                &a,
+                "--table",
+                &t,
+                "--history",
+                &under_file,
+            ]),
+            "plain: is not a folder",
+        ),
+        (
+            gyro(&["takeoff", "--aircraft", &a, "--table", "/dev/null"]),
+            "table /dev/null",
+        ),
+        (
+            gyro(&["trim", "--aircraft", &a, "--table", &folder]),
+            "is a folder",
+        ),
+        (
+            gyro(&["report", "--aircraft", &a, "--out", file.to_str().unwrap()]),
+            "plain: is not a folder",
+        ),
+    ];
+    for (out, needle) in &cases {
+        assert_one_line_error(out, needle);
+    }
+    // The history is refused before the takeoff is simulated (no ~3 s of work), and a device
+    // is never replaced by a regular file.
+    let start = std::time::Instant::now();
+    assert_one_line_error(
+        &gyro(&[
+            "takeoff",
+            "--aircraft",
+            &a,
+            "--table",
+            &t,
+            "--history",
+            "/dev/null",
+        ]),
+        "--history: /dev/null: is not a regular file",
+    );
+    assert!(start.elapsed().as_secs_f64() < 2.0);
+    assert!(!std::fs::metadata("/dev/null").unwrap().is_file());
+    // A polargen table with a negative drag is named, not passed to the fallback reader.
+    let neg = dir.join("neg.csv");
+    std::fs::write(
+        &neg,
+        "airfoil,re,mach,ncrit,xtr_top_set,xtr_bot_set,alpha,cl,cd,cdp,cm,xtr_top,xtr_bot,converged\n\
+         x,1e6,0,9,1,1,0,0.1,-0.01,0.005,0,1,1,true\n\
+         x,1e6,0,9,1,1,1,0.2,0.01,0.005,0,1,1,true\n",
+    )
+    .unwrap();
+    let out = trim(&[]);
+    assert_ok(&out);
+    let out = gyro(&["trim", "--aircraft", &a, "--table", neg.to_str().unwrap()]);
+    assert_one_line_error(&out, "cd -0.01 < 0 at alpha 0 in polar Re 1000000, M 0");
+    assert!(!String::from_utf8_lossy(&out.stderr).contains("XFOIL"));
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// A trim outside the table's Re/M range, or beyond the engine, is a result with notes on
+/// stderr saying so.
+#[test]
+fn trim_notes_clamped_lookups_and_engine_limit() {
+    let a = aircraft();
+    // The XFOIL polar is a single node (Re 1.9e6, M 0.41): most strips lie off it.
+    let out = gyro(&["trim", "--aircraft", &a, "--table", &table("free")]);
+    assert_ok(&out);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("of the blade-element lookups lie outside the table's Reynolds/Mach range"),
+        "{err}"
+    );
+    let out = gyro(&[
+        "trim",
+        "--aircraft",
+        &a,
+        "--table",
+        &table("free"),
+        "--speed-kt",
+        "250",
+    ]);
+    assert_ok(&out);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("needs more than the engine's maximum rpm"),
+        "{err}"
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).contains("above max"));
+}

@@ -346,9 +346,14 @@ fn errors_are_one_line() {
         &plot(&["--clean", bad.to_str().unwrap(), "--out", &svg]),
         "bad.csv",
     );
+    // An output under a regular file: refused before any computation.
+    let under_file = format!("{}/a.svg", bad.display());
     assert_one_line_error(
-        &plot(&["--clean", &c, "--out", "/nonexistent-dir/a.svg"]),
-        "cannot write plot /nonexistent-dir/a.svg",
+        &plot(&["--clean", &c, "--out", &under_file]),
+        &format!(
+            "--out: cannot write plot {under_file}: {}: is not a folder",
+            bad.display()
+        ),
     );
     assert_one_line_error(
         &plot(&["--clean", &c, "--out", dir.join("a.pdf").to_str().unwrap()]),
@@ -374,7 +379,7 @@ fn errors_are_one_line() {
             "--out",
             &svg,
         ]),
-        "--from-kt <= --to-kt",
+        "--to-kt 40: below --from-kt 80",
     );
     assert_one_line_error(
         &gyro(&[

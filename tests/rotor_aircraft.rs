@@ -75,7 +75,41 @@ fn unknown_field_and_bad_values_are_rejected() {
         "{err}"
     );
     let text = preset_text().replace("inflow = \"glauert\"", "inflow = \"vortex\"");
-    assert!(Aircraft::from_toml_str(&text, "t").is_err());
+    assert_eq!(
+        Aircraft::from_toml_str(&text, "t").unwrap_err().to_string(),
+        "aircraft parameter rotor.inflow = \"vortex\" is invalid: must be \"glauert\" or \"drees\""
+    );
+    // Takeoff integration: a step that would take millions of steps, one too coarse to
+    // resolve the rotor, a field above the ISA troposphere.
+    for (from, to, field) in [
+        (
+            "time_step_s = 0.02",
+            "time_step_s = 1e-9",
+            "takeoff.time_step_s",
+        ),
+        (
+            "time_step_s = 0.02",
+            "time_step_s = 50",
+            "takeoff.time_step_s",
+        ),
+        (
+            "max_time_s = 120.0",
+            "max_time_s = 1e6",
+            "takeoff.max_time_s",
+        ),
+        (
+            "field_altitude_m = 0.0",
+            "field_altitude_m = 1e6",
+            "takeoff.field_altitude_m",
+        ),
+    ] {
+        assert!(preset_text().contains(from), "{from}");
+        let err = Aircraft::from_toml_str(&preset_text().replace(from, to), "t").unwrap_err();
+        assert!(
+            matches!(err, AircraftError::Invalid { field: f, .. } if f == field),
+            "{to}: {err}"
+        );
+    }
     let text = preset_text().replace("azimuth_steps = 36", "azimuth_steps = 35");
     assert!(Aircraft::from_toml_str(&text, "t").is_err());
     // κ below ideal momentum theory is rejected; omitting it means κ = 1.

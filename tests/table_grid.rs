@@ -134,6 +134,17 @@ fn points_are_validated() {
     );
     let pts = analytic_polar(1e6, 0.3, &[0.0, 1.0, 1.0]);
     assert_eq!(one(pts), "duplicate alpha 1 in polar Re 1000000, M 0.3");
+    let mut pts = analytic_polar(1e6, 0.3, &[0.0, 1.0, 2.0]);
+    pts[2].cd = -0.01;
+    assert_eq!(
+        one(pts),
+        "cd -0.01 < 0 at alpha 2 in polar Re 1000000, M 0.3"
+    );
+    // …but only converged points are held to it.
+    let mut pts = analytic_polar(1e6, 0.3, &[0.0, 1.0, 2.0]);
+    pts[2].cd = -0.01;
+    pts[2].converged = false;
+    PolarTable::new(meta("x"), vec![1e6], vec![0.3], vec![pts]).unwrap();
     let pts = analytic_polar(1e6, 0.3, &[0.0, 190.0]);
     assert_eq!(
         one(pts),

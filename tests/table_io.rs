@@ -498,6 +498,46 @@ fn output_paths_are_checked_before_writing() {
         e.to_string(),
         format!("{d}/folder.csv: is a folder, not a file name")
     );
+    // Devices and pipes are refused (never replaced by a regular file).
+    if Path::new("/dev/null").exists() {
+        assert_eq!(
+            msg(PathBuf::from("/dev/null")),
+            "/dev/null: is not a regular file"
+        );
+        let e = write_atomic(Path::new("/dev/null"), |_| Ok(())).unwrap_err();
+        assert_eq!(e.to_string(), "/dev/null: is not a regular file");
+    }
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// A symbolic link is written through: the linked file gets the new content, the link stays.
+#[cfg(unix)]
+#[test]
+fn writers_follow_symbolic_links() {
+    let dir = scratch("symlink");
+    std::fs::create_dir_all(dir.join("real")).unwrap();
+    std::fs::write(dir.join("real/t.csv"), "old").unwrap();
+    std::os::unix::fs::symlink(dir.join("real/t.csv"), dir.join("link.csv")).unwrap();
+    write_atomic(&dir.join("link.csv"), |w| {
+        w.write_all(b"new").map_err(|e| TableError::io("x", e))
+    })
+    .unwrap();
+    let link = std::fs::symlink_metadata(dir.join("link.csv")).unwrap();
+    assert!(link.file_type().is_symlink());
+    assert_eq!(
+        std::fs::read_to_string(dir.join("real/t.csv")).unwrap(),
+        "new"
+    );
+    assert_eq!(files_in(&dir.join("real")), vec!["t.csv"]);
+    // A broken link is an error, and nothing is created.
+    std::os::unix::fs::symlink(dir.join("gone/x.csv"), dir.join("broken.csv")).unwrap();
+    let e = check_output_path(&dir.join("broken.csv")).unwrap_err();
+    assert!(
+        e.to_string()
+            .ends_with("broken.csv: is a broken symbolic link"),
+        "{e}"
+    );
+    assert!(!dir.join("gone").exists());
     std::fs::remove_dir_all(dir).unwrap();
 }
 

@@ -18,6 +18,7 @@ use std::time::Instant;
 use anyhow::{bail, Context, Result};
 use clap::{Args, Parser, Subcommand};
 
+use polargen::diagnostics::error_line;
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
 use polargen::inviscid::PanelSystem;
 use polargen::plot::point_plots::{point_figure, PointCase};
@@ -88,7 +89,7 @@ struct PlotPointArgs {
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     mach: f64,
 
-    /// Angle of attack \[deg\].
+    /// Angle of attack in degrees.
     #[arg(
         long,
         allow_hyphen_values = true,
@@ -272,27 +273,10 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("polargen: error: {}", one_line(&e));
+            eprintln!("polargen: error: {}", error_line(e.as_ref()));
             ExitCode::FAILURE
         }
     }
-}
-
-/// An error and its causes on one line, skipping causes whose text the line already holds
-/// (many error types print their source in their own message).
-fn one_line(e: &anyhow::Error) -> String {
-    let mut line = String::new();
-    for cause in e.chain() {
-        let msg = cause.to_string();
-        if line.contains(&msg) {
-            continue;
-        }
-        if !line.is_empty() {
-            line.push_str(": ");
-        }
-        line.push_str(&msg);
-    }
-    line.replace('\n', " ")
 }
 
 /// Parse a comma-separated list of distinct finite numbers, naming the flag in the error.

@@ -141,11 +141,11 @@ fn format_of(path: &Path) -> Result<Format, PlotError> {
 /// ([`check_output_path`](crate::table::io::check_output_path)). Missing folders are fine;
 /// `render` creates them.
 pub fn check_image_path(path: &Path) -> Result<(), PlotError> {
-    format_of(path)?;
     crate::table::io::check_output_path(path).map_err(|e| PlotError::Unwritable {
         path: path.to_path_buf(),
         reason: io_reason(e, path),
-    })
+    })?;
+    format_of(path).map(|_| ())
 }
 
 /// The reason of an output-path error for [`PlotError::Unwritable`], which names `requested`
@@ -165,7 +165,9 @@ pub fn render(figure: &Figure, path: impl AsRef<Path>) -> Result<(), PlotError> 
 
 /// Renders `figure` to `path` (SVG or PNG by extension) with the given parameters.
 ///
-/// The image is written to a temporary file next to `path` and renamed into place.
+/// The image is written to a temporary file next to `path` and renamed into place; missing
+/// folders are created, a symbolic link is written through, and a folder, device or pipe at
+/// `path` is refused.
 pub fn render_with(
     figure: &Figure,
     path: impl AsRef<Path>,
@@ -174,13 +176,15 @@ pub fn render_with(
     let path = path.as_ref();
     let format = format_of(path)?;
     validate(figure)?;
-    crate::table::io::prepare_output_path(path).map_err(|e| PlotError::Unwritable {
-        path: path.to_path_buf(),
-        reason: io_reason(e, path),
-    })?;
+    // The file to replace: `path`, or the file a symbolic link `path` points to.
+    let target =
+        crate::table::io::prepare_output_path(path).map_err(|e| PlotError::Unwritable {
+            path: path.to_path_buf(),
+            reason: io_reason(e, path),
+        })?;
     register_shipped_font()?;
     let layout = Layout::new(figure, params)?;
-    let tmp = temp_path(path, format);
+    let tmp = temp_path(&target, format);
     let unwritable = |reason: String| PlotError::Unwritable {
         path: path.to_path_buf(),
         reason,
@@ -195,7 +199,7 @@ pub fn render_with(
             other => other,
         }),
     }
-    .and_then(|()| fs::rename(&tmp, path).map_err(|e| unwritable(e.to_string())));
+    .and_then(|()| fs::rename(&tmp, &target).map_err(|e| unwritable(e.to_string())));
     if result.is_err() {
         // The temporary file may not exist; there is nothing else to clean up.
         let _ = fs::remove_file(&tmp);

@@ -32,7 +32,27 @@ pub enum AircraftError {
         /// What is required.
         reason: &'static str,
     },
+    /// A text value is not one of the accepted choices.
+    #[error("aircraft parameter {field} = \"{value}\" is invalid: {reason}")]
+    InvalidChoice {
+        /// Dotted field name.
+        field: &'static str,
+        /// Offending value.
+        value: String,
+        /// What is accepted.
+        reason: &'static str,
+    },
 }
+
+/// Highest altitude of the atmosphere model (top of the ISA troposphere) \[m\].
+pub const MAX_ISA_ALTITUDE_M: f64 = 11_000.0;
+
+/// Accepted takeoff integration time steps \[s\]: below, a run takes millions of steps; above,
+/// the explicit integration of the rotor speed and flapping is no longer resolved.
+const TAKEOFF_TIME_STEP_RANGE_S: (f64, f64) = (1e-4, 0.1);
+
+/// Longest accepted simulated takeoff time \[s\].
+const TAKEOFF_MAX_TIME_S: f64 = 600.0;
 
 /// Whole-aircraft data.
 #[derive(Clone, Debug, Deserialize)]
@@ -197,6 +217,22 @@ impl Aircraft {
                 })
             }
         }
+        fn in_range(
+            field: &'static str,
+            value: f64,
+            (lo, hi): (f64, f64),
+            reason: &'static str,
+        ) -> Result<(), AircraftError> {
+            if value >= lo && value <= hi {
+                Ok(())
+            } else {
+                Err(AircraftError::Invalid {
+                    field,
+                    value,
+                    reason,
+                })
+            }
+        }
         let r = &self.rotor;
         positive("mass_kg", self.mass_kg)?;
         non_negative("parasitic_drag_area_m2", self.parasitic_drag_area_m2)?;
@@ -258,9 +294,9 @@ impl Aircraft {
             }
         }
         if r.inflow != "glauert" && r.inflow != "drees" {
-            return Err(AircraftError::Invalid {
+            return Err(AircraftError::InvalidChoice {
                 field: "rotor.inflow",
-                value: f64::NAN,
+                value: r.inflow.clone(),
                 reason: "must be \"glauert\" or \"drees\"",
             });
         }
@@ -302,9 +338,24 @@ impl Aircraft {
         non_negative("takeoff.pilot_gain_deg_per_ms", t.pilot_gain_deg_per_ms)?;
         positive("takeoff.pilot_time_constant_s", t.pilot_time_constant_s)?;
         positive("takeoff.screen_height_m", t.screen_height_m)?;
-        non_negative("takeoff.field_altitude_m", t.field_altitude_m)?;
-        positive("takeoff.time_step_s", t.time_step_s)?;
-        positive("takeoff.max_time_s", t.max_time_s)?;
+        in_range(
+            "takeoff.field_altitude_m",
+            t.field_altitude_m,
+            (0.0, MAX_ISA_ALTITUDE_M),
+            "must be within the ISA troposphere, 0 to 11000 m",
+        )?;
+        in_range(
+            "takeoff.time_step_s",
+            t.time_step_s,
+            TAKEOFF_TIME_STEP_RANGE_S,
+            "must be between 0.0001 and 0.1 s",
+        )?;
+        in_range(
+            "takeoff.max_time_s",
+            t.max_time_s,
+            (t.time_step_s, TAKEOFF_MAX_TIME_S),
+            "must be between one time step and 600 s",
+        )?;
         Ok(())
     }
 }

@@ -144,6 +144,9 @@ pub struct RotorSolution {
     pub thrust_coefficient: f64,
     /// Fraction of the strip-azimuth samples in reverse flow.
     pub reverse_flow_fraction: f64,
+    /// Fraction of the strip-azimuth samples whose Reynolds or Mach number lay outside the
+    /// section table, so that the lookup used the table's edge (see [`Lookup`](crate::table::Lookup)).
+    pub table_clamped_fraction: f64,
     /// Newton iterations used.
     pub iterations: usize,
 }
@@ -170,6 +173,7 @@ struct Loads {
     moment_1c: f64,
     moment_1s: f64,
     reverse_fraction: f64,
+    clamped_fraction: f64,
 }
 
 impl Rotor {
@@ -270,6 +274,7 @@ impl Rotor {
         let mut moments = vec![0.0; n];
         let mut loads = Loads::default();
         let mut reversed = 0usize;
+        let mut clamped = 0usize;
         for (k, moment) in moments.iter_mut().enumerate() {
             let psi = TAU * k as f64 / n as f64;
             let beta = teeter.beta(psi);
@@ -281,13 +286,11 @@ impl Rotor {
                     reversed += 1;
                 }
                 let lift_factor = ((b_tip - (r - 0.5 * dr)) / dr).clamp(0.0, 1.0);
-                let load = strip_load(
-                    &flow,
-                    &flow.coefficients(section),
-                    rho,
-                    self.chord,
-                    lift_factor,
-                );
+                let coeffs = flow.coefficients(section);
+                if coeffs.re_clamped || coeffs.mach_clamped {
+                    clamped += 1;
+                }
+                let load = strip_load(&flow, &coeffs, rho, self.chord, lift_factor);
                 ft_sum += load.tangential * dr;
                 fn_sum += load.normal * dr;
                 fr_sum += load.radial * dr;
@@ -315,6 +318,7 @@ impl Rotor {
         loads.moment_1c = m1c;
         loads.moment_1s = m1s;
         loads.reverse_fraction = reversed as f64 / (n * radii.len()) as f64;
+        loads.clamped_fraction = clamped as f64 / (n * radii.len()) as f64;
         loads
     }
 
@@ -457,6 +461,7 @@ impl Rotor {
             inflow_ratio: (cond.airspeed * sa - v0) / tip,
             thrust_coefficient: loads.thrust / (rho * self.disc_area() * tip * tip),
             reverse_flow_fraction: loads.reverse_fraction,
+            table_clamped_fraction: loads.clamped_fraction,
             iterations,
         }
     }

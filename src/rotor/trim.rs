@@ -128,6 +128,10 @@ pub struct TrimResult {
     pub thrust_coefficient: f64,
     /// Residual shaft torque at the trim point \[N m\] (≈ 0).
     pub torque_nm: f64,
+    /// Fraction of the blade-element lookups at the trim point whose Reynolds or Mach number
+    /// lay outside the section table and were clamped to its edge (0 when the table covers
+    /// the rotor).
+    pub table_clamped_fraction: f64,
 }
 
 /// Root of `f` in the bracket [a, b] (f(a)·f(b) ≤ 0): secant steps with the Illinois
@@ -306,6 +310,11 @@ pub fn trim_aircraft<S: SectionAero + ?Sized>(
     if !(mass_kg.is_finite() && mass_kg > 0.0) {
         return Err(TrimError::Input("mass must be a positive number"));
     }
+    if !(0.0..=super::aircraft::MAX_ISA_ALTITUDE_M).contains(&altitude_m) {
+        return Err(TrimError::Input(
+            "altitude must be within the ISA troposphere, 0 to 11000 m",
+        ));
+    }
     let rotor = Rotor::from_params(&aircraft.rotor);
     let prop = PropellerMap::calibrate(&aircraft.propeller)?;
     let atm = Atmosphere::isa(altitude_m);
@@ -332,5 +341,6 @@ pub fn trim_aircraft<S: SectionAero + ?Sized>(
         advance_ratio: s.advance_ratio,
         thrust_coefficient: s.thrust_coefficient,
         torque_nm: s.torque,
+        table_clamped_fraction: s.table_clamped_fraction,
     })
 }

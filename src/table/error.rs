@@ -88,6 +88,18 @@ pub enum TableError {
         /// α (deg).
         alpha: f64,
     },
+    /// A converged point with negative drag (no physical section has it).
+    #[error("cd {cd} < 0 at alpha {alpha} in polar Re {re}, M {mach}")]
+    NegativeDrag {
+        /// Reynolds number.
+        re: f64,
+        /// Mach number.
+        mach: f64,
+        /// α (deg).
+        alpha: f64,
+        /// The drag coefficient.
+        cd: f64,
+    },
     /// A 360°-extension parameter is out of its range.
     #[error("post-stall parameter {name} = {value} is invalid (must be {rule})")]
     BadPostStall {

@@ -58,8 +58,8 @@ impl PolarTable {
     /// Build a table from its axes and `re.len()·mach.len()` polars in Re-major order.
     ///
     /// Validates: non-empty, strictly increasing axes; Re > 0 and finite; 0 ≤ M < 1; finite
-    /// α within ±180°, unique within each polar; finite coefficients at converged points; at
-    /// Points are sorted by α. A table in which no polar has two converged points
+    /// α within ±180°, unique within each polar; finite coefficients and cd ≥ 0 at converged
+    /// points. Points are sorted by α. A table in which no polar has two converged points
     /// is accepted (see [`has_lookup`](Self::has_lookup)).
     pub fn new(
         meta: TableMeta,
@@ -330,6 +330,14 @@ fn check_polar(re: f64, mach: f64, polar: &mut [PolarPoint]) -> Result<(), Table
                         alpha: p.alpha,
                     });
                 }
+            }
+            if p.cd < 0.0 {
+                return Err(TableError::NegativeDrag {
+                    re,
+                    mach,
+                    alpha: p.alpha,
+                    cd: p.cd,
+                });
             }
         }
     }

@@ -5,11 +5,13 @@
 use anyhow::{bail, Context, Result};
 use clap::{Args, Parser, Subcommand};
 use paper::{PAPER_TAKEOFF, PAPER_TRIM};
+use polargen::diagnostics::error_line;
 use polargen::polar::PolarPoint;
+use polargen::rotor::aircraft::MAX_ISA_ALTITUDE_M;
 use polargen::rotor::cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds};
 use polargen::rotor::trim::{trim_aircraft, TrimParams, TrimResult};
 use polargen::rotor::{simulate_takeoff, Aircraft, TakeoffResult};
-use polargen::table::io::write_atomic;
+use polargen::table::io::{check_output_path, write_atomic};
 use polargen::table::{read_table, PolarTable, TableError, TableMeta};
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -51,14 +53,14 @@ enum Command {
         /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
         #[arg(long)]
         table: PathBuf,
-        /// Airspeed \[kt\].
-        #[arg(long, default_value_t = 60.0)]
+        /// Airspeed in knots.
+        #[arg(long, default_value_t = 60.0, allow_hyphen_values = true)]
         speed_kt: f64,
-        /// Mass \[kg\] (default: the preset's).
-        #[arg(long)]
+        /// Mass in kg (default: the preset's).
+        #[arg(long, allow_hyphen_values = true)]
         mass: Option<f64>,
-        /// ISA altitude \[m\].
-        #[arg(long, default_value_t = 0.0)]
+        /// ISA altitude in metres, 0 to 11000.
+        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
         altitude_m: f64,
         /// Print JSON instead of text.
         #[arg(long)]
@@ -72,8 +74,8 @@ enum Command {
         /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
         #[arg(long)]
         table: PathBuf,
-        /// Mass \[kg\] (default: the preset's).
-        #[arg(long)]
+        /// Mass in kg (default: the preset's).
+        #[arg(long, allow_hyphen_values = true)]
         mass: Option<f64>,
         /// Print JSON instead of text.
         #[arg(long)]
@@ -107,8 +109,8 @@ enum Command {
         table: PathBuf,
         #[command(flatten)]
         speeds: SpeedRange,
-        /// Mass \[kg\] (default: the preset's).
-        #[arg(long)]
+        /// Mass in kg (default: the preset's).
+        #[arg(long, allow_hyphen_values = true)]
         mass: Option<f64>,
         /// Print JSON instead of text.
         #[arg(long)]
@@ -122,14 +124,14 @@ enum Command {
         /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
         #[arg(long)]
         table: PathBuf,
-        /// Airspeed \[kt\].
-        #[arg(long, default_value_t = 60.0)]
+        /// Airspeed in knots.
+        #[arg(long, default_value_t = 60.0, allow_hyphen_values = true)]
         speed_kt: f64,
         /// Radius as a fraction of R.
-        #[arg(long, default_value_t = 0.9)]
+        #[arg(long, default_value_t = 0.9, allow_hyphen_values = true)]
         radius: f64,
         /// Azimuth samples per revolution.
-        #[arg(long, default_value_t = 36)]
+        #[arg(long, default_value_t = 36, allow_hyphen_values = true)]
         samples: usize,
     },
     /// Rotor figures, clean vs contaminated, to SVG or PNG: alpha, takeoff or power.
@@ -147,11 +149,20 @@ enum Command {
 /// becomes a one-node table at the Re and M parsed from a file name like `…_Re1.9e6_M0.41_…`
 /// (Re 1e6, M 0 if absent); lookups at other Re/M are clamped to that node.
 fn load_section(path: &Path) -> Result<PolarTable> {
+    if path.is_dir() {
+        bail!("cannot read table {}: is a folder", path.display());
+    }
     if !path.is_file() {
         bail!("cannot read table {}: no such file", path.display());
     }
     let table = match read_table(path) {
         Ok(t) => t,
+        // A file with polargen's columns is a polargen table with an error in it: report
+        // that error, not the fallback reader's.
+        Err(table_err) if has_polargen_header(path) => {
+            return Err(anyhow::Error::new(table_err))
+                .with_context(|| format!("table {}", path.display()))
+        }
         Err(table_err) => single_polar_table(path).with_context(|| {
             format!("not a polargen table ({table_err}) nor an XFOIL polar CSV")
         })?,
@@ -160,6 +171,22 @@ fn load_section(path: &Path) -> Result<PolarTable> {
         .require_lookup()
         .with_context(|| format!("{}", path.display()))?;
     Ok(table)
+}
+
+/// Whether `path` starts like a polargen table: JSON, or a CSV header naming the `airfoil`,
+/// `re` and `mach` columns.
+fn has_polargen_header(path: &Path) -> bool {
+    let Ok(text) = std::fs::read(path) else {
+        return false;
+    };
+    let head = String::from_utf8_lossy(&text[..text.len().min(4096)]);
+    let first = head.trim_start();
+    if first.starts_with('{') {
+        return true;
+    }
+    let header = first.lines().next().unwrap_or("");
+    let cols: Vec<&str> = header.split(',').map(str::trim).collect();
+    ["airfoil", "re", "mach"].iter().all(|c| cols.contains(c))
 }
 
 /// Number after `key` in a file stem such as `naca8h12_Re1.9e6_M0.41_free`.
@@ -236,38 +263,79 @@ fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
     Ok(ac)
 }
 
-fn check_speed(kt: f64) -> Result<()> {
-    if !(kt.is_finite() && kt > 0.0 && kt < 300.0) {
-        bail!("--speed-kt must be between 0 and 300 kt, got {kt}");
+/// Highest airspeed any command accepts \[kt\] (exclusive).
+const MAX_SPEED_KT: f64 = 300.0;
+
+/// Most trims one speed sweep may ask for.
+const MAX_SWEEP_SPEEDS: usize = 1000;
+
+/// An airspeed flag: above 0 and below [`MAX_SPEED_KT`].
+fn check_speed(flag: &str, kt: f64) -> Result<()> {
+    if !(kt.is_finite() && kt > 0.0 && kt < MAX_SPEED_KT) {
+        bail!("--{flag} {kt}: must be above 0 and below {MAX_SPEED_KT} kt");
     }
     Ok(())
 }
 
-fn check_radius(radius: f64) -> Result<()> {
-    if !(radius > 0.0 && radius <= 1.0) {
-        bail!("--radius must be a fraction of R in (0, 1], got {radius}");
+/// The `--altitude-m` flag: inside the ISA troposphere of the atmosphere model.
+fn check_altitude(m: f64) -> Result<()> {
+    if !(0.0..=MAX_ISA_ALTITUDE_M).contains(&m) {
+        bail!("--altitude-m {m}: must be within the ISA troposphere, 0 to {MAX_ISA_ALTITUDE_M} m");
+    }
+    Ok(())
+}
+
+/// The `--radius` flag: a fraction of R on the blade, outboard of the root cut-out.
+fn check_radius(radius: f64, aircraft: &Aircraft) -> Result<()> {
+    let root = aircraft.rotor.root_cutout_m / aircraft.rotor.radius_m;
+    if !(radius > root && radius <= 1.0) {
+        bail!(
+            "--radius {radius}: must be a fraction of R on the blade, in ({root:.3}, 1] \
+             (outboard of the {} m root cut-out)",
+            aircraft.rotor.root_cutout_m
+        );
     }
     Ok(())
 }
 
 fn check_samples(samples: usize) -> Result<()> {
     if !(4..=3600).contains(&samples) {
-        bail!("--samples must be between 4 and 3600, got {samples}");
+        bail!("--samples {samples}: must be between 4 and 3600");
     }
     Ok(())
+}
+
+/// Notes on stderr about a trim that is a valid rotor solution but not one the aircraft can
+/// fly as computed: the engine cannot reach the thrust, or the table did not cover the rotor.
+fn trim_notes(t: &TrimResult) {
+    if t.engine_rpm.is_none() {
+        eprintln!(
+            "gyro: note: at {:.1} kt the propeller needs more than the engine's maximum rpm \
+             for {:.0} N of thrust: the aircraft cannot fly this speed level",
+            t.airspeed_kt, t.prop_thrust_n
+        );
+    }
+    if t.table_clamped_fraction > 0.0 {
+        eprintln!(
+            "gyro: note: at {:.1} kt, {:.1} % of the blade-element lookups lie outside the \
+             table's Reynolds/Mach range and use its edge values",
+            t.airspeed_kt,
+            100.0 * t.table_clamped_fraction
+        );
+    }
 }
 
 /// Airspeed range of a speed sweep (`gyro sweep`, `gyro plot power`).
 #[derive(Args, Debug, Clone, Copy)]
 pub struct SpeedRange {
-    /// Lowest airspeed \[kt\].
-    #[arg(long, default_value_t = 30.0)]
+    /// Lowest airspeed in knots.
+    #[arg(long, default_value_t = 30.0, allow_hyphen_values = true)]
     pub from_kt: f64,
-    /// Highest airspeed \[kt\].
-    #[arg(long, default_value_t = 90.0)]
+    /// Highest airspeed in knots.
+    #[arg(long, default_value_t = 90.0, allow_hyphen_values = true)]
     pub to_kt: f64,
-    /// Speed step \[kt\].
-    #[arg(long, default_value_t = 5.0)]
+    /// Speed step in knots.
+    #[arg(long, default_value_t = 5.0, allow_hyphen_values = true)]
     pub step_kt: f64,
 }
 
@@ -279,10 +347,20 @@ impl SpeedRange {
             to_kt,
             step_kt,
         } = *self;
-        check_speed(from_kt)?;
-        check_speed(to_kt)?;
-        if !(step_kt.is_finite() && step_kt > 0.0) || to_kt < from_kt {
-            bail!("sweep needs --from-kt <= --to-kt and a positive --step-kt");
+        check_speed("from-kt", from_kt)?;
+        check_speed("to-kt", to_kt)?;
+        if to_kt < from_kt {
+            bail!("--to-kt {to_kt}: below --from-kt {from_kt}");
+        }
+        if !(step_kt.is_finite() && step_kt > 0.0) {
+            bail!("--step-kt {step_kt}: must be a positive number of knots");
+        }
+        let count = ((to_kt - from_kt) / step_kt).floor() + 1.0;
+        if count > MAX_SWEEP_SPEEDS as f64 {
+            bail!(
+                "--step-kt {step_kt}: gives {count:.0} speeds from {from_kt} to {to_kt} kt \
+                 (at most {MAX_SWEEP_SPEEDS})"
+            );
         }
         Ok(sweep_speeds(from_kt, to_kt, step_kt))
     }
@@ -434,6 +512,23 @@ fn trimmed_speeds(
     }
     if trims.is_empty() {
         bail!("{prefix}no trim point in the speed range");
+    }
+    let clamped: Vec<&TrimResult> = trims
+        .iter()
+        .filter(|t| t.table_clamped_fraction > 0.0)
+        .collect();
+    if let Some(worst) = clamped.iter().max_by(|a, b| {
+        a.table_clamped_fraction
+            .total_cmp(&b.table_clamped_fraction)
+    }) {
+        eprintln!(
+            "gyro: note: {prefix}at {} of {} speeds some blade-element lookups lie outside the \
+             table's Reynolds/Mach range and use its edge values (most: {:.1} % at {:.1} kt)",
+            clamped.len(),
+            trims.len(),
+            100.0 * worst.table_clamped_fraction,
+            worst.airspeed_kt
+        );
     }
     Ok(trims)
 }
@@ -590,7 +685,8 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             altitude_m,
             json,
         } => {
-            check_speed(speed_kt)?;
+            check_speed("speed-kt", speed_kt)?;
+            check_altitude(altitude_m)?;
             let ac = load_aircraft(&aircraft, mass)?;
             let section = load_section(&table)?;
             let t = trim_aircraft(
@@ -601,6 +697,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
                 altitude_m,
                 &TrimParams::default(),
             )?;
+            trim_notes(&t);
             if json {
                 outln!(
                     buf,
@@ -618,6 +715,9 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             json,
             history,
         } => {
+            if let Some(path) = &history {
+                check_output_path(path).context("--history")?;
+            }
             let ac = load_aircraft(&aircraft, mass)?;
             let section = load_section(&table)?;
             let t = simulate_takeoff(&ac, &section)?;
@@ -626,7 +726,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
                     t.write_history_csv(w)
                         .map_err(|e| TableError::io(&path, e.into()))
                 })
-                .with_context(|| format!("cannot write history {}", path.display()))?;
+                .context("--history")?;
             }
             if json {
                 outln!(
@@ -703,10 +803,10 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             radius,
             samples,
         } => {
-            check_speed(speed_kt)?;
-            check_radius(radius)?;
+            check_speed("speed-kt", speed_kt)?;
             check_samples(samples)?;
             let ac = load_aircraft(&aircraft, None)?;
+            check_radius(radius, &ac)?;
             let section = load_section(&table)?;
             let curve = cruise_blade_alpha(
                 &ac,
@@ -740,17 +840,13 @@ fn main() {
                 .map(str::trim)
                 .filter(|l| !l.is_empty())
                 .collect();
-            eprintln!(
-                "gyro: {} (see gyro --help)",
-                message.join(" ").trim_start_matches("error: ")
-            );
+            eprintln!("gyro: {}", message.join(" ").trim_start_matches("error: "));
             std::process::exit(2);
         }
     };
     let mut buf = String::new();
     if let Err(e) = run(cli, &mut buf) {
-        let msg = format!("{e:#}").replace('\n', " ");
-        eprintln!("gyro: {msg}");
+        eprintln!("gyro: {}", error_line(e.as_ref()));
         std::process::exit(1);
     }
     // A closed pipe (e.g. `gyro … | head`) is not an error of ours: stop quietly.

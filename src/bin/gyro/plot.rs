@@ -10,7 +10,7 @@ use polargen::plot::rotor_plots::{
     alpha_azimuth_figure, power_required_figure, takeoff_figure, AzimuthCase, PowerCase,
     TakeoffCase,
 };
-use polargen::plot::{render_with, Figure, RenderParams, Style};
+use polargen::plot::{check_image_path, render_with, Figure, RenderParams, Style};
 use polargen::rotor::cruise::cruise_blade_alpha;
 use polargen::rotor::trim::TrimParams;
 use polargen::rotor::{simulate_takeoff, TakeoffResult, TrimResult, KT_TO_MS};
@@ -25,14 +25,14 @@ pub enum PlotKind {
     Alpha {
         #[command(flatten)]
         cases: CaseArgs,
-        /// Airspeed \[kt\].
-        #[arg(long, default_value_t = 60.0)]
+        /// Airspeed in knots.
+        #[arg(long, default_value_t = 60.0, allow_hyphen_values = true)]
         speed_kt: f64,
         /// Radius as a fraction of R.
-        #[arg(long, default_value_t = 0.9)]
+        #[arg(long, default_value_t = 0.9, allow_hyphen_values = true)]
         radius: f64,
         /// Azimuth samples per revolution.
-        #[arg(long, default_value_t = 360)]
+        #[arg(long, default_value_t = 360, allow_hyphen_values = true)]
         samples: usize,
     },
     /// Takeoff time histories: speed, height, rotor rpm, flapping (paper Fig. 11).
@@ -185,6 +185,7 @@ pub fn run(kind: PlotKind) -> Result<()> {
         | PlotKind::Takeoff { cases }
         | PlotKind::Power { cases, .. } => cases,
     };
+    check_image_path(&cases.out).context("--out")?;
     let aircraft = crate::load_aircraft(&cases.aircraft, None)?;
     let mut sections = vec![crate::load_section(&cases.clean)?];
     if let Some(path) = &cases.contaminated {
@@ -200,8 +201,8 @@ pub fn run(kind: PlotKind) -> Result<()> {
             ..
         } => {
             let (speed_kt, radius, samples) = (*speed_kt, *radius, *samples);
-            crate::check_speed(speed_kt)?;
-            crate::check_radius(radius)?;
+            crate::check_speed("speed-kt", speed_kt)?;
+            crate::check_radius(radius, &aircraft)?;
             crate::check_samples(samples)?;
             let curves = sections
                 .par_iter()

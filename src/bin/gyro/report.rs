@@ -11,7 +11,7 @@ use crate::paper::{
 };
 use crate::plot::{alpha_figure, power_plot, takeoff_plot, write_figure, CASE_LABELS};
 use crate::{load_aircraft, load_section, paper_cases, rel, trimmed_speeds, PAPER_TRIM_SPEED_KT};
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use clap::Args;
 use polargen::plot::polar_plots::{mark_lift_coefficient, polar_figure};
 use polargen::plot::{AxisRange, Figure, Marker};
@@ -19,7 +19,7 @@ use polargen::rotor::cruise::{cruise_blade_alpha, sweep_speeds};
 use polargen::rotor::trim::TrimParams;
 use polargen::rotor::{Aircraft, TakeoffResult, TrimResult};
 use polargen::table::fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
-use polargen::table::io::write_atomic;
+use polargen::table::io::{check_output_path, write_atomic};
 use polargen::table::{PolarTable, TableError};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -90,6 +90,7 @@ struct RotorResults {
 
 /// Runs `gyro report`, listing the files written in `buf`.
 pub fn run(args: &ReportArgs, buf: &mut String) -> Result<()> {
+    check_report_paths(&args.out)?;
     let ac = load_aircraft(&args.aircraft, None)?;
     let foils = PAPER_TABLE5
         .iter()
@@ -101,7 +102,7 @@ pub fn run(args: &ReportArgs, buf: &mut String) -> Result<()> {
 
     let mut written = Vec::new();
     let mut figure = |name: &str, fig: &Figure| -> Result<()> {
-        for ext in ["png", "svg"] {
+        for ext in FIGURE_FORMATS {
             let path = args.out.join(format!("{name}.{ext}"));
             write_figure(fig, &path)?;
             written.push(path);
@@ -109,14 +110,15 @@ pub fn run(args: &ReportArgs, buf: &mut String) -> Result<()> {
         Ok(())
     };
     for foil in &foils {
-        figure(&format!("polar_{}", foil.row.stem), &polar_overlay(foil))?;
+        figure(&polar_figure_name(foil.row), &polar_overlay(foil))?;
     }
     let subject = format!("{}, {}", ac.name, foils[0].tables[0].meta().airfoil);
-    figure("blade_alpha", &fig10(&rotor, &subject))?;
+    let [blade_alpha, takeoff, power_required] = ROTOR_FIGURES;
+    figure(blade_alpha, &fig10(&rotor, &subject))?;
     let runs: Vec<(&str, &TakeoffResult)> =
         CASE_LABELS.iter().copied().zip(&rotor.takeoffs).collect();
     figure(
-        "takeoff",
+        takeoff,
         &takeoff_plot(&runs, &format!("Takeoff to 15 m — {subject}")),
     )?;
     let sweeps: Vec<(&str, &[TrimResult])> = CASE_LABELS
@@ -125,7 +127,7 @@ pub fn run(args: &ReportArgs, buf: &mut String) -> Result<()> {
         .map(|(l, s)| (*l, s.as_slice()))
         .collect();
     figure(
-        "power_required",
+        power_required,
         &power_plot(
             &sweeps,
             &format!("Level flight, power required — {subject}"),
@@ -133,7 +135,7 @@ pub fn run(args: &ReportArgs, buf: &mut String) -> Result<()> {
     )?;
 
     let text = markdown(args, &ac, &foils, &rotor);
-    let readme = args.out.join("README.md");
+    let readme = args.out.join(REPORT_README);
     write_atomic(&readme, |w| {
         w.write_all(text.as_bytes())
             .map_err(|e| TableError::io(&readme, e))
@@ -142,6 +144,41 @@ pub fn run(args: &ReportArgs, buf: &mut String) -> Result<()> {
     written.push(readme);
     for path in written {
         outln!(buf, "wrote {}", path.display());
+    }
+    Ok(())
+}
+
+/// Image formats of every report figure.
+const FIGURE_FORMATS: [&str; 2] = ["png", "svg"];
+
+/// File stems of the rotor figures: blade α(ψ), takeoff, power required.
+const ROTOR_FIGURES: [&str; 3] = ["blade_alpha", "takeoff", "power_required"];
+
+/// The report's text file.
+const REPORT_README: &str = "README.md";
+
+/// File stem of the polar figure of one Table 5 airfoil.
+fn polar_figure_name(row: &Table5Row) -> String {
+    format!("polar_{}", row.stem)
+}
+
+/// Check, before any computation, that the report folder and every file the report writes
+/// into it can be written (`--out` not a regular file; no figure or README path a folder),
+/// so that a bad path cannot leave a half-written report behind.
+fn check_report_paths(out: &Path) -> Result<()> {
+    if out.exists() && !out.is_dir() {
+        bail!("--out {}: is not a folder", out.display());
+    }
+    let stems = PAPER_TABLE5
+        .iter()
+        .map(polar_figure_name)
+        .chain(ROTOR_FIGURES.iter().map(|s| s.to_string()));
+    let mut files: Vec<PathBuf> = stems
+        .flat_map(|stem| FIGURE_FORMATS.map(|ext| out.join(format!("{stem}.{ext}"))))
+        .collect();
+    files.push(out.join(REPORT_README));
+    for file in files {
+        check_output_path(&file).context("--out")?;
     }
     Ok(())
 }
