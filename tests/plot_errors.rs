@@ -3,7 +3,9 @@
 
 use std::path::{Path, PathBuf};
 
-use polargen::plot::{render, render_svg_string, Figure, Marker, Panel, PlotError, Series, Style};
+use polargen::plot::{
+    check_image_path, render, render_svg_string, Figure, Marker, Panel, PlotError, Series, Style,
+};
 
 /// A fresh, empty directory for one test.
 fn fresh_dir(name: &str) -> PathBuf {
@@ -65,15 +67,33 @@ fn unknown_extension_is_rejected() {
 }
 
 #[test]
-fn missing_directory_gives_unwritable_error() {
+fn missing_folders_are_created() {
     let dir = fresh_dir("missing");
     for name in ["no/such/dir/plot.svg", "no/such/dir/plot.png"] {
+        render(&parabola("t"), dir.join(name)).expect(name);
+    }
+    assert_eq!(
+        listing(&dir.join("no/such/dir")),
+        vec!["plot.png", "plot.svg"]
+    );
+}
+
+#[test]
+fn path_under_a_file_or_a_folder_gives_unwritable_error() {
+    let dir = fresh_dir("unwritable");
+    std::fs::write(dir.join("file"), b"x").expect("seed file");
+    std::fs::create_dir_all(dir.join("folder.svg")).expect("seed folder");
+    for name in ["file/plot.svg", "file/sub/plot.png", "folder.svg"] {
         let path = dir.join(name);
         let err = render(&parabola("t"), &path).expect_err(name);
         assert!(matches!(err, PlotError::Unwritable { .. }), "{err:?}");
         assert_one_line(&err, &path.display().to_string());
+        assert_eq!(
+            err.to_string(),
+            check_image_path(&path).unwrap_err().to_string()
+        );
     }
-    assert!(listing(&dir).is_empty());
+    assert_eq!(listing(&dir), vec!["file", "folder.svg"]);
 }
 
 #[test]
