@@ -98,6 +98,11 @@ fn unknown_field_and_bad_values_are_rejected() {
             "takeoff.max_time_s",
         ),
         (
+            "max_time_s = 120.0",
+            "max_time_s = 500",
+            "takeoff.max_time_s",
+        ),
+        (
             "field_altitude_m = 0.0",
             "field_altitude_m = 1e6",
             "takeoff.field_altitude_m",
