@@ -144,6 +144,20 @@ fn errors_are_one_line() {
     let not_under_a_folder = format!("{bad}/x.svg");
     let csv = dir.join("point.csv").to_str().unwrap().to_string();
     let txt = dir.join("point.txt").to_str().unwrap().to_string();
+    /// plot-point of NACA 0012 at Re 1e6, alpha 2 with the given extra arguments
+    fn point<'a>(extra: &[&'a str]) -> Vec<&'a str> {
+        let mut args = vec![
+            "plot-point",
+            "--airfoil",
+            "naca0012",
+            "--re",
+            "1e6",
+            "--alpha",
+            "2",
+        ];
+        args.extend_from_slice(extra);
+        args
+    }
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec!["plot", &free, "--out", out], "give --re and --mach"),
         (
@@ -252,49 +266,15 @@ fn errors_are_one_line() {
             "on the way to Cl 4",
         ),
         (
-            vec![
-                "plot-point",
-                "--airfoil",
-                "naca0012",
-                "--re",
-                "1e6",
-                "--alpha",
-                "2",
-                "--out",
-                "/proc/no/x.png",
-            ],
+            point(&["--out", "/proc/no/x.png"]),
             "cannot write plot /proc/no/x.png",
         ),
         (
-            vec![
-                "plot-point",
-                "--airfoil",
-                "naca0012",
-                "--re",
-                "1e6",
-                "--alpha",
-                "2",
-                "--out",
-                &not_under_a_folder,
-                "--csv",
-                &csv,
-            ],
+            point(&["--out", &not_under_a_folder, "--csv", &csv]),
             "is not a folder",
         ),
         (
-            vec![
-                "plot-point",
-                "--airfoil",
-                "naca0012",
-                "--re",
-                "1e6",
-                "--alpha",
-                "2",
-                "--out",
-                &txt,
-                "--csv",
-                &csv,
-            ],
+            point(&["--out", &txt, "--csv", &csv]),
             "unknown file extension",
         ),
         (vec!["plot", &empty, "--out", out], "CSV line 1: empty file"),

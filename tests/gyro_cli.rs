@@ -310,6 +310,11 @@ fn bad_values_and_paths_are_refused_up_front() {
         args.extend_from_slice(extra);
         gyro(&args)
     };
+    let takeoff = |extra: &[&str]| {
+        let mut args = vec!["takeoff", "--aircraft", &a, "--table", &t];
+        args.extend_from_slice(extra);
+        gyro(&args)
+    };
     let cases: Vec<(Output, &str)> = vec![
         (
             trim(&["--speed-kt", "-60"]),
@@ -335,28 +340,9 @@ fn bad_values_and_paths_are_refused_up_front() {
             gyro(&["alpha", "--aircraft", &a, "--table", &t, "--radius", "0.05"]),
             "--radius 0.05: must be a fraction of R on the blade",
         ),
+        (takeoff(&["--history", &folder]), "--history: "),
         (
-            gyro(&[
-                "takeoff",
-                "--aircraft",
-                &a,
-                "--table",
-                &t,
-                "--history",
-                &folder,
-            ]),
-            "--history: ",
-        ),
-        (
-            gyro(&[
-                "takeoff",
-                "--aircraft",
-                &a,
-                "--table",
-                &t,
-                "--history",
-                &under_file,
-            ]),
+            takeoff(&["--history", &under_file]),
             "plain: is not a folder",
         ),
         (
