@@ -164,7 +164,12 @@ fn grid_output_is_identical_for_any_thread_count() {
     let text = String::from_utf8(one.stdout.clone()).unwrap();
     // 2 Re × 2 M × 4 α rows plus the header.
     assert_eq!(text.lines().count(), 17);
-    assert!(stderr(&one).contains("of 16 points converged"));
+    // stderr is not a terminal here: no progress bar, only the summary line.
+    for o in [&one, &two] {
+        let err = stderr(o);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.starts_with("polargen: ") && err.contains("of 16 points converged"));
+    }
 }
 
 #[test]
