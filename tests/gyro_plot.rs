@@ -394,5 +394,33 @@ fn errors_are_one_line() {
         "naca8h12_free.csv",
     );
     assert!(!dir.join("e.svg").exists() && !dir.join("r").exists());
+    // A misnamed table (the 23012 under the 8-H-12's name) is refused, not reported on.
+    let polars_dir = dir.join("polars");
+    std::fs::create_dir_all(&polars_dir).unwrap();
+    for t in ["naca8h12_xtr0.07", "naca23012_free", "naca23012_xtr0.07"] {
+        std::fs::copy(
+            polars(&format!("{t}.csv")),
+            polars_dir.join(format!("{t}.csv")),
+        )
+        .unwrap();
+    }
+    std::fs::copy(
+        polars("naca23012_free.csv"),
+        polars_dir.join("naca8h12_free.csv"),
+    )
+    .unwrap();
+    assert_one_line_error(
+        &gyro(&[
+            "report",
+            "--aircraft",
+            &ac,
+            "--polars",
+            polars_dir.to_str().unwrap(),
+            "--out",
+            dir.join("r").to_str().unwrap(),
+        ]),
+        "naca8h12_free.csv: holds NACA 23012 with transition at 1/1 (upper/lower), expected naca8h12 at 1",
+    );
+    assert!(!dir.join("r").exists());
     std::fs::remove_dir_all(dir).unwrap();
 }

@@ -183,10 +183,39 @@ fn check_report_paths(out: &Path) -> Result<()> {
     Ok(())
 }
 
+/// Transition setting (x/c on both surfaces) of the free and the fixed-transition tables.
+const TRANSITION_XTR: [f64; 2] = [1.0, 0.07];
+
+/// Check that a table file holds the case its name promises: the airfoil of `stem` (names
+/// compared in lower case without spaces and dashes, `NACA 8-H-12` ~ `naca8h12`) at transition
+/// `xtr` on both surfaces, so that a misnamed file cannot enter the report.
+fn check_table_case(table: &PolarTable, path: &Path, stem: &str, xtr: f64) -> Result<()> {
+    let meta = table.meta();
+    let key: String = meta
+        .airfoil
+        .to_ascii_lowercase()
+        .chars()
+        .filter(|c| c.is_ascii_alphanumeric())
+        .collect();
+    if key != stem || meta.xtr_top_set != xtr || meta.xtr_bot_set != xtr {
+        bail!(
+            "{}: holds {} with transition at {}/{} (upper/lower), expected {stem} at {xtr}",
+            path.display(),
+            meta.airfoil,
+            meta.xtr_top_set,
+            meta.xtr_bot_set
+        );
+    }
+    Ok(())
+}
+
 /// Reads the free and fixed-transition tables of one airfoil and looks up Table 5.
 fn load_airfoil(dir: &Path, row: &'static Table5Row) -> Result<Airfoil> {
     let paths = TRANSITIONS.map(|t| dir.join(format!("{}_{t}.csv", row.stem)));
     let [free, fixed] = [load_section(&paths[0])?, load_section(&paths[1])?];
+    for ((table, path), xtr) in [&free, &fixed].iter().zip(&paths).zip(TRANSITION_XTR) {
+        check_table_case(table, path, row.stem, xtr)?;
+    }
     let at_cl = [&free, &fixed].map(|t| {
         alpha_at_cl(
             t,
