@@ -102,6 +102,17 @@ fn unknown_field_and_bad_values_are_rejected() {
             "max_time_s = 500",
             "takeoff.max_time_s",
         ),
+        ("mass_kg = 450.0", "mass_kg = 1e300", "mass_kg"),
+        (
+            "calib_speed_kt = ",
+            "calib_speed_kt = 1e6 #",
+            "propeller.calib_speed_kt",
+        ),
+        (
+            "climb_speed_kt = ",
+            "climb_speed_kt = 1e6 #",
+            "takeoff.climb_speed_kt",
+        ),
         (
             "field_altitude_m = 0.0",
             "field_altitude_m = 1e6",

@@ -44,6 +44,12 @@ pub enum AircraftError {
     },
 }
 
+/// Largest accepted aircraft mass \[kg\] (a sanity bound far above any gyroplane).
+pub const MAX_MASS_KG: f64 = 100_000.0;
+
+/// Largest accepted airspeed of a preset \[kt\].
+const MAX_SPEED_KT: f64 = 300.0;
+
 /// Highest altitude of the atmosphere model (top of the ISA troposphere) \[m\].
 pub const MAX_ISA_ALTITUDE_M: f64 = 11_000.0;
 
@@ -239,7 +245,12 @@ impl Aircraft {
             }
         }
         let r = &self.rotor;
-        positive("mass_kg", self.mass_kg)?;
+        in_range(
+            "mass_kg",
+            self.mass_kg,
+            (f64::MIN_POSITIVE, MAX_MASS_KG),
+            "must be positive and at most 100000 kg",
+        )?;
         non_negative("parasitic_drag_area_m2", self.parasitic_drag_area_m2)?;
         positive("rotor.radius_m", r.radius_m)?;
         positive("rotor.chord_m", r.chord_m)?;
@@ -317,7 +328,12 @@ impl Aircraft {
         positive("propeller.gear_ratio", p.gear_ratio)?;
         positive("propeller.static_thrust_n", p.static_thrust_n)?;
         positive("propeller.static_engine_rpm", p.static_engine_rpm)?;
-        positive("propeller.calib_speed_kt", p.calib_speed_kt)?;
+        in_range(
+            "propeller.calib_speed_kt",
+            p.calib_speed_kt,
+            (f64::MIN_POSITIVE, MAX_SPEED_KT),
+            "must be above 0 and at most 300 kt",
+        )?;
         positive("propeller.calib_thrust_n", p.calib_thrust_n)?;
         positive("propeller.calib_engine_rpm", p.calib_engine_rpm)?;
         positive("propeller.max_engine_rpm", p.max_engine_rpm)?;
@@ -339,7 +355,12 @@ impl Aircraft {
             });
         }
         non_negative("takeoff.rolling_friction", t.rolling_friction)?;
-        positive("takeoff.climb_speed_kt", t.climb_speed_kt)?;
+        in_range(
+            "takeoff.climb_speed_kt",
+            t.climb_speed_kt,
+            (f64::MIN_POSITIVE, MAX_SPEED_KT),
+            "must be above 0 and at most 300 kt",
+        )?;
         non_negative("takeoff.pilot_gain_deg_per_ms", t.pilot_gain_deg_per_ms)?;
         positive("takeoff.pilot_time_constant_s", t.pilot_time_constant_s)?;
         positive("takeoff.screen_height_m", t.screen_height_m)?;

@@ -7,7 +7,7 @@ use clap::{Args, Parser, Subcommand};
 use paper::{PAPER_TAKEOFF, PAPER_TRIM};
 use polargen::diagnostics::error_line;
 use polargen::polar::PolarPoint;
-use polargen::rotor::aircraft::MAX_ISA_ALTITUDE_M;
+use polargen::rotor::aircraft::{MAX_ISA_ALTITUDE_M, MAX_MASS_KG};
 use polargen::rotor::cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds};
 use polargen::rotor::trim::{trim_aircraft, TrimParams, TrimResult};
 use polargen::rotor::{simulate_takeoff, Aircraft, TakeoffResult};
@@ -255,8 +255,8 @@ fn single_polar_table(path: &Path) -> Result<PolarTable> {
 fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
     let mut ac = Aircraft::from_toml_file(path)?;
     if let Some(m) = mass {
-        if !(m.is_finite() && m > 0.0) {
-            bail!("--mass must be a positive number of kg, got {m}");
+        if !(m.is_finite() && m > 0.0 && m <= MAX_MASS_KG) {
+            bail!("--mass {m}: must be a positive number of kg, at most {MAX_MASS_KG}");
         }
         ac.mass_kg = m;
     }
