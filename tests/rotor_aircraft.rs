@@ -104,6 +104,11 @@ fn unknown_field_and_bad_values_are_rejected() {
         ),
         ("mass_kg = 450.0", "mass_kg = 1e300", "mass_kg"),
         (
+            "max_engine_rpm = 5800.0",
+            "max_engine_rpm = 1000.0",
+            "propeller.max_engine_rpm",
+        ),
+        (
             "calib_speed_kt = ",
             "calib_speed_kt = 1e6 #",
             "propeller.calib_speed_kt",

@@ -337,6 +337,13 @@ impl Aircraft {
         positive("propeller.calib_thrust_n", p.calib_thrust_n)?;
         positive("propeller.calib_engine_rpm", p.calib_engine_rpm)?;
         positive("propeller.max_engine_rpm", p.max_engine_rpm)?;
+        if p.max_engine_rpm < p.static_engine_rpm.max(p.calib_engine_rpm) {
+            return Err(AircraftError::Invalid {
+                field: "propeller.max_engine_rpm",
+                value: p.max_engine_rpm,
+                reason: "must be at least the static and the calibration engine rpm",
+            });
+        }
         if !(1.0..=2.0).contains(&p.zero_torque_j_factor) {
             return Err(AircraftError::Invalid {
                 field: "propeller.zero_torque_j_factor",
