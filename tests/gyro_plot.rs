@@ -213,6 +213,16 @@ fn report_tables_match_the_single_commands() {
         assert!(len > 5_000, "{name}: {len} bytes");
     }
     let md = std::fs::read_to_string(dir.join("README.md")).unwrap();
+    // The share of lookups clamped to the tables' edges is stated under Table 3.
+    let coverage = md
+        .lines()
+        .find(|l| l.starts_with("Table coverage: at these trims "))
+        .expect("coverage line");
+    assert!(
+        coverage.contains("fall outside the tables' range (Re 250000…2500000, M 0…0.5)")
+            && coverage.contains("the advancing tip, which reaches M 0.5"),
+        "{coverage}"
+    );
 
     // Tables 3 and 4: "ours clean" is cell 2, "ours contaminated" cell 5, same runs as
     // `gyro trim --json` and `gyro takeoff --json` on the 8-H-12 tables.

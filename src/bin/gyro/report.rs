@@ -17,7 +17,7 @@ use polargen::plot::polar_plots::{mark_lift_coefficient, polar_figure};
 use polargen::plot::{AxisRange, Figure, Marker};
 use polargen::rotor::cruise::{cruise_blade_alpha, sweep_speeds};
 use polargen::rotor::trim::TrimParams;
-use polargen::rotor::{Aircraft, TakeoffResult, TrimResult};
+use polargen::rotor::{Aircraft, Atmosphere, TakeoffResult, TrimResult};
 use polargen::table::fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
 use polargen::table::io::{check_output_path, write_atomic};
 use polargen::table::{PolarTable, TableError};
@@ -664,6 +664,30 @@ fn markdown(args: &ReportArgs, ac: &Aircraft, foils: &[Airfoil], rotor: &RotorRe
     comparison_table(o, &rows);
     outln!(o);
     comparison_words(o, &rows);
+    outln!(o);
+    let [clean, dirty] = &rotor.trims;
+    let table = &rotor_foil.tables[0];
+    // Advancing-tip Mach number (ΩR + V)/a of the clean trim, ISA sea level.
+    let tip_speed = clean.rotor_rpm * std::f64::consts::TAU / 60.0 * ac.rotor.radius_m;
+    let tip_mach = (tip_speed + clean.airspeed_ms) / Atmosphere::isa(0.0).speed_of_sound;
+    let mach_max = table.mach()[table.mach().len() - 1];
+    let tip = if tip_mach > mach_max {
+        format!(", and the advancing tip, which reaches M {tip_mach:.2} (clean trim)")
+    } else {
+        String::new()
+    };
+    outln!(
+        o,
+        "Table coverage: at these trims {:.1} % (clean) and {:.1} % (contaminated) of the \
+         blade-element lookups (strips × azimuths) fall outside the tables' range (Re {}…{}, \
+         M {}…{mach_max}) and use its edge values: the inboard strips below the lowest \
+         Reynolds number{tip}.",
+        100.0 * clean.table_clamped_fraction,
+        100.0 * dirty.table_clamped_fraction,
+        table.re()[0],
+        table.re()[table.re().len() - 1],
+        table.mach()[0],
+    );
     outln!(o);
 
     outln!(o, "## Table 4 — takeoff to 15 m, ISA sea level, no wind");
