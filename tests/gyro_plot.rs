@@ -391,18 +391,19 @@ fn errors_are_one_line() {
         ]),
         "--to-kt 40: below --from-kt 80",
     );
-    assert_one_line_error(
-        &gyro(&[
+    // `gyro report` from the tables in `polars_dir` into dir/r
+    let report = |polars_dir: &std::path::Path| {
+        gyro(&[
             "report",
             "--aircraft",
             &ac,
             "--polars",
-            dir.to_str().unwrap(),
+            polars_dir.to_str().unwrap(),
             "--out",
             dir.join("r").to_str().unwrap(),
-        ]),
-        "naca8h12_free.csv",
-    );
+        ])
+    };
+    assert_one_line_error(&report(&dir), "naca8h12_free.csv");
     assert!(!dir.join("e.svg").exists() && !dir.join("r").exists());
     // A misnamed table (the 23012 under the 8-H-12's name) is refused, not reported on.
     let polars_dir = dir.join("polars");
@@ -420,15 +421,7 @@ fn errors_are_one_line() {
     )
     .unwrap();
     assert_one_line_error(
-        &gyro(&[
-            "report",
-            "--aircraft",
-            &ac,
-            "--polars",
-            polars_dir.to_str().unwrap(),
-            "--out",
-            dir.join("r").to_str().unwrap(),
-        ]),
+        &report(&polars_dir),
         "naca8h12_free.csv: holds NACA 23012 with transition at 1/1 (upper/lower), expected naca8h12 at 1",
     );
     assert!(!dir.join("r").exists());

@@ -20,7 +20,7 @@ pub use coordinates::{parse_airfoil_text, read_airfoil_file, to_selig_string, Co
 pub use error::GeometryError;
 pub use naca::{naca, NacaOptions, NacaSection, TrailingEdge};
 pub use paneling::{PaneledAirfoil, PanelingParams, DEFAULT_PANEL_NODES};
-pub use registry::{airfoil_by_name_or_path, naca8h12};
+pub use registry::{airfoil_by_name_or_path, airfoil_key, naca8h12};
 pub use spline::{ContourSpline, CubicSpline, EndCondition};
 
 /// Deviation of the chord from 1 and of the leading-edge point from the origin (chord units)

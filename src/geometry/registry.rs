@@ -17,6 +17,15 @@ pub fn naca8h12() -> Result<Airfoil, GeometryError> {
     parse_airfoil_text(NACA8H12_DAT, "naca8h12 (embedded)", "NACA 8-H-12").map(|(a, _)| a)
 }
 
+/// The lookup key of an airfoil name: lower case without white space, `-` and `_`, so that
+/// `NACA 8-H-12`, `naca8h12` and `NACA_8H12` are the same airfoil.
+pub fn airfoil_key(name: &str) -> String {
+    name.to_ascii_lowercase()
+        .chars()
+        .filter(|c| !c.is_whitespace() && *c != '-' && *c != '_')
+        .collect()
+}
+
 /// Resolves `s` to an airfoil:
 /// * `naca8h12` (also `NACA 8-H-12`, any case) → embedded 8-H-12 ordinates;
 /// * `nacaDDDD` / `nacaDDDDD` / `NACA 2412` (any case, spaces allowed) → NACA generator with
@@ -28,11 +37,7 @@ pub fn naca8h12() -> Result<Airfoil, GeometryError> {
 /// [`GeometryError::UnknownAirfoil`] listing what is accepted.
 pub fn airfoil_by_name_or_path(s: &str) -> Result<Airfoil, GeometryError> {
     let trimmed = s.trim();
-    let key: String = trimmed
-        .to_ascii_lowercase()
-        .chars()
-        .filter(|c| !c.is_whitespace() && *c != '-' && *c != '_')
-        .collect();
+    let key = airfoil_key(trimmed);
     if key == "naca8h12" {
         return naca8h12();
     }

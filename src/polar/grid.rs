@@ -24,8 +24,8 @@ pub struct GridPolar {
 /// Run one sweep over `alphas` for every `(re, mach)` node on a pool of `threads` threads
 /// (0 = all cores). A node runs at most two tasks at once (its two α branches), so the pool
 /// never gets more than two threads per node: more could not be used, and thousands of idle
-/// threads cost seconds to start. `make_solver(re, mach)` builds a node's solver; a node whose solver cannot
-/// be built fails the whole grid with that error. `on_polar_done` is called after each node
+/// threads cost seconds to start. `make_solver(re, mach)` builds a node's solver; a node whose
+/// solver cannot be built fails the whole grid with that error. `on_polar_done` is called after each node
 /// (from worker threads; for progress display). Polars come back in the order of `nodes`.
 pub fn run_grid<S, E, F, P>(
     nodes: &[(f64, f64)],

@@ -47,8 +47,9 @@ pub enum AircraftError {
 /// Largest accepted aircraft mass \[kg\] (a sanity bound far above any gyroplane).
 pub const MAX_MASS_KG: f64 = 100_000.0;
 
-/// Largest accepted airspeed of a preset \[kt\].
-const MAX_SPEED_KT: f64 = 300.0;
+/// Largest accepted airspeed \[kt\] (of a preset, and of the `gyro` commands, which take it as
+/// an exclusive bound).
+pub const MAX_SPEED_KT: f64 = 300.0;
 
 /// Highest altitude of the atmosphere model (top of the ISA troposphere) \[m\].
 pub const MAX_ISA_ALTITUDE_M: f64 = 11_000.0;

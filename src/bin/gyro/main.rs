@@ -7,7 +7,7 @@ use clap::{Args, Parser, Subcommand};
 use paper::{PAPER_TAKEOFF, PAPER_TRIM};
 use polargen::diagnostics::error_line;
 use polargen::polar::PolarPoint;
-use polargen::rotor::aircraft::{MAX_ISA_ALTITUDE_M, MAX_MASS_KG};
+use polargen::rotor::aircraft::{MAX_ISA_ALTITUDE_M, MAX_MASS_KG, MAX_SPEED_KT};
 use polargen::rotor::cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds};
 use polargen::rotor::trim::{trim_aircraft, TrimParams, TrimResult};
 use polargen::rotor::{simulate_takeoff, Aircraft, TakeoffResult};
@@ -262,9 +262,6 @@ fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
     }
     Ok(ac)
 }
-
-/// Highest airspeed any command accepts \[kt\] (exclusive).
-const MAX_SPEED_KT: f64 = 300.0;
 
 /// Most trims one speed sweep may ask for.
 const MAX_SWEEP_SPEEDS: usize = 1000;

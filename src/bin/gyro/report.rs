@@ -13,11 +13,12 @@ use crate::plot::{alpha_figure, power_plot, takeoff_plot, write_figure, CASE_LAB
 use crate::{load_aircraft, load_section, paper_cases, rel, trimmed_speeds, PAPER_TRIM_SPEED_KT};
 use anyhow::{bail, Context, Result};
 use clap::Args;
+use polargen::geometry::airfoil_key;
 use polargen::plot::polar_plots::{mark_lift_coefficient, polar_figure};
 use polargen::plot::{AxisRange, Figure, Marker};
 use polargen::rotor::cruise::{cruise_blade_alpha, sweep_speeds};
 use polargen::rotor::trim::TrimParams;
-use polargen::rotor::{Aircraft, Atmosphere, TakeoffResult, TrimResult};
+use polargen::rotor::{rpm_to_rad_s, Aircraft, Atmosphere, TakeoffResult, TrimResult};
 use polargen::table::fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
 use polargen::table::io::{check_output_path, write_atomic};
 use polargen::table::{PolarTable, TableError};
@@ -187,17 +188,11 @@ fn check_report_paths(out: &Path) -> Result<()> {
 const TRANSITION_XTR: [f64; 2] = [1.0, 0.07];
 
 /// Check that a table file holds the case its name promises: the airfoil of `stem` (names
-/// compared in lower case without spaces and dashes, `NACA 8-H-12` ~ `naca8h12`) at transition
-/// `xtr` on both surfaces, so that a misnamed file cannot enter the report.
+/// compared by [`airfoil_key`], `NACA 8-H-12` ~ `naca8h12`) at transition `xtr` on both
+/// surfaces, so that a misnamed file cannot enter the report.
 fn check_table_case(table: &PolarTable, path: &Path, stem: &str, xtr: f64) -> Result<()> {
     let meta = table.meta();
-    let key: String = meta
-        .airfoil
-        .to_ascii_lowercase()
-        .chars()
-        .filter(|c| c.is_ascii_alphanumeric())
-        .collect();
-    if key != stem || meta.xtr_top_set != xtr || meta.xtr_bot_set != xtr {
+    if airfoil_key(&meta.airfoil) != stem || meta.xtr_top_set != xtr || meta.xtr_bot_set != xtr {
         bail!(
             "{}: holds {} with transition at {}/{} (upper/lower), expected {stem} at {xtr}",
             path.display(),
@@ -668,7 +663,7 @@ fn markdown(args: &ReportArgs, ac: &Aircraft, foils: &[Airfoil], rotor: &RotorRe
     let [clean, dirty] = &rotor.trims;
     let table = &rotor_foil.tables[0];
     // Advancing-tip Mach number (ΩR + V)/a of the clean trim, ISA sea level.
-    let tip_speed = clean.rotor_rpm * std::f64::consts::TAU / 60.0 * ac.rotor.radius_m;
+    let tip_speed = rpm_to_rad_s(clean.rotor_rpm) * ac.rotor.radius_m;
     let tip_mach = (tip_speed + clean.airspeed_ms) / Atmosphere::isa(0.0).speed_of_sound;
     let mach_max = table.mach()[table.mach().len() - 1];
     let tip = if tip_mach > mach_max {
