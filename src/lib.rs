@@ -19,6 +19,8 @@
 //! * [`table`] — Re × Mach × α tables, lookup with 360° extension, file formats.
 //! * [`rotor`] — blade-element model of a teetering gyroplane rotor: trim and takeoff.
 //! * [`plot`] — SVG/PNG plots of polars, point distributions and rotor results.
+//! * [`section`] — the shared vocabulary of section data: polar points, flow conditions and
+//!   the lookup interface the rotor consumes.
 //! * [`diagnostics`] — one-line error text for the command-line tools.
 
 #![warn(missing_docs)]
@@ -30,5 +32,6 @@ pub mod inviscid;
 pub mod plot;
 pub mod polar;
 pub mod rotor;
+pub mod section;
 pub mod table;
 pub mod viscous;

@@ -18,7 +18,7 @@ use polargen::plot::rotor_plots::{
     TakeoffCase,
 };
 use polargen::plot::{render, Figure, Style};
-use polargen::polar::PolarPoint;
+use polargen::section::PolarPoint;
 
 const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/plot");
 

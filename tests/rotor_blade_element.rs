@@ -3,7 +3,7 @@
 mod rotor_support;
 
 use polargen::rotor::blade_element::{strip_load, wrap_deg, AirState, StripFlow};
-use polargen::table::{Lookup, SectionAero};
+use polargen::section::{Lookup, SectionAero};
 
 const AIR: AirState = AirState {
     density: 1.225,

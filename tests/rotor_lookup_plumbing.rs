@@ -3,7 +3,7 @@
 mod rotor_support;
 
 use polargen::rotor::{rpm_to_rad_s, Atmosphere, FlightCondition, Rotor};
-use polargen::table::{Lookup, SectionAero};
+use polargen::section::{Lookup, SectionAero};
 use rotor_support::{mtosport, AnalyticSection};
 use std::cell::RefCell;
 

@@ -1,8 +1,9 @@
 //! The default-grid tables shipped in `polars/`: grid shape, converged fraction, exact lookups
 //! on grid nodes, and interpolated values at the paper's condition against XFOIL.
 
+use polargen::section::SectionAero;
 use polargen::table::io::read_table;
-use polargen::table::{PolarTable, SectionAero};
+use polargen::table::PolarTable;
 use std::path::Path;
 
 fn shipped(name: &str) -> PolarTable {

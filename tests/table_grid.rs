@@ -2,8 +2,9 @@
 
 mod table_support;
 
-use polargen::polar::PolarPoint;
-use polargen::table::{PolarTable, SectionAero, TableError};
+use polargen::section::PolarPoint;
+use polargen::section::SectionAero;
+use polargen::table::{PolarTable, TableError};
 use table_support::*;
 
 fn small(re: Vec<f64>, mach: Vec<f64>) -> Result<PolarTable, TableError> {
@@ -173,7 +174,7 @@ fn tables_can_be_shared_across_threads() {
         let h: Vec<_> = (0..2)
             .map(|k| {
                 let t = &t;
-                s.spawn(move || polargen::table::SectionAero::lookup(t, k as f64, 1e6, 0.2).cl)
+                s.spawn(move || polargen::section::SectionAero::lookup(t, k as f64, 1e6, 0.2).cl)
             })
             .collect();
         h.into_iter().map(|h| h.join().unwrap()).collect()

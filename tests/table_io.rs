@@ -3,13 +3,14 @@
 
 mod table_support;
 
-use polargen::polar::PolarPoint;
+use polargen::section::PolarPoint;
+use polargen::section::SectionAero;
 use polargen::table::io::c81::{write_c81, C81Options};
 use polargen::table::io::csv::parse_csv;
 use polargen::table::io::json::parse_json;
 use polargen::table::io::xfoil_polar::{polar_file_name, re_label};
 use polargen::table::io::{check_output_path, write_atomic};
-use polargen::table::{read_table, write_table, PolarTable, SectionAero, TableError, TableFormat};
+use polargen::table::{read_table, write_table, PolarTable, TableError, TableFormat};
 use std::path::{Path, PathBuf};
 use table_support::*;
 

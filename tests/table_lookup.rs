@@ -3,8 +3,9 @@
 
 mod table_support;
 
-use polargen::polar::PolarPoint;
-use polargen::table::{PolarTable, PostStallParams, SectionAero};
+use polargen::section::PolarPoint;
+use polargen::section::SectionAero;
+use polargen::table::{PolarTable, PostStallParams};
 use table_support::*;
 
 const EXACT: f64 = 1e-12;

@@ -20,7 +20,8 @@
 //!   re-march with or without the carried corrections.
 
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
-use polargen::polar::{sweep, PolarPoint, SweepParams, ViscousSweep};
+use polargen::polar::{sweep, SweepParams, ViscousSweep};
+use polargen::section::PolarPoint;
 use polargen::viscous::ViscousParams;
 use std::collections::HashMap;
 

@@ -25,8 +25,9 @@ use polargen::plot::point_plots::{point_figure, PointCase};
 use polargen::plot::polar_plots::polar_figure;
 use polargen::plot::{check_image_path, render, Style};
 use polargen::polar::{
-    parse_alpha_range, run_grid, solve_at_cl, PolarPoint, SweepParams, TargetClParams, ViscousSweep,
+    parse_alpha_range, run_grid, solve_at_cl, SweepParams, TargetClParams, ViscousSweep,
 };
+use polargen::section::PolarPoint;
 use polargen::table::io::csv::write_csv_to;
 use polargen::table::io::json::write_json_to;
 use polargen::table::io::{check_output_path, read_table, write_atomic, write_table, TableFormat};

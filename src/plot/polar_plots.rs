@@ -2,7 +2,7 @@
 //! or more polars (e.g. clean vs fixed transition, or ours vs XFOIL).
 
 use super::figure::{Figure, Marker, Panel, Series, Style};
-use crate::polar::PolarPoint;
+use crate::section::PolarPoint;
 
 /// y-axis label of the panels that plot the lift coefficient.
 const CL_LABEL: &str = "Cl [-]";

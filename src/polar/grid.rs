@@ -8,7 +8,7 @@
 use rayon::prelude::*;
 
 use super::sweep::{sweep_split, SweepParams, WarmStartSolver};
-use super::PolarPoint;
+use crate::section::PolarPoint;
 
 /// One computed polar of a grid.
 #[derive(Clone, Debug, PartialEq)]

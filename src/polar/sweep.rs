@@ -12,7 +12,7 @@
 //! the same converged state along the same α path is not redone: its outcome is replayed.
 
 use super::range::march_order;
-use super::PolarPoint;
+use crate::section::PolarPoint;
 
 /// A point solver that can be marched along α with warm starts.
 pub trait WarmStartSolver {

@@ -1,7 +1,7 @@
 //! The viscous solver as a [`WarmStartSolver`] for sweeps and grids.
 
 use super::sweep::WarmStartSolver;
-use super::PolarPoint;
+use crate::section::PolarPoint;
 use std::sync::Arc;
 
 use crate::geometry::Airfoil;

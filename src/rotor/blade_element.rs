@@ -19,7 +19,7 @@
 //! (σc_d0/8)(1 + 4.6μ²) (Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., ch. 5,
 //! profile power in forward flight; Johnson, *Helicopter Theory*, ch. 5).
 
-use crate::table::{Lookup, SectionAero};
+use crate::section::{Lookup, SectionAero};
 
 /// Air state used by a strip (density, viscosity and speed of sound).
 #[derive(Clone, Copy, Debug, PartialEq)]

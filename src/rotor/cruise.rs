@@ -7,7 +7,7 @@ use super::atmosphere::Atmosphere;
 use super::rotor::Rotor;
 use super::trim::{trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
 use super::KT_TO_MS;
-use crate::table::SectionAero;
+use crate::section::SectionAero;
 use rayon::prelude::*;
 
 /// One speed of a [`speed_sweep`]: the airspeed \[kt\] and its trim (or why there is none).

@@ -1,7 +1,7 @@
 //! Blade-element (strip) model of a two-bladed teetering gyroplane rotor driven by a polar
 //! table: autorotation, cruise trim and takeoff.
 //!
-//! The rotor sees the airfoil only through [`SectionAero`](crate::table::SectionAero):
+//! The rotor sees the airfoil only through [`SectionAero`](crate::section::SectionAero):
 //! every strip turns its local velocity into (α, Re, M) and asks the section for
 //! (c_l, c_d, c_m). Layers inside this module:
 //!

@@ -12,7 +12,7 @@ use super::flapping::{first_harmonics, Teeter};
 use super::inflow::{
     drees_coefficients, gessow_myers_tip_loss, glauert_induced_velocity, glauert_thrust,
 };
-use crate::table::SectionAero;
+use crate::section::SectionAero;
 use std::f64::consts::TAU;
 
 /// Errors of the rotor solution.
@@ -145,7 +145,7 @@ pub struct RotorSolution {
     /// Fraction of the strip-azimuth samples in reverse flow.
     pub reverse_flow_fraction: f64,
     /// Fraction of the strip-azimuth samples whose Reynolds or Mach number lay outside the
-    /// section table, so that the lookup used the table's edge (see [`Lookup`](crate::table::Lookup)).
+    /// section table, so that the lookup used the table's edge (see [`Lookup`](crate::section::Lookup)).
     pub table_clamped_fraction: f64,
     /// Newton iterations used.
     pub iterations: usize,

@@ -25,7 +25,7 @@ use super::atmosphere::Atmosphere;
 use super::propeller::{PropellerError, PropellerMap};
 use super::rotor::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::{rad_s_to_rpm, rpm_to_rad_s, G0};
-use crate::table::SectionAero;
+use crate::section::SectionAero;
 use serde::Serialize;
 
 /// Errors of the takeoff simulation.

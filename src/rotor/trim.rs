@@ -15,7 +15,7 @@ use super::atmosphere::Atmosphere;
 use super::propeller::{PropellerError, PropellerMap};
 use super::rotor::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::{rad_s_to_rpm, rpm_to_rad_s, KT_TO_MS};
-use crate::table::SectionAero;
+use crate::section::SectionAero;
 use serde::Serialize;
 
 /// Errors of autorotation and trim.

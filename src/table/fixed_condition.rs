@@ -5,8 +5,8 @@
 //! Both go through [`SectionAero::lookup`] — the same interpolation the rotor model sees — so
 //! what they report is what the rotor uses.
 
-use super::{Lookup, SectionAero};
-use crate::polar::PolarPoint;
+use crate::section::PolarPoint;
+use crate::section::{Lookup, SectionAero};
 
 /// The polar of `section` at (`re`, `mach`), one point per α of `alphas` \[deg\], from lookups.
 ///

@@ -3,7 +3,7 @@
 use super::error::TableError;
 use super::lookup::{bracket, AlphaCurve};
 use super::post_stall::PostStallParams;
-use crate::polar::PolarPoint;
+use crate::section::PolarPoint;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 /// How a table was made: the airfoil and the solver settings shared by all its polars.
@@ -28,7 +28,7 @@ pub struct TableMeta {
 ///
 /// Axes are strictly increasing; polars are stored Re-major (`index = i_re·n_mach + i_mach`)
 /// with their points sorted by α. Unconverged points are kept (and written to CSV/JSON) but
-/// never used by [`lookup`](super::SectionAero::lookup).
+/// never used by [`lookup`](crate::section::SectionAero::lookup).
 #[derive(Clone, Debug)]
 pub struct PolarTable {
     meta: TableMeta,
@@ -260,7 +260,7 @@ impl PolarTable {
 
     /// Whether lookups are possible: at least one polar has two converged points. A table
     /// without (e.g. a single-α polar, or a grid where everything failed) is still a valid
-    /// record of what was computed and can be written, but [`lookup`](super::SectionAero::lookup)
+    /// record of what was computed and can be written, but [`lookup`](crate::section::SectionAero::lookup)
     /// returns NaN coefficients on it.
     pub fn has_lookup(&self) -> bool {
         !self.curves.is_empty()

@@ -18,8 +18,9 @@
 //! extension. Outside the Re or Mach axis the value is clamped to the edge and flagged.
 
 use super::post_stall::{Extension360, Junction, PostStallParams};
-use super::{Lookup, PolarTable, SectionAero};
-use crate::polar::PolarPoint;
+use super::PolarTable;
+use crate::section::PolarPoint;
+use crate::section::{Lookup, SectionAero};
 
 /// One polar prepared for fast lookups: converged points sorted by α, PCHIP slopes, bridged
 /// intervals and the 360° extension.

@@ -5,7 +5,7 @@
 use std::sync::Arc;
 
 use crate::geometry::Airfoil;
-use crate::polar::PolarPoint;
+use crate::section::PolarPoint;
 
 use super::bl_model::{BoundaryLayerModel, Regime};
 use super::error::ViscousError;

@@ -4,7 +4,7 @@
 //! paper reports for the NACA 8-H-12 with transition fixed at 7 % chord.
 #![allow(dead_code)]
 
-use polargen::table::{Lookup, SectionAero};
+use polargen::section::{Lookup, SectionAero};
 
 /// Analytic section.
 #[derive(Clone, Copy, Debug)]

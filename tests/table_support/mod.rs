@@ -1,7 +1,7 @@
 //! Shared builders for the table tests: analytic polars and the XFOIL reference polars.
 #![allow(dead_code)]
 
-use polargen::polar::PolarPoint;
+use polargen::section::PolarPoint;
 use polargen::table::{PolarTable, TableMeta};
 
 /// Metadata of the synthetic test tables.

@@ -32,7 +32,8 @@
 
 use super::atomic::write_atomic;
 use super::xfoil_polar::re_label;
-use crate::table::{PolarTable, SectionAero, TableError};
+use crate::section::SectionAero;
+use crate::table::{PolarTable, TableError};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 

@@ -8,7 +8,7 @@
 //! cannot be represented and reads back as a ragged grid.
 
 use super::atomic::write_atomic;
-use crate::polar::PolarPoint;
+use crate::section::PolarPoint;
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::collections::HashMap;
 use std::io::{Read, Write};

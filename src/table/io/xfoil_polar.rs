@@ -5,7 +5,7 @@
 //! table's solver instead of XFOIL.
 
 use super::atomic::write_atomic;
-use crate::polar::PolarPoint;
+use crate::section::PolarPoint;
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::io::Write;
 use std::path::{Path, PathBuf};

@@ -1,0 +1,98 @@
+//! Section data: the vocabulary shared by the solver that produces polars and the models
+//! that consume them.
+//!
+//! * [`PolarPoint`] — one solved operating point (α, Cl, Cd, Cm, transition, convergence).
+//! * [`FlowCondition`] — the (Re, M) pair a polar or a table node is computed at.
+//! * [`SectionAero`] and [`Lookup`] — section coefficients at any (α, Re, M) with the flags a
+//!   consumer needs to judge them (clamped, post-stall, bridged).
+//!
+//! A leaf module: it imports nothing from the solver layers, so every layer may use it.
+
+use serde::{Deserialize, Serialize};
+
+/// The flow condition of a polar: chord Reynolds number and free-stream Mach number.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct FlowCondition {
+    /// Chord Reynolds number V∞·c/ν.
+    pub reynolds: f64,
+    /// Free-stream Mach number.
+    pub mach: f64,
+}
+
+impl FlowCondition {
+    /// The condition at Reynolds number `reynolds` and Mach number `mach`.
+    pub fn new(reynolds: f64, mach: f64) -> Self {
+        Self { reynolds, mach }
+    }
+}
+
+/// One operating point of a polar: the result of the solver at one (Re, M, α).
+///
+/// Unconverged points are kept (with `converged = false`) so that tables can flag them;
+/// their coefficients must never be used as results.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PolarPoint {
+    /// Angle of attack \[deg\].
+    pub alpha: f64,
+    /// Lift coefficient.
+    pub cl: f64,
+    /// Total drag coefficient (Squire–Young at the wake end; 0 for inviscid).
+    pub cd: f64,
+    /// Pressure drag coefficient, cd − cdf.
+    pub cdp: f64,
+    /// Skin-friction drag coefficient.
+    pub cdf: f64,
+    /// Pitching-moment coefficient about the quarter chord.
+    pub cm: f64,
+    /// Transition location x/c on the upper surface (1 if laminar to the TE).
+    pub xtr_top: f64,
+    /// Transition location x/c on the lower surface.
+    pub xtr_bot: f64,
+    /// Whether the solver converged at this point.
+    pub converged: bool,
+    /// Newton iterations used.
+    pub iterations: u32,
+    /// Final residual norm of the Newton system.
+    pub residual: f64,
+}
+
+/// Section coefficients returned by a table lookup.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Lookup {
+    /// Lift coefficient.
+    pub cl: f64,
+    /// Drag coefficient.
+    pub cd: f64,
+    /// Pitching-moment coefficient about c/4.
+    pub cm: f64,
+    /// The requested Re was outside the table and was clamped to its edge.
+    pub re_clamped: bool,
+    /// The requested Mach number was outside the table and was clamped to its edge.
+    pub mach_clamped: bool,
+    /// α was outside the computed range: the value comes from the 360° post-stall model.
+    pub post_stall: bool,
+    /// The value was interpolated across a gap of unconverged (or missing) points, or a polar
+    /// with too few converged points was replaced by its nearest usable neighbour.
+    pub bridged: bool,
+}
+
+impl Lookup {
+    /// Coefficients with all flags cleared (for analytic sections implementing
+    /// [`SectionAero`]).
+    pub fn new(cl: f64, cd: f64, cm: f64) -> Self {
+        Self {
+            cl,
+            cd,
+            cm,
+            ..Self::default()
+        }
+    }
+}
+
+/// Anything that gives section coefficients at (α (deg), Re, M): the interface the rotor
+/// model consumes. [`PolarTable`] implements it; tests may use analytic sections.
+pub trait SectionAero {
+    /// Coefficients at angle of attack `alpha_deg` (any value, wrapped to ±180°), Reynolds
+    /// number `re` and Mach number `mach`.
+    fn lookup(&self, alpha_deg: f64, re: f64, mach: f64) -> Lookup;
+}
