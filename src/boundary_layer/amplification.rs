@@ -6,7 +6,7 @@
 //! correlation for separated profiles) is not implemented here.
 
 use super::closures::Partials;
-use super::dual::Dual;
+use super::Dual;
 
 /// Half-width of the cubic onset ramp in log10(Re_θ) around the critical Re_θ (XFOIL DGR).
 const DGR: f64 = 0.08;

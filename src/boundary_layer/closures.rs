@@ -8,7 +8,7 @@
 //! exact derivatives of the implemented formula (forward-mode differentiation), including
 //! the zero slope of any clamp that is active.
 
-use super::dual::Dual;
+use super::Dual;
 
 /// Value of a closure and its partial derivatives with respect to its `N` arguments, in the
 /// argument order of the function that returned it.

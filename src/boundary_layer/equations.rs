@@ -5,9 +5,9 @@
 
 use super::amplification::axset_d;
 use super::closures::{cfl_d, cft_d};
-use super::dual::{Dual, NVARS};
 use super::params::{BlParams, FlowConstants, Regime};
 use super::station::Station;
+use super::{Dual, NVARS};
 
 /// Residuals of the three equations of one interval and their Jacobians.
 ///
@@ -44,16 +44,8 @@ impl IntervalEquations {
         debug_assert_eq!(NVARS, 10);
         Self {
             res: [r[0].v, r[1].v, r[2].v],
-            d1: [
-                r[0].station_grad(0),
-                r[1].station_grad(0),
-                r[2].station_grad(0),
-            ],
-            d2: [
-                r[0].station_grad(5),
-                r[1].station_grad(5),
-                r[2].station_grad(5),
-            ],
+            d1: [r[0].slots(0), r[1].slots(0), r[2].slots(0)],
+            d2: [r[0].slots(5), r[1].slots(5), r[2].slots(5)],
         }
     }
 }

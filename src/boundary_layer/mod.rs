@@ -39,7 +39,6 @@
 
 pub mod amplification;
 pub mod closures;
-pub mod dual;
 pub mod equations;
 pub mod params;
 pub mod station;
@@ -53,6 +52,15 @@ pub use trailing_edge::{SquireYoung, TeJunction};
 pub use transition::{AmplificationCheck, TransitionInterval, TransitionKind};
 
 use equations::{bldif, DiffKind};
+
+/// Number of independent variables of one interval: (s, θ, δ*, u, ξ) of station 1 in gradient
+/// slots 0..5 and of station 2 in slots 5..10, the column order of XFOIL's VS1/VS2 matrices
+/// (xblsys.f BLSYS). A station's secondary variables depend on its own (s, θ, δ*, u) only, not
+/// on ξ; they are computed with 4-slot numbers and then embedded, ξ getting a slot of its own.
+pub(crate) const NVARS: usize = 10;
+
+/// Derivative numbers over the variables of one interval (by default) or of fewer.
+pub(crate) type Dual<const N: usize = NVARS> = crate::numerics::dual::Dual<N>;
 use std::cell::OnceCell;
 
 use station::{validate, Station};
@@ -334,7 +342,7 @@ impl BlModel {
         check_finite(
             IntervalEquations {
                 res: eq.res,
-                d1: r.map(|d| d.station_grad(0)),
+                d1: r.map(|d| d.slots(0)),
                 d2,
             },
             "interval equations",

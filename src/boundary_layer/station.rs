@@ -7,9 +7,9 @@ use super::closures::{
     bl_thickness_d, cfl_d, cft_d, ctau_eq_sqrt_d, dil_d, dilw_d, dissipation_outer_d,
     dissipation_turbulent_d, hct_d, hkin_d, hsl_d, hst_d, slip_velocity_d,
 };
-use super::dual::{Dual, NVARS};
 use super::params::{BlParams, FlowConstants, Regime};
 use super::BlError;
+use super::{Dual, NVARS};
 
 /// Primary variables of one station (XFOIL BLPRV arguments).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]

@@ -2,9 +2,9 @@
 //! xblsys.f TESYS with the TE sums of xbl.f SETBL) and the Squire–Young drag from the wake
 //! end (XFOIL xfoil.f CDCALC).
 
-use super::dual::Dual;
 use super::params::Regime;
 use super::station::{compressible_speed_d, validate, StationVars};
+use super::Dual;
 use super::{BlError, BlModel};
 
 /// Junction equations setting the first wake station from the upper and lower TE stations.
@@ -97,7 +97,7 @@ impl BlModel {
         let cd = t * 2.0 * ((h + 5.0) * 0.5 * (u / self.flow.qinfbl).ln()).exp();
         Ok(SquireYoung {
             cd: cd.v,
-            d: cd.station_grad(0),
+            d: cd.slots(0),
         })
     }
 }

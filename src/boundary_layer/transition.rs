@@ -10,11 +10,11 @@
 
 use super::amplification::axset_d;
 use super::closures::transition_ctau_factor_d;
-use super::dual::{Dual, NVARS};
 use super::equations::{bldif, DiffKind, IntervalEquations};
 use super::params::Regime;
 use super::station::{compressible_speed_d, validate, Station, StationVars};
 use super::{check_advance, check_finite, BlError, BlModel, UpstreamStation};
+use super::{Dual, NVARS};
 
 /// Whether transition in an interval is free (e^n) or forced (trip).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -374,8 +374,8 @@ impl BlModel {
         Ok(Some(TransitionInterval {
             eqs: check_finite(IntervalEquations::from_duals(&rows), "transition equations")?,
             xi_tr: xt.v,
-            dxi_tr_d1: xt.station_grad(0),
-            dxi_tr_d2: xt.station_grad(5),
+            dxi_tr_d1: xt.slots(0),
+            dxi_tr_d2: xt.slots(5),
             kind,
             n2: check.n2,
         }))

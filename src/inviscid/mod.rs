@@ -11,8 +11,7 @@
 //!
 //! Files: [`panels`] (geometry and PSILIN/PSWLIN kernels), [`system`] (matrix, Kutta/sharp-TE
 //! rows, LU, unit solutions), [`wake`] (XYWAKE), [`source_influence`] (QDCALC),
-//! [`compressibility`] (Karman–Tsien), [`forces`] (CLCALC), [`simd_state`] (vector-register
-//! hygiene around faer calls), [`error`].
+//! [`compressibility`] (Karman–Tsien), [`forces`] (CLCALC), [`error`].
 //!
 //! Typical use:
 //! ```no_run
@@ -30,7 +29,6 @@ pub mod compressibility;
 pub mod error;
 pub mod forces;
 pub mod panels;
-pub mod simd_state;
 pub mod source_influence;
 pub mod system;
 pub mod wake;
@@ -39,7 +37,6 @@ pub use compressibility::KarmanTsien;
 pub use error::InviscidError;
 pub use forces::{integrate_pressure, SectionForces};
 pub use panels::{PanelGeometry, PanelParams, TrailingEdge};
-pub use simd_state::reset_simd_state;
 pub use source_influence::{speeds_with_sources, SourceInfluence};
 pub use system::{superpose, InviscidSolution, PanelSystem};
 pub use wake::{Wake, WakeParams};

@@ -26,9 +26,10 @@ use super::panels::{
     airfoil_influence, airfoil_source_value, wake_source_influence, wake_source_value, FieldPoint,
     Influence, Probe,
 };
-use super::simd_state::reset_simd_state;
 use super::system::PanelSystem;
-use super::wake::{dot, Wake};
+use super::wake::Wake;
+use crate::numerics::dense::dot;
+use crate::numerics::simd::reset_simd_state;
 
 /// The source influence matrix D for one airfoil and wake.
 #[derive(Clone, Debug)]

@@ -21,8 +21,8 @@ use super::panels::{
     airfoil_influence, airfoil_source_value, FieldPoint, Influence, PanelGeometry, PanelParams,
     Probe,
 };
-use super::simd_state::reset_simd_state;
 use crate::geometry::Airfoil;
+use crate::numerics::simd::reset_simd_state;
 
 /// A factorised panel system for one paneled airfoil, holding the unit solutions.
 #[derive(Debug)]

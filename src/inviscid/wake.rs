@@ -4,8 +4,9 @@
 
 use super::error::InviscidError;
 use super::panels::{airfoil_vortex_gradient, FieldPoint, Probe};
-use super::simd_state::reset_simd_state;
 use super::system::{superpose, PanelSystem};
+use crate::numerics::dense::dot;
+use crate::numerics::simd::reset_simd_state;
 
 /// Tunable constants of the wake geometry (XFOIL defaults).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -245,10 +246,4 @@ pub fn geometric_spacing(ds1: f64, total: f64, n: usize) -> Result<Vec<f64>, Inv
         ds *= ratio;
     }
     Ok(out)
-}
-
-/// Dot product of two equally long slices.
-#[inline]
-pub(crate) fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(p, q)| p * q).sum()
 }

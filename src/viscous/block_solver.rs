@@ -25,11 +25,10 @@ use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::lu::partial_pivoting::{factor, solve};
 use faer::{Mat, MatMut, Par};
 
-use super::dense::dot;
 use super::error::ViscousError;
-
-/// A 3×3 block, row-major.
-pub type Block3 = [[f64; 3]; 3];
+use crate::numerics::dense::dot4;
+use crate::numerics::simd::{with_avx2, Kernel};
+use crate::numerics::small_dense::{invert3, mul3, mul33, Block3};
 
 /// Most rows of G one row of V combines: the edge speeds of the equation's own stations (at
 /// most three, at the trailing-edge junction) and of the two stations next to the stagnation
@@ -162,30 +161,17 @@ impl<'a> BlockSystem<'a> {
     /// output row written once. The first two rows are kept only while a later station needs
     /// them (the next station, or a trailing-edge station for the wake junction): the back
     /// substitution does not use them (see [`solve_with`](Self::solve_with)).
-    /// Compiled twice: with AVX2 enabled where the CPU has it (wider vectors, same operations
-    /// and therefore the same results, no fused multiply-add), and for the baseline target.
-    /// An AVX-512 build was measured too: no faster beyond the noise.
+    /// Compiled with AVX2 where the CPU has it ([`with_avx2`]).
     fn forward_substitute(&self, inv: &[Block3], mass_rows: &mut Vec<f64>) -> Vec<[f64; 3]> {
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU supports AVX2, checked just above.
-            return unsafe { self.forward_substitute_avx2(inv, mass_rows) };
-        }
-        self.forward_substitute_generic(inv, mass_rows)
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    fn forward_substitute_avx2(&self, inv: &[Block3], mass_rows: &mut Vec<f64>) -> Vec<[f64; 3]> {
-        self.forward_substitute_generic(inv, mass_rows)
+        with_avx2(ForwardSubstitution {
+            system: self,
+            inv,
+            mass_rows,
+        })
     }
 
     #[inline(always)]
-    fn forward_substitute_generic(
-        &self,
-        inv: &[Block3],
-        mass_rows: &mut Vec<f64>,
-    ) -> Vec<[f64; 3]> {
+    fn forward_substitute_kernel(&self, inv: &[Block3], mass_rows: &mut Vec<f64>) -> Vec<[f64; 3]> {
         let n = self.n;
         let g = self.mass_influence;
         // Stations whose first two rows of Y a later station other than the next one needs
@@ -339,7 +325,7 @@ impl<'a> BlockSystem<'a> {
         let gm: Vec<f64> = self
             .mass_influence
             .chunks_exact(n)
-            .map(|row| dot(row, &mdense))
+            .map(|row| dot4(row, &mdense))
             .collect();
         let mut w = vec![[0.0; 3]; n];
         for k in 0..n {
@@ -363,44 +349,21 @@ impl<'a> BlockSystem<'a> {
     }
 }
 
-/// Inverse of a 3×3 matrix by cofactors; `None` if it is (numerically) singular: its
-/// determinant is lost to cancellation, at most 1e-15 of the sum of the magnitudes of the six
-/// products it is made of. That measure does not change when rows or columns are scaled, so a
-/// block whose columns differ by orders of magnitude (the similarity station with the
-/// stagnation point almost on a node: columns of 1, 1e5 and 1e9) is not mistaken for a singular
-/// one.
-pub fn invert3(a: &Block3) -> Option<Block3> {
-    let c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1];
-    let c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
-    let c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
-    let det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
-    let terms = (a[0][0] * a[1][1] * a[2][2]).abs()
-        + (a[0][0] * a[1][2] * a[2][1]).abs()
-        + (a[0][1] * a[1][2] * a[2][0]).abs()
-        + (a[0][1] * a[1][0] * a[2][2]).abs()
-        + (a[0][2] * a[1][0] * a[2][1]).abs()
-        + (a[0][2] * a[1][1] * a[2][0]).abs();
-    if !det.is_finite() || det.abs() <= 1e-15 * terms {
-        return None;
+/// The forward-substitution kernel of a system (see [`BlockSystem::forward_substitute`]).
+struct ForwardSubstitution<'s, 'a> {
+    system: &'s BlockSystem<'a>,
+    inv: &'s [Block3],
+    mass_rows: &'s mut Vec<f64>,
+}
+
+impl Kernel for ForwardSubstitution<'_, '_> {
+    type Output = Vec<[f64; 3]>;
+
+    #[inline(always)]
+    fn run(self) -> Vec<[f64; 3]> {
+        self.system
+            .forward_substitute_kernel(self.inv, self.mass_rows)
     }
-    let d = 1.0 / det;
-    Some([
-        [
-            c00 * d,
-            (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * d,
-            (a[0][1] * a[1][2] - a[0][2] * a[1][1]) * d,
-        ],
-        [
-            c01 * d,
-            (a[0][0] * a[2][2] - a[0][2] * a[2][0]) * d,
-            (a[0][2] * a[1][0] - a[0][0] * a[1][2]) * d,
-        ],
-        [
-            c02 * d,
-            (a[0][1] * a[2][0] - a[0][0] * a[2][1]) * d,
-            (a[0][0] * a[1][1] - a[0][1] * a[1][0]) * d,
-        ],
-    ])
 }
 
 /// The upstream rows and their 3×3 factors (A⁻¹B) of one station in the forward substitution.
@@ -437,69 +400,5 @@ fn station_columns<const L: usize>(
     acc
 }
 
-/// Product of two 3×3 blocks.
-fn mul33(a: &Block3, b: &Block3) -> Block3 {
-    std::array::from_fn(|r| {
-        std::array::from_fn(|c| a[r][0] * b[0][c] + a[r][1] * b[1][c] + a[r][2] * b[2][c])
-    })
-}
-
-/// Product of a 3×3 block with a 3-vector.
-pub fn mul3(a: &Block3, v: &[f64; 3]) -> [f64; 3] {
-    [
-        a[0][0] * v[0] + a[0][1] * v[1] + a[0][2] * v[2],
-        a[1][0] * v[0] + a[1][1] * v[1] + a[1][2] * v[2],
-        a[2][0] * v[0] + a[2][1] * v[1] + a[2][2] * v[2],
-    ]
-}
-
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The vector-extension build of the forward substitution gives bit-identical results to
-    /// the baseline build (same operations, no fused multiply-add).
-    #[test]
-    fn dispatched_forward_substitution_is_bit_identical() {
-        let n = 37;
-        let mut seed = 12345_u64;
-        let mut next = move || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
-        let g: Vec<f64> = (0..n * n).map(|_| next() / n as f64).collect();
-        let mut sys = BlockSystem::zeros(n, &g);
-        for k in 0..n {
-            sys.diag[k] = [
-                [2.0 + next(), next(), next()],
-                [next(), 2.0 + next(), next()],
-                [next(), next(), 2.0 + next()],
-            ];
-            if k > 0 {
-                sys.upstream[k] = Some((k - 1, [[next(); 3]; 3]));
-                for r in 0..3 {
-                    sys.mass_terms[3 * k + r].add(k - 1, next());
-                }
-            }
-            if k > 2 {
-                sys.upstream2[k] = Some((k / 2, [[next(), next(), next()]; 3]));
-            }
-            for r in 0..3 {
-                sys.mass_terms[3 * k + r].add(k, next());
-            }
-            sys.rhs[k] = [next(), next(), next()];
-        }
-        let inv: Vec<Block3> = sys.diag.iter().map(|a| invert3(a).unwrap()).collect();
-        let (mut big1, mut big2) = (Vec::new(), vec![f64::NAN; n * n]);
-        let y1 = sys.forward_substitute(&inv, &mut big1);
-        let y2 = sys.forward_substitute_generic(&inv, &mut big2);
-        assert_eq!(y1, y2);
-        assert!(big1
-            .iter()
-            .zip(&big2)
-            .all(|(a, b)| a.to_bits() == b.to_bits()));
-        assert_eq!(big1.len(), n * n);
-    }
-}
+mod tests;

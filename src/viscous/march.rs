@@ -10,6 +10,7 @@ use super::bl_model::{
 use super::newton::CachedEquations;
 use super::state::BlState;
 use super::stations::{StationKind, StationLayout, Surface};
+use crate::numerics::small_dense::solve;
 
 /// Controls of the local station Newton iterations of the march.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -52,73 +53,6 @@ impl Default for MarchParams {
             keep_state_in_fallback_chains: true,
         }
     }
-}
-
-/// Solves a 4×4 linear system by Gaussian elimination with partial pivoting (the last of
-/// equally large pivot candidates is taken).
-#[inline]
-fn solve4(mut a: [[f64; 4]; 4], mut b: [f64; 4]) -> Option<[f64; 4]> {
-    // One column per call with constant indices, so that the matrix stays in registers (a
-    // loop over the columns swapped rows through memory; same operations, same results).
-    eliminate_column::<0>(&mut a, &mut b)?;
-    eliminate_column::<1>(&mut a, &mut b)?;
-    eliminate_column::<2>(&mut a, &mut b)?;
-    eliminate_column::<3>(&mut a, &mut b)?;
-    let mut x = [0.0; 4];
-    for r in (0..4).rev() {
-        let mut s = 0.0;
-        for c in r + 1..4 {
-            s += a[r][c] * x[c];
-        }
-        x[r] = (b[r] - s) / a[r][r];
-    }
-    x.iter().all(|v| v.is_finite()).then_some(x)
-}
-
-/// Step `C` of [`solve4`]: moves the largest entry of column `C` at or below the diagonal (the
-/// last of equal ones, or a NaN) onto the diagonal and eliminates the column below it. `None`
-/// if that pivot is zero (below 1e-300), infinite or NaN.
-#[inline(always)]
-fn eliminate_column<const C: usize>(a: &mut [[f64; 4]; 4], b: &mut [f64; 4]) -> Option<()> {
-    let mut p = C;
-    let mut best = a[C][C].abs();
-    for (r, row) in a.iter().enumerate().skip(C + 1) {
-        let v = row[C].abs();
-        if v >= best || v.is_nan() {
-            best = v;
-            p = r;
-        }
-    }
-    if best.is_nan() || best < 1e-300 || best.is_infinite() {
-        return None;
-    }
-    // Row exchange by selects rather than a branch on the data-dependent pivot row (the
-    // same values; a mispredicted branch per column cost more than the selects). Only columns
-    // C.. are exchanged: the ones left of C in rows C.. are never read again (the elimination
-    // and the back substitution use a[r][c] with c ≥ r only).
-    for r in C + 1..4 {
-        let take = r == p;
-        // Two rows of `a` in step: indices read plainer than zipped row iterators.
-        #[allow(clippy::needless_range_loop)]
-        for k in C..4 {
-            let (x, y) = (a[C][k], a[r][k]);
-            a[C][k] = if take { y } else { x };
-            a[r][k] = if take { x } else { y };
-        }
-        let (x, y) = (b[C], b[r]);
-        b[C] = if take { y } else { x };
-        b[r] = if take { x } else { y };
-    }
-    let pivot_row = a[C];
-    let pivot_rhs = b[C];
-    for r in C + 1..4 {
-        let f = a[r][C] / pivot_row[C];
-        for k in C..4 {
-            a[r][k] -= f * pivot_row[k];
-        }
-        b[r] -= f * pivot_rhs;
-    }
-    Some(())
 }
 
 /// Local equations of a station as a function of its own variables.
@@ -291,7 +225,7 @@ pub fn march(
                 a[3] = [0.0, 0.0, 0.0, 1.0];
                 b[3] = u0 - u;
             }
-            let Some(dx) = solve4(a, b) else { break };
+            let Some(dx) = solve(a, b) else { break };
             let rel = [
                 if turbulent {
                     dx[0] / s.max(1e-7)
@@ -695,7 +629,7 @@ pub fn remarch_mixed(
                     let mut bt = b;
                     at[3] = [0.0, hk_d[0], hk_d[1], hk_d[2]];
                     bt[3] = 1.0;
-                    if let Some(z) = solve4(at, bt) {
+                    if let Some(z) = solve(at, bt) {
                         let sennew = MIXED_MODE_WEIGHT * z[3] * hkref / ueref;
                         if itbl < 5 {
                             sens = sennew;
@@ -712,7 +646,7 @@ pub fn remarch_mixed(
                 ];
                 b[3] = -(hkref * hkref * (hk / hkref - 1.0) + sens * (u / ueref - 1.0));
             }
-            let Some(dx) = solve4(a, b) else { break };
+            let Some(dx) = solve(a, b) else { break };
             let mut dmax = (dx[1] / th)
                 .abs()
                 .max((dx[2] / ds).abs())
@@ -849,33 +783,4 @@ pub fn remarch_mixed(
         state.turbulent[k] = turbulent || wake;
     }
     cache
-}
-
-#[cfg(test)]
-mod tests {
-    use super::solve4;
-
-    /// A system that needs row exchanges (zero leading entries) is solved to round-off; a
-    /// singular or NaN system gives `None`.
-    #[test]
-    fn solve4_pivots_and_rejects_singular_systems() {
-        let a = [
-            [0.0, 2.0, 1.0, -1.0],
-            [0.0, 0.0, 3.0, 2.0],
-            [4.0, 1.0, 0.0, 1.0],
-            [1.0, -1.0, 2.0, 0.0],
-        ];
-        let x = [1.0, -2.0, 0.5, 3.0];
-        let b: [f64; 4] = std::array::from_fn(|r| (0..4).map(|c| a[r][c] * x[c]).sum());
-        let got = solve4(a, b).unwrap();
-        for (g, e) in got.iter().zip(&x) {
-            assert!((g - e).abs() < 1e-14, "{got:?}");
-        }
-        let mut singular = a;
-        singular[3] = singular[2];
-        assert!(solve4(singular, b).is_none());
-        let mut nan = a;
-        nan[1][2] = f64::NAN;
-        assert!(solve4(nan, b).is_none());
-    }
 }

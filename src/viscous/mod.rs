@@ -18,13 +18,12 @@
 //! Files: [`stations`] (stagnation point, station ↔ node mapping, ξ, wake gap), [`state`]
 //! (Newton unknowns), [`march`] (MRCHUE initial march, MRCHDU mixed-mode re-march),
 //! [`newton`] (SETBL assembly), [`panel_model`] (per-α inviscid data, shared between solvers),
-//! [`block_solver`] (structured solve), `dense` (influence-matrix products), [`update`]
+//! [`block_solver`] (structured solve), [`update`]
 //! (UPDATE/DSLIM relaxation), [`forces`] (Cl, Cm, cdf, xtr), [`bl_model`] + [`xfoil_bl`] (the
 //! boundary-layer equations seen by the coupling), [`solver`] (the [`ViscousSolver`]).
 
 pub mod bl_model;
 pub mod block_solver;
-mod dense;
 pub mod error;
 pub mod forces;
 pub mod march;

@@ -18,10 +18,10 @@ use super::bl_model::{
     BoundaryLayerModel, IntervalEquations, JunctionEquations, Regime, StationVars,
 };
 use super::block_solver::BlockSystem;
-use super::dense::mat_vec;
 use super::error::ViscousError;
 use super::state::BlState;
 use super::stations::{StationKind, StationLayout, Surface};
+use crate::numerics::dense::mat_vec;
 
 /// Transition found on one surface during assembly.
 #[derive(Clone, Copy, Debug, PartialEq)]

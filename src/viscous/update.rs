@@ -4,11 +4,11 @@
 //! One departure from XFOIL: see [`UpdateLimits::clip_first_turbulent`].
 
 use super::bl_model::BoundaryLayerModel;
-use super::dense::mat_vec;
 use super::error::ViscousError;
 use super::newton::Coupling;
 use super::state::BlState;
 use super::stations::Surface;
+use crate::numerics::dense::mat_vec;
 
 /// Limits of the relaxed update (XFOIL UPDATE/DSLIM constants).
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,6 +1,7 @@
-//! Dense matrix–vector products with the n × n edge-speed influence matrix of the coupling
-//! (Ue = Ue_inv + D·m, and D·δm in the Newton update), and the dot product of the structured
-//! solve's back substitution.
+//! Dense products of the coupling: matrix–vector products with the n × n edge-speed influence
+//! matrix (Ue = Ue_inv + D·m, and D·δm in the Newton update) and dot products.
+
+use super::simd::{with_avx2, Kernel};
 
 /// Rows of [`mat_vec`] summed side by side: independent chains that keep the adders busy
 /// through their latency, where one row's strict left-to-right sum waits on every add.
@@ -11,22 +12,26 @@ const ROWS: usize = 8;
 /// `row.iter().zip(v).map(|(d, x)| d * x).sum()`; speed comes from summing [`ROWS`] rows at once
 /// (and from AVX2 registers where the CPU has them), not from reordering.
 pub(crate) fn mat_vec(a: &[f64], v: &[f64]) -> Vec<f64> {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU supports AVX2, checked just above.
-        return unsafe { mat_vec_avx2(a, v) };
-    }
-    mat_vec_generic(a, v)
+    with_avx2(MatVec { a, v })
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn mat_vec_avx2(a: &[f64], v: &[f64]) -> Vec<f64> {
-    mat_vec_generic(a, v)
+/// The [`mat_vec`] kernel: matrix `a`, vector `v`.
+struct MatVec<'a> {
+    a: &'a [f64],
+    v: &'a [f64],
+}
+
+impl Kernel for MatVec<'_> {
+    type Output = Vec<f64>;
+
+    #[inline(always)]
+    fn run(self) -> Vec<f64> {
+        mat_vec_kernel(self.a, self.v)
+    }
 }
 
 #[inline(always)]
-fn mat_vec_generic(a: &[f64], v: &[f64]) -> Vec<f64> {
+fn mat_vec_kernel(a: &[f64], v: &[f64]) -> Vec<f64> {
     let n = v.len();
     if n == 0 {
         return Vec::new();
@@ -53,8 +58,14 @@ fn mat_vec_generic(a: &[f64], v: &[f64]) -> Vec<f64> {
     out
 }
 
-/// Dot product with four partial sums (vectorisable, unlike a strict left-to-right sum).
+/// Dot product summed strictly left to right (the order of `Iterator::sum`).
+#[inline]
 pub(crate) fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(p, q)| p * q).sum()
+}
+
+/// Dot product with four partial sums (vectorisable, unlike [`dot`]'s strict order).
+pub(crate) fn dot4(a: &[f64], b: &[f64]) -> f64 {
     let mut acc = [0.0; 4];
     let (ac, bc) = (a.chunks_exact(4), b.chunks_exact(4));
     let tail: f64 = ac

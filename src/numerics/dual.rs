@@ -1,23 +1,15 @@
-//! Forward-mode derivative numbers for the chain rule through the interval equations.
-//!
-//! A [`Dual`] carries a value and its gradient with respect to the [`NVARS`] = 10 primary
-//! variables of one interval: station 1 `(s, θ, δ*, u, ξ)` in slots 0..5 and station 2 in
-//! slots 5..10 (the column order of XFOIL's VS1/VS2 matrices, xblsys.f BLSYS). Closures and
-//! station variables are evaluated on these numbers, so the Jacobians of the discrete
-//! equations follow exactly from the residual expressions without hand-expanded sensitivity
-//! bookkeeping. A station's secondary variables depend on its own (s, θ, δ*, u) only, not on
-//! ξ; they are computed with 4-slot numbers and then embedded ([`Dual::embed`]), ξ getting a
-//! slot of its own.
+//! Forward-mode derivative numbers: a value with its gradient with respect to `N` independent
+//! variables. A formula written once on [`Dual`] numbers gives its value and its exact partial
+//! derivatives (the chain rule applied operation by operation), so the closures and the
+//! discrete boundary-layer equations need no hand-expanded sensitivity bookkeeping. Every
+//! operation acts on the value and on each gradient slot separately: the number of slots never
+//! changes a value.
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// Number of independent variables of one interval (5 per station, 2 stations).
-pub const NVARS: usize = 10;
-
-/// A value together with its gradient with respect to `N` independent variables (by
-/// default the [`NVARS`] primary variables of an interval; one station alone uses 5).
+/// A value together with its gradient with respect to `N` independent variables.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Dual<const N: usize = NVARS> {
+pub(crate) struct Dual<const N: usize> {
     /// Function value.
     pub v: f64,
     /// Partial derivatives with respect to the `N` independent variables.
@@ -127,10 +119,10 @@ impl<const N: usize> Dual<N> {
         }
     }
 
-    /// Gradient slots `offset..offset+5` (one station's columns); `offset + 5 ≤ N`.
-    pub fn station_grad(&self, offset: usize) -> [f64; 5] {
-        let mut out = [0.0; 5];
-        out.copy_from_slice(&self.g[offset..offset + 5]);
+    /// Gradient slots `offset..offset+M` (e.g. one station's columns); `offset + M ≤ N`.
+    pub fn slots<const M: usize>(&self, offset: usize) -> [f64; M] {
+        let mut out = [0.0; M];
+        out.copy_from_slice(&self.g[offset..offset + M]);
         out
     }
 }
@@ -258,8 +250,8 @@ mod tests {
 
     #[test]
     fn quotient_and_log_rules() {
-        let a: Dual = Dual::variable(2.0, 0);
-        let b: Dual = Dual::variable(3.0, 1);
+        let a: Dual<2> = Dual::variable(2.0, 0);
+        let b: Dual<2> = Dual::variable(3.0, 1);
         let f = (a * b).ln() / b + a.powf(1.5);
         // d/da = 1/(a b) * b / b + 1.5 a^0.5 = 1/(a b) + 1.5 sqrt(a)
         let dfa = 1.0 / 3.0 / 2.0 + 1.5 * 2f64.sqrt();
