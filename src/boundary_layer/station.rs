@@ -312,7 +312,7 @@ impl<const N: usize> Station<N> {
 }
 
 /// Boundary-layer quantities of one station for output (distributions, diagnostics).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct StationProperties {
     /// Compressible edge speed Ue/V∞ (Karman–Tsien).
     pub ue: f64,

@@ -2,6 +2,9 @@
 
 use thiserror::Error;
 
+use crate::boundary_layer::BlError;
+use crate::inviscid::InviscidError;
+
 /// Everything that can go wrong when setting up or solving a viscous point.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum ViscousError {
@@ -31,15 +34,19 @@ pub enum ViscousError {
         station: usize,
     },
     /// The inviscid panel solution could not be built.
-    #[error("inviscid solution failed: {0}")]
-    Inviscid(String),
+    #[error("inviscid panel solution")]
+    Inviscid(#[from] InviscidError),
+    /// The boundary-layer model rejected the flow conditions.
+    #[error("boundary-layer flow conditions")]
+    FlowConditions(#[source] BlError),
     /// The boundary-layer equations rejected a station state.
-    #[error("boundary layer at station {station}: {message}")]
+    #[error("boundary layer at station {station}")]
     BoundaryLayer {
-        /// System station index (usize::MAX if not tied to one station).
+        /// System station index.
         station: usize,
-        /// The boundary-layer module's message.
-        message: String,
+        /// What the boundary-layer equations rejected.
+        #[source]
+        source: BlError,
     },
     /// A non-finite number appeared in the boundary-layer state.
     #[error("non-finite boundary-layer state at station {station}")]
@@ -47,4 +54,26 @@ pub enum ViscousError {
         /// System station index.
         station: usize,
     },
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::error::Error as _;
+
+    /// A boundary-layer error names its station and keeps the boundary layer's own error as its
+    /// source, unflattened.
+    #[test]
+    fn boundary_layer_errors_keep_their_source() {
+        let cause = BlError::NonFinite("interval equations");
+        let e = ViscousError::BoundaryLayer {
+            station: 7,
+            source: cause.clone(),
+        };
+        assert_eq!(e.to_string(), "boundary layer at station 7");
+        let source = e.source().expect("a source");
+        assert_eq!(source.downcast_ref::<BlError>(), Some(&cause));
+        let inviscid = ViscousError::from(InviscidError::SingularSystem);
+        assert!(inviscid.source().is_some());
+    }
 }

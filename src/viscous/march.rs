@@ -3,13 +3,13 @@
 //! mode) — the initial condition of the global Newton solve (XFOIL xbl.f MRCHUE,
 //! Drela 1989 §4.2).
 
-use super::bl_model::{
-    BoundaryLayerModel, DownstreamEquations, IntervalEquations, Regime, StationVars,
-    UpstreamStation,
-};
 use super::newton::CachedEquations;
 use super::state::BlState;
 use super::stations::{StationKind, StationLayout, Surface};
+use crate::boundary_layer::{
+    BlModel, DownstreamEquations, IntervalEquations, Regime, StationVars, TransitionKind,
+    UpstreamStation,
+};
 use crate::numerics::small_dense::solve;
 
 /// Controls of the local station Newton iterations of the march.
@@ -23,6 +23,11 @@ pub struct MarchParams {
     pub max_relative_step: f64,
     /// Initial √Cτ guessed for the first turbulent station.
     pub ctau_sqrt_initial: f64,
+    /// Kinematic shape factor Hk of a laminar station above which the initial march switches
+    /// to inverse mode, Hk prescribed (XFOIL MRCHUE HLMAX = 3.8).
+    pub hk_max_laminar: f64,
+    /// The same for a turbulent or wake station (XFOIL MRCHUE HTMAX = 2.5).
+    pub hk_max_turbulent: f64,
     /// Convergence threshold on the largest relative change of the local iterations of the
     /// mixed-mode re-march before each global Newton iteration (XFOIL MRCHDU DEPS = 5e-6).
     /// The re-march only prepares the state for the global Newton step, whose own tolerance
@@ -48,6 +53,8 @@ impl Default for MarchParams {
             tolerance: 1e-5,
             max_relative_step: 0.3,
             ctau_sqrt_initial: 0.03,
+            hk_max_laminar: 3.8,
+            hk_max_turbulent: 2.5,
             mixed_mode_tolerance: 1.0e-4,
             carried_correction_limit: 0.5,
             keep_state_in_fallback_chains: true,
@@ -67,7 +74,7 @@ enum LocalEq {
 /// trailing-edge junction. Never fails: a station whose local Newton does not converge keeps its
 /// last iterate (the global Newton corrects it).
 pub fn march(
-    model: &dyn BoundaryLayerModel,
+    model: &BlModel,
     layout: &StationLayout,
     ue_inv: &[f64],
     reynolds: f64,
@@ -77,7 +84,6 @@ pub fn march(
 ) -> BlState {
     let n = layout.len();
     let mut state = BlState::zeros(n);
-    let (hk_lam, hk_turb) = model.march_hk_limits();
     let mut order: Vec<usize> = layout.range(Surface::Upper).collect();
     order.extend(layout.range(Surface::Lower));
     order.extend(layout.range(Surface::Wake));
@@ -151,7 +157,7 @@ pub fn march(
                 LocalEq::Junction => {
                     let (ku, kl) = (layout.upper_te(), layout.lower_te());
                     let (vu, vl) = (state.vars(layout, ku), state.vars(layout, kl));
-                    let Ok(j) = model.junction(&vu, &vl, &v2, ante) else {
+                    let Ok(j) = model.te_junction(&vu, &vl, &v2, ante) else {
                         break;
                     };
                     IntervalEquations {
@@ -168,7 +174,7 @@ pub fn march(
                         if !transitioned {
                             v2t.s = params.ctau_sqrt_initial;
                         }
-                        let Ok(tr) = model.transition(&v1, &v2t, xi_forced[side]) else {
+                        let Ok(tr) = model.transition_interval(&v1, &v2t, xi_forced[side]) else {
                             break;
                         };
                         match tr {
@@ -179,7 +185,7 @@ pub fn march(
                                     turbulent = true;
                                     continue;
                                 }
-                                t.equations
+                                t.eqs
                             }
                             None => {
                                 if transitioned {
@@ -209,7 +215,7 @@ pub fn march(
             } else {
                 Regime::Laminar
             };
-            let Ok(props) = model.properties(regime, &v2) else {
+            let Ok(props) = model.properties(&v2, regime) else {
                 break;
             };
             let mut a = [[0.0; 4]; 4];
@@ -219,7 +225,8 @@ pub fn march(
                 b[r] = -eq.res[r];
             }
             if inverse {
-                a[3] = [0.0, props.hk_d[0], props.hk_d[1], props.hk_d[2]];
+                let hk_d = model.kinematic_shape(&v2).d;
+                a[3] = [0.0, hk_d[0], hk_d[1], hk_d[2]];
                 b[3] = htarget - props.hk;
             } else {
                 a[3] = [0.0, 0.0, 0.0, 1.0];
@@ -255,7 +262,11 @@ pub fn march(
             ds = ds.max(1.0001 * th + st.wake_gap);
             u = u.max(1e-6);
             // Switch to inverse mode when the layer separates (XFOIL MRCHUE HLMAX/HTMAX).
-            let hmax = if turbulent { hk_turb } else { hk_lam };
+            let hmax = if turbulent {
+                params.hk_max_turbulent
+            } else {
+                params.hk_max_laminar
+            };
             if !inverse && st.kind != StationKind::Similarity {
                 let v = StationVars {
                     x: st.xi,
@@ -265,7 +276,7 @@ pub fn march(
                     s,
                     dw: st.wake_gap,
                 };
-                let hk = model.properties(regime, &v).map(|p| p.hk).unwrap_or(0.0);
+                let hk = model.properties(&v, regime).map(|p| p.hk).unwrap_or(0.0);
                 if hk > hmax {
                     inverse = true;
                     htarget = hmax;
@@ -403,7 +414,7 @@ impl KeptEquations {
 /// converged.
 #[allow(clippy::too_many_arguments)]
 pub fn remarch_mixed(
-    model: &dyn BoundaryLayerModel,
+    model: &BlModel,
     layout: &StationLayout,
     state: &mut BlState,
     xi_forced: [Option<f64>; 2],
@@ -465,7 +476,7 @@ pub fn remarch_mixed(
                     && was_turbulent
                     && upstream_stays_turbulent =>
             {
-                let hk = model.kinematic_shape_factor(&StationVars {
+                let hk = model.kinematic_shape(&StationVars {
                     x: st.xi,
                     u,
                     theta: th,
@@ -477,7 +488,7 @@ pub fn remarch_mixed(
                 th *= 1.0 + rel[1];
                 ds *= 1.0 + rel[2];
                 u *= 1.0 + rel[3];
-                Some((start[3], hk.0))
+                Some((start[3], hk.value))
             }
             _ => None,
         };
@@ -535,7 +546,7 @@ pub fn remarch_mixed(
                     let (ku, kl) = (layout.upper_te(), layout.lower_te());
                     let (vu, vl) = (state.vars(layout, ku), state.vars(layout, kl));
                     model
-                        .junction(&vu, &vl, &v2, ante)
+                        .te_junction(&vu, &vl, &v2, ante)
                         .map(|j| KeptEquations::Complete(CachedEquations::Junction(j)))
                 }
                 StationKind::Interval => {
@@ -566,8 +577,8 @@ pub fn remarch_mixed(
                                         }
                                     }
                                     Ok(KeptEquations::Complete(CachedEquations::Interval(
-                                        t.equations,
-                                        Some((t.xi_transition, t.forced)),
+                                        t.eqs,
+                                        Some((t.xi_tr, t.kind == TransitionKind::Forced)),
                                     )))
                                 }
                                 Ok(None) => {
@@ -594,9 +605,10 @@ pub fn remarch_mixed(
                 s: if turbulent { cti } else { n_amp },
                 ..v2
             };
-            let (hk, hk_d) = hk_at_state
-                .take()
-                .unwrap_or_else(|| model.kinematic_shape_factor(&v2));
+            let (hk, hk_d) = hk_at_state.take().unwrap_or_else(|| {
+                let hk = model.kinematic_shape(&v2);
+                (hk.value, hk.d)
+            });
             if itbl == 0 {
                 (ueref, hkref) = reference.unwrap_or((u, hk));
                 // A station that was turbulent and is laminar now: extrapolate the reference
@@ -604,7 +616,7 @@ pub fn remarch_mixed(
                 // old transition interval if the station was the first turbulent one.
                 if !turbulent && was_turbulent && st.kind == StationKind::Interval {
                     let p = st.upstream.unwrap_or(k - 1);
-                    let hk_upstream = model.kinematic_shape_factor(&state.vars(layout, p)).0;
+                    let hk_upstream = model.kinematic_shape(&state.vars(layout, p)).value;
                     let weight = match turbulent_fraction[side] {
                         Some(f) if !old_turbulent[p] => f,
                         _ => 1.0,
@@ -685,7 +697,7 @@ pub fn remarch_mixed(
                 break;
             }
             // Shape-factor floor (XFOIL DSLIM).
-            let (hk_new, hk_d_new) = model.kinematic_shape_factor(&StationVars {
+            let hk_new = model.kinematic_shape(&StationVars {
                 x: st.xi,
                 u,
                 theta: th,
@@ -693,11 +705,11 @@ pub fn remarch_mixed(
                 s: 0.0,
                 dw: st.wake_gap,
             });
-            if hk_new < hk_floor && hk_d_new[1] > 0.0 {
-                ds += (hk_floor - hk_new) / hk_d_new[1];
+            if hk_new.value < hk_floor && hk_new.d[1] > 0.0 {
+                ds += (hk_floor - hk_new.value) / hk_new.d[1];
             } else {
                 // Hk does not depend on the shear variable: the next iteration's Hk.
-                hk_at_state = Some((hk_new, hk_d_new));
+                hk_at_state = Some((hk_new.value, hk_new.d));
             }
             if dmax <= params.mixed_mode_tolerance {
                 converged = true;

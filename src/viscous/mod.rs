@@ -19,10 +19,8 @@
 //! (Newton unknowns), [`march`] (MRCHUE initial march, MRCHDU mixed-mode re-march),
 //! [`newton`] (SETBL assembly), [`panel_model`] (per-α inviscid data, shared between solvers),
 //! [`block_solver`] (structured solve), [`update`]
-//! (UPDATE/DSLIM relaxation), [`forces`] (Cl, Cm, cdf, xtr), [`bl_model`] + [`xfoil_bl`] (the
-//! boundary-layer equations seen by the coupling), [`solver`] (the [`ViscousSolver`]).
+//! (UPDATE/DSLIM relaxation), [`forces`] (Cl, Cm, cdf, xtr), [`solver`] (the [`ViscousSolver`]).
 
-pub mod bl_model;
 pub mod block_solver;
 pub mod error;
 pub mod forces;
@@ -33,7 +31,6 @@ pub mod solver;
 pub mod state;
 pub mod stations;
 pub mod update;
-pub mod xfoil_bl;
 
 pub use error::ViscousError;
 pub use panel_model::{PanelModel, SharedPanels};

@@ -14,13 +14,13 @@
 //! with the stagnation point too, so a common shift of ξ acts on that interval mostly through
 //! differences of ξ, which it does not change (XFOIL adds the trip's own sensitivity, VSX).
 
-use super::bl_model::{
-    BoundaryLayerModel, IntervalEquations, JunctionEquations, Regime, StationVars,
-};
 use super::block_solver::BlockSystem;
 use super::error::ViscousError;
 use super::state::BlState;
 use super::stations::{StationKind, StationLayout, Surface};
+use crate::boundary_layer::{
+    BlError, BlModel, IntervalEquations, Regime, StationVars, TeJunction, TransitionKind,
+};
 use crate::numerics::dense::mat_vec;
 
 /// Transition found on one surface during assembly.
@@ -82,7 +82,7 @@ pub enum CachedEquations {
     /// transition point (ξ, forced) if the interval transitions.
     Interval(IntervalEquations, Option<(f64, bool)>),
     /// Trailing-edge junction of the first wake station.
-    Junction(JunctionEquations),
+    Junction(TeJunction),
 }
 
 impl Coupling<'_> {
@@ -291,7 +291,7 @@ impl Assembler<'_, '_> {
     }
 
     /// Adds the trailing-edge junction equations of the first wake station.
-    fn junction(&mut self, state: &BlState, k: usize, e: &JunctionEquations) {
+    fn junction(&mut self, state: &BlState, k: usize, e: &TeJunction) {
         let (ku, kl) = (self.layout.upper_te(), self.layout.lower_te());
         self.station(
             state,
@@ -307,7 +307,7 @@ impl Assembler<'_, '_> {
 /// the transition check of each laminar interval (XFOIL SETBL with TRCHEK); a station whose regime
 /// changes gets its `s` variable re-initialised.
 pub fn assemble<'a>(
-    model: &dyn BoundaryLayerModel,
+    model: &BlModel,
     coupling: &Coupling<'a>,
     state: &mut BlState,
 ) -> Result<Assembly<'a>, ViscousError> {
@@ -381,22 +381,23 @@ pub fn assemble<'a>(
                 None
             } else {
                 model
-                    .transition(&v1, &v2, coupling.xi_forced[side])
+                    .transition_interval(&v1, &v2, coupling.xi_forced[side])
                     .map_err(at(k))?
             };
             match tr {
                 Some(t) => {
+                    let forced = t.kind == TransitionKind::Forced;
                     if !state.turbulent[k] {
                         state.s[k] = s_turb_ref;
                         state.turbulent[k] = true;
                     }
                     turbulent = true;
                     transition[side] = Some(TransitionPoint {
-                        xi: t.xi_transition,
+                        xi: t.xi_tr,
                         station: k,
-                        forced: t.forced,
+                        forced,
                     });
-                    asm.interval(state, k, &t.equations, t.forced);
+                    asm.interval(state, k, &t.eqs, forced);
                 }
                 None => {
                     if state.turbulent[k] {
@@ -422,7 +423,7 @@ pub fn assemble<'a>(
                 let vl = state.vars(layout, layout.lower_te());
                 let vw = state.vars(layout, k);
                 let e = model
-                    .junction(&vu, &vl, &vw, coupling.ante)
+                    .te_junction(&vu, &vl, &vw, coupling.ante)
                     .map_err(at(k))?;
                 asm.junction(state, k, &e);
             }
@@ -444,12 +445,10 @@ pub fn assemble<'a>(
     })
 }
 
-/// Attaches the system station index to a boundary-layer error.
-pub fn at(station: usize) -> impl Fn(ViscousError) -> ViscousError {
-    move |e| match e {
-        ViscousError::BoundaryLayer { message, .. } => {
-            ViscousError::BoundaryLayer { station, message }
-        }
-        other => other,
-    }
+/// A boundary-layer error at system station `station`.
+pub fn at(station: usize) -> impl Fn(BlError) -> ViscousError {
+    move |source| ViscousError::BoundaryLayer { station, source }
 }
+
+#[cfg(test)]
+mod tests;

@@ -36,8 +36,7 @@ impl PanelModel {
     /// Model of a panel system at angle of attack `alpha_deg`: wake traced at α, unit speeds at
     /// airfoil and wake nodes, and the source influence matrix (XFOIL XYWAKE, QWCALC, QDCALC).
     pub fn at_alpha(system: &PanelSystem, alpha_deg: f64) -> Result<Self, ViscousError> {
-        let inv = |e: crate::inviscid::InviscidError| ViscousError::Inviscid(e.to_string());
-        let wake = Wake::new(system, alpha_deg).map_err(inv)?;
+        let wake = Wake::new(system, alpha_deg)?;
         let d = SourceInfluence::new(system, &wake);
         let g = system.geometry();
         let mut x = g.x.clone();
@@ -128,8 +127,7 @@ impl SharedPanels {
                 got: airfoil.x.len().min(airfoil.y.len()),
             });
         }
-        let system =
-            PanelSystem::new(airfoil).map_err(|e| ViscousError::Inviscid(e.to_string()))?;
+        let system = PanelSystem::new(airfoil)?;
         let ante = system.geometry().te.gap_normal.abs();
         // Nodes with the default wake (N/12 + 10 wake nodes, `WakeParams`).
         let n = system.geometry().len();

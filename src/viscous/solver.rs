@@ -4,10 +4,10 @@
 
 use std::sync::Arc;
 
+use crate::boundary_layer::{BlConditions, BlModel, BlParams, Regime};
 use crate::geometry::Airfoil;
 use crate::section::PolarPoint;
 
-use super::bl_model::{BoundaryLayerModel, Regime};
 use super::error::ViscousError;
 use super::forces::{friction_drag, lift_and_moment, transition_x};
 use super::march::{march, remarch_mixed, MarchParams};
@@ -16,7 +16,6 @@ use super::panel_model::{PanelModel, SharedPanels};
 use super::state::BlState;
 use super::stations::{StationLayout, Surface};
 use super::update::{apply_update, UpdateLimits};
-use super::xfoil_bl::XfoilBoundaryLayer;
 
 /// Parameters of a viscous solution.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -184,7 +183,7 @@ pub struct ViscousSolver {
     panels: Arc<PanelModel>,
     /// α of `panels` for an airfoil source.
     panels_alpha: Option<f64>,
-    bl: XfoilBoundaryLayer,
+    bl: BlModel,
     ante: f64,
     warm: Option<WarmState>,
     /// α of the last fresh-start attempt that failed. A fresh start depends on α alone, so
@@ -220,7 +219,7 @@ impl ViscousSolver {
             return Err(ViscousError::BadAirfoil { min: 5, got: n });
         }
         Self::check_params(&params)?;
-        let bl = XfoilBoundaryLayer::new(params.reynolds, params.mach, params.ncrit)?;
+        let bl = boundary_layer_model(&params)?;
         let ante = panels.geometry.trailing_edge_gap().0.abs();
         Ok(Self {
             params,
@@ -249,7 +248,7 @@ impl ViscousSolver {
     ) -> Result<Self, ViscousError> {
         Self::check_params(&params)?;
         let panels = shared.model(0.0)?;
-        let bl = XfoilBoundaryLayer::new(params.reynolds, params.mach, params.ncrit)?;
+        let bl = boundary_layer_model(&params)?;
         let ante = shared.ante();
         Ok(Self {
             params,
@@ -538,7 +537,7 @@ impl ViscousSolver {
                     let st = a.layout.stations[k];
                     let v = a.state.vars(&a.layout, k);
                     let regime = a.state.regime(&a.layout, k);
-                    let p = self.bl.properties(regime, &v).unwrap_or_default();
+                    let p = self.bl.properties(&v, regime).unwrap_or_default();
                     let s = a.state.s[k];
                     BlStation {
                         s: st.xi,
@@ -548,7 +547,7 @@ impl ViscousSolver {
                         dstar: v.dstar,
                         theta: v.theta,
                         cf: p.cf,
-                        cf_inf: p.cf * p.rho_e * p.ue_compressible * p.ue_compressible,
+                        cf_inf: p.cf * p.rho_edge * p.ue * p.ue,
                         h: p.h,
                         hk: p.hk,
                         n_or_ctau: if regime == Regime::Laminar { s } else { s * s },
@@ -574,12 +573,12 @@ impl ViscousSolver {
                 let v = a.state.vars(&a.layout, k);
                 let p = self
                     .bl
-                    .properties(a.state.regime(&a.layout, k), &v)
+                    .properties(&v, a.state.regime(&a.layout, k))
                     .unwrap_or_default();
                 xs.push(g.x[st.node]);
                 ys.push(g.y[st.node]);
                 xis.push(st.xi);
-                tau.push(0.5 * p.rho_e * p.ue_compressible * p.ue_compressible * p.cf);
+                tau.push(p.tau_wall);
             }
             cdf += friction_drag(&xs, &ys, &tau, alpha);
             xtr[side] = transition_x(&xis, &xs, a.transition[side]);
@@ -588,6 +587,7 @@ impl ViscousSolver {
         let cd = self
             .bl
             .squire_young(&a.state.vars(&a.layout, last))
+            .map(|s| s.cd)
             .unwrap_or(f64::NAN);
         ViscousSolution {
             point: PolarPoint {
@@ -608,6 +608,16 @@ impl ViscousSolver {
             wake,
         }
     }
+}
+
+/// The boundary-layer model of a solver's flow condition, with XFOIL's closure constants.
+fn boundary_layer_model(params: &ViscousParams) -> Result<BlModel, ViscousError> {
+    let conditions = BlConditions {
+        reynolds: params.reynolds,
+        mach: params.mach,
+        ncrit: params.ncrit,
+    };
+    BlModel::new(&conditions, BlParams::default()).map_err(ViscousError::FlowConditions)
 }
 
 /// Surface speed at every node from a boundary-layer state (XFOIL GAMQV: q = ±Ue at the

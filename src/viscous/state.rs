@@ -1,8 +1,8 @@
 //! The boundary-layer state of all stations: the Newton unknowns (√Cτ or N, θ, mass defect m)
 //! and the edge speed, stored per station in system order (XFOIL's CTAU, THET, MASS, UEDG).
 
-use super::bl_model::{Regime, StationVars};
 use super::stations::{StationLayout, Surface};
+use crate::boundary_layer::{Regime, StationVars};
 
 /// Boundary-layer state per station, system order of a [`StationLayout`].
 #[derive(Clone, Debug, Default)]

@@ -3,11 +3,11 @@
 //! change of √Cτ/N, θ, δ* or Ue exceeds the limits, then clipping of √Cτ and of the shape factor.
 //! One departure from XFOIL: see [`UpdateLimits::clip_first_turbulent`].
 
-use super::bl_model::BoundaryLayerModel;
 use super::error::ViscousError;
 use super::newton::Coupling;
 use super::state::BlState;
 use super::stations::Surface;
+use crate::boundary_layer::BlModel;
 use crate::numerics::dense::mat_vec;
 
 /// Limits of the relaxed update (XFOIL UPDATE/DSLIM constants).
@@ -64,7 +64,7 @@ pub struct UpdateResult {
 
 /// Applies the Newton step `w` = (δs, δθ, δm) per station with XFOIL's relaxation.
 pub fn apply_update(
-    model: &dyn BoundaryLayerModel,
+    model: &BlModel,
     coupling: &Coupling<'_>,
     state: &mut BlState,
     w: &[[f64; 3]],
@@ -144,9 +144,9 @@ pub fn apply_update(
             limits.hk_min_airfoil
         };
         let v = state.vars(layout, k);
-        let (hk, hk_d) = model.kinematic_shape_factor(&v);
-        if hk < hk_min && hk_d[1] > 0.0 {
-            state.mass[k] = (v.dstar + (hk_min - hk) / hk_d[1]) * state.ue[k];
+        let hk = model.kinematic_shape(&v);
+        if hk.value < hk_min && hk.d[1] > 0.0 {
+            state.mass[k] = (v.dstar + (hk_min - hk.value) / hk.d[1]) * state.ue[k];
         }
         if !(state.theta[k].is_finite() && state.mass[k].is_finite() && state.ue[k].is_finite())
             || state.theta[k] <= 0.0

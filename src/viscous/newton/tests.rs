@@ -4,14 +4,14 @@
 //! next to it, as between Newton iterations (XFOIL STMOVE). The mass columns of the stations
 //! next to the stagnation point are only right with the ξ sensitivities (XFOIL XI_ULE1/2).
 
-use polargen::geometry::Airfoil;
-use polargen::inviscid::PanelSystem;
-use polargen::viscous::march::march;
-use polargen::viscous::newton::{assemble, Coupling};
-use polargen::viscous::state::BlState;
-use polargen::viscous::stations::{StationLayout, Surface};
-use polargen::viscous::xfoil_bl::XfoilBoundaryLayer;
-use polargen::viscous::{PanelModel, ViscousParams, ViscousSolver};
+use super::{assemble, Coupling};
+use crate::boundary_layer::{BlConditions, BlModel, BlParams};
+use crate::geometry::Airfoil;
+use crate::inviscid::PanelSystem;
+use crate::viscous::march::march;
+use crate::viscous::state::BlState;
+use crate::viscous::stations::{StationLayout, Surface};
+use crate::viscous::{PanelModel, ViscousParams, ViscousSolver};
 
 const RE: f64 = 3e6;
 const ALPHA: f64 = 2.0;
@@ -21,14 +21,14 @@ fn paneled() -> Airfoil {
         env!("CARGO_MANIFEST_DIR"),
         "/tests/data/viscous/naca0012_xfoil_paneled.dat"
     );
-    polargen::geometry::read_airfoil_file(std::path::Path::new(path)).unwrap()
+    crate::geometry::read_airfoil_file(std::path::Path::new(path)).unwrap()
 }
 
 /// Everything the assembly needs at one mass distribution.
 struct Setup {
     model: PanelModel,
     q_inv: Vec<f64>,
-    bl: XfoilBoundaryLayer,
+    bl: BlModel,
     ante: f64,
 }
 
@@ -41,7 +41,15 @@ impl Setup {
         Self {
             model,
             q_inv,
-            bl: XfoilBoundaryLayer::new(RE, 0.0, 9.0).unwrap(),
+            bl: BlModel::new(
+                &BlConditions {
+                    reynolds: RE,
+                    mach: 0.0,
+                    ncrit: 9.0,
+                },
+                BlParams::default(),
+            )
+            .unwrap(),
             ante: system.geometry().te.gap_normal.abs(),
         }
     }
