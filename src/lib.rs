@@ -26,6 +26,7 @@
 #![warn(missing_docs)]
 
 pub mod boundary_layer;
+pub mod compressibility;
 pub mod diagnostics;
 pub mod geometry;
 pub mod inviscid;

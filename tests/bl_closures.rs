@@ -162,7 +162,7 @@ fn turbulent_skin_friction() {
 fn density_shape_and_slip_velocity() {
     close("hct", hct(1.6, 0.25).value, 0.25 * (0.064 / 0.8 + 0.251));
     fd_check("hct", [1.6, 0.25], |a| hct(a[0], a[1]));
-    let gb = BlParams::default().gbcon;
+    let gb = BlParams::default().equilibrium_locus_b;
     close(
         "us",
         slip_velocity(1.75, 1.5, 1.55, gb).value,
@@ -176,31 +176,40 @@ fn density_shape_and_slip_velocity() {
 #[test]
 fn equilibrium_shear_stress() {
     let p = BlParams::default();
-    let ctcon = p.ctcon();
+    let ctcon = p.equilibrium_ctau_constant();
     assert!((ctcon - 0.5 / (6.7 * 6.7 * 0.75)).abs() < 1e-15);
     let (hs, us, hk, h, rt) = (1.75, 0.4, 1.5, 1.55, 2000.0);
     let hkc: f64 = hk - 1.0 - 18.0 / rt;
     let want = (ctcon * hs * (hk - 1.0) * hkc * hkc / ((1.0 - us) * h * hk * hk)).sqrt();
     close(
         "cq wall",
-        ctau_eq_sqrt(hs, us, hk, h, rt, true, ctcon, p.gccon).value,
+        ctau_eq_sqrt(hs, us, hk, h, rt, true, ctcon, p.equilibrium_low_re_offset).value,
         want,
     );
     let want_wake = (ctcon * hs * (hk - 1.0).powi(3) / ((1.0 - us) * h * hk * hk)).sqrt();
     close(
         "cq wake",
-        ctau_eq_sqrt(hs, us, hk, h, rt, false, ctcon, p.gccon).value,
+        ctau_eq_sqrt(hs, us, hk, h, rt, false, ctcon, p.equilibrium_low_re_offset).value,
         want_wake,
     );
     for wall in [true, false] {
         fd_check("cq", [hs, us, hk, h, rt], |a| {
-            ctau_eq_sqrt(a[0], a[1], a[2], a[3], a[4], wall, ctcon, p.gccon)
+            ctau_eq_sqrt(
+                a[0],
+                a[1],
+                a[2],
+                a[3],
+                a[4],
+                wall,
+                ctcon,
+                p.equilibrium_low_re_offset,
+            )
         });
     }
-    let f = transition_ctau_factor(2.6, p.ctrcon, p.ctrcex);
+    let f = transition_ctau_factor(2.6, p.transition_ctau_factor, p.transition_ctau_exponent);
     close("ctr", f.value, 1.8 * (-3.3f64 / 1.6).exp());
     fd_check("ctr", [2.6], |a| {
-        transition_ctau_factor(a[0], p.ctrcon, p.ctrcex)
+        transition_ctau_factor(a[0], p.transition_ctau_factor, p.transition_ctau_exponent)
     });
 }
 

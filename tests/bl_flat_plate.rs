@@ -17,7 +17,7 @@ fn model(re: f64) -> BlModel {
             ncrit: 9.0,
         },
         BlParams {
-            bule: 0.0,
+            similarity_ue_exponent: 0.0,
             ..BlParams::default()
         },
     )

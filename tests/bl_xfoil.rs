@@ -7,6 +7,8 @@
 use polargen::boundary_layer::{BlModel, Regime, StationVars, TransitionKind};
 
 mod bl_support;
+use polargen::compressibility::GAMMA;
+
 use bl_support::{incompressible, load_dump as load, model, Row};
 
 /// Station variables from a dump row. The dump's "H" column is XFOIL's kinematic Hk
@@ -14,8 +16,8 @@ use bl_support::{incompressible, load_dump as load, model, Row};
 /// Mach number of the dumped Ue.
 fn vars(m: &BlModel, xi: f64, r: &Row, s: f64) -> StationVars {
     let ue = r.ue.abs();
-    let u2h = ue * ue * m.flow.hstinv;
-    let msq = u2h / (m.flow.gm1 * (1.0 - 0.5 * u2h));
+    let u2h = ue * ue * m.flow.inverse_stagnation_enthalpy;
+    let msq = u2h / ((GAMMA - 1.0) * (1.0 - 0.5 * u2h));
     let h = r.h * (1.0 + 0.113 * msq) + 0.29 * msq;
     StationVars {
         x: xi,

@@ -4,7 +4,8 @@
 mod inviscid_support;
 
 use inviscid_support::xfoil_nodes;
-use polargen::inviscid::{InviscidError, KarmanTsien, PanelSystem};
+use polargen::compressibility::{KarmanTsien, MachOutOfRange};
+use polargen::inviscid::{InviscidError, PanelSystem};
 
 /// Cp_c = Cp/(β + λ(1+β)Cp/2) with λ = M²/(1+β)², checked at M = 0.5, Cp = −1 against the
 /// hand-evaluated value −1.251505; small Cp tends to Prandtl–Glauert Cp/β.
@@ -23,9 +24,11 @@ fn karman_tsien_values() {
     // Sonic Cp of air at M = 0.7: -0.779 (isentropic relation).
     let cps = KarmanTsien::new(0.7).unwrap().cp_sonic();
     assert!((cps + 0.7794).abs() < 1e-3, "Cp* = {cps}");
-    // Compressible speed: stagnation stays zero, freestream stays one.
+    // Compressible speed: stagnation stays zero, freestream stays one; the relation without
+    // the range check gives the same value inside the range.
     assert_eq!(kt.speed(0.0), 0.0);
     assert!((kt.speed(1.0) - 1.0).abs() < 1e-15);
+    assert_eq!(kt.cp_unchecked(-1.0), kt.cp(-1.0).unwrap());
 }
 
 /// Lift grows with Mach roughly like 1/β: Karman–Tsien gives more than Prandtl–Glauert
@@ -71,15 +74,15 @@ fn invalid_inputs_are_errors() {
     let sys = PanelSystem::new(&xfoil_nodes("naca2412")).unwrap();
     assert_eq!(
         sys.solve(2.0, 1.0).unwrap_err(),
-        InviscidError::InvalidMach(1.0)
+        InviscidError::InvalidMach(MachOutOfRange(1.0))
     );
     assert_eq!(
         sys.solve(2.0, 1.3).unwrap_err(),
-        InviscidError::InvalidMach(1.3)
+        InviscidError::InvalidMach(MachOutOfRange(1.3))
     );
     assert_eq!(
         sys.solve(2.0, -0.1).unwrap_err(),
-        InviscidError::InvalidMach(-0.1)
+        InviscidError::InvalidMach(MachOutOfRange(-0.1))
     );
     assert!(matches!(
         sys.solve(2.0, f64::NAN),

@@ -9,6 +9,7 @@
 //! the zero slope of any clamp that is active.
 
 use super::Dual;
+use crate::compressibility::GAMMA_MINUS_ONE;
 
 /// Value of a closure and its partial derivatives with respect to its `N` arguments, in the
 /// argument order of the function that returned it.
@@ -108,8 +109,7 @@ pub(crate) fn cfl_d<const N: usize>(hk: Dual<N>, rt: Dual<N>) -> Dual<N> {
 }
 
 /// Turbulent skin friction Cf(Hk, Re_θ, Me²), Swafford/Coles form with the Whitfield
-/// compressibility factor Fc = √(1 + (γ−1)/2 Me²) (Drela 1989; XFOIL CFT, γ = 1.4 fixed as in
-/// XFOIL). Arguments: `(hk, rt, msq)`.
+/// compressibility factor Fc = √(1 + (γ−1)/2 Me²) (Drela 1989; XFOIL CFT, γ of air). Arguments: `(hk, rt, msq)`.
 pub fn cft(hk: f64, rt: f64, msq: f64) -> Partials<3> {
     partials([hk, rt, msq], |a| cft_d(a[0], a[1], a[2]))
 }
@@ -119,8 +119,7 @@ pub fn cft(hk: f64, rt: f64, msq: f64) -> Partials<3> {
 const XFOIL_LN10: f64 = 2.3026;
 
 pub(crate) fn cft_d<const N: usize>(hk: Dual<N>, rt: Dual<N>, msq: Dual<N>) -> Dual<N> {
-    const GM1: f64 = 0.4;
-    let fc = (msq * (0.5 * GM1) + 1.0).sqrt();
+    let fc = (msq * (0.5 * GAMMA_MINUS_ONE) + 1.0).sqrt();
     let grt = (rt / fc).ln().max_const(3.0);
     let gex = hk * (-0.31) - 1.74;
     let arg = (hk * (-1.33)).max_const(-20.0);

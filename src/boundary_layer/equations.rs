@@ -128,9 +128,9 @@ fn upwinding<const N: usize>(
     p: &BlParams,
 ) -> Dual<N> {
     let hdcon = if kind == DiffKind::Wake {
-        p.hupwt / s2.hk.sq()
+        p.upwinding_constant / s2.hk.sq()
     } else {
-        5.0 * p.hupwt / s2.hk.sq()
+        5.0 * p.upwinding_constant / s2.hk.sq()
     };
     let hl = ((s2.hk - 1.0) / (s1.hk - 1.0)).abs().ln();
     let hlsq = hl.sq().min_const(15.0);
@@ -149,8 +149,8 @@ pub(crate) fn bldif<const N: usize>(
     let (xlog, ulog, tlog, hlog) = if kind == DiffKind::Similarity {
         (
             Dual::constant(1.0),
-            Dual::constant(p.bule),
-            Dual::constant(0.5 * (1.0 - p.bule)),
+            Dual::constant(p.similarity_ue_exponent),
+            Dual::constant(0.5 * (1.0 - p.similarity_ue_exponent)),
             Dual::constant(0.0),
         )
     } else {
@@ -205,7 +205,8 @@ pub(crate) fn bldif<const N: usize>(
 /// Shear-lag equation residual (Drela 1989; XFOIL BLDIF ITYP = 2, 3):
 /// K_C/(1+Us)·(√Cτ_eq − λ√Cτ)Δξ − 2δ·Δln√Cτ + 2δ·(Q·Δξ − Δln Ue)·DUXCON = 0, with
 /// K_C = SCCON·1.333, λ = DLCON in the wake, and the equilibrium 1/Ue dUe/dξ
-/// Q = (CFFAC·Cf/2 − ((Hk − 1 − GCCON/Re_θ)/(GACON·λ·Hk))²)/(GBCON·δ*).
+/// Q = (CFFAC·Cf/2 − ((Hk − 1 − GCCON/Re_θ)/(GACON·λ·Hk))²)/(GBCON·δ*) (the XFOIL names of
+/// the [`BlParams`] fields).
 fn shear_lag<const N: usize>(
     kind: DiffKind,
     s1: &Station<N>,
@@ -223,16 +224,21 @@ fn shear_lag<const N: usize>(
     let rta = (s1.rt + s2.rt) * 0.5;
     let dea = (s1.de + s2.de) * 0.5;
     let da = (s1.d + s2.d) * 0.5;
-    let ald = if kind == DiffKind::Wake { p.dlcon } else { 1.0 };
+    let ald = if kind == DiffKind::Wake {
+        p.wake_dissipation_length_ratio
+    } else {
+        1.0
+    };
     let hkc = if kind == DiffKind::Turbulent {
-        (hka - 1.0 - p.gccon / rta).max_const(0.01)
+        (hka - 1.0 - p.equilibrium_low_re_offset / rta).max_const(0.01)
     } else {
         hka - 1.0
     };
-    let hr = hkc / (hka * (p.gacon * ald));
-    let uq = (cfa * (0.5 * p.cffac) - hr.sq()) / (da * p.gbcon);
-    let scc = p.sccon * 1.333 / (usa + 1.0);
+    let hr = hkc / (hka * (p.equilibrium_locus_a * ald));
+    let uq = (cfa * (0.5 * p.equilibrium_cf_factor) - hr.sq()) / (da * p.equilibrium_locus_b);
+    let scc = p.shear_lag_constant * 1.333 / (usa + 1.0);
     let slog = (s2.s / s1.s).ln();
     let dxi = s2.x - s1.x;
-    scc * (cqa - sa * ald) * dxi - dea * 2.0 * slog + dea * 2.0 * (uq * dxi - ulog) * p.duxcon
+    scc * (cqa - sa * ald) * dxi - dea * 2.0 * slog
+        + dea * 2.0 * (uq * dxi - ulog) * p.shear_lag_pressure_gradient_factor
 }

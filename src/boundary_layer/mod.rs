@@ -63,6 +63,8 @@ pub(crate) const NVARS: usize = 10;
 pub(crate) type Dual<const N: usize = NVARS> = crate::numerics::dual::Dual<N>;
 use std::cell::OnceCell;
 
+use crate::compressibility::{MachOutOfRange, GAMMA_MINUS_ONE};
+
 use station::{validate, Station};
 
 /// Errors of the boundary-layer routines.
@@ -72,8 +74,8 @@ pub enum BlError {
     #[error("boundary layer: Reynolds number {0} is not positive and finite")]
     Reynolds(f64),
     /// The Mach number is outside [0, 1).
-    #[error("boundary layer: Mach number {0} is outside [0, 1)")]
-    Mach(f64),
+    #[error("boundary layer: {0}")]
+    Mach(#[source] MachOutOfRange),
     /// The critical amplification factor is not positive.
     #[error("boundary layer: Ncrit {0} is not positive and finite")]
     Ncrit(f64),
@@ -392,20 +394,19 @@ impl BlModel {
     /// the Kármán–Tsien edge speed as in XFOIL BLPRV/BLKIN), with ∂Hk/∂(θ, δ*, u) (u
     /// incompressible, δ* total). These are the sensitivities XFOIL's inverse marches
     /// (MRCHUE, MRCHDU) use to drive Hk to a target; derived by hand because the march
-    /// evaluates Hk in every local iteration. Unchecked: a non-physical station gives a
+    /// evaluates Hk in every local iteration. Hk is the station's own unclamped value to the
+    /// last bit (the edge speed is the station's). Unchecked: a non-physical station gives a
     /// non-finite Hk, which the callers test.
     pub fn kinematic_shape(&self, v: &StationVars) -> closures::Partials<3> {
         let f = &self.flow;
-        let (t, q) = (f.tkbl, f.qinfbl);
         // Kármán–Tsien compressible edge speed and its derivative (XFOIL BLPRV).
-        let r = v.u / q;
-        let den = 1.0 - t * r * r;
-        let uc = v.u * (1.0 - t) / den;
-        let uc_u = (1.0 - t) * (1.0 + t * r * r) / (den * den);
+        let uc = f.karman_tsien.speed_of(Dual::<1>::variable(v.u, 0));
+        let (uc, uc_u) = (uc.v, uc.g[0]);
         // Edge Mach number squared (XFOIL BLKIN).
-        let a = uc * uc * f.hstinv;
-        let msq = a / (f.gm1 * (1.0 - 0.5 * a));
-        let msq_u = 2.0 * uc * f.hstinv * uc_u / (f.gm1 * (1.0 - 0.5 * a) * (1.0 - 0.5 * a));
+        let (gm1, hstinv) = (GAMMA_MINUS_ONE, f.inverse_stagnation_enthalpy);
+        let a = uc * uc * hstinv;
+        let msq = a / (gm1 * (1.0 - 0.5 * a));
+        let msq_u = 2.0 * uc * hstinv * uc_u / (gm1 * (1.0 - 0.5 * a) * (1.0 - 0.5 * a));
         let h = (v.dstar - v.dw) / v.theta;
         let d = 1.0 + 0.113 * msq;
         let hk = (h - 0.29 * msq) / d;
@@ -419,16 +420,17 @@ impl BlModel {
 
     /// Starting guess (θ, δ*) for the similarity station at ξ with edge speed `u` from
     /// Thwaites' method, θ² = 0.45/(C·(5m + 1)·Re)·ξ^(1−m) with Ue = C·ξ^m, m = BULE, and
-    /// δ* = 2.2θ (XFOIL xbl.f MRCHUE initialisation).
+    /// δ* = 2.2θ (XFOIL xbl.f MRCHUE initialisation). Re is the boundary layer's Reynolds
+    /// number, the one based on the stagnation viscosity (XFOIL REYBL), as in XFOIL.
     pub fn stagnation_guess(&self, x: f64, u: f64) -> Result<(f64, f64), BlError> {
         for (what, value) in [("xi", x), ("edge speed", u)] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(BlError::Station { what, value });
             }
         }
-        let m = self.params.bule;
+        let m = self.params.similarity_ue_exponent;
         let ucon = u / x.powf(m);
-        let tsq = 0.45 / (ucon * (5.0 * m + 1.0) * self.flow.reybl) * x.powf(1.0 - m);
+        let tsq = 0.45 / (ucon * (5.0 * m + 1.0) * self.flow.stagnation_reynolds) * x.powf(1.0 - m);
         let theta = tsq.sqrt();
         Ok((theta, 2.2 * theta))
     }

@@ -3,6 +3,7 @@
 //! XFOIL xbl.f SETBL/MRCHUE).
 
 use super::BlError;
+use crate::compressibility::{KarmanTsien, GAMMA_MINUS_ONE};
 
 /// Flow regime of one boundary-layer interval.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -18,81 +19,80 @@ pub enum Regime {
 /// Tunable constants of the closures and of the shear-lag equation.
 ///
 /// Defaults are XFOIL 6.99's (BLPAR.INC / `BLPINI`), the values of Drela & Giles (1987)
-/// and Drela (1989) as tuned in XFOIL.
+/// and Drela (1989) as tuned in XFOIL; each field names its XFOIL symbol.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BlParams {
-    /// Shear-lag rate constant K_C (XFOIL SCCON = 5.6; Drela 1989 eq. for dCτ/dx).
-    pub sccon: f64,
-    /// G–β locus constant A (XFOIL GACON = 6.70): equilibrium G = A √(1 + B β).
-    pub gacon: f64,
-    /// G–β locus constant B (XFOIL GBCON = 0.75).
-    pub gbcon: f64,
-    /// Low-Re_θ offset of the equilibrium locus (XFOIL GCCON = 18.0, Hk − 1 − C/Re_θ).
-    pub gccon: f64,
+    /// Shear-lag rate constant K_C of dCτ/dξ (XFOIL SCCON = 5.6; Drela 1989 shear-lag
+    /// equation, after Green's lag-entrainment method).
+    pub shear_lag_constant: f64,
+    /// Constant A of the G–β equilibrium locus G = A√(1 + Bβ) (XFOIL GACON = 6.70).
+    pub equilibrium_locus_a: f64,
+    /// Constant B of the G–β equilibrium locus (XFOIL GBCON = 0.75).
+    pub equilibrium_locus_b: f64,
+    /// Low-Re_θ offset C of the equilibrium locus, Hk − 1 − C/Re_θ (XFOIL GCCON = 18.0).
+    pub equilibrium_low_re_offset: f64,
     /// Wake dissipation-length ratio (XFOIL DLCON = 0.9).
-    pub dlcon: f64,
-    /// Initial Cτ/Cτ_eq at transition, factor (XFOIL CTRCON = 1.8).
-    pub ctrcon: f64,
-    /// Initial Cτ/Cτ_eq at transition, exponent constant (XFOIL CTRCEX = 3.3):
-    /// Cτ_tr/Cτ_eq = CTRCON·exp(−CTRCEX/(Hk − 1)).
-    pub ctrcex: f64,
-    /// Multiplier on the dUe/dx term of the shear-lag equation (XFOIL DUXCON = 1.0).
-    pub duxcon: f64,
+    pub wake_dissipation_length_ratio: f64,
+    /// Factor of the initial Cτ/Cτ_eq at transition,
+    /// Cτ_tr/Cτ_eq = factor·exp(−exponent/(Hk − 1)) (XFOIL CTRCON = 1.8).
+    pub transition_ctau_factor: f64,
+    /// Exponent constant of the initial Cτ/Cτ_eq at transition (XFOIL CTRCEX = 3.3).
+    pub transition_ctau_exponent: f64,
+    /// Multiplier on the dUe/dξ term of the shear-lag equation (XFOIL DUXCON = 1.0).
+    pub shear_lag_pressure_gradient_factor: f64,
     /// Multiplier on Cf/2 in the equilibrium dUe/dξ term Q of the shear-lag equation
     /// (1 reproduces XFOIL 6.99; kept as a tuning knob).
-    pub cffac: f64,
-    /// Ratio of specific heats (XFOIL GAMMA = 1.4).
-    pub gamma: f64,
+    pub equilibrium_cf_factor: f64,
     /// Sutherland constant over stagnation temperature in the edge viscosity
-    /// μ ∝ (h/h0)^1.5 (1 + HVRAT)/(h/h0 + HVRAT). The XFOIL 6.99 boundary layer runs with
-    /// HVRAT = 0 (μ ∝ √T): with 0 the skin friction of XFOIL 6.99 dumps at M = 0.41 is
+    /// μ ∝ (h/h0)^1.5 (1 + HVRAT)/(h/h0 + HVRAT) (XFOIL HVRAT). The XFOIL 6.99 boundary layer
+    /// runs with HVRAT = 0 (μ ∝ √T): with 0 the skin friction of XFOIL 6.99 dumps at M = 0.41 is
     /// reproduced to 0.3 % (tests/bl_xfoil.rs), with the 0.35 quoted in XFOIL's comments
     /// it is 1.3 % off.
-    pub hvrat: f64,
-    /// Similarity-station log-derivative of Ue, d ln Ue / d ln ξ (XFOIL BULE = 1, stagnation flow).
-    pub bule: f64,
+    pub sutherland_ratio: f64,
+    /// Similarity-station log-derivative of Ue, d ln Ue / d ln ξ (XFOIL BULE = 1, stagnation
+    /// flow).
+    pub similarity_ue_exponent: f64,
     /// Minimum Hk on the airfoil surface (XFOIL BLVAR clamp 1.05).
     pub hk_min_wall: f64,
     /// Minimum Hk in the wake (XFOIL BLVAR clamp 1.00005).
     pub hk_min_wake: f64,
     /// Upwinding trigger constant (XFOIL BLDIF HUPWT = 1; HDCON = 5·HUPWT/Hk² on the wall,
     /// HUPWT/Hk² in the wake).
-    pub hupwt: f64,
+    pub upwinding_constant: f64,
     /// Convergence tolerance on the N2 Newton step of the implicit transition check.
     /// XFOIL TRCHEK2 uses DAEPS = 5e-5; the default here is tighter (1e-10) so that the
     /// transition-point sensitivities are consistent with the converged N2 to round-off
     /// (Newton converges quadratically, this costs about one extra iteration).
-    pub daeps: f64,
+    pub transition_n2_tolerance: f64,
 }
 
 impl Default for BlParams {
     fn default() -> Self {
         Self {
-            sccon: 5.6,
-            gacon: 6.70,
-            gbcon: 0.75,
-            gccon: 18.0,
-            dlcon: 0.9,
-            ctrcon: 1.8,
-            ctrcex: 3.3,
-            duxcon: 1.0,
-            cffac: 1.0,
-            gamma: 1.4,
-            hvrat: 0.0,
-            bule: 1.0,
+            shear_lag_constant: 5.6,
+            equilibrium_locus_a: 6.70,
+            equilibrium_locus_b: 0.75,
+            equilibrium_low_re_offset: 18.0,
+            wake_dissipation_length_ratio: 0.9,
+            transition_ctau_factor: 1.8,
+            transition_ctau_exponent: 3.3,
+            shear_lag_pressure_gradient_factor: 1.0,
+            equilibrium_cf_factor: 1.0,
+            sutherland_ratio: 0.0,
+            similarity_ue_exponent: 1.0,
             hk_min_wall: 1.05,
             hk_min_wake: 1.00005,
-            hupwt: 1.0,
-            daeps: 1.0e-10,
+            upwinding_constant: 1.0,
+            transition_n2_tolerance: 1.0e-10,
         }
     }
 }
 
 impl BlParams {
-    /// Shear-lag equilibrium constant CTCON = 0.5/(A²·B) (XFOIL BLPINI), used in
+    /// Shear-lag equilibrium constant 0.5/(A²·B) (XFOIL BLPINI CTCON), used in
     /// Cτ_eq = CTCON·H*·(Hk−1)³/((1−Us)·H·Hk²) (Drela 1989, G–β locus).
-    pub fn ctcon(&self) -> f64 {
-        0.5 / (self.gacon * self.gacon * self.gbcon)
+    pub fn equilibrium_ctau_constant(&self) -> f64 {
+        0.5 / (self.equilibrium_locus_a * self.equilibrium_locus_a * self.equilibrium_locus_b)
     }
 }
 
@@ -118,23 +118,20 @@ impl Default for BlConditions {
 }
 
 /// Compressibility and Reynolds-number constants derived from [`BlConditions`]
-/// (XFOIL xbl.f SETBL: TKBL, QINFBL, HSTINV, RSTBL, REYBL, GM1BL).
+/// (XFOIL xbl.f SETBL: TKBL, HSTINV, RSTBL, REYBL; speeds per V∞, so XFOIL's QINFBL is 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FlowConstants {
-    /// Karman–Tsien parameter λ = M∞²/(1+√(1−M∞²))² (XFOIL TKBL).
-    pub tkbl: f64,
-    /// Free-stream speed in the BL's units (XFOIL QINFBL = 1).
-    pub qinfbl: f64,
+    /// Karman–Tsien correction of the free stream (its λ is XFOIL TKBL).
+    pub karman_tsien: KarmanTsien,
     /// Inverse stagnation enthalpy (γ−1)M∞²/(1 + (γ−1)/2 M∞²) in V∞² units (XFOIL HSTINV).
-    pub hstinv: f64,
-    /// Stagnation density ratio (1 + (γ−1)/2 M∞²)^(1/(γ−1)) (XFOIL RSTBL).
-    pub rstbl: f64,
-    /// Reynolds number based on stagnation viscosity via Sutherland (XFOIL REYBL).
-    pub reybl: f64,
-    /// γ − 1 (XFOIL GM1BL).
-    pub gm1: f64,
+    pub inverse_stagnation_enthalpy: f64,
+    /// Stagnation density ratio ρ0/ρ∞ = (1 + (γ−1)/2 M∞²)^(1/(γ−1)) (XFOIL RSTBL).
+    pub stagnation_density_ratio: f64,
+    /// Reynolds number with the stagnation viscosity, Re·(h∞/h0)^1.5 (1 + HVRAT)/(h∞/h0 +
+    /// HVRAT) (XFOIL REYBL): the Reynolds number of the boundary-layer equations.
+    pub stagnation_reynolds: f64,
     /// Sutherland constant ratio (XFOIL HVRAT).
-    pub hvrat: f64,
+    pub sutherland_ratio: f64,
     /// Critical amplification factor N_crit (XFOIL AMCRIT).
     pub ncrit: f64,
 }
@@ -145,37 +142,24 @@ impl FlowConstants {
         if !(cond.reynolds.is_finite() && cond.reynolds > 0.0) {
             return Err(BlError::Reynolds(cond.reynolds));
         }
-        if !(cond.mach.is_finite() && (0.0..1.0).contains(&cond.mach)) {
-            return Err(BlError::Mach(cond.mach));
-        }
+        let karman_tsien = KarmanTsien::new(cond.mach).map_err(BlError::Mach)?;
         if !(cond.ncrit.is_finite() && cond.ncrit > 0.0) {
             return Err(BlError::Ncrit(cond.ncrit));
         }
-        let gm1 = params.gamma - 1.0;
+        let gm1 = GAMMA_MINUS_ONE;
         let m2 = cond.mach * cond.mach;
-        let beta = (1.0 - m2).sqrt();
-        let tkbl = m2 / ((1.0 + beta) * (1.0 + beta));
-        let qinfbl = 1.0;
         let hstinv = gm1 * m2 / (1.0 + 0.5 * gm1 * m2);
         let rstbl = (1.0 + 0.5 * gm1 * m2).powf(1.0 / gm1);
-        let herat = 1.0 - 0.5 * qinfbl * qinfbl * hstinv;
-        let reybl = cond.reynolds * herat.powf(1.5) * (1.0 + params.hvrat) / (herat + params.hvrat);
+        let herat = 1.0 - 0.5 * hstinv;
+        let hvrat = params.sutherland_ratio;
+        let reybl = cond.reynolds * herat.powf(1.5) * (1.0 + hvrat) / (herat + hvrat);
         Ok(Self {
-            tkbl,
-            qinfbl,
-            hstinv,
-            rstbl,
-            reybl,
-            gm1,
-            hvrat: params.hvrat,
+            karman_tsien,
+            inverse_stagnation_enthalpy: hstinv,
+            stagnation_density_ratio: rstbl,
+            stagnation_reynolds: reybl,
+            sutherland_ratio: hvrat,
             ncrit: cond.ncrit,
         })
-    }
-
-    /// Karman–Tsien compressible edge speed from the incompressible one (XFOIL BLPRV):
-    /// Ue = Ui(1−λ)/(1−λ(Ui/q∞)²).
-    pub fn compressible_speed(&self, ui: f64) -> f64 {
-        let r = ui / self.qinfbl;
-        ui * (1.0 - self.tkbl) / (1.0 - self.tkbl * r * r)
     }
 }

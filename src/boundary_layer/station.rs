@@ -10,6 +10,7 @@ use super::closures::{
 use super::params::{BlParams, FlowConstants, Regime};
 use super::BlError;
 use super::{Dual, NVARS};
+use crate::compressibility::GAMMA_MINUS_ONE;
 
 /// Primary variables of one station (XFOIL BLPRV arguments).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -85,10 +86,9 @@ pub(crate) fn validate(v: &StationVars, regime: Regime) -> Result<(), BlError> {
     Ok(())
 }
 
-/// Karman–Tsien compressible edge speed (XFOIL BLPRV): Ue = Ui(1−λ)/(1−λ(Ui/q∞)²).
+/// Karman–Tsien compressible edge speed (XFOIL BLPRV): Ue = Ui(1−λ)/(1−λUi²).
 pub(crate) fn compressible_speed_d<const N: usize>(ui: Dual<N>, fc: &FlowConstants) -> Dual<N> {
-    let r = ui / fc.qinfbl;
-    ui * (1.0 - fc.tkbl) / (1.0 - r.sq() * fc.tkbl)
+    fc.karman_tsien.speed_of(ui)
 }
 
 impl Station {
@@ -225,12 +225,14 @@ impl<const N: usize> Station<N> {
         p: &BlParams,
     ) -> Self {
         // BLKIN: edge Mach², density, viscosity (Sutherland), H, Hk, Re_θ.
-        let u2h = u.sq() * fc.hstinv;
-        let msq = u2h / ((1.0 - u2h * 0.5) * fc.gm1);
-        let tr = msq * (0.5 * fc.gm1) + 1.0;
-        let rho = tr.powf(-1.0 / fc.gm1) * fc.rstbl;
+        let gm1 = GAMMA_MINUS_ONE;
+        let u2h = u.sq() * fc.inverse_stagnation_enthalpy;
+        let msq = u2h / ((1.0 - u2h * 0.5) * gm1);
+        let tr = msq * (0.5 * gm1) + 1.0;
+        let rho = tr.powf(-1.0 / gm1) * fc.stagnation_density_ratio;
         let herat = 1.0 - u2h * 0.5;
-        let visc = herat * herat.sqrt() * (1.0 + fc.hvrat) / (herat + fc.hvrat) / fc.reybl;
+        let hvrat = fc.sutherland_ratio;
+        let visc = herat * herat.sqrt() * (1.0 + hvrat) / (herat + hvrat) / fc.stagnation_reynolds;
         let h = d / t;
         let hk_raw = hkin_d(h, msq);
         let rt = rho * u * t / visc;
@@ -245,7 +247,7 @@ impl<const N: usize> Station<N> {
             Regime::Laminar => hsl_d(hk),
             _ => hst_d(hk, rt, msq),
         };
-        let us_raw = slip_velocity_d(hs, hk, h, p.gbcon);
+        let us_raw = slip_velocity_d(hs, hk, h, p.equilibrium_locus_b);
         let us = match regime {
             Regime::Wake if us_raw.v > 0.99995 => Dual::constant(0.99995),
             Regime::Laminar | Regime::Turbulent if us_raw.v > 0.95 => Dual::constant(0.98),
@@ -258,8 +260,8 @@ impl<const N: usize> Station<N> {
             h,
             rt,
             regime == Regime::Turbulent,
-            p.ctcon(),
-            p.gccon,
+            p.equilibrium_ctau_constant(),
+            p.equilibrium_low_re_offset,
         );
         // Cf and 2CD/H* per regime; the turbulent Cf enters both.
         let (cf, di) = match regime {

@@ -94,7 +94,7 @@ impl BlModel {
         let d = Dual::variable(last_wake.dstar, 2);
         let u = compressible_speed_d(Dual::variable(last_wake.u, 3), &self.flow);
         let h = d / t;
-        let cd = t * 2.0 * ((h + 5.0) * 0.5 * (u / self.flow.qinfbl).ln()).exp();
+        let cd = t * 2.0 * ((h + 5.0) * 0.5 * u.ln()).exp();
         Ok(SquireYoung {
             cd: cd.v,
             d: cd.slots(0),

@@ -231,7 +231,7 @@ impl BlModel {
             if rlx * da2.abs() > 1.0 {
                 rlx = 1.0 / da2.abs();
             }
-            if da2.abs() < self.params.daeps {
+            if da2.abs() < self.params.transition_n2_tolerance {
                 converged = true;
                 break;
             }
@@ -362,7 +362,11 @@ impl BlModel {
             fc,
             pp,
         );
-        let sqt = transition_ctau_factor_d(stq.hk, pp.ctrcon, pp.ctrcex) * stq.cq;
+        let sqt = transition_ctau_factor_d(
+            stq.hk,
+            pp.transition_ctau_factor,
+            pp.transition_ctau_exponent,
+        ) * stq.cq;
         let stt = Station::from_primaries(xt, ut, tt, dt, sqt, 0.0, Regime::Turbulent, fc, pp);
         let s2 = self.station(v2, Some(5), Regime::Turbulent);
         let bt = bldif(DiffKind::Turbulent, &stt, &s2, fc, pp);

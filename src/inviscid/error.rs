@@ -2,6 +2,8 @@
 
 use thiserror::Error;
 
+use crate::compressibility::MachOutOfRange;
+
 /// Everything that can go wrong when building or solving the panel system.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum InviscidError {
@@ -34,8 +36,8 @@ pub enum InviscidError {
     #[error("panel influence matrix is singular (self-intersecting or degenerate contour?)")]
     SingularSystem,
     /// Mach number outside the subsonic range [0, 1).
-    #[error("freestream Mach number {0} is outside [0, 1)")]
-    InvalidMach(f64),
+    #[error(transparent)]
+    InvalidMach(#[from] MachOutOfRange),
     /// Angle of attack is NaN or infinite.
     #[error("angle of attack {0} deg is not finite")]
     InvalidAlpha(f64),

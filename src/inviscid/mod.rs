@@ -1,6 +1,6 @@
 //! Inviscid flow: linear-vorticity stream-function panel method (Drela 1989), unit solutions
 //! for α = 0° and 90°, source-panel influence for the viscous coupling, Karman–Tsien
-//! compressibility.
+//! compressibility ([`crate::compressibility`]).
 //!
 //! Conventions (XFOIL's): nodes in XFOIL order (upper TE → LE → lower TE, counter-clockwise),
 //! chord ≈ 1, speeds per V∞. The nodal vorticity γ equals the signed surface speed: positive on
@@ -11,7 +11,7 @@
 //!
 //! Files: [`panels`] (geometry and PSILIN/PSWLIN kernels), [`system`] (matrix, Kutta/sharp-TE
 //! rows, LU, unit solutions), [`wake`] (XYWAKE), [`source_influence`] (QDCALC),
-//! [`compressibility`] (Karman–Tsien), [`forces`] (CLCALC), [`error`].
+//! [`forces`] (CLCALC), [`error`].
 //!
 //! Typical use:
 //! ```no_run
@@ -25,7 +25,6 @@
 //! # let _ = (sol, dij); Ok(()) }
 //! ```
 
-pub mod compressibility;
 pub mod error;
 pub mod forces;
 pub mod panels;
@@ -33,7 +32,6 @@ pub mod source_influence;
 pub mod system;
 pub mod wake;
 
-pub use compressibility::KarmanTsien;
 pub use error::InviscidError;
 pub use forces::{integrate_pressure, SectionForces};
 pub use panels::{PanelGeometry, PanelParams, TrailingEdge};

@@ -14,13 +14,13 @@ use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::Mat;
 use std::sync::OnceLock;
 
-use super::compressibility::KarmanTsien;
 use super::error::InviscidError;
 use super::forces::{integrate_pressure, SectionForces};
 use super::panels::{
     airfoil_influence, airfoil_source_value, FieldPoint, Influence, PanelGeometry, PanelParams,
     Probe,
 };
+use crate::compressibility::KarmanTsien;
 use crate::geometry::Airfoil;
 use crate::numerics::simd::reset_simd_state;
 

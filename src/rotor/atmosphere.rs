@@ -9,7 +9,7 @@ const LAPSE: f64 = 0.0065;
 /// Specific gas constant of dry air [J/(kg K)] (ISA).
 const R_AIR: f64 = 287.052_87;
 /// Ratio of specific heats of air.
-const GAMMA: f64 = 1.4;
+const GAMMA: f64 = crate::compressibility::GAMMA;
 /// Sutherland's law reference viscosity [Pa s] at `SUTH_T0` (ISA, ISO 2533).
 const SUTH_MU0: f64 = 1.716e-5;
 /// Sutherland reference temperature \[K\].

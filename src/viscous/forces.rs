@@ -3,23 +3,30 @@
 //! wake end (XFOIL CDCALC), the friction drag cdf by integrating the wall shear stress along both
 //! surfaces (XFOIL CDCALC "CDF"), and cdp = cd − cdf.
 
-/// Karman–Tsien compressible pressure coefficient from the incompressible one
-/// (XFOIL CPCALC: Cp = Cp_inc / (β + M²/(2(1+β))·Cp_inc), β = √(1−M²)).
+use crate::compressibility::KarmanTsien;
+
+/// Karman–Tsien compressible pressure coefficient from the incompressible one at free-stream
+/// Mach `mach` (XFOIL CPCALC; NaN outside 0 ≤ M < 1): the path the binaries import until they
+/// use [`KarmanTsien::cp_unchecked`] directly.
 pub fn karman_tsien_cp(cp_inc: f64, mach: f64) -> f64 {
-    let beta = (1.0 - mach * mach).max(1e-6).sqrt();
-    let bfac = 0.5 * mach * mach / (1.0 + beta);
-    cp_inc / (beta + bfac * cp_inc)
+    KarmanTsien::new(mach).map_or(f64::NAN, |kt| kt.cp_unchecked(cp_inc))
 }
 
 /// Lift and quarter-chord moment coefficients of a closed contour with surface speeds `q`
 /// (|q| = Ue/V∞ at the airfoil nodes), by trapezoidal integration of the Karman–Tsien Cp in
 /// wind axes, including the trailing-edge gap panel (XFOIL CLCALC, XREF = 0.25, YREF = 0).
-pub fn lift_and_moment(x: &[f64], y: &[f64], q: &[f64], alpha_rad: f64, mach: f64) -> (f64, f64) {
+pub fn lift_and_moment(
+    x: &[f64],
+    y: &[f64],
+    q: &[f64],
+    alpha_rad: f64,
+    karman_tsien: &KarmanTsien,
+) -> (f64, f64) {
     let n = x.len().min(y.len()).min(q.len());
     let (sa, ca) = alpha_rad.sin_cos();
     let cp: Vec<f64> = q[..n]
         .iter()
-        .map(|qi| karman_tsien_cp(1.0 - qi * qi, mach))
+        .map(|qi| karman_tsien.cp_unchecked(1.0 - qi * qi))
         .collect();
     let (xref, yref) = (0.25, 0.0);
     let mut cl = 0.0;

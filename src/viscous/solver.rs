@@ -529,7 +529,8 @@ impl ViscousSolver {
                 q[st.node] = st.vti * a.state.ue[k];
             }
         }
-        let (cl, cm) = lift_and_moment(&g.x[..n_af], &g.y[..n_af], &q, alpha, self.params.mach);
+        let kt = &self.bl.flow.karman_tsien;
+        let (cl, cm) = lift_and_moment(&g.x[..n_af], &g.y[..n_af], &q, alpha, kt);
         let dist = |surface: Surface| -> Vec<BlStation> {
             a.layout
                 .range(surface)

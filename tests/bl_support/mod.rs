@@ -21,7 +21,7 @@ pub fn model(re: f64, mach: f64) -> BlModel {
 /// Incompressible edge speed from XFOIL's dumped (compressible) Ue by inverting the
 /// Karman–Tsien relation Ue = Ui(1−λ)/(1−λUi²): the positive root of λ·Ue·Ui² + (1−λ)Ui − Ue = 0.
 pub fn incompressible(m: &BlModel, ue: f64) -> f64 {
-    let l = m.flow.tkbl;
+    let l = m.flow.karman_tsien.lambda;
     let ue = ue.abs();
     if l == 0.0 {
         return ue;
