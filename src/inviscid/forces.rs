@@ -2,6 +2,9 @@
 //! trapezoidal integration over every panel including the trailing-edge panel, in wind axes,
 //! with the linear-Cp moment correction term ΔCp·Δ²/12.
 
+/// Moment reference point (x, y) in chord units: the quarter chord (XFOIL XCMREF, YCMREF).
+pub const MOMENT_REFERENCE: (f64, f64) = (0.25, 0.0);
+
 /// Section force coefficients (per unit span, chord 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SectionForces {

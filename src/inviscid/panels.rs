@@ -17,6 +17,7 @@
 use std::f64::consts::PI;
 
 use super::error::InviscidError;
+use super::forces::MOMENT_REFERENCE;
 use crate::geometry::CubicSpline;
 
 /// 1/(4π): normalisation of a linear panel's ψ integral (XFOIL QOPI).
@@ -48,8 +49,8 @@ impl Default for PanelParams {
             sharp_te_gap: 1.0e-4,
             sharp_te_bisector_fraction: 0.1,
             coincident_te_fraction: 1.0e-5,
-            moment_ref_x: 0.25,
-            moment_ref_y: 0.0,
+            moment_ref_x: MOMENT_REFERENCE.0,
+            moment_ref_y: MOMENT_REFERENCE.1,
         }
     }
 }

@@ -4,6 +4,7 @@
 //! surfaces (XFOIL CDCALC "CDF"), and cdp = cd − cdf.
 
 use crate::compressibility::KarmanTsien;
+use crate::inviscid::forces::{integrate_pressure, MOMENT_REFERENCE};
 
 /// Karman–Tsien compressible pressure coefficient from the incompressible one at free-stream
 /// Mach `mach` (XFOIL CPCALC; NaN outside 0 ≤ M < 1): the path the binaries import until they
@@ -12,46 +13,31 @@ pub fn karman_tsien_cp(cp_inc: f64, mach: f64) -> f64 {
     KarmanTsien::new(mach).map_or(f64::NAN, |kt| kt.cp_unchecked(cp_inc))
 }
 
-/// Lift and quarter-chord moment coefficients of a closed contour with surface speeds `q`
-/// (|q| = Ue/V∞ at the airfoil nodes), by trapezoidal integration of the Karman–Tsien Cp in
-/// wind axes, including the trailing-edge gap panel (XFOIL CLCALC, XREF = 0.25, YREF = 0).
+/// Lift and moment coefficients (about [`MOMENT_REFERENCE`]) of a closed contour with surface
+/// speeds `q` (|q| = Ue/V∞ at the airfoil nodes): the Karman–Tsien Cp integrated as the
+/// inviscid pressures are ([`integrate_pressure`], XFOIL CPCALC + CLCALC).
 pub fn lift_and_moment(
     x: &[f64],
     y: &[f64],
     q: &[f64],
-    alpha_rad: f64,
+    alpha_deg: f64,
     karman_tsien: &KarmanTsien,
 ) -> (f64, f64) {
-    let n = x.len().min(y.len()).min(q.len());
-    let (sa, ca) = alpha_rad.sin_cos();
-    let cp: Vec<f64> = q[..n]
+    let cp: Vec<f64> = q
         .iter()
         .map(|qi| karman_tsien.cp_unchecked(1.0 - qi * qi))
         .collect();
-    let (xref, yref) = (0.25, 0.0);
-    let mut cl = 0.0;
-    let mut cm = 0.0;
-    for i in 0..n {
-        let ip = if i + 1 == n { 0 } else { i + 1 };
-        let dx = (x[ip] - x[i]) * ca + (y[ip] - y[i]) * sa;
-        let dy = (y[ip] - y[i]) * ca - (x[ip] - x[i]) * sa;
-        let dg = cp[ip] - cp[i];
-        let ag = 0.5 * (cp[ip] + cp[i]);
-        let xm = 0.5 * (x[ip] + x[i]) - xref;
-        let ym = 0.5 * (y[ip] + y[i]) - yref;
-        let ax = xm * ca + ym * sa;
-        let ay = ym * ca - xm * sa;
-        cl += dx * ag;
-        cm -= dx * (ag * ax + dg * dx / 12.0) + dy * (ag * ay + dg * dy / 12.0);
-    }
-    (cl, cm)
+    let (xref, yref) = MOMENT_REFERENCE;
+    let forces = integrate_pressure(x, y, &cp, alpha_deg, xref, yref);
+    (forces.cl, forces.cm)
 }
 
-/// Friction drag of one surface: Σ ½(τ_i + τ_{i−1})·Δx_wind·2 with the wall shear
-/// τ = ½ ρe Ue,c² Cf normalised by ρ∞V∞² (XFOIL CDCALC). `x`, `y` are the station coordinates
-/// from the stagnation point to the TE; the first (similarity) interval is skipped as in XFOIL.
-pub fn friction_drag(x: &[f64], y: &[f64], tau: &[f64], alpha_rad: f64) -> f64 {
-    let (sa, ca) = alpha_rad.sin_cos();
+/// Friction drag of one surface at angle of attack `alpha_deg`: Σ ½(τ_i + τ_{i−1})·Δx_wind·2
+/// with the wall shear τ = ½ ρe Ue,c² Cf normalised by ρ∞V∞² (XFOIL CDCALC). `x`, `y` are the
+/// station coordinates from the stagnation point to the TE; the first (similarity) interval is
+/// skipped as in XFOIL.
+pub fn friction_drag(x: &[f64], y: &[f64], tau: &[f64], alpha_deg: f64) -> f64 {
+    let (sa, ca) = alpha_deg.to_radians().sin_cos();
     let n = x.len().min(y.len()).min(tau.len());
     (1..n)
         .map(|i| {

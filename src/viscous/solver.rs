@@ -522,7 +522,6 @@ impl ViscousSolver {
     fn solution(&self, alpha_deg: f64, a: &Attempt) -> ViscousSolution {
         let g = &self.panels.geometry;
         let n_af = g.n_airfoil;
-        let alpha = alpha_deg.to_radians();
         let mut q = vec![0.0; n_af];
         for (k, st) in a.layout.stations.iter().enumerate() {
             if st.node < n_af {
@@ -530,7 +529,7 @@ impl ViscousSolver {
             }
         }
         let kt = &self.bl.flow.karman_tsien;
-        let (cl, cm) = lift_and_moment(&g.x[..n_af], &g.y[..n_af], &q, alpha, kt);
+        let (cl, cm) = lift_and_moment(&g.x[..n_af], &g.y[..n_af], &q, alpha_deg, kt);
         let dist = |surface: Surface| -> Vec<BlStation> {
             a.layout
                 .range(surface)
@@ -581,7 +580,7 @@ impl ViscousSolver {
                 xis.push(st.xi);
                 tau.push(p.tau_wall);
             }
-            cdf += friction_drag(&xs, &ys, &tau, alpha);
+            cdf += friction_drag(&xs, &ys, &tau, alpha_deg);
             xtr[side] = transition_x(&xis, &xs, a.transition[side]);
         }
         let last = a.layout.len() - 1;
