@@ -21,7 +21,8 @@ pub struct MarchParams {
     pub tolerance: f64,
     /// Largest relative change allowed per local iteration (XFOIL DMAX limiting to 0.3).
     pub max_relative_step: f64,
-    /// Initial √Cτ guessed for the first turbulent station.
+    /// Initial √Cτ of the first turbulent station, in the marches and in the Newton
+    /// assembly (XFOIL MRCHUE CTI = 0.03).
     pub ctau_sqrt_initial: f64,
     /// Kinematic shape factor Hk of a laminar station above which the initial march switches
     /// to inverse mode, Hk prescribed (XFOIL MRCHUE HLMAX = 3.8).

@@ -63,6 +63,9 @@ pub struct Coupling<'a> {
     pub xi_forced: [Option<f64>; 2],
     /// Trailing-edge gap normal to the TE bisector (XFOIL ANTE).
     pub ante: f64,
+    /// √Cτ given to a station that just became turbulent when its surface has no turbulent
+    /// station yet ([`super::march::MarchParams::ctau_sqrt_initial`]).
+    pub ctau_sqrt_initial: f64,
     /// The regimes stored in the state were just decided by the mixed-mode march on the same
     /// state, so only the interval ending at the first turbulent station is checked for
     /// transition (the others are known not to transition).
@@ -226,9 +229,6 @@ fn add_terms(
     }
 }
 
-/// Initial √Cτ given to a station that just became turbulent and has no turbulent history.
-pub const CTAU_SQRT_INITIAL: f64 = 0.03;
-
 /// The system being assembled and what every station's terms need.
 struct Assembler<'a, 'l> {
     sys: BlockSystem<'a>,
@@ -336,7 +336,7 @@ pub fn assemble<'a>(
             .clone()
             .find(|&k| state.turbulent[k])
             .map(|k| state.s[k].clamp(1e-4, 0.25))
-            .unwrap_or(CTAU_SQRT_INITIAL);
+            .unwrap_or(coupling.ctau_sqrt_initial);
         let mut turbulent = false;
         for k in range {
             let st = layout.stations[k];

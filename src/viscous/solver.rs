@@ -455,6 +455,7 @@ impl ViscousSolver {
                 dv: &dv,
                 xi_forced,
                 ante: self.ante,
+                ctau_sqrt_initial: self.params.march.ctau_sqrt_initial,
                 regimes_known: remarch,
                 stagnation_terms,
                 cached: remarch.then_some(cache.as_slice()),

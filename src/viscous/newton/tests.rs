@@ -83,6 +83,7 @@ impl Setup {
             dv: &dv,
             xi_forced: Self::xi_forced(&layout),
             ante: self.ante,
+            ctau_sqrt_initial: ViscousParams::default().march.ctau_sqrt_initial,
             regimes_known: false,
             stagnation_terms: true,
             cached: None,
