@@ -78,7 +78,6 @@ pub fn march(
     model: &BlModel,
     layout: &StationLayout,
     ue_inv: &[f64],
-    reynolds: f64,
     xi_forced: [Option<f64>; 2],
     ante: f64,
     params: &MarchParams,
@@ -100,9 +99,12 @@ pub fn march(
         // Initial guess for this station.
         let (mut s, mut th, mut ds) = match st.kind {
             StationKind::Similarity => {
-                // Thwaites' stagnation-point solution θ² = 0.45 ξ/(6 Ue Re) (XFOIL MRCHUE).
-                let th = (0.45 * st.xi.max(1e-9) / (6.0 * u0 * reynolds)).sqrt();
-                (0.0, th, 2.2 * th)
+                // Thwaites' stagnation-point solution (XFOIL MRCHUE); a guess that cannot be
+                // formed falls back like a failed station below.
+                let (th, ds) = model
+                    .stagnation_guess(st.xi.max(1e-9), u0)
+                    .unwrap_or((f64::NAN, f64::NAN));
+                (0.0, th, ds)
             }
             StationKind::WakeStart => {
                 let (ku, kl) = (layout.upper_te(), layout.lower_te());

@@ -419,7 +419,6 @@ impl ViscousSolver {
                 &self.bl,
                 &layout,
                 &ue_inv,
-                self.params.reynolds,
                 xi_forced,
                 self.ante,
                 &self.params.march,

@@ -127,7 +127,6 @@ fn mass_columns_include_the_stagnation_point_motion() {
         &setup.bl,
         &layout,
         &ue_inv,
-        RE,
         Setup::xi_forced(&layout),
         setup.ante,
         &params.march,
