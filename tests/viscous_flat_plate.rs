@@ -2,7 +2,7 @@
 //! Newton machinery (march, assembly, structured solve, update) must reproduce the Blasius
 //! boundary layer, θ = 0.664·x/√Re_x, H = 2.59, Cf = 0.664/√Re_x.
 
-use polargen::viscous::stations::PanelGeometry;
+use polargen::inviscid::{PanelGeometry, PanelParams};
 use polargen::viscous::{PanelModel, ViscousParams, ViscousSolver};
 
 /// Zero-thickness plate 0 ≤ x ≤ 1 with cosine-clustered nodes, XFOIL node order, and a wake
@@ -20,17 +20,14 @@ fn flat_plate(n_side: usize, n_wake: usize) -> PanelModel {
         x.push(0.5 * (1.0 - (std::f64::consts::PI * t).cos()));
         y.push(-1e-9 * t);
     }
-    let n = x.len();
-    let mut s = vec![0.0];
-    for i in 1..n {
-        s.push(s[i - 1] + ((x[i] - x[i - 1]).powi(2) + (y[i] - y[i - 1]).powi(2)).sqrt());
-    }
-    for i in 0..n_wake {
-        let t = i as f64 / (n_wake - 1) as f64;
-        x.push(1.0 + t * t);
-        y.push(0.0);
-    }
-    let nn = x.len();
+    let airfoil = PanelGeometry::new(&x, &y, &PanelParams::default()).unwrap();
+    let wake_x: Vec<f64> = (0..n_wake)
+        .map(|i| {
+            let t = i as f64 / (n_wake - 1) as f64;
+            1.0 + t * t
+        })
+        .collect();
+    let nn = x.len() + n_wake;
     let le = n_side - 1;
     let q0: Vec<f64> = (0..nn)
         .map(|i| {
@@ -44,12 +41,9 @@ fn flat_plate(n_side: usize, n_wake: usize) -> PanelModel {
         })
         .collect();
     PanelModel {
-        geometry: PanelGeometry {
-            x,
-            y,
-            s,
-            n_airfoil: n,
-        },
+        airfoil,
+        wake_x,
+        wake_y: vec![0.0; n_wake],
         q_unit: [q0, vec![0.0; nn]],
         dij: vec![0.0; nn * nn],
     }

@@ -3,6 +3,7 @@
 use thiserror::Error;
 
 use crate::compressibility::MachOutOfRange;
+use crate::geometry::GeometryError;
 
 /// Everything that can go wrong when building or solving the panel system.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -60,9 +61,9 @@ pub enum InviscidError {
     /// Wake parameters cannot produce a wake.
     #[error("invalid wake parameters: {0}")]
     InvalidWake(&'static str),
-    /// The contour spline could not be built (geometry layer message).
-    #[error("contour spline: {0}")]
-    Spline(String),
+    /// The contour spline or its leading edge could not be found.
+    #[error("airfoil contour")]
+    Geometry(#[from] GeometryError),
     /// The streamline tracing of the wake met a stagnation point (zero velocity).
     #[error("wake tracing met zero velocity at wake node {0}")]
     WakeStagnation(usize),

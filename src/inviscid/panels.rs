@@ -18,7 +18,7 @@ use std::f64::consts::PI;
 
 use super::error::InviscidError;
 use super::forces::MOMENT_REFERENCE;
-use crate::geometry::CubicSpline;
+use crate::geometry::ContourSpline;
 
 /// 1/(4π): normalisation of a linear panel's ψ integral (XFOIL QOPI).
 const QOPI: f64 = 0.25 / PI;
@@ -76,6 +76,9 @@ pub struct TrailingEdge {
     pub sds: f64,
     /// `true` when first and last node coincide, so the TE panel is dropped (PSILIN SEPS test).
     pub closed: bool,
+    /// Slope of the wake-gap closure at the TE: the tangent of the angle between the contour
+    /// tangents at the two TE nodes (XFOIL XICALC DWDXTE, before its limits).
+    pub wake_gap_slope: f64,
 }
 
 /// An airfoil contour prepared for the panel method: nodes, arc length, spline tangents,
@@ -98,8 +101,8 @@ pub struct PanelGeometry {
     pub ny: Vec<f64>,
     /// Panel angles (XFOIL APCALC): `atan2(Δx, −Δy)` for panel j → j+1, last entry the TE panel.
     pub apanel: Vec<f64>,
-    /// Arc length of the leading edge, the spline point farthest from the TE midpoint
-    /// (XFOIL LEFIND: (r(s) − r_TE)·r'(s) = 0).
+    /// Arc length of the leading edge, where the contour tangent is normal to the line to the
+    /// TE midpoint (XFOIL LEFIND, [`ContourSpline::leading_edge`]).
     pub s_le: f64,
     /// Chord: distance from the TE midpoint to the leading edge (XFOIL CHORD).
     pub chord: f64,
@@ -127,13 +130,8 @@ impl PanelGeometry {
         if let Some(i) = (0..n).find(|&i| !x[i].is_finite() || !y[i].is_finite()) {
             return Err(InviscidError::NonFiniteNode(i));
         }
-        let mut s = vec![0.0; n];
-        for i in 1..n {
-            let ds = (x[i] - x[i - 1]).hypot(y[i] - y[i - 1]);
-            if ds == 0.0 {
-                return Err(InviscidError::DuplicateNode(i - 1));
-            }
-            s[i] = s[i - 1] + ds;
+        if let Some(i) = (1..n).find(|&i| x[i] == x[i - 1] && y[i] == y[i - 1]) {
+            return Err(InviscidError::DuplicateNode(i - 1));
         }
         // Shoelace area of the closed polygon: positive for XFOIL's counter-clockwise order.
         let area2: f64 = (0..n)
@@ -145,15 +143,12 @@ impl PanelGeometry {
         if area2 < 0.0 {
             return Err(InviscidError::ClockwiseContour);
         }
-        // dX/ds, dY/ds at the nodes: XFOIL's contour spline (SEGSPL, zero third derivative
-        // at both ends).
-        let slopes = |v: &[f64]| {
-            CubicSpline::xfoil_default(&s, v)
-                .map(|sp| sp.node_derivatives().to_vec())
-                .map_err(|e| InviscidError::Spline(e.to_string()))
-        };
-        let xp = slopes(x)?;
-        let yp = slopes(y)?;
+        // Arc length and dX/ds, dY/ds at the nodes: XFOIL's contour spline (SCALC, SEGSPL with
+        // zero third derivative at both ends).
+        let spline = ContourSpline::new(x, y)?;
+        let s = spline.s().to_vec();
+        let xp = spline.x.node_derivatives().to_vec();
+        let yp = spline.y.node_derivatives().to_vec();
         let mut nx = vec![0.0; n];
         let mut ny = vec![0.0; n];
         for i in 0..n {
@@ -162,9 +157,10 @@ impl PanelGeometry {
             ny[i] = -xp[i] / m;
         }
 
-        let xte = 0.5 * (x[0] + x[n - 1]);
-        let yte = 0.5 * (y[0] + y[n - 1]);
-        let (s_le, chord) = leading_edge(x, y, &s, &xp, &yp, xte, yte);
+        let (xte, yte) = spline.te_midpoint();
+        let s_le = spline.leading_edge()?;
+        let (xle, yle) = spline.point(s_le);
+        let chord = (xle - xte).hypot(yle - yte);
 
         // XFOIL TECALC: TE base vector, bisector from the spline tangents, gap projections.
         let dxte = x[0] - x[n - 1];
@@ -180,6 +176,11 @@ impl PanelGeometry {
         } else {
             (gap_normal / gap, gap_streamwise / gap)
         };
+        // XICALC: sine of the angle between the two TE tangents, then its tangent.
+        let crosp = (xp[0] * yp[n - 1] - yp[0] * xp[n - 1])
+            / ((xp[0] * xp[0] + yp[0] * yp[0]) * (xp[n - 1] * xp[n - 1] + yp[n - 1] * yp[n - 1]))
+                .sqrt();
+        let wake_gap_slope = crosp / (1.0 - crosp * crosp).sqrt();
         // PSILIN: TE panel skipped when the end nodes coincide within SEPS.
         let seps = s[n - 1] * params.coincident_te_fraction;
         let closed = gap * gap < seps * seps;
@@ -216,6 +217,7 @@ impl PanelGeometry {
                 scs,
                 sds,
                 closed,
+                wake_gap_slope,
             },
         })
     }
@@ -229,77 +231,6 @@ impl PanelGeometry {
     pub fn is_empty(&self) -> bool {
         self.x.is_empty()
     }
-}
-
-/// Value and slope at arc length `s` of the cubic Hermite spline through (`s`, `v`, `vp`)
-/// on interval `i` (`s[i] ≤ s ≤ s[i+1]`); the same cubic as XFOIL SEVAL/DEVAL.
-fn hermite(v: &[f64], vp: &[f64], sn: &[f64], i: usize, s: f64) -> (f64, f64) {
-    let h = sn[i + 1] - sn[i];
-    let t = (s - sn[i]) / h;
-    let (t2, t3) = (t * t, t * t * t);
-    let value = (2.0 * t3 - 3.0 * t2 + 1.0) * v[i]
-        + (t3 - 2.0 * t2 + t) * h * vp[i]
-        + (-2.0 * t3 + 3.0 * t2) * v[i + 1]
-        + (t3 - t2) * h * vp[i + 1];
-    let slope = ((6.0 * t2 - 6.0 * t) * v[i] + (-6.0 * t2 + 6.0 * t) * v[i + 1]) / h
-        + (3.0 * t2 - 4.0 * t + 1.0) * vp[i]
-        + (3.0 * t2 - 2.0 * t) * vp[i + 1];
-    (value, slope)
-}
-
-/// Leading edge as the spline point farthest from the TE midpoint (XFOIL LEFIND): the root of
-/// (r(s) − r_TE)·r'(s) next to the farthest node, by bisection. Returns (s_LE, chord).
-fn leading_edge(
-    x: &[f64],
-    y: &[f64],
-    s: &[f64],
-    xp: &[f64],
-    yp: &[f64],
-    xte: f64,
-    yte: f64,
-) -> (f64, f64) {
-    let n = x.len();
-    let far = (0..n)
-        .max_by(|&a, &b| {
-            let da = (x[a] - xte).hypot(y[a] - yte);
-            let db = (x[b] - xte).hypot(y[b] - yte);
-            da.total_cmp(&db)
-        })
-        .unwrap_or(0);
-    let f = |i: usize, sv: f64| -> (f64, f64) {
-        let (xv, xs) = hermite(x, xp, s, i, sv);
-        let (yv, ys) = hermite(y, yp, s, i, sv);
-        (
-            (xv - xte) * xs + (yv - yte) * ys,
-            (xv - xte).hypot(yv - yte),
-        )
-    };
-    let mut best = (s[far], (x[far] - xte).hypot(y[far] - yte));
-    for i in [far.wrapping_sub(1), far] {
-        if i + 1 >= n {
-            continue;
-        }
-        let (mut a, mut b) = (s[i], s[i + 1]);
-        let (fa, fb) = (f(i, a).0, f(i, b).0);
-        if fa.signum() == fb.signum() {
-            continue;
-        }
-        let fa_sign = fa.signum();
-        for _ in 0..60 {
-            let m = 0.5 * (a + b);
-            if f(i, m).0.signum() == fa_sign {
-                a = m;
-            } else {
-                b = m;
-            }
-        }
-        let sm = 0.5 * (a + b);
-        let d = f(i, sm).1;
-        if d > best.1 {
-            best = (sm, d);
-        }
-    }
-    best
 }
 
 /// Distance between two points (plain square root, as XFOIL; faster than `hypot`).

@@ -66,3 +66,16 @@ pub fn transition_x(xi: &[f64], x: &[f64], xi_tr: Option<f64>) -> f64 {
     }
     x.last().copied().unwrap_or(1.0)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn transition_location_is_interpolated_in_xi() {
+        let xi = [0.0, 0.1, 0.3];
+        let x = [0.0, 0.08, 0.3];
+        assert!((transition_x(&xi, &x, Some(0.2)) - 0.19).abs() < 1e-12);
+        assert_eq!(transition_x(&xi, &x, None), 0.3);
+    }
+}

@@ -12,17 +12,24 @@ use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
 use crate::geometry::Airfoil;
-use crate::inviscid::{superpose, PanelSystem, SourceInfluence, Wake};
+use crate::inviscid::{superpose, PanelGeometry, PanelSystem, SourceInfluence, Wake};
 
 use super::error::ViscousError;
-use super::stations::{PanelGeometry, StationLayout};
+use super::stations::StationLayout;
 
-/// Inviscid data the coupling needs (XFOIL QINVU, DIJ): node geometry including the wake,
-/// surface speeds of the α = 0° and 90° unit solutions, and the source influence matrix.
+/// Inviscid data the coupling needs (XFOIL QINVU, DIJ): the airfoil contour as the panel
+/// method prepared it, the wake nodes, surface speeds of the α = 0° and 90° unit solutions, and
+/// the source influence matrix. Nodes are numbered airfoil first (0..n, XFOIL order), then wake
+/// (n..n+nw).
 #[derive(Clone, Debug)]
 pub struct PanelModel {
-    /// Node geometry (airfoil nodes, then wake nodes) and airfoil arc length.
-    pub geometry: PanelGeometry,
+    /// The airfoil contour: nodes, arc length, spline tangents and the trailing edge, whose gap
+    /// (XFOIL ANTE) both the wake-gap closure and the trailing-edge junction use.
+    pub airfoil: PanelGeometry,
+    /// Wake node x, from the trailing edge downstream (XFOIL XYWAKE).
+    pub wake_x: Vec<f64>,
+    /// Wake node y.
+    pub wake_y: Vec<f64>,
     /// Surface speed at all nodes for α = 0° and α = 90° (XFOIL QINVU, positive on the upper
     /// surface in XFOIL's orientation).
     pub q_unit: [Vec<f64>; 2],
@@ -38,17 +45,12 @@ impl PanelModel {
     pub fn at_alpha(system: &PanelSystem, alpha_deg: f64) -> Result<Self, ViscousError> {
         let wake = Wake::new(system, alpha_deg)?;
         let d = SourceInfluence::new(system, &wake);
-        let g = system.geometry();
-        let mut x = g.x.clone();
-        let mut y = g.y.clone();
-        x.extend_from_slice(&wake.x);
-        y.extend_from_slice(&wake.y);
         let q_unit = [0, 1].map(|k| {
             let mut q = system.gamma_unit(k).to_vec();
             q.extend_from_slice(&wake.qinv_unit[k]);
             q
         });
-        let nt = x.len();
+        let nt = system.n_nodes() + wake.x.len();
         let mut dij = vec![0.0; nt * nt];
         for (i, row) in dij.chunks_mut(nt).enumerate() {
             for (j, v) in row.iter_mut().enumerate() {
@@ -56,15 +58,53 @@ impl PanelModel {
             }
         }
         Ok(Self {
-            geometry: PanelGeometry {
-                x,
-                y,
-                s: g.s.clone(),
-                n_airfoil: g.len(),
-            },
+            airfoil: system.geometry().clone(),
+            wake_x: wake.x,
+            wake_y: wake.y,
             q_unit,
             dij,
         })
+    }
+
+    /// Number of airfoil nodes n.
+    pub fn n_airfoil(&self) -> usize {
+        self.airfoil.len()
+    }
+
+    /// Number of nodes, airfoil and wake.
+    pub fn n_nodes(&self) -> usize {
+        self.airfoil.len() + self.wake_x.len()
+    }
+
+    /// Coordinates (x, y) of node `i` (airfoil nodes first, then wake nodes).
+    pub fn node(&self, i: usize) -> (f64, f64) {
+        let n = self.airfoil.len();
+        if i < n {
+            (self.airfoil.x[i], self.airfoil.y[i])
+        } else {
+            (self.wake_x[i - n], self.wake_y[i - n])
+        }
+    }
+
+    /// Trailing-edge gap normal to the TE bisector (XFOIL TECALC ANTE, from the contour's
+    /// spline tangents): the one gap of the wake-gap closure and of the trailing-edge junction.
+    pub fn te_gap(&self) -> f64 {
+        self.airfoil.te.gap_normal.abs()
+    }
+
+    /// Rejects a model whose arrays do not fit together: at least 5 airfoil and 2 wake nodes,
+    /// unit speeds and the influence matrix for all of them.
+    pub(crate) fn check(&self) -> Result<(), ViscousError> {
+        let (n, nt) = (self.n_airfoil(), self.n_nodes());
+        if n < 5
+            || self.wake_y.len() != self.wake_x.len()
+            || self.q_unit.iter().any(|q| q.len() != nt)
+            || self.dij.len() != nt * nt
+            || nt < n + 2
+        {
+            return Err(ViscousError::BadAirfoil { min: 5, got: n });
+        }
+        Ok(())
     }
 
     /// Inviscid surface speed at all nodes for angle of attack α (XFOIL QISET).
@@ -84,7 +124,7 @@ impl PanelModel {
     /// so that a solver rebuilding it when the stagnation point moves reuses the memory, which
     /// is then still in cache.
     pub fn edge_speed_influence_into(&self, layout: &StationLayout, dv: &mut Vec<f64>) {
-        let nn = self.geometry.x.len();
+        let nn = self.n_nodes();
         let n = layout.len();
         dv.resize(n * n, 0.0);
         for (out, sk) in dv.chunks_exact_mut(n).zip(&layout.stations) {
@@ -107,8 +147,6 @@ pub const SHARED_MODEL_BYTES: usize = 256 << 20;
 pub struct SharedPanels {
     /// The factorised panel system of the airfoil.
     system: PanelSystem,
-    /// Trailing-edge gap normal to the TE bisector (XFOIL ANTE).
-    ante: f64,
     /// Models by the bit pattern of α; each cell is filled once, by the first solver asking.
     models: Mutex<HashMap<u64, Arc<ModelCell>>>,
     /// Number of models kept at most ([`SHARED_MODEL_BYTES`] over one model's size).
@@ -128,22 +166,15 @@ impl SharedPanels {
             });
         }
         let system = PanelSystem::new(airfoil)?;
-        let ante = system.geometry().te.gap_normal.abs();
         // Nodes with the default wake (N/12 + 10 wake nodes, `WakeParams`).
         let n = system.geometry().len();
         let nt = n + n / 12 + 10;
         let capacity = (SHARED_MODEL_BYTES / (8 * nt * nt)).max(1);
         Ok(Self {
             system,
-            ante,
             models: Mutex::new(HashMap::new()),
             capacity,
         })
-    }
-
-    /// Trailing-edge gap normal to the TE bisector (XFOIL ANTE).
-    pub fn ante(&self) -> f64 {
-        self.ante
     }
 
     /// The model at `alpha_deg`, built now if no solver asked for this α before.

@@ -184,7 +184,6 @@ pub struct ViscousSolver {
     /// α of `panels` for an airfoil source.
     panels_alpha: Option<f64>,
     bl: BlModel,
-    ante: f64,
     warm: Option<WarmState>,
     /// α of the last fresh-start attempt that failed. A fresh start depends on α alone, so
     /// it is not repeated at that α (sweep recoveries revisit a failed α several times).
@@ -207,27 +206,15 @@ impl ViscousSolver {
         panels: PanelModel,
         params: ViscousParams,
     ) -> Result<Self, ViscousError> {
-        let n_nodes = panels.geometry.x.len();
-        let n = panels.geometry.n_airfoil;
-        if n < 5
-            || panels.geometry.y.len() != n_nodes
-            || panels.geometry.s.len() != n
-            || panels.q_unit.iter().any(|q| q.len() != n_nodes)
-            || panels.dij.len() != n_nodes * n_nodes
-            || n_nodes < n + 2
-        {
-            return Err(ViscousError::BadAirfoil { min: 5, got: n });
-        }
+        panels.check()?;
         Self::check_params(&params)?;
         let bl = boundary_layer_model(&params)?;
-        let ante = panels.geometry.trailing_edge_gap().0.abs();
         Ok(Self {
             params,
             source: PanelSource::Fixed,
             panels: Arc::new(panels),
             panels_alpha: None,
             bl,
-            ante,
             warm: None,
             fresh_failed_at: None,
         })
@@ -249,14 +236,12 @@ impl ViscousSolver {
         Self::check_params(&params)?;
         let panels = shared.model(0.0)?;
         let bl = boundary_layer_model(&params)?;
-        let ante = shared.ante();
         Ok(Self {
             params,
             source: PanelSource::Airfoil(shared),
             panels,
             panels_alpha: Some(0.0),
             bl,
-            ante,
             warm: None,
             fresh_failed_at: None,
         })
@@ -303,7 +288,7 @@ impl ViscousSolver {
     /// ξ of forced transition on each surface: the trip x/c converted to ξ along that surface
     /// (XFOIL XIFSET), at most the TE ξ (XFOIL forces transition at the TE at the latest).
     fn forced_xi(&self, layout: &StationLayout) -> [Option<f64>; 2] {
-        let g = &self.panels.geometry;
+        let g = &self.panels.airfoil;
         let mut out = [None, None];
         for (side, (surface, xtr)) in [
             (Surface::Upper, self.params.xtr_top),
@@ -394,7 +379,7 @@ impl ViscousSolver {
 
     /// One Newton attempt from a warm state or a fresh march.
     fn attempt(&self, alpha_deg: f64, warm: Option<WarmState>) -> Result<Attempt, ViscousError> {
-        let n_af = self.panels.geometry.n_airfoil;
+        let n_af = self.panels.n_airfoil();
         let q_inv = self.panels.speeds(alpha_deg);
         let warm_started = warm.is_some();
         // The stagnation point of a warm start is where the warm state's viscous speed changes
@@ -404,7 +389,7 @@ impl ViscousSolver {
             Some(w) => viscous_node_speed(&w.layout, &w.state, &q_inv),
             None => q_inv.clone(),
         };
-        let mut layout = StationLayout::new(&self.panels.geometry, &q_start[..n_af])?;
+        let mut layout = StationLayout::new(&self.panels, &q_start[..n_af])?;
         let mut ue_inv = layout.edge_speed(&q_inv);
         let mut dv = self.panels.edge_speed_influence(&layout);
         let mut xi_forced = self.forced_xi(&layout);
@@ -420,7 +405,7 @@ impl ViscousSolver {
                 &layout,
                 &ue_inv,
                 xi_forced,
-                self.ante,
+                self.panels.te_gap(),
                 &self.params.march,
             ),
         };
@@ -442,7 +427,7 @@ impl ViscousSolver {
                     xi_forced,
                     turbulent_fraction,
                     warm_started && residual < self.params.carry_corrections_below,
-                    self.ante,
+                    self.panels.te_gap(),
                     &self.params.march,
                 )
             } else {
@@ -453,7 +438,7 @@ impl ViscousSolver {
                 ue_inv: &ue_inv,
                 dv: &dv,
                 xi_forced,
-                ante: self.ante,
+                ante: self.panels.te_gap(),
                 ctau_sqrt_initial: self.params.march.ctau_sqrt_initial,
                 regimes_known: remarch,
                 stagnation_terms,
@@ -484,7 +469,7 @@ impl ViscousSolver {
             stagnation_terms = upd.max_change < self.params.exploded_step;
             // Move the stagnation point with the viscous surface speed (XFOIL STMOVE).
             let q_nodes = viscous_node_speed(&layout, &state, &q_inv);
-            if let Ok(new_layout) = StationLayout::new(&self.panels.geometry, &q_nodes[..n_af]) {
+            if let Ok(new_layout) = StationLayout::new(&self.panels, &q_nodes[..n_af]) {
                 if new_layout.stagnation.ist != layout.stagnation.ist {
                     let map = new_layout.map_from(&layout);
                     let mut s = state.remap(&map, &layout, &new_layout);
@@ -520,8 +505,8 @@ impl ViscousSolver {
 
     /// Integrated coefficients and distributions of an attempt.
     fn solution(&self, alpha_deg: f64, a: &Attempt) -> ViscousSolution {
-        let g = &self.panels.geometry;
-        let n_af = g.n_airfoil;
+        let g = &self.panels.airfoil;
+        let n_af = g.len();
         let mut q = vec![0.0; n_af];
         for (k, st) in a.layout.stations.iter().enumerate() {
             if st.node < n_af {
@@ -529,7 +514,7 @@ impl ViscousSolver {
             }
         }
         let kt = &self.bl.flow.karman_tsien;
-        let (cl, cm) = lift_and_moment(&g.x[..n_af], &g.y[..n_af], &q, alpha_deg, kt);
+        let (cl, cm) = lift_and_moment(&g.x, &g.y, &q, alpha_deg, kt);
         let dist = |surface: Surface| -> Vec<BlStation> {
             a.layout
                 .range(surface)
@@ -539,10 +524,11 @@ impl ViscousSolver {
                     let regime = a.state.regime(&a.layout, k);
                     let p = self.bl.properties(&v, regime).unwrap_or_default();
                     let s = a.state.s[k];
+                    let (x, y) = self.panels.node(st.node);
                     BlStation {
                         s: st.xi,
-                        x: g.x[st.node],
-                        y: g.y[st.node],
+                        x,
+                        y,
                         ue: a.state.ue[k],
                         dstar: v.dstar,
                         theta: v.theta,

@@ -8,6 +8,7 @@
 //! station of each surface is the similarity station.
 
 use super::error::ViscousError;
+use super::panel_model::PanelModel;
 
 /// Which layer a station belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -79,50 +80,6 @@ pub fn find_stagnation(q: &[f64], s: &[f64]) -> Result<Stagnation, ViscousError>
     Ok(Stagnation { ist: i, sst })
 }
 
-/// Geometric data the station layout needs from the panel model.
-#[derive(Clone, Debug)]
-pub struct PanelGeometry {
-    /// Node x coordinates: airfoil nodes (XFOIL order) followed by wake nodes.
-    pub x: Vec<f64>,
-    /// Node y coordinates, same order.
-    pub y: Vec<f64>,
-    /// Arc length of the airfoil nodes (length = number of airfoil nodes).
-    pub s: Vec<f64>,
-    /// Number of airfoil nodes n (wake nodes are n..x.len()).
-    pub n_airfoil: usize,
-}
-
-impl PanelGeometry {
-    /// Number of wake nodes.
-    pub fn n_wake(&self) -> usize {
-        self.x.len() - self.n_airfoil
-    }
-
-    /// Trailing-edge gap normal to the mean trailing-edge direction (XFOIL TECALC ANTE) and the
-    /// wake-gap shape parameter dw/dx at the TE (XFOIL XICALC DWDXTE, from the angle between the
-    /// two TE panels).
-    pub fn trailing_edge_gap(&self) -> (f64, f64) {
-        let n = self.n_airfoil;
-        let (x, y) = (&self.x, &self.y);
-        // Unit tangents dx/ds at the first and last nodes (one-sided differences).
-        let t = |a: usize, b: usize| {
-            let (dx, dy) = (x[b] - x[a], y[b] - y[a]);
-            let l = (dx * dx + dy * dy).sqrt().max(1e-300);
-            (dx / l, dy / l)
-        };
-        let (xp1, yp1) = t(0, 1);
-        let (xpn, ypn) = t(n - 2, n - 1);
-        let dxte = x[0] - x[n - 1];
-        let dyte = y[0] - y[n - 1];
-        let dxs = 0.5 * (-xp1 + xpn);
-        let dys = 0.5 * (-yp1 + ypn);
-        let ante = dxs * dyte - dys * dxte;
-        let crosp = xp1 * ypn - yp1 * xpn;
-        let dwdxte = crosp / (1.0 - crosp * crosp).max(1e-12).sqrt();
-        (ante, dwdxte)
-    }
-}
-
 /// Ratio of the length of the cubic wake-gap closure to the TE gap (XFOIL XICALC TELRAT).
 pub const WAKE_GAP_LENGTH_RATIO: f64 = 2.5;
 
@@ -143,11 +100,12 @@ pub struct StationLayout {
 
 impl StationLayout {
     /// Builds the layout from the surface speed q of the airfoil nodes (XFOIL IBLPAN + XICALC).
-    pub fn new(geom: &PanelGeometry, q_airfoil: &[f64]) -> Result<Self, ViscousError> {
-        let n = geom.n_airfoil;
+    pub fn new(model: &PanelModel, q_airfoil: &[f64]) -> Result<Self, ViscousError> {
+        let geom = &model.airfoil;
+        let n = geom.len();
         let stag = find_stagnation(&q_airfoil[..n], &geom.s)?;
         let ist = stag.ist;
-        let mut stations = Vec::with_capacity(geom.x.len());
+        let mut stations = Vec::with_capacity(model.n_nodes());
         // Upper surface: nodes ist, ist−1, …, 0.
         for (k, i) in (0..=ist).rev().enumerate() {
             stations.push(Station {
@@ -182,9 +140,13 @@ impl StationLayout {
             });
         }
         let n_lower = stations.len() - n_upper;
-        let nw = geom.n_wake();
-        let (ante, dwdxte) = geom.trailing_edge_gap();
-        let dwdxte = dwdxte.clamp(-3.0 / WAKE_GAP_LENGTH_RATIO, 3.0 / WAKE_GAP_LENGTH_RATIO);
+        let nw = model.n_nodes() - n;
+        // The wake gap closes behind a blunt TE as a cubic over WAKE_GAP_LENGTH_RATIO gaps,
+        // leaving the TE at the angle between the two TE tangents (XFOIL XICALC).
+        let te = &geom.te;
+        let ante = model.te_gap();
+        let limit = 3.0 / WAKE_GAP_LENGTH_RATIO;
+        let dwdxte = te.wake_gap_slope.clamp(-limit, limit);
         let aa = 3.0 + WAKE_GAP_LENGTH_RATIO * dwdxte;
         let bb = -2.0 - WAKE_GAP_LENGTH_RATIO * dwdxte;
         let xi_te = stations.last().map(|s| s.xi).unwrap_or(0.0);
@@ -192,14 +154,15 @@ impl StationLayout {
         for iw in 0..nw {
             let node = n + iw;
             if iw > 0 {
-                let dx = geom.x[node] - geom.x[node - 1];
-                let dy = geom.y[node] - geom.y[node - 1];
+                let ((x1, y1), (x2, y2)) = (model.node(node - 1), model.node(node));
+                let (dx, dy) = (x2 - x1, y2 - y1);
                 xi += (dx * dx + dy * dy).sqrt();
             }
-            // Cubic closure of the dead-air region behind a blunt TE (XFOIL XICALC WGAP).
-            let zn = 1.0 - (xi - xi_te) / (WAKE_GAP_LENGTH_RATIO * ante.abs().max(1e-12));
-            let gap = if ante.abs() > 1e-9 && zn >= 0.0 {
-                ante.abs() * (aa + bb * zn) * zn * zn
+            // Cubic closure of the dead-air region behind a blunt TE (XFOIL XICALC WGAP); none
+            // behind a sharp one.
+            let zn = 1.0 - (xi - xi_te) / (WAKE_GAP_LENGTH_RATIO * ante);
+            let gap = if !te.sharp && zn >= 0.0 {
+                ante * (aa + bb * zn) * zn * zn
             } else {
                 0.0
             };
@@ -291,3 +254,6 @@ impl StationLayout {
             .collect()
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -38,6 +38,7 @@ impl Setup {
         let system = PanelSystem::new(&foil).unwrap();
         let model = PanelModel::at_alpha(&system, ALPHA).unwrap();
         let q_inv = model.speeds(ALPHA);
+        let ante = model.te_gap();
         Self {
             model,
             q_inv,
@@ -50,13 +51,13 @@ impl Setup {
                 BlParams::default(),
             )
             .unwrap(),
-            ante: system.geometry().te.gap_normal.abs(),
+            ante,
         }
     }
 
     /// Station layout for the node speeds `q` (stagnation point where q changes sign).
     fn layout(&self, q: &[f64]) -> StationLayout {
-        StationLayout::new(&self.model.geometry, &q[..self.model.geometry.n_airfoil]).unwrap()
+        StationLayout::new(&self.model, &q[..self.model.n_airfoil()]).unwrap()
     }
 
     /// Free transition: the latest transition point is the trailing edge of each surface.
