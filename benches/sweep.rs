@@ -4,8 +4,8 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use polargen::geometry::{airfoil_by_name_or_path, PanelingParams};
-use polargen::polar::{parse_alpha_range, sweep, SweepParams, ViscousSweep};
-use polargen::viscous::ViscousParams;
+use polargen::polar::{parse_alpha_range, sweep, SweepParams};
+use polargen::viscous::{ViscousParams, ViscousSolver};
 
 fn bench_sweeps(c: &mut Criterion) {
     let foil = airfoil_by_name_or_path("naca8h12")
@@ -19,7 +19,7 @@ fn bench_sweeps(c: &mut Criterion) {
         let params = ViscousParams::at(1.9e6, 0.41, xtr);
         group.bench_function(name, |b| {
             b.iter(|| {
-                let mut solver = ViscousSweep::new(&foil, params).expect("solver");
+                let mut solver = ViscousSolver::new(&foil, params).expect("solver");
                 let points = sweep(&mut solver, &alphas, &sweep_params);
                 assert!(points.iter().filter(|p| p.converged).count() >= 30);
                 points

@@ -20,9 +20,9 @@
 //!   re-march with or without the carried corrections.
 
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
-use polargen::polar::{sweep, SweepParams, ViscousSweep};
+use polargen::polar::{sweep, SweepParams};
 use polargen::section::PolarPoint;
-use polargen::viscous::ViscousParams;
+use polargen::viscous::{ViscousParams, ViscousSolver};
 use std::collections::HashMap;
 
 const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/viscous/");
@@ -76,7 +76,7 @@ fn run_params(
     alphas: &[f64],
     sweep_params: &SweepParams,
 ) -> Vec<PolarPoint> {
-    let mut solver = ViscousSweep::new(foil, params).unwrap();
+    let mut solver = ViscousSolver::new(foil, params).unwrap();
     sweep(&mut solver, alphas, sweep_params)
 }
 

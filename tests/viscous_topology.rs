@@ -80,7 +80,7 @@ fn solver_is_send() {
 }
 
 /// A fresh start depends on α alone: after it failed at some α it is not run again there, and
-/// with `fresh_retry` off a failed warm start is not retried inside `solve`.
+/// a failed solve is never retried inside `solve`.
 #[test]
 fn failed_fresh_start_is_not_repeated() {
     let foil = polargen::geometry::airfoil_by_name_or_path("naca0012")

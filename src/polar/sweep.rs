@@ -36,9 +36,8 @@ pub struct SweepParams {
     /// How many times the step from the last converged neighbour is halved when retrying a
     /// failed point (1 → a half step, 2 → also quarter steps).
     pub substep_levels: u32,
-    /// Retry a failed point once more from a fresh (inviscid) start, after the sub-steps.
-    /// Off for solvers that already do so inside one solve ([`ViscousSweep`](super::ViscousSweep)
-    /// turns the viscous solver's own retry off and relies on this one).
+    /// Retry a failed point once more from a fresh (inviscid) start, after the sub-steps. The
+    /// one place a fresh retry is decided: point solvers make one attempt per solve.
     pub fresh_retry: bool,
     /// After this many failures in a row along one branch (typically past stall), further
     /// points of that branch are still solved once each, but without the costly recovery.
@@ -233,7 +232,7 @@ fn march<S: WarmStartSolver>(
 /// the point after a failed one is that failed point again, from the same converged neighbour.
 /// Solves are deterministic ([`WarmStartSolver::solve`]), so the stored point and end state are
 /// exactly what the repeat would give. Cleared whenever the anchor changes.
-struct AnchorMemo<T> {
+pub(super) struct AnchorMemo<T> {
     /// (α path from the anchor as bit patterns, its last point, the state after it).
     entries: Vec<(Vec<u64>, PolarPoint, T)>,
 }
@@ -273,7 +272,7 @@ impl<T: Clone> AnchorMemo<T> {
 }
 
 /// Retry a failed point: sub-steps from the last converged neighbour, then a fresh start.
-fn recover<S: WarmStartSolver>(
+pub(super) fn recover<S: WarmStartSolver>(
     solver: &mut S,
     alpha: f64,
     anchor: Option<&(f64, S::State)>,

@@ -1,6 +1,7 @@
 //! Operating point at a prescribed lift coefficient: the α at which a viscous solution has
 //! Cl = Cl_target (XFOIL's `CL` command), found by secant iteration on α with warm starts.
 
+use super::sweep::{recover, AnchorMemo, SweepParams};
 use crate::viscous::{ViscousSolution, ViscousSolver};
 
 /// Controls of [`solve_at_cl`].
@@ -10,17 +11,21 @@ pub struct TargetClParams {
     pub tolerance: f64,
     /// Largest α change per secant step \[deg\] (keeps warm starts close).
     pub max_step_deg: f64,
-    /// Most viscous solutions tried before giving up.
+    /// Most secant steps tried before giving up.
     pub max_solves: usize,
+    /// Recovery of a solution that fails on the way: the sweeps' sub-steps from the last
+    /// converged α and fresh start.
+    pub recovery: SweepParams,
 }
 
 impl Default for TargetClParams {
-    /// |ΔCl| ≤ 1e-4, α steps of at most 1.5°, 30 solutions.
+    /// |ΔCl| ≤ 1e-4, α steps of at most 1.5°, 30 steps, the sweeps' default recovery.
     fn default() -> Self {
         Self {
             tolerance: 1e-4,
             max_step_deg: 1.5,
             max_solves: 30,
+            recovery: SweepParams::default(),
         }
     }
 }
@@ -58,7 +63,9 @@ const THIN_AIRFOIL_SLOPE_PER_DEG: f64 = 2.0 * std::f64::consts::PI * std::f64::c
 
 /// Solve `solver` at the α where Cl = `target`: start at α = 0°, then secant steps on α
 /// (the first with the thin-airfoil slope), each limited to `max_step_deg` so every solution
-/// warm-starts from a near neighbour. Returns the converged solution at that α.
+/// warm-starts from a near neighbour. A solution that fails is recovered as in a sweep
+/// ([`TargetClParams::recovery`]) and then solved once more from its own converged state, which
+/// returns its distributions. Returns the converged solution at that α.
 pub fn solve_at_cl(
     solver: &mut ViscousSolver,
     target: f64,
@@ -70,11 +77,20 @@ pub fn solve_at_cl(
     let mut alpha = 0.0;
     let mut previous: Option<(f64, f64)> = None;
     let mut best: Option<(f64, f64)> = None;
+    // The last converged α and the solver state there, the start of a recovery.
+    let mut anchor = None;
     for _ in 0..params.max_solves {
-        let sol = solver.solve(alpha);
+        let mut sol = solver.solve(alpha);
         if !sol.point.converged {
-            return Err(TargetClError::NotConverged { target, alpha });
+            let mut memo = AnchorMemo::default();
+            if recover(solver, alpha, anchor.as_ref(), &params.recovery, &mut memo).is_some() {
+                sol = solver.solve(alpha);
+            }
+            if !sol.point.converged {
+                return Err(TargetClError::NotConverged { target, alpha });
+            }
         }
+        anchor = Some((alpha, solver.warm_start()));
         let cl = sol.point.cl;
         if (cl - target).abs() <= params.tolerance {
             return Ok(sol);

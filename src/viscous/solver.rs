@@ -64,10 +64,6 @@ pub struct ViscousParams {
     /// sweep retries the point. −2e-4 leaves room for the round-off of attached flow, where the
     /// form drag is near zero.
     pub min_pressure_drag: f64,
-    /// Retry a failed warm-started point from a fresh march inside [`ViscousSolver::solve`].
-    /// Sweeps turn this off and retry from a fresh start themselves, after sub-stepping from
-    /// the converged neighbour (see [`crate::polar::SweepParams`]).
-    pub fresh_retry: bool,
     /// Largest relative change of a Newton step (XFOIL RMXBL) above which the step is taken to
     /// come from a near-singular system (stagnation point almost on a node); the next
     /// iteration then goes without the stagnation-point terms of ξ.
@@ -89,7 +85,6 @@ impl Default for ViscousParams {
             remarch_below: 0.0,
             carry_corrections_below: 1.0,
             min_pressure_drag: -2e-4,
-            fresh_retry: true,
             exploded_step: 1e6,
         }
     }
@@ -316,12 +311,13 @@ impl ViscousSolver {
         out
     }
 
-    /// Solves the viscous flow at angle of attack `alpha_deg`, warm-starting from the previous
-    /// converged state if there is one. A failed attempt is retried once from a fresh march
-    /// (unless [`ViscousParams::fresh_retry`] is off, or a fresh start already failed at this
-    /// α); a point that still fails is returned with `converged = false`, and so is a
-    /// Newton-converged state with negative form drag ([`ViscousParams::min_pressure_drag`]),
-    /// which is also not kept as the next warm start.
+    /// Solves the viscous flow at angle of attack `alpha_deg` in one attempt, warm-starting
+    /// from the previous converged state if there is one and from a fresh march otherwise. A
+    /// point that fails is returned with `converged = false`, and so is a Newton-converged state
+    /// with negative form drag ([`ViscousParams::min_pressure_drag`]); neither is kept as a warm
+    /// start, so the next solve starts fresh. Retrying a failed point (from a nearer converged
+    /// neighbour, or fresh) is the caller's choice: the sweeps' recovery does it. A fresh start
+    /// that failed at some α is not repeated there (it would fail again).
     pub fn solve(&mut self, alpha_deg: f64) -> ViscousSolution {
         if !alpha_deg.is_finite() {
             return failed_solution(alpha_deg, 0);
@@ -338,19 +334,12 @@ impl ViscousSolver {
             }
         }
         let warm = self.warm.take();
-        let had_warm = warm.is_some();
-        let fresh_known_to_fail = self.fresh_failed_at == Some(alpha_deg);
-        if !had_warm && fresh_known_to_fail {
+        let fresh = warm.is_none();
+        if fresh && self.fresh_failed_at == Some(alpha_deg) {
             return failed_solution(alpha_deg, 0);
         }
-        let mut result = self.attempt(alpha_deg, warm);
-        let ok = matches!(&result, Ok(a) if a.converged);
-        if !ok && had_warm && self.params.fresh_retry && !fresh_known_to_fail {
-            result = self.attempt(alpha_deg, None);
-            if !matches!(&result, Ok(a) if a.converged) {
-                self.fresh_failed_at = Some(alpha_deg);
-            }
-        } else if !ok && !had_warm {
+        let result = self.attempt(alpha_deg, warm);
+        if fresh && !matches!(&result, Ok(a) if a.converged) {
             self.fresh_failed_at = Some(alpha_deg);
         }
         match result {
