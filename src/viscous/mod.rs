@@ -24,9 +24,13 @@
 pub mod block_solver;
 pub mod error;
 pub mod forces;
+mod local_newton;
 pub mod march;
 pub mod newton;
 pub mod panel_model;
+mod params;
+pub mod remarch;
+mod solution;
 pub mod solver;
 pub mod state;
 pub mod stations;
@@ -34,4 +38,6 @@ pub mod update;
 
 pub use error::ViscousError;
 pub use panel_model::{PanelModel, SharedPanels};
-pub use solver::{BlStation, ViscousParams, ViscousSolution, ViscousSolver, WarmStart};
+pub use params::ViscousParams;
+pub use solution::{BlStation, ViscousSolution};
+pub use solver::{ViscousSolver, WarmStart};

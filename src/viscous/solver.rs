@@ -4,148 +4,20 @@
 
 use std::sync::Arc;
 
-use crate::boundary_layer::{BlConditions, BlModel, BlParams, Regime};
+use crate::boundary_layer::BlModel;
 use crate::geometry::Airfoil;
 use crate::section::PolarPoint;
 
 use super::error::ViscousError;
-use super::forces::{friction_drag, lift_and_moment, transition_x};
-use super::march::{march, remarch_mixed, MarchParams};
+use super::march::march;
 use super::newton::{assemble, Coupling};
 use super::panel_model::{PanelModel, SharedPanels};
+use super::params::ViscousParams;
+use super::remarch::remarch_mixed;
+use super::solution::{failed_solution, solution, Attempt, ViscousSolution};
 use super::state::BlState;
 use super::stations::{StationLayout, Surface};
-use super::update::{apply_update, UpdateLimits};
-
-/// Parameters of a viscous solution.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ViscousParams {
-    /// Chord Reynolds number V∞c/ν.
-    pub reynolds: f64,
-    /// Free-stream Mach number (Karman–Tsien compressibility).
-    pub mach: f64,
-    /// Critical amplification ratio of the e^n method (XFOIL default 9).
-    pub ncrit: f64,
-    /// Forced transition x/c on the upper surface (≥ 1 = free transition).
-    pub xtr_top: f64,
-    /// Forced transition x/c on the lower surface (≥ 1 = free transition).
-    pub xtr_bot: f64,
-    /// Newton iteration cap per attempt.
-    pub max_iterations: u32,
-    /// Convergence threshold on the RMS relative Newton change. XFOIL's EPS1 is 1e-4; the
-    /// default here is 1e-3. Newton converges quadratically at this stage, so the change a
-    /// further iteration would make is far smaller: logged over the four default rotor grids,
-    /// its median was 8e-7 and its 99th percentile 5e-5 (largest 9e-4, a slowly converging
-    /// stall point). Against 1e-4, the points of those grids moved by a median |ΔCl| of 1e-8
-    /// (99th percentile 1.5e-5) and |ΔCd|/Cd of 1e-7 (4e-5), except stall points that changed
-    /// branch; the agreement with XFOIL's printed polars moved by ≤ 0.001 % in the median
-    /// |ΔCd|/Cd and ≤ 4e-7 in the largest |ΔCl| (`tests/viscous_polars.rs`). The paper's free
-    /// sweep needs 179 Newton iterations instead of 275.
-    pub tolerance: f64,
-    /// Relaxation and clipping limits of the update (XFOIL UPDATE).
-    pub limits: UpdateLimits,
-    /// Controls of the initial march (XFOIL MRCHUE).
-    pub march: MarchParams,
-    /// The mixed-mode re-march before each Newton iteration (XFOIL MRCHDU) is skipped once the
-    /// RMS relative Newton change is below this value (0 = always re-march, as XFOIL).
-    pub remarch_below: f64,
-    /// In warm-started attempts, the re-march starts turbulent and wake stations from their
-    /// upstream station's corrections ([`MarchParams::carried_correction_limit`]) after a Newton
-    /// step whose RMS relative change was below this value. After larger steps (the first
-    /// iteration of an attempt, and the wandering iterations of hard points) and in fresh
-    /// starts, XFOIL's plain start is kept: with the carried start there too, hard points at
-    /// Re 2.5e5 (NACA 8-H-12 xtr 0.07, M 0.2, α 12–18°; NACA 23012 free, M 0.3, α 11–16°)
-    /// wandered onto a branch with 6–8 % less lift than XFOIL's, which they had followed, and
-    /// the fresh start of the 8-H-12 at Re 5e5, M 0.3, α 0° no longer converged.
-    pub carry_corrections_below: f64,
-    /// Lowest accepted pressure (form) drag cd − cdf. A Newton-converged state whose
-    /// Squire–Young drag lies further below its skin-friction drag has negative form drag: a
-    /// spurious solution branch (seen in negative stall), reported as not converged so that a
-    /// sweep retries the point. −2e-4 leaves room for the round-off of attached flow, where the
-    /// form drag is near zero.
-    pub min_pressure_drag: f64,
-    /// Largest relative change of a Newton step (XFOIL RMXBL) above which the step is taken to
-    /// come from a near-singular system (stagnation point almost on a node); the next
-    /// iteration then goes without the stagnation-point terms of ξ.
-    pub exploded_step: f64,
-}
-
-impl Default for ViscousParams {
-    fn default() -> Self {
-        Self {
-            reynolds: 1.0e6,
-            mach: 0.0,
-            ncrit: 9.0,
-            xtr_top: 1.0,
-            xtr_bot: 1.0,
-            max_iterations: 100,
-            tolerance: 1e-3,
-            limits: UpdateLimits::default(),
-            march: MarchParams::default(),
-            remarch_below: 0.0,
-            carry_corrections_below: 1.0,
-            min_pressure_drag: -2e-4,
-            exploded_step: 1e6,
-        }
-    }
-}
-
-impl ViscousParams {
-    /// The defaults at one flow condition: Reynolds number, Mach number, and transition forced
-    /// at x/c = `xtr` on both surfaces (1 = free transition).
-    pub fn at(reynolds: f64, mach: f64, xtr: f64) -> Self {
-        Self {
-            reynolds,
-            mach,
-            xtr_top: xtr,
-            xtr_bot: xtr,
-            ..Self::default()
-        }
-    }
-}
-
-/// One boundary-layer station of a solution, for plots and debugging.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BlStation {
-    /// ξ: arc length from the stagnation point, in chords.
-    pub s: f64,
-    /// x coordinate of the station.
-    pub x: f64,
-    /// y coordinate of the station.
-    pub y: f64,
-    /// Edge speed Ue/V∞ (incompressible, as the panel method sees it).
-    pub ue: f64,
-    /// Displacement thickness δ* (wake: including the wake gap).
-    pub dstar: f64,
-    /// Momentum thickness θ.
-    pub theta: f64,
-    /// Skin-friction coefficient based on the edge dynamic pressure (0 in the wake).
-    pub cf: f64,
-    /// Skin friction referred to the free-stream dynamic pressure, τw/(½ρ∞V∞²) = Cf·ρe·Ue,c²
-    /// (the "Cf" column of XFOIL's DUMP).
-    pub cf_inf: f64,
-    /// Shape factor H = δ*/θ.
-    pub h: f64,
-    /// Kinematic shape factor Hk.
-    pub hk: f64,
-    /// N (laminar) or Cτ (turbulent).
-    pub n_or_ctau: f64,
-    /// Whether the station is turbulent.
-    pub turbulent: bool,
-}
-
-/// Result of one viscous operating point.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ViscousSolution {
-    /// Integrated coefficients and convergence information.
-    pub point: PolarPoint,
-    /// Upper-surface stations, stagnation point → TE.
-    pub upper: Vec<BlStation>,
-    /// Lower-surface stations, stagnation point → TE.
-    pub lower: Vec<BlStation>,
-    /// Wake stations, TE → wake end.
-    pub wake: Vec<BlStation>,
-}
+use super::update::apply_update;
 
 /// Opaque snapshot of a solver's warm-start state (see [`ViscousSolver::warm_start`]).
 #[derive(Clone, Debug)]
@@ -185,16 +57,6 @@ pub struct ViscousSolver {
     fresh_failed_at: Option<f64>,
 }
 
-/// Outcome of one Newton attempt.
-struct Attempt {
-    layout: StationLayout,
-    state: BlState,
-    converged: bool,
-    iterations: u32,
-    residual: f64,
-    transition: [Option<f64>; 2],
-}
-
 impl ViscousSolver {
     /// Solver from prepared inviscid data (see [`PanelModel`]).
     pub fn from_panel_model(
@@ -202,8 +64,8 @@ impl ViscousSolver {
         params: ViscousParams,
     ) -> Result<Self, ViscousError> {
         panels.check()?;
-        Self::check_params(&params)?;
-        let bl = boundary_layer_model(&params)?;
+        params.check()?;
+        let bl = params.boundary_layer()?;
         Ok(Self {
             params,
             source: PanelSource::Fixed,
@@ -218,7 +80,7 @@ impl ViscousSolver {
     /// Solver for an already paneled airfoil (XFOIL order, e.g. from the geometry module's
     /// repaneling): builds the panel system and its unit solutions once.
     pub fn new(airfoil: &Airfoil, params: ViscousParams) -> Result<Self, ViscousError> {
-        Self::check_params(&params)?;
+        params.check()?;
         Self::with_panels(Arc::new(SharedPanels::new(airfoil)?), params)
     }
 
@@ -228,9 +90,9 @@ impl ViscousSolver {
         shared: Arc<SharedPanels>,
         params: ViscousParams,
     ) -> Result<Self, ViscousError> {
-        Self::check_params(&params)?;
+        params.check()?;
         let panels = shared.model(0.0)?;
-        let bl = boundary_layer_model(&params)?;
+        let bl = params.boundary_layer()?;
         Ok(Self {
             params,
             source: PanelSource::Airfoil(shared),
@@ -240,23 +102,6 @@ impl ViscousSolver {
             warm: None,
             fresh_failed_at: None,
         })
-    }
-
-    /// Rejects non-physical parameters.
-    fn check_params(params: &ViscousParams) -> Result<(), ViscousError> {
-        for (name, value, ok) in [
-            ("reynolds", params.reynolds, params.reynolds > 0.0),
-            ("mach", params.mach, (0.0..1.0).contains(&params.mach)),
-            ("ncrit", params.ncrit, params.ncrit > 0.0),
-            ("xtr_top", params.xtr_top, params.xtr_top >= 0.0),
-            ("xtr_bot", params.xtr_bot, params.xtr_bot >= 0.0),
-            ("tolerance", params.tolerance, params.tolerance > 0.0),
-        ] {
-            if !(value.is_finite() && ok) {
-                return Err(ViscousError::BadParameter { name, value });
-            }
-        }
-        Ok(())
     }
 
     /// The parameters of this solver.
@@ -344,7 +189,7 @@ impl ViscousSolver {
         }
         match result {
             Ok(a) => {
-                let sol = self.solution(alpha_deg, &a);
+                let sol = solution(&self.panels, &self.bl, alpha_deg, &a);
                 let physical = sol.point.cd - sol.point.cdf >= self.params.min_pressure_drag;
                 if a.converged && sol.point.cl.is_finite() && sol.point.cd.is_finite() && physical {
                     self.warm = Some(WarmState {
@@ -491,108 +336,6 @@ impl ViscousSolver {
             transition,
         })
     }
-
-    /// Integrated coefficients and distributions of an attempt.
-    fn solution(&self, alpha_deg: f64, a: &Attempt) -> ViscousSolution {
-        let g = &self.panels.airfoil;
-        let n_af = g.len();
-        let mut q = vec![0.0; n_af];
-        for (k, st) in a.layout.stations.iter().enumerate() {
-            if st.node < n_af {
-                q[st.node] = st.vti * a.state.ue[k];
-            }
-        }
-        let kt = &self.bl.flow.karman_tsien;
-        let (cl, cm) = lift_and_moment(&g.x, &g.y, &q, alpha_deg, kt);
-        let dist = |surface: Surface| -> Vec<BlStation> {
-            a.layout
-                .range(surface)
-                .map(|k| {
-                    let st = a.layout.stations[k];
-                    let v = a.state.vars(&a.layout, k);
-                    let regime = a.state.regime(&a.layout, k);
-                    let p = self.bl.properties(&v, regime).unwrap_or_default();
-                    let s = a.state.s[k];
-                    let (x, y) = self.panels.node(st.node);
-                    BlStation {
-                        s: st.xi,
-                        x,
-                        y,
-                        ue: a.state.ue[k],
-                        dstar: v.dstar,
-                        theta: v.theta,
-                        cf: p.cf,
-                        cf_inf: p.cf * p.rho_edge * p.ue * p.ue,
-                        h: p.h,
-                        hk: p.hk,
-                        n_or_ctau: if regime == Regime::Laminar { s } else { s * s },
-                        turbulent: regime != Regime::Laminar,
-                    }
-                })
-                .collect()
-        };
-        let upper = dist(Surface::Upper);
-        let lower = dist(Surface::Lower);
-        let wake = dist(Surface::Wake);
-        // Friction drag from the wall shear τ = ½ρe·Ue,c²·Cf (XFOIL CDCALC).
-        let mut cdf = 0.0;
-        let mut xtr = [1.0, 1.0];
-        for (side, surface) in [Surface::Upper, Surface::Lower].into_iter().enumerate() {
-            let range = a.layout.range(surface);
-            let mut xs = Vec::with_capacity(range.len());
-            let mut ys = Vec::with_capacity(range.len());
-            let mut xis = Vec::with_capacity(range.len());
-            let mut tau = Vec::with_capacity(range.len());
-            for k in range {
-                let st = a.layout.stations[k];
-                let v = a.state.vars(&a.layout, k);
-                let p = self
-                    .bl
-                    .properties(&v, a.state.regime(&a.layout, k))
-                    .unwrap_or_default();
-                xs.push(g.x[st.node]);
-                ys.push(g.y[st.node]);
-                xis.push(st.xi);
-                tau.push(p.tau_wall);
-            }
-            cdf += friction_drag(&xs, &ys, &tau, alpha_deg);
-            xtr[side] = transition_x(&xis, &xs, a.transition[side]);
-        }
-        let last = a.layout.len() - 1;
-        let cd = self
-            .bl
-            .squire_young(&a.state.vars(&a.layout, last))
-            .map(|s| s.cd)
-            .unwrap_or(f64::NAN);
-        ViscousSolution {
-            point: PolarPoint {
-                alpha: alpha_deg,
-                cl,
-                cd,
-                cdp: cd - cdf,
-                cdf,
-                cm,
-                xtr_top: xtr[0],
-                xtr_bot: xtr[1],
-                converged: a.converged,
-                iterations: a.iterations,
-                residual: a.residual,
-            },
-            upper,
-            lower,
-            wake,
-        }
-    }
-}
-
-/// The boundary-layer model of a solver's flow condition, with XFOIL's closure constants.
-fn boundary_layer_model(params: &ViscousParams) -> Result<BlModel, ViscousError> {
-    let conditions = BlConditions {
-        reynolds: params.reynolds,
-        mach: params.mach,
-        ncrit: params.ncrit,
-    };
-    BlModel::new(&conditions, BlParams::default()).map_err(ViscousError::FlowConditions)
 }
 
 /// Surface speed at every node from a boundary-layer state (XFOIL GAMQV: q = ±Ue at the
@@ -620,27 +363,5 @@ fn fix_crossed(
             state.ue[k] = ue_new[k].max(1e-4);
             state.mass[k] = dstar * state.ue[k];
         }
-    }
-}
-
-/// The result reported for a point that could not be solved at all.
-fn failed_solution(alpha_deg: f64, iterations: u32) -> ViscousSolution {
-    ViscousSolution {
-        point: PolarPoint {
-            alpha: alpha_deg,
-            cl: f64::NAN,
-            cd: f64::NAN,
-            cdp: f64::NAN,
-            cdf: f64::NAN,
-            cm: f64::NAN,
-            xtr_top: f64::NAN,
-            xtr_bot: f64::NAN,
-            converged: false,
-            iterations,
-            residual: f64::NAN,
-        },
-        upper: Vec::new(),
-        lower: Vec::new(),
-        wake: Vec::new(),
     }
 }
