@@ -9,7 +9,8 @@
 //! upper surface and σ = +m on the lower surface and wake; the speed at every airfoil and wake
 //! node is q = q_inv(α) + D·σ with D from [`SourceInfluence`].
 //!
-//! Files: [`panels`] (geometry and PSILIN/PSWLIN kernels), [`system`] (matrix, Kutta/sharp-TE
+//! Files: [`contour`] (the contour prepared for the panels, TECALC), [`influence`]
+//! (PSILIN/PSWLIN kernels), [`system`] (matrix, Kutta/sharp-TE
 //! rows, LU, unit solutions), [`wake`] (XYWAKE), [`source_influence`] (QDCALC),
 //! [`forces`] (CLCALC), [`error`].
 //!
@@ -25,16 +26,17 @@
 //! # let _ = (sol, dij); Ok(()) }
 //! ```
 
+pub mod contour;
 pub mod error;
 pub mod forces;
-pub mod panels;
+pub mod influence;
 pub mod source_influence;
 pub mod system;
 pub mod wake;
 
+pub use contour::{PanelGeometry, PanelParams, TrailingEdge};
 pub use error::InviscidError;
 pub use forces::{integrate_pressure, SectionForces};
-pub use panels::{PanelGeometry, PanelParams, TrailingEdge};
 pub use source_influence::{speeds_with_sources, SourceInfluence};
 pub use system::{superpose, InviscidSolution, PanelSystem};
 pub use wake::{Wake, WakeParams};

@@ -22,7 +22,7 @@ use faer::linalg::matmul::matmul;
 use faer::{Accum, Mat, Par};
 
 use super::error::InviscidError;
-use super::panels::{
+use super::influence::{
     airfoil_influence, airfoil_source_value, wake_source_influence, wake_source_value, FieldPoint,
     Influence, Probe,
 };

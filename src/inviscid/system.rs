@@ -14,12 +14,10 @@ use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::Mat;
 use std::sync::OnceLock;
 
+use super::contour::{PanelGeometry, PanelParams};
 use super::error::InviscidError;
 use super::forces::{integrate_pressure, SectionForces};
-use super::panels::{
-    airfoil_influence, airfoil_source_value, FieldPoint, Influence, PanelGeometry, PanelParams,
-    Probe,
-};
+use super::influence::{airfoil_influence, airfoil_source_value, FieldPoint, Influence, Probe};
 use crate::compressibility::KarmanTsien;
 use crate::geometry::Airfoil;
 use crate::numerics::simd::reset_simd_state;

@@ -3,7 +3,7 @@
 //! xutils.f SETEXP), and the inviscid wake speeds of the unit solutions (XFOIL QWCALC).
 
 use super::error::InviscidError;
-use super::panels::{airfoil_vortex_gradient, FieldPoint, Probe};
+use super::influence::{airfoil_vortex_gradient, FieldPoint, Probe};
 use super::system::{superpose, PanelSystem};
 use crate::numerics::dense::dot;
 use crate::numerics::simd::reset_simd_state;
