@@ -1,10 +1,9 @@
 //! Coordinate-file reader: Selig, Lednicer and plain (E-notation) files, orientation, and
 //! one test per kind of malformed file asserting the one-line error message.
 
-use polargen::geometry::coordinates::parse_airfoil_bytes;
 use polargen::geometry::{
-    airfoil_by_name_or_path, parse_airfoil_text, read_airfoil_file, to_selig_string, Airfoil,
-    CoordinateFormat, GeometryError, PanelingParams,
+    airfoil_by_name_or_path, parse_airfoil_bytes, parse_airfoil_text, read_airfoil_file,
+    to_selig_string, Airfoil, CoordinateFormat, GeometryError, PanelingParams,
 };
 use std::path::{Path, PathBuf};
 

@@ -2,8 +2,7 @@
 //! numeric files, and random (possibly self-crossing or degenerate) contours through the
 //! whole chain reader → validation → spline → LE → repaneling.
 
-use polargen::geometry::coordinates::parse_airfoil_bytes;
-use polargen::geometry::{Airfoil, PanelingParams};
+use polargen::geometry::{parse_airfoil_bytes, Airfoil, PanelingParams};
 
 /// Small deterministic generator (64-bit LCG, Knuth MMIX constants).
 struct Lcg(u64);

@@ -67,8 +67,6 @@ fn trailing_edge_classification() {
 fn panel_system_is_send_and_sync() {
     fn check<T: Send + Sync>() {}
     check::<PanelSystem>();
-    check::<polargen::inviscid::Wake>();
-    check::<polargen::inviscid::SourceInfluence>();
 }
 
 /// Kutta condition γ₀ + γ_{N−1} = 0 holds for both unit solutions.

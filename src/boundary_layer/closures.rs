@@ -2,7 +2,7 @@
 //! Drela 1989, "XFOIL: an analysis and design system for low Reynolds number airfoils";
 //! constants as in XFOIL 6.99 xblsys.f).
 //!
-//! Each closure is written once on [`Dual`] numbers (`*_d` functions, used by the station
+//! Each closure is written once on derivative numbers (`*_d` functions, used by the station
 //! and interval equations so the chain rule is exact) and exposed as a pure `f64` function
 //! returning its value and partial derivatives in a [`Partials`] struct. The partials are the
 //! exact derivatives of the implemented formula (forward-mode differentiation), including
@@ -169,7 +169,7 @@ pub(crate) fn hct_d<const N: usize>(hk: Dual<N>, msq: Dual<N>) -> Dual<N> {
 
 /// Normalised wall slip velocity Us = H*/2·(1 − (Hk − 1)/(B·H)) (Drela 1989 eq. for the
 /// outer-layer velocity; XFOIL BLVAR US2). Arguments: `(hs, hk, h)`; `gbcon` is B.
-/// No clamp is applied here (see [`super::station`]).
+/// No clamp is applied here (the station applies the regime's limits).
 pub fn slip_velocity(hs: f64, hk: f64, h: f64, gbcon: f64) -> Partials<3> {
     partials([hs, hk, h], |a| slip_velocity_d(a[0], a[1], a[2], gbcon))
 }

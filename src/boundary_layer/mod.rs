@@ -39,11 +39,11 @@
 
 pub mod amplification;
 pub mod closures;
-pub mod equations;
-pub mod params;
-pub mod station;
-pub mod trailing_edge;
-pub mod transition;
+mod equations;
+mod params;
+mod station;
+mod trailing_edge;
+mod transition;
 
 pub use equations::{DownstreamEquations, IntervalEquations};
 pub use params::{BlConditions, BlParams, FlowConstants, Regime};

@@ -243,7 +243,7 @@ pub fn to_selig_string(airfoil: &Airfoil) -> String {
 
 /// Signed area enclosed by the contour closed through its end points (positive for
 /// counter-clockwise, i.e. XFOIL order), as in XFOIL `LOAD`.
-pub fn signed_area(x: &[f64], y: &[f64]) -> f64 {
+pub(crate) fn signed_area(x: &[f64], y: &[f64]) -> f64 {
     let n = x.len();
     let mut area = 0.0;
     for i in 0..n {
@@ -256,7 +256,7 @@ pub fn signed_area(x: &[f64], y: &[f64]) -> f64 {
 /// Checks a contour: enough points, all finite, no duplicate consecutive points and no
 /// crossing of non-adjacent segments. `line_of[i]` is the line (or point number) reported
 /// for point i; `file` names the source.
-pub fn validate_contour(
+pub(crate) fn validate_contour(
     x: &[f64],
     y: &[f64],
     line_of: &[usize],

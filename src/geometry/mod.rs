@@ -9,14 +9,17 @@
 //! assert_eq!(paneled.len(), 160);
 //! ```
 
-pub mod coordinates;
-pub mod error;
-pub mod naca;
-pub mod paneling;
-pub mod registry;
-pub mod spline;
+mod coordinates;
+mod error;
+mod naca;
+mod paneling;
+mod registry;
+mod spline;
 
-pub use coordinates::{parse_airfoil_text, read_airfoil_file, to_selig_string, CoordinateFormat};
+pub use coordinates::{
+    parse_airfoil_bytes, parse_airfoil_text, read_airfoil_file, to_selig_string, CoordinateFormat,
+    MIN_POINTS,
+};
 pub use error::GeometryError;
 pub use naca::{naca, NacaOptions, NacaSection, TrailingEdge};
 pub use paneling::{PaneledAirfoil, PanelingParams, DEFAULT_PANEL_NODES};
@@ -55,7 +58,7 @@ impl Airfoil {
     }
 
     /// Checks the contour as the file reader does: equal x/y lengths, at least
-    /// [`coordinates::MIN_POINTS`] finite points, no duplicate consecutive points, no
+    /// [`MIN_POINTS`] finite points, no duplicate consecutive points, no
     /// crossing segments. Errors name the airfoil and the 1-based point number.
     pub fn validate(&self) -> Result<(), GeometryError> {
         if self.x.len() != self.y.len() {

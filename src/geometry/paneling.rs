@@ -172,7 +172,7 @@ pub(crate) fn nearest_index(s: &[f64], target: f64) -> usize {
 ///
 /// The buffer must be a valid contour in XFOIL order (checked). The result is not
 /// normalised: like XFOIL's `PANE`, nodes lie on the spline of the input points.
-pub fn panel(
+pub(crate) fn panel(
     buffer: &Airfoil,
     n: usize,
     params: &PanelingParams,

@@ -23,7 +23,7 @@ pub enum EndCondition {
 ///
 /// `lower[k]·d[k−1] + diag[k]·d[k] + upper[k]·d[k+1] = rhs[k]`; the solution replaces `rhs`.
 /// `diag` and `upper` are overwritten. Returns `false` if a zero pivot is met.
-pub fn solve_tridiagonal(
+pub(crate) fn solve_tridiagonal(
     diag: &mut [f64],
     lower: &[f64],
     upper: &mut [f64],
@@ -227,7 +227,7 @@ impl CubicSpline {
 
 /// Cumulative chord-length arc parameter of a polyline (XFOIL `SCALC`): `s₀ = 0`,
 /// `sᵢ = sᵢ₋₁ + |rᵢ − rᵢ₋₁|`.
-pub fn arc_lengths(x: &[f64], y: &[f64]) -> Vec<f64> {
+pub(crate) fn arc_lengths(x: &[f64], y: &[f64]) -> Vec<f64> {
     let mut s = Vec::with_capacity(x.len());
     let mut acc = 0.0;
     for i in 0..x.len() {

@@ -7,36 +7,41 @@
 //! the upper surface, negative on the lower; wake speeds continue the lower-surface sign.
 //! Sources σ (per V∞·c) relate to the boundary-layer mass defect m = Ue·δ* by σ = −m on the
 //! upper surface and σ = +m on the lower surface and wake; the speed at every airfoil and wake
-//! node is q = q_inv(α) + D·σ with D from [`SourceInfluence`].
+//! node is q = q_inv(α) + D·σ with D the source influence matrix (XFOIL DIJ).
 //!
-//! Files: [`contour`] (the contour prepared for the panels, TECALC), [`influence`]
-//! (PSILIN/PSWLIN kernels), [`system`] (matrix, Kutta/sharp-TE
-//! rows, LU, unit solutions), [`wake`] (XYWAKE), [`source_influence`] (QDCALC),
-//! [`forces`] (CLCALC), [`error`].
+//! Inside (private): `contour` (the contour prepared for the panels: SCALC, SEGSPL, LEFIND,
+//! TECALC), `influence` (PSILIN/PSWLIN kernels), `system` (matrix, Kutta/sharp-TE rows, LU,
+//! unit solutions), `wake` (XYWAKE, QWCALC), `source_influence` (QDCALC), `forces` (CLCALC).
+//! The viscous coupling reaches the wake and the source influence through
+//! [`crate::viscous::PanelModel`].
 //!
 //! Typical use:
-//! ```no_run
-//! # use polargen::geometry::Airfoil;
-//! # use polargen::inviscid::{PanelSystem, SourceInfluence, Wake};
-//! # fn f(foil: &Airfoil) -> Result<(), polargen::inviscid::InviscidError> {
-//! let sys = PanelSystem::new(foil)?;          // influence matrix, LU, unit solutions
-//! let sol = sys.solve(4.0, 0.41)?;            // α = 4°, M = 0.41: gamma, cp, cl, cm
-//! let wake = Wake::new(&sys, 4.0)?;           // wake streamline, unit wake speeds
-//! let dij = SourceInfluence::new(&sys, &wake); // q = q_inv + D·σ on airfoil + wake nodes
-//! # let _ = (sol, dij); Ok(()) }
+//! ```
+//! use polargen::geometry::{airfoil_by_name_or_path, PanelingParams};
+//! use polargen::inviscid::PanelSystem;
+//!
+//! let foil = airfoil_by_name_or_path("naca0012")?.repanel(160, &PanelingParams::default())?;
+//! let sys = PanelSystem::new(&foil)?; // influence matrix, LU, unit solutions
+//! let sol = sys.solve(4.0, 0.41)?; // α = 4°, M = 0.41: γ, Karman–Tsien Cp, Cl, Cm
+//! assert!(sol.cl > 0.45 && sol.cl < 0.6);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-pub mod contour;
-pub mod error;
-pub mod forces;
-pub mod influence;
-pub mod source_influence;
-pub mod system;
-pub mod wake;
+mod contour;
+mod error;
+pub(crate) mod forces;
+mod influence;
+pub(crate) mod source_influence;
+mod system;
+pub(crate) mod wake;
+
+#[cfg(test)]
+mod tests;
 
 pub use contour::{PanelGeometry, PanelParams, TrailingEdge};
 pub use error::InviscidError;
-pub use forces::{integrate_pressure, SectionForces};
-pub use source_influence::{speeds_with_sources, SourceInfluence};
-pub use system::{superpose, InviscidSolution, PanelSystem};
-pub use wake::{Wake, WakeParams};
+pub use system::{InviscidSolution, PanelSystem};
+
+pub(crate) use source_influence::SourceInfluence;
+pub(crate) use system::superpose;
+pub(crate) use wake::Wake;

@@ -21,23 +21,14 @@
 use faer::linalg::matmul::matmul;
 use faer::{Accum, Mat, Par};
 
-use super::error::InviscidError;
-use super::influence::{
-    airfoil_influence, airfoil_source_value, wake_source_influence, wake_source_value, FieldPoint,
-    Influence, Probe,
-};
+use super::influence::{airfoil_influence, wake_source_influence, FieldPoint, Influence, Probe};
 use super::system::PanelSystem;
 use super::wake::Wake;
-use crate::numerics::dense::dot;
 use crate::numerics::simd::reset_simd_state;
 
 /// The source influence matrix D for one airfoil and wake.
 #[derive(Clone, Debug)]
 pub struct SourceInfluence {
-    /// Number of airfoil nodes N.
-    pub n_airfoil: usize,
-    /// Number of wake nodes NW.
-    pub n_wake: usize,
     /// D, (N+NW) × (N+NW): `d[(i, j)] = ∂q_i/∂σ_j`.
     pub d: Mat<f64>,
 }
@@ -128,23 +119,15 @@ impl SourceInfluence {
         for j in 0..nt {
             d[(n, j)] = d[(n - 1, j)];
         }
-        Self {
-            n_airfoil: n,
-            n_wake: nw,
-            d,
-        }
-    }
-
-    /// Total number of nodes N + NW.
-    pub fn n_total(&self) -> usize {
-        self.n_airfoil + self.n_wake
+        Self { d }
     }
 
     /// D·σ: speed change at every node for sources `sigma` (length N + NW).
-    pub fn apply(&self, sigma: &[f64]) -> Result<Vec<f64>, InviscidError> {
-        let nt = self.n_total();
+    #[cfg(test)]
+    pub fn apply(&self, sigma: &[f64]) -> Result<Vec<f64>, super::InviscidError> {
+        let nt = self.d.nrows();
         if sigma.len() != nt {
-            return Err(InviscidError::SourceLength {
+            return Err(super::InviscidError::SourceLength {
                 got: sigma.len(),
                 expected: nt,
             });
@@ -155,58 +138,67 @@ impl SourceInfluence {
     }
 }
 
-/// Tangential speeds at all airfoil and wake nodes for `alpha_deg` with nodal sources
-/// `sigma` (length N + NW, conventions as in the module docs), by summing the source panels
-/// directly and re-solving the panel system — the non-linearised counterpart of
-/// `q_inv + D·σ`, used to verify D.
-pub fn speeds_with_sources(
-    system: &PanelSystem,
-    wake: &Wake,
-    alpha_deg: f64,
-    sigma: &[f64],
-) -> Result<Vec<f64>, InviscidError> {
-    let g = system.geometry();
-    let n = g.len();
-    let nw = wake.len();
-    if sigma.len() != n + nw {
-        return Err(InviscidError::SourceLength {
-            got: sigma.len(),
-            expected: n + nw,
-        });
+/// The speeds re-solved with the sources summed directly, which verify D (tests only).
+#[cfg(test)]
+pub(crate) mod direct {
+    use super::*;
+    use crate::inviscid::influence::direct::{airfoil_source_value, wake_source_value};
+    use crate::inviscid::InviscidError;
+    use crate::numerics::dense::dot;
+
+    /// Tangential speeds at all airfoil and wake nodes for `alpha_deg` with nodal sources
+    /// `sigma` (length N + NW, conventions as in the module docs), by summing the source panels
+    /// directly and re-solving the panel system — the non-linearised counterpart of
+    /// `q_inv + D·σ`, used to verify D.
+    pub(crate) fn speeds_with_sources(
+        system: &PanelSystem,
+        wake: &Wake,
+        alpha_deg: f64,
+        sigma: &[f64],
+    ) -> Result<Vec<f64>, InviscidError> {
+        let g = system.geometry();
+        let n = g.len();
+        let nw = wake.len();
+        if sigma.len() != n + nw {
+            return Err(InviscidError::SourceLength {
+                got: sigma.len(),
+                expected: n + nw,
+            });
+        }
+        reset_simd_state();
+        let (sig_a, sig_w) = sigma.split_at(n);
+        let mut extra = vec![0.0; n];
+        let last_row = if g.te.sharp { n - 1 } else { n };
+        for (i, e) in extra.iter_mut().enumerate().take(last_row) {
+            let probe = Probe {
+                kind: FieldPoint::Airfoil(i),
+                x: g.x[i],
+                y: g.y[i],
+                nx: g.nx[i],
+                ny: g.ny[i],
+            };
+            *e = wake_source_value(&wake.x, &wake.y, &wake.apanel, &probe, sig_w).0;
+        }
+        let gamma = system.gamma_with_sources(alpha_deg, sig_a, &extra)?;
+        let (sa, ca) = alpha_deg.to_radians().sin_cos();
+        let mut q = gamma.clone();
+        q.push(gamma[n - 1]);
+        let mut inf = Influence::new(n);
+        for iw in 1..nw {
+            let probe = Probe {
+                kind: FieldPoint::Wake(iw),
+                x: wake.x[iw],
+                y: wake.y[iw],
+                nx: wake.nx[iw],
+                ny: wake.ny[iw],
+            };
+            airfoil_influence(g, &probe, false, &mut inf);
+            let q_vortex = dot(&inf.qn_gamma, &gamma);
+            let q_free = ca * wake.ny[iw] - sa * wake.nx[iw];
+            let q_air = airfoil_source_value(g, &probe, sig_a).1;
+            let q_wake = wake_source_value(&wake.x, &wake.y, &wake.apanel, &probe, sig_w).1;
+            q.push(q_vortex + q_free + q_air + q_wake);
+        }
+        Ok(q)
     }
-    reset_simd_state();
-    let (sig_a, sig_w) = sigma.split_at(n);
-    let mut extra = vec![0.0; n];
-    let last_row = if g.te.sharp { n - 1 } else { n };
-    for (i, e) in extra.iter_mut().enumerate().take(last_row) {
-        let probe = Probe {
-            kind: FieldPoint::Airfoil(i),
-            x: g.x[i],
-            y: g.y[i],
-            nx: g.nx[i],
-            ny: g.ny[i],
-        };
-        *e = wake_source_value(&wake.x, &wake.y, &wake.apanel, &probe, sig_w).0;
-    }
-    let gamma = system.gamma_with_sources(alpha_deg, sig_a, &extra)?;
-    let (sa, ca) = alpha_deg.to_radians().sin_cos();
-    let mut q = gamma.clone();
-    q.push(gamma[n - 1]);
-    let mut inf = Influence::new(n);
-    for iw in 1..nw {
-        let probe = Probe {
-            kind: FieldPoint::Wake(iw),
-            x: wake.x[iw],
-            y: wake.y[iw],
-            nx: wake.nx[iw],
-            ny: wake.ny[iw],
-        };
-        airfoil_influence(g, &probe, false, &mut inf);
-        let q_vortex = dot(&inf.qn_gamma, &gamma);
-        let q_free = ca * wake.ny[iw] - sa * wake.nx[iw];
-        let q_air = airfoil_source_value(g, &probe, sig_a).1;
-        let q_wake = wake_source_value(&wake.x, &wake.y, &wake.apanel, &probe, sig_w).1;
-        q.push(q_vortex + q_free + q_air + q_wake);
-    }
-    Ok(q)
 }

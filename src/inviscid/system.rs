@@ -17,7 +17,7 @@ use std::sync::OnceLock;
 use super::contour::{PanelGeometry, PanelParams};
 use super::error::InviscidError;
 use super::forces::{integrate_pressure, SectionForces};
-use super::influence::{airfoil_influence, airfoil_source_value, FieldPoint, Influence, Probe};
+use super::influence::{airfoil_influence, FieldPoint, Influence, Probe};
 use crate::compressibility::KarmanTsien;
 use crate::geometry::Airfoil;
 use crate::numerics::simd::reset_simd_state;
@@ -319,6 +319,7 @@ impl PanelSystem {
     /// (length N) and an additional system right-hand side `extra_psi` per node (stream function
     /// induced by other sources, e.g. the wake, length N; on the sharp-TE row the bisector
     /// velocity). Evaluates the airfoil source ψ by direct summation and re-solves the system.
+    #[cfg(test)]
     pub fn gamma_with_sources(
         &self,
         alpha_deg: f64,
@@ -346,7 +347,7 @@ impl PanelSystem {
                 nx: g.nx[i],
                 ny: g.ny[i],
             };
-            let (psi_m, _) = airfoil_source_value(g, &probe, m_airfoil);
+            let (psi_m, _) = super::influence::direct::airfoil_source_value(g, &probe, m_airfoil);
             rhs[(i, 0)] = -(ca * g.y[i] - sa * g.x[i]) - psi_m - extra_psi[i];
         }
         if let Some((xb, yb, cb, sb)) = self.bisector {
@@ -357,7 +358,7 @@ impl PanelSystem {
                 nx: -sb,
                 ny: cb,
             };
-            let (_, q_m) = airfoil_source_value(g, &probe, m_airfoil);
+            let (_, q_m) = super::influence::direct::airfoil_source_value(g, &probe, m_airfoil);
             rhs[(n - 1, 0)] = -(ca * cb + sa * sb) - q_m - extra_psi[n - 1];
         }
         self.lu.solve_in_place(rhs.as_mut());

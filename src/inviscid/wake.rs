@@ -4,7 +4,7 @@
 
 use super::error::InviscidError;
 use super::influence::{airfoil_vortex_gradient, FieldPoint, Probe};
-use super::system::{superpose, PanelSystem};
+use super::system::PanelSystem;
 use crate::numerics::dense::dot;
 use crate::numerics::simd::reset_simd_state;
 
@@ -41,15 +41,10 @@ impl Default for WakeParams {
 /// convention of the airfoil γ (XFOIL QINV on the wake).
 #[derive(Clone, Debug)]
 pub struct Wake {
-    /// Angle of attack (degrees) whose streamline the wake follows.
-    pub alpha_deg: f64,
     /// Node x.
     pub x: Vec<f64>,
     /// Node y.
     pub y: Vec<f64>,
-    /// Arc length, continuing the airfoil arc length: `s[0]` equals the airfoil's last-node s
-    /// (XFOIL S(N+1) = S(N)).
-    pub s: Vec<f64>,
     /// Unit normal x at each node.
     pub nx: Vec<f64>,
     /// Unit normal y at each node.
@@ -101,7 +96,6 @@ impl Wake {
         let (sa, ca) = alpha_deg.to_radians().sin_cos();
         let mut x = vec![0.0; nw];
         let mut y = vec![0.0; nw];
-        let mut s = vec![0.0; nw];
         let mut nx = vec![0.0; nw];
         let mut ny = vec![0.0; nw];
         let mut apanel = vec![0.0; nw];
@@ -114,7 +108,6 @@ impl Wake {
         ny[0] = sy / smod;
         x[0] = g.te.x - params.te_offset * ny[0];
         y[0] = g.te.y + params.te_offset * nx[0];
-        s[0] = g.s[n - 1];
 
         // One gradient evaluation per node gives the streamline direction for the next node
         // and the unit-solution tangential speeds (QWCALC) at this node.
@@ -128,7 +121,6 @@ impl Wake {
                 let ds = spacing[i] - spacing[i - 1];
                 x[i] = x[i - 1] - ds * ny[i];
                 y[i] = y[i - 1] + ds * nx[i];
-                s[i] = s[i - 1] + ds;
             }
             let probe = Probe {
                 kind: FieldPoint::Wake(i),
@@ -161,10 +153,8 @@ impl Wake {
         }
 
         Ok(Self {
-            alpha_deg,
             x,
             y,
-            s,
             nx,
             ny,
             apanel,
@@ -177,25 +167,11 @@ impl Wake {
         self.x.len()
     }
 
-    /// Always false (a wake has at least 3 nodes); present for API symmetry with `len`.
-    pub fn is_empty(&self) -> bool {
-        self.x.is_empty()
-    }
-
-    /// d(q_inv)/dα (per radian) on the wake at `alpha_deg` (XFOIL QINV_A).
-    pub fn qinv_alpha_derivative(&self, alpha_deg: f64) -> Vec<f64> {
-        let (sa, ca) = alpha_deg.to_radians().sin_cos();
-        self.qinv_unit[0]
-            .iter()
-            .zip(&self.qinv_unit[1])
-            .map(|(a, b)| -sa * a + ca * b)
-            .collect()
-    }
-
     /// Inviscid wake speeds at `alpha_deg`, `cos α·q⁰ + sin α·q⁹⁰` (signed as described on
-    /// [`Wake`]; the geometry stays the one traced at `self.alpha_deg`).
+    /// [`Wake`]; the geometry stays the one traced at its own α).
+    #[cfg(test)]
     pub fn qinv(&self, alpha_deg: f64) -> Vec<f64> {
-        superpose(&self.qinv_unit[0], &self.qinv_unit[1], alpha_deg)
+        super::system::superpose(&self.qinv_unit[0], &self.qinv_unit[1], alpha_deg)
     }
 }
 

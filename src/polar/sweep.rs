@@ -69,7 +69,7 @@ where
 /// the same as [`sweep`]'s: each branch depends on the start point's state alone
 /// ([`WarmStartSolver::solve`]). Without `second`, or when the start point failed (the
 /// downward branch then depends on the upward one), the branches run one after the other.
-pub fn sweep_split<S>(
+pub(super) fn sweep_split<S>(
     solver: &mut S,
     second: Option<S>,
     alphas: &[f64],

@@ -126,7 +126,8 @@ impl<'a> BlockSystem<'a> {
             .flatten()
     }
 
-    /// Expands the system into a dense 3n×3n matrix (for tests and diagnostics).
+    /// Expands the system into a dense 3n×3n matrix (for tests).
+    #[cfg(test)]
     pub fn to_dense(&self) -> Mat<f64> {
         let n = self.n;
         let mut a = Mat::<f64>::zeros(3 * n, 3 * n);
@@ -149,6 +150,7 @@ impl<'a> BlockSystem<'a> {
     }
 
     /// Solves the system; returns w_k = (δs_k, δθ_k, δm_k) for every station.
+    #[cfg(test)]
     pub fn solve(&self) -> Result<Vec<[f64; 3]>, ViscousError> {
         self.clone().solve_with(&mut Vec::new())
     }

@@ -16,7 +16,7 @@ pub fn karman_tsien_cp(cp_inc: f64, mach: f64) -> f64 {
 /// Lift and moment coefficients (about [`MOMENT_REFERENCE`]) of a closed contour with surface
 /// speeds `q` (|q| = Ue/V∞ at the airfoil nodes): the Karman–Tsien Cp integrated as the
 /// inviscid pressures are ([`integrate_pressure`], XFOIL CPCALC + CLCALC).
-pub fn lift_and_moment(
+pub(crate) fn lift_and_moment(
     x: &[f64],
     y: &[f64],
     q: &[f64],
@@ -36,7 +36,7 @@ pub fn lift_and_moment(
 /// with the wall shear τ = ½ ρe Ue,c² Cf normalised by ρ∞V∞² (XFOIL CDCALC). `x`, `y` are the
 /// station coordinates from the stagnation point to the TE; the first (similarity) interval is
 /// skipped as in XFOIL.
-pub fn friction_drag(x: &[f64], y: &[f64], tau: &[f64], alpha_deg: f64) -> f64 {
+pub(crate) fn friction_drag(x: &[f64], y: &[f64], tau: &[f64], alpha_deg: f64) -> f64 {
     let (sa, ca) = alpha_deg.to_radians().sin_cos();
     let n = x.len().min(y.len()).min(tau.len());
     (1..n)
@@ -49,7 +49,7 @@ pub fn friction_drag(x: &[f64], y: &[f64], tau: &[f64], alpha_deg: f64) -> f64 {
 
 /// x/c of a transition point at ξ_tr, interpolated linearly in ξ between the two stations that
 /// bracket it (XFOIL XOCTR); 1 (or the TE x) if there is no transition.
-pub fn transition_x(xi: &[f64], x: &[f64], xi_tr: Option<f64>) -> f64 {
+pub(crate) fn transition_x(xi: &[f64], x: &[f64], xi_tr: Option<f64>) -> f64 {
     let Some(xt) = xi_tr else {
         return x.last().copied().unwrap_or(1.0);
     };

@@ -33,14 +33,13 @@ pub struct MarchParams {
     /// solutions); 1e-4 instead of 5e-6 cuts the default-grid time by 15–40 %.
     pub mixed_mode_tolerance: f64,
     /// Largest relative correction of the upstream station carried over as the start of a
-    /// station's local iterations in the re-march ([`super::remarch::remarch_mixed`]); larger
-    /// ones are clipped
+    /// station's local iterations in the mixed-mode re-march (MRCHDU); larger ones are clipped
     /// to ± this value.
     pub carried_correction_limit: f64,
     /// A turbulent or wake station of the re-march whose local iteration fails right after its
     /// upstream station's did keeps the state the Newton step gave it, instead of XFOIL's
-    /// extrapolation from the (already extrapolated) upstream station
-    /// ([`super::remarch::remarch_mixed`]).
+    /// extrapolation from the (already extrapolated) upstream station (in the mixed-mode
+    /// re-march, MRCHDU).
     /// Off: XFOIL's fallback everywhere.
     pub keep_state_in_fallback_chains: bool,
 }

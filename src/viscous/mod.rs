@@ -15,29 +15,35 @@
 //! # Ok(()) }
 //! ```
 //!
-//! Files: [`stations`] (stagnation point, station ↔ node mapping, ξ, wake gap), [`state`]
-//! (Newton unknowns), [`march`] (MRCHUE initial march, MRCHDU mixed-mode re-march),
-//! [`newton`] (SETBL assembly), [`panel_model`] (per-α inviscid data, shared between solvers),
-//! [`block_solver`] (structured solve), [`update`]
-//! (UPDATE/DSLIM relaxation), [`forces`] (Cl, Cm, cdf, xtr), [`solver`] (the [`ViscousSolver`]).
+//! The public face is the solver ([`ViscousSolver`] with [`ViscousParams`], returning
+//! [`ViscousSolution`]s), the per-α inviscid data it works on ([`PanelModel`], shared between
+//! solvers through [`SharedPanels`]) and its errors. Inside (private), one Newton iteration is:
+//! `stations` (stagnation point, station ↔ node mapping, ξ, wake gap; XFOIL STFIND, IBLPAN,
+//! XICALC), `state` (the Newton unknowns), `march` and `remarch` (MRCHUE initial march and
+//! MRCHDU mixed-mode re-march, each station solved by the `local_newton` loop), `newton`
+//! (SETBL assembly), `block_solver` (the structured solve, BLSOLV's role), `update`
+//! (UPDATE/DSLIM relaxation); `solution` and `forces` integrate Cl, Cm, Cd, cdf and xtr
+//! (CLCALC, CDCALC), and `solver` drives the iterations (VISCAL).
 
-pub mod block_solver;
-pub mod error;
+mod block_solver;
+mod error;
 pub mod forces;
 mod local_newton;
-pub mod march;
-pub mod newton;
-pub mod panel_model;
+mod march;
+mod newton;
+mod panel_model;
 mod params;
-pub mod remarch;
+mod remarch;
 mod solution;
-pub mod solver;
-pub mod state;
-pub mod stations;
-pub mod update;
+mod solver;
+mod state;
+mod stations;
+mod update;
 
 pub use error::ViscousError;
+pub use march::MarchParams;
 pub use panel_model::{PanelModel, SharedPanels};
 pub use params::ViscousParams;
 pub use solution::{BlStation, ViscousSolution};
 pub use solver::{ViscousSolver, WarmStart};
+pub use update::UpdateLimits;

@@ -105,8 +105,6 @@ pub struct Assembly<'a> {
     pub system: BlockSystem<'a>,
     /// Edge-speed mismatch e = (Ue_inv + D·m) − Ue per station.
     pub mismatch: Vec<f64>,
-    /// RMS of all equation residuals.
-    pub rms_residual: f64,
     /// Transition on the upper and lower surface.
     pub transition: [Option<TransitionPoint>; 2],
 }
@@ -237,8 +235,6 @@ struct Assembler<'a, 'l> {
     mismatch: Vec<f64>,
     /// ξ sensitivity to the edge speeds next to the stagnation point (None: left out).
     stagnation: Option<StagnationSensitivity>,
-    /// Sum of the squared residuals so far.
-    sumsq: f64,
 }
 
 impl Assembler<'_, '_> {
@@ -275,7 +271,6 @@ impl Assembler<'_, '_> {
                 st.add(&mut self.sys, k, &xi_coef, &self.mismatch);
             }
         }
-        self.sumsq += res.iter().map(|r| r * r).sum::<f64>();
     }
 
     /// Adds interval (or similarity) equations: similarity stations have one combined
@@ -324,7 +319,6 @@ pub fn assemble<'a>(
         layout,
         mismatch,
         stagnation,
-        sumsq: 0.0,
     };
     let mut transition = [None, None];
     let cached = |k: usize| coupling.cached.and_then(|c| c[k].as_ref());
@@ -440,7 +434,6 @@ pub fn assemble<'a>(
     Ok(Assembly {
         system: asm.sys,
         mismatch: asm.mismatch,
-        rms_residual: (asm.sumsq / (3 * n.max(1)) as f64).sqrt(),
         transition,
     })
 }

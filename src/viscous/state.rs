@@ -36,11 +36,6 @@ impl BlState {
         self.theta.len()
     }
 
-    /// True if there are no stations.
-    pub fn is_empty(&self) -> bool {
-        self.theta.is_empty()
-    }
-
     /// Displacement thickness δ* = m/Ue of station k (including the wake gap).
     pub fn dstar(&self, k: usize) -> f64 {
         self.mass[k] / self.ue[k]

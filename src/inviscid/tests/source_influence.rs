@@ -1,10 +1,11 @@
 //! Source influence matrix D (XFOIL QDCALC) against re-solving the panel system with the
 //! perturbed sources, and a physical sign check of the displacement effect.
 
-mod inviscid_support;
-
-use inviscid_support::xfoil_nodes;
-use polargen::inviscid::{speeds_with_sources, PanelSystem, SourceInfluence, Wake};
+use super::support::xfoil_nodes;
+use crate::inviscid::source_influence::direct::speeds_with_sources;
+use crate::inviscid::source_influence::SourceInfluence;
+use crate::inviscid::wake::Wake;
+use crate::inviscid::PanelSystem;
 
 /// Deterministic pseudo-random numbers in [−1, 1) (64-bit LCG, Knuth MMIX constants).
 fn pseudo_random(n: usize, seed: u64) -> Vec<f64> {
@@ -32,7 +33,7 @@ fn check_columns(name: &str, alpha: f64) {
     let sys = PanelSystem::new(&xfoil_nodes(name)).unwrap();
     let wake = Wake::new(&sys, alpha).unwrap();
     let dij = SourceInfluence::new(&sys, &wake);
-    let (n, nw) = (dij.n_airfoil, dij.n_wake);
+    let (n, nw) = (sys.n_nodes(), wake.len());
     let nt = n + nw;
     let base = pseudo_random(nt, 7)
         .into_iter()
@@ -91,7 +92,7 @@ fn linearisation_is_exact() {
     let sys = PanelSystem::new(&xfoil_nodes("naca2412")).unwrap();
     let wake = Wake::new(&sys, 2.0).unwrap();
     let dij = SourceInfluence::new(&sys, &wake);
-    let sigma: Vec<f64> = pseudo_random(dij.n_total(), 11)
+    let sigma: Vec<f64> = pseudo_random(dij.d.nrows(), 11)
         .into_iter()
         .map(|v| 5.0e-3 * v)
         .collect();
@@ -126,7 +127,7 @@ fn displacement_accelerates_the_flow() {
     let ist = (0..n - 1)
         .find(|&i| gamma[i] >= 0.0 && gamma[i + 1] < 0.0)
         .unwrap();
-    let mut sigma = vec![0.0; dij.n_total()];
+    let mut sigma = vec![0.0; dij.d.nrows()];
     for i in 0..n {
         let dstar = 0.004 * g.x[i].max(0.0).powf(0.8);
         let m = gamma[i].abs() * dstar;
