@@ -2,10 +2,12 @@
 //! published formula (Drela & Giles 1987; Drela 1989; XFOIL 6.99 xblsys.f), and every
 //! partial derivative against central finite differences.
 
-use polargen::boundary_layer::amplification::dampl;
+use polargen::boundary_layer::amplification::amplification_rate;
 use polargen::boundary_layer::closures::{
-    bl_thickness, cfl, cft, ctau_eq_sqrt, dil, dilw, dissipation_outer, dissipation_turbulent, hct,
-    hkin, hsl, hst, slip_velocity, transition_ctau_factor, Partials,
+    bl_thickness, ctau_eq_sqrt, density_shape_factor, dissipation_outer, dissipation_turbulent,
+    kinematic_shape_factor, laminar_dissipation, laminar_energy_shape_factor,
+    laminar_skin_friction, laminar_wake_dissipation, slip_velocity, transition_ctau_factor,
+    turbulent_energy_shape_factor, turbulent_skin_friction, Partials,
 };
 use polargen::boundary_layer::BlParams;
 
@@ -40,8 +42,14 @@ fn close(name: &str, got: f64, want: f64) {
 fn kinematic_shape_parameter() {
     // Whitfield: Hk = (H − 0.29 M²)/(1 + 0.113 M²)
     let (h, m2) = (2.0, 0.3);
-    close("hkin", hkin(h, m2).value, (2.0 - 0.087) / 1.0339);
-    fd_check("hkin", [h, m2], |a| hkin(a[0], a[1]));
+    close(
+        "kinematic_shape_factor",
+        kinematic_shape_factor(h, m2).value,
+        (2.0 - 0.087) / 1.0339,
+    );
+    fd_check("kinematic_shape_factor", [h, m2], |a| {
+        kinematic_shape_factor(a[0], a[1])
+    });
 }
 
 #[test]
@@ -51,18 +59,24 @@ fn laminar_hstar_both_branches() {
     let t = hk - 4.35;
     let want = 0.0111 * t * t / (hk + 1.0) - 0.0278 * t.powi(3) / (hk + 1.0) + 1.528
         - 0.0002 * (t * hk).powi(2);
-    close("hsl attached", hsl(hk, 500.0, 0.0).value, want);
+    close(
+        "laminar_energy_shape_factor attached",
+        laminar_energy_shape_factor(hk, 500.0, 0.0).value,
+        want,
+    );
     // Blasius (H = 2.591, H* = 1.5725): the Falkner–Skan fit is within 4e-3
-    assert!((hsl(2.591, 500.0, 0.0).value - 1.5725).abs() < 4e-3);
+    assert!((laminar_energy_shape_factor(2.591, 500.0, 0.0).value - 1.5725).abs() < 4e-3);
     // separated branch
     let hk: f64 = 6.0;
     close(
-        "hsl separated",
-        hsl(hk, 500.0, 0.0).value,
+        "laminar_energy_shape_factor separated",
+        laminar_energy_shape_factor(hk, 500.0, 0.0).value,
         0.015 * (hk - 4.35).powi(2) / hk + 1.528,
     );
     for hk in [1.8, 2.6, 3.5, 5.0, 7.0] {
-        fd_check("hsl", [hk, 300.0, 0.1], |a| hsl(a[0], a[1], a[2]));
+        fd_check("laminar_energy_shape_factor", [hk, 300.0, 0.1], |a| {
+            laminar_energy_shape_factor(a[0], a[1], a[2])
+        });
     }
 }
 
@@ -93,8 +107,14 @@ fn turbulent_hstar_all_branches() {
         (4.5, 300.0, 0.3),
         (5.0, 100.0, 0.0),
     ] {
-        close("hst", hst(hk, rt, msq).value, hst_ref(hk, rt, msq));
-        fd_check("hst", [hk, rt, msq], |a| hst(a[0], a[1], a[2]));
+        close(
+            "turbulent_energy_shape_factor",
+            turbulent_energy_shape_factor(hk, rt, msq).value,
+            hst_ref(hk, rt, msq),
+        );
+        fd_check("turbulent_energy_shape_factor", [hk, rt, msq], |a| {
+            turbulent_energy_shape_factor(a[0], a[1], a[2])
+        });
     }
 }
 
@@ -102,40 +122,46 @@ fn turbulent_hstar_all_branches() {
 fn laminar_skin_friction_and_dissipation() {
     let (hk, rt): (f64, f64) = (2.59, 400.0);
     close(
-        "cfl",
-        cfl(hk, rt, 0.0).value,
+        "laminar_skin_friction",
+        laminar_skin_friction(hk, rt, 0.0).value,
         (0.0727 * (5.5 - hk).powi(3) / (hk + 1.0) - 0.07) / rt,
     );
     // Blasius: Cf·Re_θ = 0.664² = 0.441; the Falkner–Skan fit is within 3 % (0.429)
-    assert!((cfl(2.591, 1.0, 0.0).value - 0.441).abs() < 0.03 * 0.441);
+    assert!((laminar_skin_friction(2.591, 1.0, 0.0).value - 0.441).abs() < 0.03 * 0.441);
     let hk: f64 = 6.5;
     let t = 1.0 - 1.0 / (hk - 4.5);
     close(
-        "cfl sep",
-        cfl(hk, rt, 0.0).value,
+        "laminar_skin_friction sep",
+        laminar_skin_friction(hk, rt, 0.0).value,
         (0.015 * t * t - 0.07) / rt,
     );
     close(
-        "dil",
-        dil(2.59, rt).value,
+        "laminar_dissipation",
+        laminar_dissipation(2.59, rt).value,
         (0.00205 * (4.0f64 - 2.59).powf(5.5) + 0.207) / rt,
     );
     let hkb: f64 = 5.0 - 4.0;
     close(
-        "dil sep",
-        dil(5.0, rt).value,
+        "laminar_dissipation sep",
+        laminar_dissipation(5.0, rt).value,
         (-0.0016 * hkb * hkb / (1.0 + 0.02 * hkb * hkb) + 0.207) / rt,
     );
-    let hs = hsl(2.2, rt, 0.0).value;
+    let hs = laminar_energy_shape_factor(2.2, rt, 0.0).value;
     close(
-        "dilw",
-        dilw(2.2, rt).value,
+        "laminar_wake_dissipation",
+        laminar_wake_dissipation(2.2, rt).value,
         2.0 * 1.10 * (1.0 - 1.0 / 2.2f64).powi(2) / 2.2 / (hs * rt),
     );
     for hk in [2.2, 3.0, 4.5, 6.0] {
-        fd_check("cfl", [hk, rt, 0.1], |a| cfl(a[0], a[1], a[2]));
-        fd_check("dil", [hk, rt], |a| dil(a[0], a[1]));
-        fd_check("dilw", [hk, rt], |a| dilw(a[0], a[1]));
+        fd_check("laminar_skin_friction", [hk, rt, 0.1], |a| {
+            laminar_skin_friction(a[0], a[1], a[2])
+        });
+        fd_check("laminar_dissipation", [hk, rt], |a| {
+            laminar_dissipation(a[0], a[1])
+        });
+        fd_check("laminar_wake_dissipation", [hk, rt], |a| {
+            laminar_wake_dissipation(a[0], a[1])
+        });
     }
 }
 
@@ -144,24 +170,39 @@ fn laminar_skin_friction_and_dissipation() {
 const XFOIL_LN10: f64 = 2.3026;
 
 #[test]
-fn turbulent_skin_friction() {
+fn turbulent_skin_friction_fit() {
     for (hk, rt, msq) in [(1.4f64, 3000.0, 0.0), (1.8, 800.0, 0.3), (2.5, 20.0, 0.1)] {
         let fc = (1.0f64 + 0.2 * msq).sqrt();
         let grt = (rt / fc).ln().max(3.0);
         let cfo = 0.3 * (-1.33 * hk).exp() * (grt / XFOIL_LN10).powf(-1.74 - 0.31 * hk);
         let want = (cfo + 1.1e-4 * ((4.0 - hk / 0.875).tanh() - 1.0)) / fc;
-        close("cft", cft(hk, rt, msq).value, want);
-        fd_check("cft", [hk, rt, msq], |a| cft(a[0], a[1], a[2]));
+        close(
+            "turbulent_skin_friction",
+            turbulent_skin_friction(hk, rt, msq).value,
+            want,
+        );
+        fd_check("turbulent_skin_friction", [hk, rt, msq], |a| {
+            turbulent_skin_friction(a[0], a[1], a[2])
+        });
     }
     // flat-plate order of magnitude: Hk 1.4, Re_θ 3000 → Cf ≈ 0.0033
-    let cf = cft(1.4, 3000.0, 0.0).value;
-    assert!((0.0030..0.0036).contains(&cf), "cft = {cf}");
+    let cf = turbulent_skin_friction(1.4, 3000.0, 0.0).value;
+    assert!(
+        (0.0030..0.0036).contains(&cf),
+        "turbulent_skin_friction = {cf}"
+    );
 }
 
 #[test]
 fn density_shape_and_slip_velocity() {
-    close("hct", hct(1.6, 0.25).value, 0.25 * (0.064 / 0.8 + 0.251));
-    fd_check("hct", [1.6, 0.25], |a| hct(a[0], a[1]));
+    close(
+        "density_shape_factor",
+        density_shape_factor(1.6, 0.25).value,
+        0.25 * (0.064 / 0.8 + 0.251),
+    );
+    fd_check("density_shape_factor", [1.6, 0.25], |a| {
+        density_shape_factor(a[0], a[1])
+    });
     let gb = BlParams::default().equilibrium_locus_b;
     close(
         "us",
@@ -271,10 +312,16 @@ fn dampl_ref(hk: f64, th: f64, rt: f64) -> f64 {
 #[test]
 fn envelope_amplification_rate() {
     // below critical Re_θ: zero; Blasius Re_θcrit ≈ 200 (log10 ≈ 2.3)
-    assert_eq!(dampl(2.59, 1e-4, 100.0).value, 0.0);
-    assert!(dampl(2.59, 1e-4, 400.0).value > 0.0);
+    assert_eq!(amplification_rate(2.59, 1e-4, 100.0).value, 0.0);
+    assert!(amplification_rate(2.59, 1e-4, 400.0).value > 0.0);
     for (hk, th, rt) in [(2.59, 2e-4, 1000.0), (3.5, 3e-4, 300.0), (2.4, 1e-4, 195.0)] {
-        close("dampl", dampl(hk, th, rt).value, dampl_ref(hk, th, rt));
-        fd_check("dampl", [hk, th, rt], |a| dampl(a[0], a[1], a[2]));
+        close(
+            "amplification_rate",
+            amplification_rate(hk, th, rt).value,
+            dampl_ref(hk, th, rt),
+        );
+        fd_check("amplification_rate", [hk, th, rt], |a| {
+            amplification_rate(a[0], a[1], a[2])
+        });
     }
 }

@@ -18,8 +18,8 @@ const DGR: f64 = 0.08;
 /// m = −0.05 + 2.7/(Hk−1) − 5.5/(Hk−1)² + 3/(Hk−1)³ (1991 refit), and the ramp is the cubic
 /// 3r² − 2r³ over log10(Re_θ/Re_θcrit) ∈ [−DGR, DGR]. Zero below the ramp.
 /// Arguments: `(hk, theta, rt)`.
-pub fn dampl(hk: f64, theta: f64, rt: f64) -> Partials<3> {
-    let r = dampl_d(
+pub fn amplification_rate(hk: f64, theta: f64, rt: f64) -> Partials<3> {
+    let r = amplification_rate_d(
         Dual::<3>::variable(hk, 0),
         Dual::variable(theta, 1),
         Dual::variable(rt, 2),
@@ -30,7 +30,11 @@ pub fn dampl(hk: f64, theta: f64, rt: f64) -> Partials<3> {
     }
 }
 
-pub(crate) fn dampl_d<const N: usize>(hk: Dual<N>, theta: Dual<N>, rt: Dual<N>) -> Dual<N> {
+pub(crate) fn amplification_rate_d<const N: usize>(
+    hk: Dual<N>,
+    theta: Dual<N>,
+    rt: Dual<N>,
+) -> Dual<N> {
     let hmi = 1.0 / (hk - 1.0);
     let aa = hmi.powf(0.43) * 2.492;
     let bb = (hmi * 14.0 - 9.24).tanh();
@@ -55,8 +59,8 @@ pub(crate) fn dampl_d<const N: usize>(hk: Dual<N>, theta: Dual<N>, rt: Dual<N>) 
 /// Average amplification rate over an interval (XFOIL AXSET, second-order rms version):
 /// ā = √(½(a1² + a2²)) + 0.002/(θ1+θ2)·exp(−min(20(Ncrit − ½(N1+N2)), 20)) — the small
 /// extra term keeps dN/dξ > 0 near N = Ncrit. Inputs are the stations' rates a = dN/dξ
-/// ([`dampl_d`], kept with each station), θ and N as [`Dual`]s.
-pub(crate) fn axset_d<const N: usize>(
+/// ([`amplification_rate_d`], kept with each station), θ and N as [`Dual`]s.
+pub(crate) fn average_amplification_rate_d<const N: usize>(
     ax1: Dual<N>,
     t1: Dual<N>,
     a1: Dual<N>,

@@ -30,22 +30,22 @@ fn partials<const N: usize>(args: [f64; N], f: impl Fn(&[Dual<N>; N]) -> Dual<N>
 
 /// Kinematic shape parameter Hk(H, Me²) = (H − 0.29 Me²)/(1 + 0.113 Me²)
 /// (Whitfield's correlation; XFOIL HKIN). Arguments: `(h, msq)`.
-pub fn hkin(h: f64, msq: f64) -> Partials<2> {
-    partials([h, msq], |a| hkin_d(a[0], a[1]))
+pub fn kinematic_shape_factor(h: f64, msq: f64) -> Partials<2> {
+    partials([h, msq], |a| kinematic_shape_factor_d(a[0], a[1]))
 }
 
-pub(crate) fn hkin_d<const N: usize>(h: Dual<N>, msq: Dual<N>) -> Dual<N> {
+pub(crate) fn kinematic_shape_factor_d<const N: usize>(h: Dual<N>, msq: Dual<N>) -> Dual<N> {
     (h - msq * 0.29) / (msq * 0.113 + 1.0)
 }
 
 /// Laminar kinetic-energy shape parameter H*(Hk) from Falkner–Skan profiles
 /// (Drela & Giles 1987 eq. 17; XFOIL HSL). Arguments: `(hk, rt, msq)` (no Re_θ or Mach
 /// dependence, the partials w.r.t. them are zero).
-pub fn hsl(hk: f64, rt: f64, msq: f64) -> Partials<3> {
-    partials([hk, rt, msq], |a| hsl_d(a[0]))
+pub fn laminar_energy_shape_factor(hk: f64, rt: f64, msq: f64) -> Partials<3> {
+    partials([hk, rt, msq], |a| laminar_energy_shape_factor_d(a[0]))
 }
 
-pub(crate) fn hsl_d<const N: usize>(hk: Dual<N>) -> Dual<N> {
+pub(crate) fn laminar_energy_shape_factor_d<const N: usize>(hk: Dual<N>) -> Dual<N> {
     if hk.v < 4.35 {
         let tmp = hk - 4.35;
         let hp1 = hk + 1.0;
@@ -58,11 +58,17 @@ pub(crate) fn hsl_d<const N: usize>(hk: Dual<N>) -> Dual<N> {
 /// Turbulent kinetic-energy shape parameter H*(Hk, Re_θ, Me²) (Drela 1989 "arctan(y+) +
 /// Schlichting" profile fit, attached and separated branches, with Whitfield's
 /// compressibility correction; XFOIL HST). Arguments: `(hk, rt, msq)`.
-pub fn hst(hk: f64, rt: f64, msq: f64) -> Partials<3> {
-    partials([hk, rt, msq], |a| hst_d(a[0], a[1], a[2]))
+pub fn turbulent_energy_shape_factor(hk: f64, rt: f64, msq: f64) -> Partials<3> {
+    partials([hk, rt, msq], |a| {
+        turbulent_energy_shape_factor_d(a[0], a[1], a[2])
+    })
 }
 
-pub(crate) fn hst_d<const N: usize>(hk: Dual<N>, rt: Dual<N>, msq: Dual<N>) -> Dual<N> {
+pub(crate) fn turbulent_energy_shape_factor_d<const N: usize>(
+    hk: Dual<N>,
+    rt: Dual<N>,
+    msq: Dual<N>,
+) -> Dual<N> {
     const HSMIN: f64 = 1.5;
     const DHSINF: f64 = 0.015;
     // Re_θ-dependent break point H0 (limited for Re_θ < 400) and Re_θ floor of 200.
@@ -94,11 +100,11 @@ pub(crate) fn hst_d<const N: usize>(hk: Dual<N>, rt: Dual<N>, msq: Dual<N>) -> D
 
 /// Laminar skin friction Cf(Hk, Re_θ) from Falkner–Skan profiles (Drela & Giles 1987
 /// eq. 18; XFOIL CFL). Arguments: `(hk, rt, msq)` (no Mach dependence).
-pub fn cfl(hk: f64, rt: f64, msq: f64) -> Partials<3> {
-    partials([hk, rt, msq], |a| cfl_d(a[0], a[1]))
+pub fn laminar_skin_friction(hk: f64, rt: f64, msq: f64) -> Partials<3> {
+    partials([hk, rt, msq], |a| laminar_skin_friction_d(a[0], a[1]))
 }
 
-pub(crate) fn cfl_d<const N: usize>(hk: Dual<N>, rt: Dual<N>) -> Dual<N> {
+pub(crate) fn laminar_skin_friction_d<const N: usize>(hk: Dual<N>, rt: Dual<N>) -> Dual<N> {
     if hk.v < 5.5 {
         let tmp = (5.5 - hk).powi(3) / (hk + 1.0);
         (tmp * 0.0727 - 0.07) / rt
@@ -110,15 +116,21 @@ pub(crate) fn cfl_d<const N: usize>(hk: Dual<N>, rt: Dual<N>) -> Dual<N> {
 
 /// Turbulent skin friction Cf(Hk, Re_θ, Me²), Swafford/Coles form with the Whitfield
 /// compressibility factor Fc = √(1 + (γ−1)/2 Me²) (Drela 1989; XFOIL CFT, γ of air). Arguments: `(hk, rt, msq)`.
-pub fn cft(hk: f64, rt: f64, msq: f64) -> Partials<3> {
-    partials([hk, rt, msq], |a| cft_d(a[0], a[1], a[2]))
+pub fn turbulent_skin_friction(hk: f64, rt: f64, msq: f64) -> Partials<3> {
+    partials([hk, rt, msq], |a| {
+        turbulent_skin_friction_d(a[0], a[1], a[2])
+    })
 }
 
 /// ln 10 rounded as in XFOIL CFT (kept for fidelity to the reference implementation).
 #[allow(clippy::approx_constant)]
 const XFOIL_LN10: f64 = 2.3026;
 
-pub(crate) fn cft_d<const N: usize>(hk: Dual<N>, rt: Dual<N>, msq: Dual<N>) -> Dual<N> {
+pub(crate) fn turbulent_skin_friction_d<const N: usize>(
+    hk: Dual<N>,
+    rt: Dual<N>,
+    msq: Dual<N>,
+) -> Dual<N> {
     let fc = (msq * (0.5 * GAMMA_MINUS_ONE) + 1.0).sqrt();
     let grt = (rt / fc).ln().max_const(3.0);
     let gex = hk * (-0.31) - 1.74;
@@ -131,11 +143,11 @@ pub(crate) fn cft_d<const N: usize>(hk: Dual<N>, rt: Dual<N>, msq: Dual<N>) -> D
 
 /// Laminar dissipation function 2CD/H*(Hk, Re_θ) from Falkner–Skan profiles (Drela & Giles
 /// 1987 eq. 19; XFOIL DIL). Arguments: `(hk, rt)`.
-pub fn dil(hk: f64, rt: f64) -> Partials<2> {
-    partials([hk, rt], |a| dil_d(a[0], a[1]))
+pub fn laminar_dissipation(hk: f64, rt: f64) -> Partials<2> {
+    partials([hk, rt], |a| laminar_dissipation_d(a[0], a[1]))
 }
 
-pub(crate) fn dil_d<const N: usize>(hk: Dual<N>, rt: Dual<N>) -> Dual<N> {
+pub(crate) fn laminar_dissipation_d<const N: usize>(hk: Dual<N>, rt: Dual<N>) -> Dual<N> {
     if hk.v < 4.0 {
         ((4.0 - hk).powf(5.5) * 0.00205 + 0.207) / rt
     } else {
@@ -147,47 +159,48 @@ pub(crate) fn dil_d<const N: usize>(hk: Dual<N>, rt: Dual<N>) -> Dual<N> {
 
 /// Laminar wake dissipation function 2CD/H*(Hk, Re_θ) = 2·1.10(1−1/Hk)²/Hk/(H*·Re_θ),
 /// with the laminar H* (XFOIL DILW). Arguments: `(hk, rt)`.
-pub fn dilw(hk: f64, rt: f64) -> Partials<2> {
-    partials([hk, rt], |a| dilw_d(a[0], a[1]))
+pub fn laminar_wake_dissipation(hk: f64, rt: f64) -> Partials<2> {
+    partials([hk, rt], |a| laminar_wake_dissipation_d(a[0], a[1]))
 }
 
-pub(crate) fn dilw_d<const N: usize>(hk: Dual<N>, rt: Dual<N>) -> Dual<N> {
-    let hs = hsl_d(hk);
+pub(crate) fn laminar_wake_dissipation_d<const N: usize>(hk: Dual<N>, rt: Dual<N>) -> Dual<N> {
+    let hs = laminar_energy_shape_factor_d(hk);
     let rcd = (1.0 - 1.0 / hk).sq() * 1.10 / hk;
     rcd * 2.0 / (hs * rt)
 }
 
 /// Density-thickness shape parameter H** = Me²(0.064/(Hk − 0.8) + 0.251) (Whitfield;
 /// XFOIL HCT). Arguments: `(hk, msq)`.
-pub fn hct(hk: f64, msq: f64) -> Partials<2> {
-    partials([hk, msq], |a| hct_d(a[0], a[1]))
+pub fn density_shape_factor(hk: f64, msq: f64) -> Partials<2> {
+    partials([hk, msq], |a| density_shape_factor_d(a[0], a[1]))
 }
 
-pub(crate) fn hct_d<const N: usize>(hk: Dual<N>, msq: Dual<N>) -> Dual<N> {
+pub(crate) fn density_shape_factor_d<const N: usize>(hk: Dual<N>, msq: Dual<N>) -> Dual<N> {
     msq * (0.064 / (hk - 0.8) + 0.251)
 }
 
 /// Normalised wall slip velocity Us = H*/2·(1 − (Hk − 1)/(B·H)) (Drela 1989 eq. for the
-/// outer-layer velocity; XFOIL BLVAR US2). Arguments: `(hs, hk, h)`; `gbcon` is B.
+/// outer-layer velocity; XFOIL BLVAR US2). Arguments: `(hs, hk, h)`; `locus_b` is B.
 /// No clamp is applied here (the station applies the regime's limits).
-pub fn slip_velocity(hs: f64, hk: f64, h: f64, gbcon: f64) -> Partials<3> {
-    partials([hs, hk, h], |a| slip_velocity_d(a[0], a[1], a[2], gbcon))
+pub fn slip_velocity(hs: f64, hk: f64, h: f64, locus_b: f64) -> Partials<3> {
+    partials([hs, hk, h], |a| slip_velocity_d(a[0], a[1], a[2], locus_b))
 }
 
 pub(crate) fn slip_velocity_d<const N: usize>(
     hs: Dual<N>,
     hk: Dual<N>,
     h: Dual<N>,
-    gbcon: f64,
+    locus_b: f64,
 ) -> Dual<N> {
-    hs * 0.5 * (1.0 - (hk - 1.0) / (h * gbcon))
+    hs * 0.5 * (1.0 - (hk - 1.0) / (h * locus_b))
 }
 
 /// Square root of the equilibrium shear-stress coefficient,
 /// √Cτ_eq = √(CTCON·H*·(Hk−1)·Hkc²/((1−Us)·H·Hk²)), with Hkc = Hk − 1 − GCCON/Re_θ (≥ 0.01)
 /// on the turbulent wall and Hkc = Hk − 1 otherwise (Drela 1989 G–β equilibrium locus, XFOIL BLVAR
 /// CQ2 "NEW 12 Oct 94"). `low_re_offset` selects the wall form (XFOIL applies it on
-/// turbulent wall stations only). Arguments: `(hs, us, hk, h, rt)`.
+/// turbulent wall stations only); `ctau_constant` is CTCON, `low_re_c` GCCON
+/// ([`super::BlParams`]). Arguments: `(hs, us, hk, h, rt)`.
 #[allow(clippy::too_many_arguments)]
 pub fn ctau_eq_sqrt(
     hs: f64,
@@ -196,11 +209,20 @@ pub fn ctau_eq_sqrt(
     h: f64,
     rt: f64,
     low_re_offset: bool,
-    ctcon: f64,
-    gccon: f64,
+    ctau_constant: f64,
+    low_re_c: f64,
 ) -> Partials<5> {
     partials([hs, us, hk, h, rt], |a| {
-        ctau_eq_sqrt_d(a[0], a[1], a[2], a[3], a[4], low_re_offset, ctcon, gccon)
+        ctau_eq_sqrt_d(
+            a[0],
+            a[1],
+            a[2],
+            a[3],
+            a[4],
+            low_re_offset,
+            ctau_constant,
+            low_re_c,
+        )
     })
 }
 
@@ -212,17 +234,17 @@ pub(crate) fn ctau_eq_sqrt_d<const N: usize>(
     h: Dual<N>,
     rt: Dual<N>,
     low_re_offset: bool,
-    ctcon: f64,
-    gccon: f64,
+    ctau_constant: f64,
+    low_re_c: f64,
 ) -> Dual<N> {
     let hkc = if low_re_offset {
-        (hk - 1.0 - gccon / rt).max_const(0.01)
+        (hk - 1.0 - low_re_c / rt).max_const(0.01)
     } else {
         hk - 1.0
     };
     let hkb = hk - 1.0;
     let usb = 1.0 - us;
-    (hs * hkb * hkc.sq() * ctcon / (usb * h * hk.sq())).sqrt()
+    (hs * hkb * hkc.sq() * ctau_constant / (usb * h * hk.sq())).sqrt()
 }
 
 /// Turbulent dissipation function 2CD/H* on the wall (XFOIL 6.99 BLVAR, ITYP = 2):
@@ -279,18 +301,18 @@ pub(crate) fn dissipation_outer_d<const N: usize>(
 }
 
 /// Initial shear stress at transition as a fraction of equilibrium,
-/// Cτ_tr/Cτ_eq factor on √Cτ: CTRCON·exp(−CTRCEX/(Hk − 1)) (XFOIL TRDIF CTR).
+/// Cτ_tr/Cτ_eq factor on √Cτ: factor·exp(−exponent/(Hk − 1)) (XFOIL TRDIF CTR; CTRCON, CTRCEX).
 /// Arguments: `(hk,)`.
-pub fn transition_ctau_factor(hk: f64, ctrcon: f64, ctrcex: f64) -> Partials<1> {
-    partials([hk], |a| transition_ctau_factor_d(a[0], ctrcon, ctrcex))
+pub fn transition_ctau_factor(hk: f64, factor: f64, exponent: f64) -> Partials<1> {
+    partials([hk], |a| transition_ctau_factor_d(a[0], factor, exponent))
 }
 
 pub(crate) fn transition_ctau_factor_d<const N: usize>(
     hk: Dual<N>,
-    ctrcon: f64,
-    ctrcex: f64,
+    factor: f64,
+    exponent: f64,
 ) -> Dual<N> {
-    (-ctrcex / (hk - 1.0)).exp() * ctrcon
+    (-exponent / (hk - 1.0)).exp() * factor
 }
 
 /// Boundary-layer thickness δ from Green's simplified correlation,

@@ -3,8 +3,8 @@
 //! amplification or shear-lag, von Kármán momentum, and kinetic-energy shape-parameter
 //! equations, log-differenced between stations 1 and 2 with Hk-triggered upwinding.
 
-use super::amplification::axset_d;
-use super::closures::{cfl_d, cft_d};
+use super::amplification::average_amplification_rate_d;
+use super::closures::{laminar_skin_friction_d, turbulent_skin_friction_d};
 use super::params::{BlParams, FlowConstants, Regime};
 use super::station::Station;
 use super::{Dual, NVARS};
@@ -105,10 +105,10 @@ fn midpoint_cf<const N: usize>(kind: DiffKind, s1: &Station<N>, s2: &Station<N>)
     let ma = (s1.msq + s2.msq) * 0.5;
     match kind {
         DiffKind::Wake => Dual::constant(0.0),
-        DiffKind::Laminar | DiffKind::Similarity => cfl_d(hka, rta),
+        DiffKind::Laminar | DiffKind::Similarity => laminar_skin_friction_d(hka, rta),
         DiffKind::Turbulent => {
-            let ct = cft_d(hka, rta, ma);
-            let cl = cfl_d(hka, rta);
+            let ct = turbulent_skin_friction_d(hka, rta, ma);
+            let cl = laminar_skin_friction_d(hka, rta);
             if cl.v > ct.v {
                 cl
             } else {
@@ -170,7 +170,7 @@ pub(crate) fn bldif<const N: usize>(
         DiffKind::Similarity => s2.s,
         // dN/dξ = average envelope rate (XFOIL AXSET, Drela & Giles 1987 eq. 20)
         DiffKind::Laminar => {
-            let ax = axset_d(s1.ax, s1.t, s1.s, s2.ax, s2.t, s2.s, fc.ncrit);
+            let ax = average_amplification_rate_d(s1.ax, s1.t, s1.s, s2.ax, s2.t, s2.s, fc.ncrit);
             s2.s - s1.s - ax * (s2.x - s1.x)
         }
         // shear-lag (Drela 1989 eq. for d ln Cτ/dξ; Green's lag-entrainment form)

@@ -2,10 +2,12 @@
 //! them (XFOIL xblsys.f BLPRV → BLKIN → BLVAR), including the Karman–Tsien edge-speed
 //! correction, the edge Mach number and the Sutherland viscosity.
 
-use super::amplification::dampl_d;
+use super::amplification::amplification_rate_d;
 use super::closures::{
-    bl_thickness_d, cfl_d, cft_d, ctau_eq_sqrt_d, dil_d, dilw_d, dissipation_outer_d,
-    dissipation_turbulent_d, hct_d, hkin_d, hsl_d, hst_d, slip_velocity_d,
+    bl_thickness_d, ctau_eq_sqrt_d, density_shape_factor_d, dissipation_outer_d,
+    dissipation_turbulent_d, kinematic_shape_factor_d, laminar_dissipation_d,
+    laminar_energy_shape_factor_d, laminar_skin_friction_d, laminar_wake_dissipation_d,
+    slip_velocity_d, turbulent_energy_shape_factor_d, turbulent_skin_friction_d,
 };
 use super::params::{BlParams, FlowConstants, Regime};
 use super::BlError;
@@ -29,29 +31,45 @@ pub struct StationVars {
     pub dw: f64,
 }
 
-/// Secondary variables of a station as derivative numbers (XFOIL COM2 block).
+/// Secondary variables of a station as derivative numbers (XFOIL COM2 block; the names are the
+/// symbols of the equations, XFOIL's without the station suffix).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Station<const N: usize = NVARS> {
+    /// ξ (XFOIL X2).
     pub x: Dual<N>,
-    /// Compressible edge speed.
+    /// Compressible edge speed (XFOIL U2).
     pub u: Dual<N>,
+    /// Momentum thickness θ (XFOIL T2).
     pub t: Dual<N>,
-    /// δ* − wake gap.
+    /// δ* − wake gap (XFOIL D2).
     pub d: Dual<N>,
+    /// N or √Cτ (XFOIL S2).
     pub s: Dual<N>,
+    /// Wake gap (XFOIL DW2).
     pub dw: f64,
+    /// Edge Mach number squared (XFOIL M2).
     pub msq: Dual<N>,
-    /// Edge density ρe/ρ∞.
+    /// Edge density ρe/ρ∞ (XFOIL R2).
     pub rho: Dual<N>,
+    /// Shape parameter H = δ*/θ (XFOIL H2).
     pub h: Dual<N>,
+    /// Kinematic shape parameter Hk, clamped (XFOIL HK2).
     pub hk: Dual<N>,
+    /// Momentum-thickness Reynolds number Re_θ (XFOIL RT2).
     pub rt: Dual<N>,
+    /// Density shape parameter H** (XFOIL HC2).
     pub hc: Dual<N>,
+    /// Kinetic-energy shape parameter H* (XFOIL HS2).
     pub hs: Dual<N>,
+    /// Normalised slip velocity Us (XFOIL US2).
     pub us: Dual<N>,
+    /// Equilibrium √Cτ (XFOIL CQ2).
     pub cq: Dual<N>,
+    /// Skin-friction coefficient Cf (XFOIL CF2).
     pub cf: Dual<N>,
+    /// Dissipation 2CD/H* (XFOIL DI2).
     pub di: Dual<N>,
+    /// Boundary-layer thickness δ (XFOIL DE2).
     pub de: Dual<N>,
     /// Envelope amplification rate dN/dξ (laminar stations; zero in the other regimes),
     /// evaluated once with the station and shared by every interval and transition check
@@ -234,7 +252,7 @@ impl<const N: usize> Station<N> {
         let hvrat = fc.sutherland_ratio;
         let visc = herat * herat.sqrt() * (1.0 + hvrat) / (herat + hvrat) / fc.stagnation_reynolds;
         let h = d / t;
-        let hk_raw = hkin_d(h, msq);
+        let hk_raw = kinematic_shape_factor_d(h, msq);
         let rt = rho * u * t / visc;
 
         // BLVAR: clamp Hk, then H**, H*, Us, √Cτ_eq, Cf, 2CD/H*, δ.
@@ -242,10 +260,10 @@ impl<const N: usize> Station<N> {
             Regime::Wake => hk_raw.max_const(p.hk_min_wake),
             _ => hk_raw.max_const(p.hk_min_wall),
         };
-        let hc = hct_d(hk, msq);
+        let hc = density_shape_factor_d(hk, msq);
         let hs = match regime {
-            Regime::Laminar => hsl_d(hk),
-            _ => hst_d(hk, rt, msq),
+            Regime::Laminar => laminar_energy_shape_factor_d(hk),
+            _ => turbulent_energy_shape_factor_d(hk, rt, msq),
         };
         let us_raw = slip_velocity_d(hs, hk, h, p.equilibrium_locus_b);
         let us = match regime {
@@ -265,18 +283,21 @@ impl<const N: usize> Station<N> {
         );
         // Cf and 2CD/H* per regime; the turbulent Cf enters both.
         let (cf, di) = match regime {
-            Regime::Laminar => (cfl_d(hk, rt), dil_d(hk, rt)),
+            Regime::Laminar => (
+                laminar_skin_friction_d(hk, rt),
+                laminar_dissipation_d(hk, rt),
+            ),
             Regime::Turbulent => {
-                let ct = cft_d(hk, rt, msq);
-                let cl = cfl_d(hk, rt);
+                let ct = turbulent_skin_friction_d(hk, rt, msq);
+                let cl = laminar_skin_friction_d(hk, rt);
                 let cf = if cl.v > ct.v { cl } else { ct };
                 let dt = dissipation_turbulent_d(hs, us, ct, s, hk, rt);
-                let dl = dil_d(hk, rt);
+                let dl = laminar_dissipation_d(hk, rt);
                 (cf, if dl.v > dt.v { dl } else { dt })
             }
             Regime::Wake => {
                 let dt = dissipation_outer_d(hs, us, s, rt);
-                let dl = dilw_d(hk, rt);
+                let dl = laminar_wake_dissipation_d(hk, rt);
                 // two wake halves
                 (
                     Dual::constant(0.0),
@@ -286,7 +307,7 @@ impl<const N: usize> Station<N> {
         };
         let de = bl_thickness_d(hk, t, d);
         let ax = match regime {
-            Regime::Laminar => dampl_d(hk, t, rt),
+            Regime::Laminar => amplification_rate_d(hk, t, rt),
             _ => Dual::constant(0.0),
         };
         Self {

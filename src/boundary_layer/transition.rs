@@ -8,7 +8,7 @@
 //! Ncrit; it is solved for N2 by Newton iteration. Forced transition at ξ_f wins when it lies
 //! in the interval upstream of the free transition point.
 
-use super::amplification::axset_d;
+use super::amplification::average_amplification_rate_d;
 use super::closures::transition_ctau_factor_d;
 use super::equations::{bldif, DiffKind, IntervalEquations};
 use super::params::Regime;
@@ -136,7 +136,7 @@ impl BlModel {
             &self.flow,
             &self.params,
         );
-        let ax = axset_d(s1.ax, s1.t, s1.s, st.ax, st.t, amplt, ncrit);
+        let ax = average_amplification_rate_d(s1.ax, s1.t, s1.s, st.ax, st.t, amplt, ncrit);
         let res = a2 - s1.s - ax * (p2.x - s1.x);
         (res, xt, ax)
     }
@@ -209,7 +209,7 @@ impl BlModel {
             &self.flow,
             &self.params,
         );
-        let ax0 = axset_d(s1.ax, s1.t, s1.s, s2l.ax, s2l.t, s1.s, ncrit);
+        let ax0 = average_amplification_rate_d(s1.ax, s1.t, s1.s, s2l.ax, s2l.t, s1.s, ncrit);
         let mut a2 = v1.s + ax0.v * dx;
         let mut converged = false;
         for _ in 0..30 {
