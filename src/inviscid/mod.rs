@@ -12,8 +12,8 @@
 //! Inside (private): `contour` (the contour prepared for the panels: SCALC, SEGSPL, LEFIND,
 //! TECALC), `influence` (PSILIN/PSWLIN kernels), `system` (matrix, Kutta/sharp-TE rows, LU,
 //! unit solutions), `wake` (XYWAKE, QWCALC), `source_influence` (QDCALC), `forces` (CLCALC).
-//! The viscous coupling reaches the wake and the source influence through
-//! [`crate::viscous::PanelModel`].
+//! The viscous coupling (a higher layer) uses the wake and the source influence, which are
+//! crate-internal.
 //!
 //! Typical use:
 //! ```

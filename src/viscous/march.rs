@@ -28,9 +28,8 @@ pub struct MarchParams {
     /// Convergence threshold on the largest relative change of the local iterations of the
     /// mixed-mode re-march before each global Newton iteration (XFOIL MRCHDU DEPS = 5e-6).
     /// The re-march only prepares the state for the global Newton step, whose own tolerance
-    /// decides the converged result, so converged points do not depend on it (checked on the
-    /// default grid: unchanged to < 1e-5 relative except where a stalled polar has two
-    /// solutions); 1e-4 instead of 5e-6 cuts the default-grid time by 15–40 %.
+    /// decides the converged result, so converged points do not depend on it beyond that
+    /// tolerance; the looser default is one of the speed levers of docs/performance.md.
     pub mixed_mode_tolerance: f64,
     /// Largest relative correction of the upstream station carried over as the start of a
     /// station's local iterations in the mixed-mode re-march (MRCHDU); larger ones are clipped
