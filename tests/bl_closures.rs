@@ -31,6 +31,18 @@ fn fd_check<const N: usize>(name: &str, x: [f64; N], f: impl Fn([f64; N]) -> Par
     }
 }
 
+/// The closure's value at `x` is `want` (relative 1e-12) and its partials there match central
+/// differences.
+fn check_closure<const N: usize>(
+    name: &str,
+    x: [f64; N],
+    f: impl Fn([f64; N]) -> Partials<N>,
+    want: f64,
+) {
+    close(name, f(x).value, want);
+    fd_check(name, x, f);
+}
+
 fn close(name: &str, got: f64, want: f64) {
     assert!(
         (got - want).abs() <= 1e-12 * want.abs().max(1e-12),
@@ -42,14 +54,12 @@ fn close(name: &str, got: f64, want: f64) {
 fn kinematic_shape_parameter() {
     // Whitfield: Hk = (H − 0.29 M²)/(1 + 0.113 M²)
     let (h, m2) = (2.0, 0.3);
-    close(
+    check_closure(
         "kinematic_shape_factor",
-        kinematic_shape_factor(h, m2).value,
+        [h, m2],
+        |a| kinematic_shape_factor(a[0], a[1]),
         (2.0 - 0.087) / 1.0339,
     );
-    fd_check("kinematic_shape_factor", [h, m2], |a| {
-        kinematic_shape_factor(a[0], a[1])
-    });
 }
 
 #[test]
@@ -107,14 +117,12 @@ fn turbulent_hstar_all_branches() {
         (4.5, 300.0, 0.3),
         (5.0, 100.0, 0.0),
     ] {
-        close(
+        check_closure(
             "turbulent_energy_shape_factor",
-            turbulent_energy_shape_factor(hk, rt, msq).value,
+            [hk, rt, msq],
+            |a| turbulent_energy_shape_factor(a[0], a[1], a[2]),
             hst_ref(hk, rt, msq),
         );
-        fd_check("turbulent_energy_shape_factor", [hk, rt, msq], |a| {
-            turbulent_energy_shape_factor(a[0], a[1], a[2])
-        });
     }
 }
 
@@ -176,14 +184,12 @@ fn turbulent_skin_friction_fit() {
         let grt = (rt / fc).ln().max(3.0);
         let cfo = 0.3 * (-1.33 * hk).exp() * (grt / XFOIL_LN10).powf(-1.74 - 0.31 * hk);
         let want = (cfo + 1.1e-4 * ((4.0 - hk / 0.875).tanh() - 1.0)) / fc;
-        close(
+        check_closure(
             "turbulent_skin_friction",
-            turbulent_skin_friction(hk, rt, msq).value,
+            [hk, rt, msq],
+            |a| turbulent_skin_friction(a[0], a[1], a[2]),
             want,
         );
-        fd_check("turbulent_skin_friction", [hk, rt, msq], |a| {
-            turbulent_skin_friction(a[0], a[1], a[2])
-        });
     }
     // flat-plate order of magnitude: Hk 1.4, Re_θ 3000 → Cf ≈ 0.0033
     let cf = turbulent_skin_friction(1.4, 3000.0, 0.0).value;
@@ -195,23 +201,19 @@ fn turbulent_skin_friction_fit() {
 
 #[test]
 fn density_shape_and_slip_velocity() {
-    close(
+    check_closure(
         "density_shape_factor",
-        density_shape_factor(1.6, 0.25).value,
+        [1.6, 0.25],
+        |a| density_shape_factor(a[0], a[1]),
         0.25 * (0.064 / 0.8 + 0.251),
     );
-    fd_check("density_shape_factor", [1.6, 0.25], |a| {
-        density_shape_factor(a[0], a[1])
-    });
     let gb = BlParams::default().equilibrium_locus_b;
-    close(
+    check_closure(
         "us",
-        slip_velocity(1.75, 1.5, 1.55, gb).value,
+        [1.75, 1.5, 1.55],
+        |a| slip_velocity(a[0], a[1], a[2], gb),
         0.5 * 1.75 * (1.0 - 0.5 / (0.75 * 1.55)),
     );
-    fd_check("us", [1.75, 1.5, 1.55], |a| {
-        slip_velocity(a[0], a[1], a[2], gb)
-    });
 }
 
 #[test]
@@ -315,13 +317,11 @@ fn envelope_amplification_rate() {
     assert_eq!(amplification_rate(2.59, 1e-4, 100.0).value, 0.0);
     assert!(amplification_rate(2.59, 1e-4, 400.0).value > 0.0);
     for (hk, th, rt) in [(2.59, 2e-4, 1000.0), (3.5, 3e-4, 300.0), (2.4, 1e-4, 195.0)] {
-        close(
+        check_closure(
             "amplification_rate",
-            amplification_rate(hk, th, rt).value,
+            [hk, th, rt],
+            |a| amplification_rate(a[0], a[1], a[2]),
             dampl_ref(hk, th, rt),
         );
-        fd_check("amplification_rate", [hk, th, rt], |a| {
-            amplification_rate(a[0], a[1], a[2])
-        });
     }
 }

@@ -84,6 +84,30 @@ pub struct Probe {
     pub ny: f64,
 }
 
+impl Probe {
+    /// Airfoil node `i` of `g`, with its outward normal.
+    pub fn airfoil_node(g: &PanelGeometry, i: usize) -> Self {
+        Self {
+            kind: FieldPoint::Airfoil(i),
+            x: g.x[i],
+            y: g.y[i],
+            nx: g.nx[i],
+            ny: g.ny[i],
+        }
+    }
+
+    /// Wake node `i` at (`x`, `y`) with the normal (`nx`, `ny`).
+    pub fn wake_node(i: usize, (x, y): (f64, f64), (nx, ny): (f64, f64)) -> Self {
+        Self {
+            kind: FieldPoint::Wake(i),
+            x,
+            y,
+            nx,
+            ny,
+        }
+    }
+}
+
 impl PanelFrame {
     /// Builds the frame of panel (xa,ya)→(xb,yb). `on_line` is true when the field point lies
     /// on the same panel line family (SGN = 1), `self_a`/`self_b` when it is that end node.

@@ -21,7 +21,7 @@
 use faer::linalg::matmul::matmul;
 use faer::{Accum, Mat, Par};
 
-use super::influence::{airfoil_influence, wake_source_influence, FieldPoint, Influence, Probe};
+use super::influence::{airfoil_influence, wake_source_influence, Influence, Probe};
 use super::system::PanelSystem;
 use super::wake::Wake;
 use crate::numerics::simd::reset_simd_state;
@@ -50,13 +50,7 @@ impl SourceInfluence {
         let mut qn_w = vec![0.0; nw];
         let last_row = if g.te.sharp { n - 1 } else { n };
         for i in 0..last_row {
-            let probe = Probe {
-                kind: FieldPoint::Airfoil(i),
-                x: g.x[i],
-                y: g.y[i],
-                nx: g.nx[i],
-                ny: g.ny[i],
-            };
+            let probe = Probe::airfoil_node(g, i);
             wake_source_influence(
                 &wake.x,
                 &wake.y,
@@ -73,13 +67,7 @@ impl SourceInfluence {
         let mut c = Mat::<f64>::zeros(nw, n);
         let mut inf = Influence::new(n);
         for iw in 1..nw {
-            let probe = Probe {
-                kind: FieldPoint::Wake(iw),
-                x: wake.x[iw],
-                y: wake.y[iw],
-                nx: wake.nx[iw],
-                ny: wake.ny[iw],
-            };
+            let probe = wake.probe(iw);
             airfoil_influence(g, &probe, true, &mut inf);
             wake_source_influence(
                 &wake.x,
@@ -170,13 +158,7 @@ pub(crate) mod direct {
         let mut extra = vec![0.0; n];
         let last_row = if g.te.sharp { n - 1 } else { n };
         for (i, e) in extra.iter_mut().enumerate().take(last_row) {
-            let probe = Probe {
-                kind: FieldPoint::Airfoil(i),
-                x: g.x[i],
-                y: g.y[i],
-                nx: g.nx[i],
-                ny: g.ny[i],
-            };
+            let probe = Probe::airfoil_node(g, i);
             *e = wake_source_value(&wake.x, &wake.y, &wake.apanel, &probe, sig_w).0;
         }
         let gamma = system.gamma_with_sources(alpha_deg, sig_a, &extra)?;
@@ -185,13 +167,7 @@ pub(crate) mod direct {
         q.push(gamma[n - 1]);
         let mut inf = Influence::new(n);
         for iw in 1..nw {
-            let probe = Probe {
-                kind: FieldPoint::Wake(iw),
-                x: wake.x[iw],
-                y: wake.y[iw],
-                nx: wake.nx[iw],
-                ny: wake.ny[iw],
-            };
+            let probe = wake.probe(iw);
             airfoil_influence(g, &probe, false, &mut inf);
             let q_vortex = dot(&inf.qn_gamma, &gamma);
             let q_free = ca * wake.ny[iw] - sa * wake.nx[iw];

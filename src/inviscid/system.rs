@@ -95,13 +95,7 @@ impl PanelSystem {
         let mut rhs = Mat::<f64>::zeros(n + 1, 2);
         let mut inf = Influence::new(n);
         for i in 0..n {
-            let probe = Probe {
-                kind: FieldPoint::Airfoil(i),
-                x: geom.x[i],
-                y: geom.y[i],
-                nx: geom.nx[i],
-                ny: geom.ny[i],
-            };
+            let probe = Probe::airfoil_node(&geom, i);
             airfoil_influence(&geom, &probe, true, &mut inf);
             for j in 0..n {
                 a[(i, j)] = inf.psi_gamma[j];
@@ -340,13 +334,7 @@ impl PanelSystem {
         reset_simd_state();
         let mut rhs = Mat::<f64>::zeros(n + 1, 1);
         for i in 0..n {
-            let probe = Probe {
-                kind: FieldPoint::Airfoil(i),
-                x: g.x[i],
-                y: g.y[i],
-                nx: g.nx[i],
-                ny: g.ny[i],
-            };
+            let probe = Probe::airfoil_node(g, i);
             let (psi_m, _) = super::influence::direct::airfoil_source_value(g, &probe, m_airfoil);
             rhs[(i, 0)] = -(ca * g.y[i] - sa * g.x[i]) - psi_m - extra_psi[i];
         }

@@ -3,7 +3,7 @@
 //! xutils.f SETEXP), and the inviscid wake speeds of the unit solutions (XFOIL QWCALC).
 
 use super::error::InviscidError;
-use super::influence::{airfoil_vortex_gradient, FieldPoint, Probe};
+use super::influence::{airfoil_vortex_gradient, Probe};
 use super::system::PanelSystem;
 use crate::numerics::dense::dot;
 use crate::numerics::simd::reset_simd_state;
@@ -122,13 +122,7 @@ impl Wake {
                 x[i] = x[i - 1] - ds * ny[i];
                 y[i] = y[i - 1] + ds * nx[i];
             }
-            let probe = Probe {
-                kind: FieldPoint::Wake(i),
-                x: x[i],
-                y: y[i],
-                nx: nx[i],
-                ny: ny[i],
-            };
+            let probe = Probe::wake_node(i, (x[i], y[i]), (nx[i], ny[i]));
             airfoil_vortex_gradient(g, &probe, &mut gx, &mut gy);
             if i > 0 {
                 for (k, q) in qinv_unit.iter_mut().enumerate() {
@@ -160,6 +154,11 @@ impl Wake {
             apanel,
             qinv_unit,
         })
+    }
+
+    /// Wake node `i` as a field point of the influence routines.
+    pub fn probe(&self, i: usize) -> Probe {
+        Probe::wake_node(i, (self.x[i], self.y[i]), (self.nx[i], self.ny[i]))
     }
 
     /// Number of wake nodes.

@@ -85,18 +85,14 @@ pub(crate) fn dot4(a: &[f64], b: &[f64]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::numerics::test_random::Lcg;
 
     /// Bit for bit the strict left-to-right sum, for row counts below, at and between multiples
     /// of the block size, with values whose products and sums round (and signed zeros).
     #[test]
     fn mat_vec_is_bit_identical_to_plain_sums() {
-        let mut seed = 7u64;
-        let mut next = || {
-            seed = seed
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut random = Lcg::new(7);
+        let mut next = || random.unit() - 0.5;
         for (rows, n) in [(1, 1), (7, 5), (8, 13), (17, 31), (183, 183)] {
             let mut a: Vec<f64> = (0..rows * n).map(|_| next() * 1e3).collect();
             let v: Vec<f64> = (0..n).map(|_| next() / 7.0).collect();

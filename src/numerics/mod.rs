@@ -11,3 +11,5 @@ pub(crate) mod dense;
 pub(crate) mod dual;
 pub(crate) mod simd;
 pub(crate) mod small_dense;
+#[cfg(test)]
+pub(crate) mod test_random;

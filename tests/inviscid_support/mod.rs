@@ -12,19 +12,3 @@ pub fn xfoil_nodes(name: &str) -> Airfoil {
     let path = format!("{DATA}/{name}_xfoil_paneled.dat");
     polargen::geometry::read_airfoil_file(std::path::Path::new(&path)).unwrap()
 }
-
-/// Reads the wake rows (x, y) of an XFOIL `DUMP` file: the rows with at most 9 columns
-/// (airfoil rows carry 12).
-pub fn xfoil_dump_wake(file: &str) -> Vec<(f64, f64)> {
-    let text = std::fs::read_to_string(format!("{DATA}/{file}")).unwrap();
-    text.lines()
-        .filter(|l| !l.starts_with('#'))
-        .map(|l| {
-            l.split_whitespace()
-                .map(|t| t.parse::<f64>().unwrap())
-                .collect::<Vec<_>>()
-        })
-        .filter(|v| v.len() <= 9)
-        .map(|v| (v[1], v[2]))
-        .collect()
-}

@@ -6,18 +6,12 @@ use crate::inviscid::source_influence::direct::speeds_with_sources;
 use crate::inviscid::source_influence::SourceInfluence;
 use crate::inviscid::wake::Wake;
 use crate::inviscid::PanelSystem;
+use crate::numerics::test_random::Lcg;
 
 /// Deterministic pseudo-random numbers in [−1, 1) (64-bit LCG, Knuth MMIX constants).
 fn pseudo_random(n: usize, seed: u64) -> Vec<f64> {
-    let mut state = seed;
-    (0..n)
-        .map(|_| {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((state >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
-        })
-        .collect()
+    let mut random = Lcg::new(seed);
+    (0..n).map(|_| random.symmetric()).collect()
 }
 
 /// Inviscid speeds at airfoil + wake nodes.

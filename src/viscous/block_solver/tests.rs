@@ -5,32 +5,23 @@ use faer::prelude::*;
 use faer::Mat;
 
 use super::*;
+use crate::numerics::test_random::Lcg;
 
-/// Small deterministic generator (64-bit LCG) so the test needs no extra crate.
-struct Lcg(u64);
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
-    }
-    fn block(&mut self, diag: f64) -> [[f64; 3]; 3] {
-        let mut b = [[0.0; 3]; 3];
-        for (r, row) in b.iter_mut().enumerate() {
-            for (c, v) in row.iter_mut().enumerate() {
-                *v = self.next() + if r == c { diag } else { 0.0 };
-            }
+/// A random 3×3 block with `diag` added on the diagonal.
+fn random_block(g: &mut Lcg, diag: f64) -> [[f64; 3]; 3] {
+    let mut b = [[0.0; 3]; 3];
+    for (r, row) in b.iter_mut().enumerate() {
+        for (c, v) in row.iter_mut().enumerate() {
+            *v = g.symmetric() + if r == c { diag } else { 0.0 };
         }
-        b
     }
+    b
 }
 
 /// A random mass influence matrix G (n × n row-major) with entries of size 0.3/n.
 fn random_influence(n: usize, seed: u64) -> Vec<f64> {
-    let mut g = Lcg(seed ^ 0x9e37_79b9);
-    (0..n * n).map(|_| 0.3 * g.next() / n as f64).collect()
+    let mut g = Lcg::new(seed ^ 0x9e37_79b9);
+    (0..n * n).map(|_| 0.3 * g.symmetric() / n as f64).collect()
 }
 
 /// Builds a system with XFOIL's topology: upper chain 0..nu, lower chain nu..nu+nl, wake chain
@@ -38,26 +29,26 @@ fn random_influence(n: usize, seed: u64) -> Vec<f64> {
 /// rows combine the rows of G of the station and its upstream station(s), as the assembly does.
 fn random_system(nu: usize, nl: usize, nw: usize, seed: u64, influence: &[f64]) -> BlockSystem<'_> {
     let n = nu + nl + nw;
-    let mut g = Lcg(seed);
+    let mut g = Lcg::new(seed);
     let mut sys = BlockSystem::zeros(n, influence);
     for k in 0..n {
-        sys.diag[k] = g.block(4.0);
+        sys.diag[k] = random_block(&mut g, 4.0);
         let first_lower = k == nu;
         if k != 0 && !first_lower {
-            sys.upstream[k] = Some((k - 1, g.block(0.0)));
+            sys.upstream[k] = Some((k - 1, random_block(&mut g, 0.0)));
         }
         if k == nu + nl {
-            sys.upstream2[k] = Some((nu - 1, g.block(0.0)));
+            sys.upstream2[k] = Some((nu - 1, random_block(&mut g, 0.0)));
         }
         let mut coupled = vec![k];
         coupled.extend(sys.upstream[k].map(|(p, _)| p));
         coupled.extend(sys.upstream2[k].map(|(q, _)| q));
         for r in 0..3 {
             for &j in &coupled {
-                sys.mass_terms[3 * k + r].add(j, g.next());
+                sys.mass_terms[3 * k + r].add(j, g.symmetric());
             }
         }
-        sys.rhs[k] = [g.next(), g.next(), g.next()];
+        sys.rhs[k] = [g.symmetric(), g.symmetric(), g.symmetric()];
     }
     sys
 }
@@ -112,13 +103,8 @@ fn mass_terms_merge_rows_and_expand_to_v() {
 #[test]
 fn dispatched_forward_substitution_is_bit_identical() {
     let n = 37;
-    let mut seed = 12345_u64;
-    let mut next = move || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    };
+    let mut random = Lcg::new(12345);
+    let mut next = move || random.unit() - 0.5;
     let g: Vec<f64> = (0..n * n).map(|_| next() / n as f64).collect();
     let mut sys = BlockSystem::zeros(n, &g);
     for k in 0..n {
