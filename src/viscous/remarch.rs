@@ -12,6 +12,7 @@ use super::march::MarchParams;
 use super::newton::CachedEquations;
 use super::state::BlState;
 use super::stations::{Station, StationKind, StationLayout, Surface};
+use super::update::UpdateLimits;
 use crate::boundary_layer::{BlModel, Regime, StationVars, UpstreamStation};
 
 /// Re-marches the boundary layer in mixed mode from the current state (XFOIL xbl.f MRCHDU):
@@ -59,6 +60,7 @@ pub fn remarch_mixed(
     carry_corrections: bool,
     ante: f64,
     params: &MarchParams,
+    limits: &UpdateLimits,
 ) -> Vec<Option<CachedEquations>> {
     let mut cache = vec![None; layout.len()];
     let old_turbulent = state.turbulent.clone();
@@ -83,6 +85,7 @@ pub fn remarch_mixed(
             old_turbulent: &old_turbulent,
             ante,
             params,
+            hk_floor: limits.hk_floor(layout.stations[k].surface == Surface::Wake),
         };
         let mut station = march.start(state, k, surface_turbulent[side], carried[side], sens);
         iterate(
@@ -141,6 +144,8 @@ struct Remarch<'a> {
     /// Trailing-edge gap (XFOIL ANTE), for the first wake station.
     ante: f64,
     params: &'a MarchParams,
+    /// Lowest Hk of the station (XFOIL DSLIM HKLIM).
+    hk_floor: f64,
 }
 
 /// One station of the re-march with its local unknowns, its references and what its local
@@ -152,8 +157,6 @@ struct MixedStation<'a> {
     wake: bool,
     /// The station was turbulent before the re-march.
     was_turbulent: bool,
-    /// Lowest Hk of the station (XFOIL DSLIM HKLIM).
-    hk_floor: f64,
     /// The state the Newton step left, (√Cτ, θ, δ*, Ue).
     start: [f64; 4],
     /// Reference (Ue, Hk) of a carried start, if any.
@@ -206,7 +209,7 @@ impl<'a> Remarch<'a> {
         let was_turbulent = self.old_turbulent[k];
         let mut u = state.ue[k].max(1e-6);
         let mut th = state.theta[k].max(1e-12);
-        let hk_floor = if wake { 1.00005 } else { 1.02 };
+        let hk_floor = self.hk_floor;
         let mut ds = (state.dstar(k) - st.wake_gap).max(hk_floor * th) + st.wake_gap;
         let (n_amp, mut cti) = if was_turbulent || wake {
             (
@@ -280,7 +283,6 @@ impl<'a> Remarch<'a> {
             st,
             wake,
             was_turbulent,
-            hk_floor,
             start,
             reference,
             upstream,

@@ -263,6 +263,7 @@ impl ViscousSolver {
                     warm_started && residual < self.params.carry_corrections_below,
                     self.panels.te_gap(),
                     &self.params.march,
+                    &self.params.limits,
                 )
             } else {
                 Vec::new()

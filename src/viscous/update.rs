@@ -51,6 +51,18 @@ impl Default for UpdateLimits {
     }
 }
 
+impl UpdateLimits {
+    /// The lowest Hk of a station (XFOIL DSLIM HKLIM), on the airfoil or in the wake: the
+    /// update and the mixed-mode re-march raise δ* to keep Hk above it.
+    pub fn hk_floor(&self, wake: bool) -> f64 {
+        if wake {
+            self.hk_min_wake
+        } else {
+            self.hk_min_airfoil
+        }
+    }
+}
+
 /// Outcome of one update.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct UpdateResult {
@@ -138,11 +150,7 @@ pub fn apply_update(
         state.ue[k] += rlx * due[k];
         // Shape-factor floor (XFOIL DSLIM): raise δ* so that the unclamped
         // Hk = (H − 0.29 Me²)/(1 + 0.113 Me²) (Whitfield, XFOIL HKIN) is at least Hk_min.
-        let hk_min = if wake {
-            limits.hk_min_wake
-        } else {
-            limits.hk_min_airfoil
-        };
+        let hk_min = limits.hk_floor(wake);
         let v = state.vars(layout, k);
         let hk = model.kinematic_shape(&v);
         if hk.value < hk_min && hk.d[1] > 0.0 {

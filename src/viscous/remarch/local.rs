@@ -139,8 +139,9 @@ impl LocalProblem for MixedStation<'_> {
             s: 0.0,
             dw: self.st.wake_gap,
         });
-        if hk_new.value < self.hk_floor && hk_new.d[1] > 0.0 {
-            self.ds += (self.hk_floor - hk_new.value) / hk_new.d[1];
+        let hk_floor = self.march.hk_floor;
+        if hk_new.value < hk_floor && hk_new.d[1] > 0.0 {
+            self.ds += (hk_floor - hk_new.value) / hk_new.d[1];
         } else {
             // Hk does not depend on the shear variable: the next iteration's Hk.
             self.hk_at_state = Some((hk_new.value, hk_new.d));
