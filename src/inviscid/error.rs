@@ -50,14 +50,6 @@ pub enum InviscidError {
         /// Angle of attack in degrees.
         alpha_deg: f64,
     },
-    /// A source (mass-defect) vector has the wrong length.
-    #[error("source vector has {got} entries, expected {expected}")]
-    SourceLength {
-        /// Length given.
-        got: usize,
-        /// Length expected (airfoil nodes + wake nodes).
-        expected: usize,
-    },
     /// Wake parameters cannot produce a wake.
     #[error("invalid wake parameters: {0}")]
     InvalidWake(&'static str),

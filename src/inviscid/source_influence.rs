@@ -112,17 +112,12 @@ impl SourceInfluence {
 
     /// D·σ: speed change at every node for sources `sigma` (length N + NW).
     #[cfg(test)]
-    pub fn apply(&self, sigma: &[f64]) -> Result<Vec<f64>, super::InviscidError> {
+    pub fn apply(&self, sigma: &[f64]) -> Vec<f64> {
         let nt = self.d.nrows();
-        if sigma.len() != nt {
-            return Err(super::InviscidError::SourceLength {
-                got: sigma.len(),
-                expected: nt,
-            });
-        }
-        Ok((0..nt)
+        assert_eq!(sigma.len(), nt, "one source per airfoil and wake node");
+        (0..nt)
             .map(|i| (0..nt).map(|j| self.d[(i, j)] * sigma[j]).sum())
-            .collect())
+            .collect()
     }
 }
 
@@ -131,7 +126,6 @@ impl SourceInfluence {
 pub(crate) mod direct {
     use super::*;
     use crate::inviscid::influence::direct::{airfoil_source_value, wake_source_value};
-    use crate::inviscid::InviscidError;
     use crate::numerics::dense::dot;
 
     /// Tangential speeds at all airfoil and wake nodes for `alpha_deg` with nodal sources
@@ -143,16 +137,11 @@ pub(crate) mod direct {
         wake: &Wake,
         alpha_deg: f64,
         sigma: &[f64],
-    ) -> Result<Vec<f64>, InviscidError> {
+    ) -> Vec<f64> {
         let g = system.geometry();
         let n = g.len();
         let nw = wake.len();
-        if sigma.len() != n + nw {
-            return Err(InviscidError::SourceLength {
-                got: sigma.len(),
-                expected: n + nw,
-            });
-        }
+        assert_eq!(sigma.len(), n + nw, "one source per airfoil and wake node");
         reset_simd_state();
         let (sig_a, sig_w) = sigma.split_at(n);
         let mut extra = vec![0.0; n];
@@ -161,7 +150,7 @@ pub(crate) mod direct {
             let probe = Probe::airfoil_node(g, i);
             *e = wake_source_value(&wake.x, &wake.y, &wake.apanel, &probe, sig_w).0;
         }
-        let gamma = system.gamma_with_sources(alpha_deg, sig_a, &extra)?;
+        let gamma = system.gamma_with_sources(alpha_deg, sig_a, &extra);
         let (sa, ca) = alpha_deg.to_radians().sin_cos();
         let mut q = gamma.clone();
         q.push(gamma[n - 1]);
@@ -175,6 +164,6 @@ pub(crate) mod direct {
             let q_wake = wake_source_value(&wake.x, &wake.y, &wake.apanel, &probe, sig_w).1;
             q.push(q_vortex + q_free + q_air + q_wake);
         }
-        Ok(q)
+        q
     }
 }

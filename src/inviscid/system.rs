@@ -319,16 +319,12 @@ impl PanelSystem {
         alpha_deg: f64,
         m_airfoil: &[f64],
         extra_psi: &[f64],
-    ) -> Result<Vec<f64>, InviscidError> {
+    ) -> Vec<f64> {
         let n = self.n_nodes();
-        for len in [m_airfoil.len(), extra_psi.len()] {
-            if len != n {
-                return Err(InviscidError::SourceLength {
-                    got: len,
-                    expected: n,
-                });
-            }
-        }
+        assert!(
+            m_airfoil.len() == n && extra_psi.len() == n,
+            "one value per airfoil node"
+        );
         let (sa, ca) = alpha_deg.to_radians().sin_cos();
         let g = &self.geom;
         reset_simd_state();
@@ -351,7 +347,7 @@ impl PanelSystem {
         }
         self.lu.solve_in_place(rhs.as_mut());
         reset_simd_state();
-        Ok((0..n).map(|i| rhs[(i, 0)]).collect())
+        (0..n).map(|i| rhs[(i, 0)]).collect()
     }
 }
 

@@ -52,8 +52,8 @@ fn check_columns(name: &str, alpha: f64) {
         let mut minus = base.clone();
         plus[j] += h;
         minus[j] -= h;
-        let qp = speeds_with_sources(&sys, &wake, alpha, &plus).unwrap();
-        let qm = speeds_with_sources(&sys, &wake, alpha, &minus).unwrap();
+        let qp = speeds_with_sources(&sys, &wake, alpha, &plus);
+        let qm = speeds_with_sources(&sys, &wake, alpha, &minus);
         let scale = (0..nt).map(|i| dij.d[(i, j)].abs()).fold(0.0, f64::max);
         assert!(scale > 0.0, "{name}: column {j} of D is zero");
         for i in 0..nt {
@@ -90,8 +90,8 @@ fn linearisation_is_exact() {
         .into_iter()
         .map(|v| 5.0e-3 * v)
         .collect();
-    let q = speeds_with_sources(&sys, &wake, 2.0, &sigma).unwrap();
-    let dq = dij.apply(&sigma).unwrap();
+    let q = speeds_with_sources(&sys, &wake, 2.0, &sigma);
+    let dq = dij.apply(&sigma);
     let q0 = q_inviscid(&sys, &wake, 2.0);
     for i in 0..q.len() {
         assert!(
@@ -101,7 +101,6 @@ fn linearisation_is_exact() {
             q[i]
         );
     }
-    assert!(dij.apply(&sigma[1..]).is_err());
 }
 
 /// A boundary layer thickening downstream (m = Ue·δ* growing with x on both surfaces and
@@ -131,7 +130,7 @@ fn displacement_accelerates_the_flow() {
     for s in sigma.iter_mut().skip(n) {
         *s = m_te;
     }
-    let dq = dij.apply(&sigma).unwrap();
+    let dq = dij.apply(&sigma);
     for i in 0..n {
         if (0.3..0.8).contains(&g.x[i]) {
             let vti = if i <= ist { 1.0 } else { -1.0 };
