@@ -1,5 +1,5 @@
-//! Table files: CSV/JSON round trips, XFOIL polar and C81 structure, atomic writes, format
-//! inference and error messages.
+//! Table files: CSV/JSON round trips, XFOIL polar and C81 structure, format inference and error
+//! messages.
 
 mod table_support;
 
@@ -9,7 +9,6 @@ use polargen::table::io::c81::{write_c81, C81Options};
 use polargen::table::io::csv::parse_csv;
 use polargen::table::io::json::parse_json;
 use polargen::table::io::xfoil_polar::{polar_file_name, re_label};
-use polargen::table::io::{check_output_path, write_atomic};
 use polargen::table::{read_table, write_table, PolarTable, TableError, TableFormat};
 use std::path::{Path, PathBuf};
 use table_support::*;
@@ -429,30 +428,9 @@ fn c81_thins_long_alpha_lists_to_99_rows() {
 }
 
 #[test]
-fn atomic_write_creates_folders_and_leaves_no_temp_files() {
-    let dir = scratch("atomic");
-    let path = dir.join("a/b/c.txt");
-    write_atomic(&path, |w| {
-        w.write_all(b"hello").map_err(|e| TableError::io("x", e))
-    })
-    .unwrap();
-    assert_eq!(std::fs::read_to_string(&path).unwrap(), "hello");
-    assert_eq!(files_in(&dir.join("a/b")), vec!["c.txt"]);
-    // A failing writer leaves the old content and no temporary file.
-    let e = write_atomic(&path, |w| {
-        w.write_all(b"half a fi")
-            .map_err(|e| TableError::io("x", e))?;
-        Err(TableError::Empty)
-    })
-    .unwrap_err();
-    assert!(matches!(e, TableError::Empty));
-    assert_eq!(std::fs::read_to_string(&path).unwrap(), "hello");
-    assert_eq!(files_in(&dir.join("a/b")), vec!["c.txt"]);
-    // …and no target at all when there was none.
-    let fresh = dir.join("a/b/new.csv");
-    assert!(write_atomic(&fresh, |_| Err(TableError::Empty)).is_err());
-    assert!(!fresh.exists());
-    assert_eq!(files_in(&dir.join("a/b")), vec!["c.txt"]);
+fn failed_table_writes_leave_nothing_behind() {
+    let dir = scratch("failed");
+    std::fs::create_dir_all(dir.join("folder.csv")).unwrap();
     // A C81 that cannot be written (value too wide for 7 characters) leaves nothing behind.
     let huge = PolarTable::new(
         meta("huge"),
@@ -465,80 +443,13 @@ fn atomic_write_creates_folders_and_leaves_no_temp_files() {
     let msg = e.to_string();
     assert!(msg.starts_with("value ") && msg.ends_with(" does not fit a 7-character field"));
     assert!(!dir.join("h.c81").exists());
-    assert_eq!(files_in(&dir), vec!["a"]);
-    std::fs::remove_dir_all(dir).unwrap();
-}
-
-#[test]
-fn output_paths_are_checked_before_writing() {
-    let dir = scratch("outpath");
-    std::fs::create_dir_all(dir.join("folder.csv")).unwrap();
-    std::fs::write(dir.join("plain"), "x").unwrap();
-    let msg = |p: PathBuf| check_output_path(&p).unwrap_err().to_string();
-    let d = dir.display();
-    assert_eq!(
-        msg(dir.join("folder.csv")),
-        format!("{d}/folder.csv: is a folder, not a file name")
-    );
-    assert_eq!(
-        msg(PathBuf::from(format!("{d}/new/"))),
-        format!("{d}/new/: is a folder, not a file name")
-    );
-    assert_eq!(
-        msg(dir.join("plain/sub/t.csv")),
-        format!("{d}/plain: is not a folder")
-    );
-    // Missing folders are fine (the writers create them); nothing was created by the checks.
-    check_output_path(&dir.join("a/b/t.csv")).unwrap();
-    check_output_path(Path::new("t.csv")).unwrap();
-    assert_eq!(files_in(&dir), vec!["folder.csv", "plain"]);
-    // The writers make the same checks.
-    let t = awkward_table();
-    let e = write_table(&t, &dir.join("folder.csv"), None).unwrap_err();
+    // The writers check the path like every output.
+    let e = write_table(&awkward_table(), &dir.join("folder.csv"), None).unwrap_err();
     assert_eq!(
         e.to_string(),
-        format!("{d}/folder.csv: is a folder, not a file name")
+        format!("{}/folder.csv: is a folder, not a file name", dir.display())
     );
-    // Devices and pipes are refused (never replaced by a regular file).
-    if Path::new("/dev/null").exists() {
-        assert_eq!(
-            msg(PathBuf::from("/dev/null")),
-            "/dev/null: is not a regular file"
-        );
-        let e = write_atomic(Path::new("/dev/null"), |_| Ok(())).unwrap_err();
-        assert_eq!(e.to_string(), "/dev/null: is not a regular file");
-    }
-    std::fs::remove_dir_all(dir).unwrap();
-}
-
-/// A symbolic link is written through: the linked file gets the new content, the link stays.
-#[cfg(unix)]
-#[test]
-fn writers_follow_symbolic_links() {
-    let dir = scratch("symlink");
-    std::fs::create_dir_all(dir.join("real")).unwrap();
-    std::fs::write(dir.join("real/t.csv"), "old").unwrap();
-    std::os::unix::fs::symlink(dir.join("real/t.csv"), dir.join("link.csv")).unwrap();
-    write_atomic(&dir.join("link.csv"), |w| {
-        w.write_all(b"new").map_err(|e| TableError::io("x", e))
-    })
-    .unwrap();
-    let link = std::fs::symlink_metadata(dir.join("link.csv")).unwrap();
-    assert!(link.file_type().is_symlink());
-    assert_eq!(
-        std::fs::read_to_string(dir.join("real/t.csv")).unwrap(),
-        "new"
-    );
-    assert_eq!(files_in(&dir.join("real")), vec!["t.csv"]);
-    // A broken link is an error, and nothing is created.
-    std::os::unix::fs::symlink(dir.join("gone/x.csv"), dir.join("broken.csv")).unwrap();
-    let e = check_output_path(&dir.join("broken.csv")).unwrap_err();
-    assert!(
-        e.to_string()
-            .ends_with("broken.csv: is a broken symbolic link"),
-        "{e}"
-    );
-    assert!(!dir.join("gone").exists());
+    assert_eq!(files_in(&dir), vec!["folder.csv"]);
     std::fs::remove_dir_all(dir).unwrap();
 }
 

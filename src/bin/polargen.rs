@@ -21,6 +21,7 @@ use clap::{Args, Parser, Subcommand};
 use polargen::diagnostics::error_line;
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
 use polargen::inviscid::PanelSystem;
+use polargen::output::{check_output_path, write_output, OutputError};
 use polargen::plot::point_plots::{point_figure, PointCase};
 use polargen::plot::polar_plots::polar_figure;
 use polargen::plot::{check_image_path, render, Style};
@@ -30,7 +31,7 @@ use polargen::polar::{
 use polargen::section::PolarPoint;
 use polargen::table::io::csv::write_csv_to;
 use polargen::table::io::json::write_json_to;
-use polargen::table::io::{check_output_path, read_table, write_atomic, write_table, TableFormat};
+use polargen::table::io::{read_table, write_table, TableFormat};
 use polargen::table::{PolarTable, TableError, TableMeta};
 use polargen::viscous::forces::karman_tsien_cp;
 use polargen::viscous::{BlStation, SharedPanels, ViscousParams, ViscousSolution, ViscousSolver};
@@ -366,9 +367,9 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
         ));
     }
     match &cli.out {
-        Some(path) => write_atomic(path, |w| {
+        Some(path) => write_output(path, |w| {
             w.write_all(csv.as_bytes())
-                .map_err(|e| TableError::io(path, e))
+                .map_err(|e| OutputError::io(path, e))
         })?,
         None => write_stdout(csv.as_bytes())?,
     }
@@ -704,7 +705,7 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
     // The image first: if it cannot be written, no CSV is left behind either.
     render(&point_figure(&cases, &title, Some(args.ncrit)), &args.out)?;
     if let Some(path) = &args.csv {
-        write_atomic(path, |w| write_point_csv(&runs, args.mach, w))?;
+        write_output(path, |w| write_point_csv(&runs, args.mach, w))?;
     }
     Ok(())
 }

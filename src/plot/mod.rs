@@ -23,9 +23,13 @@
 //! # Ok::<(), polargen::plot::PlotError>(())
 //! ```
 
+mod axes;
+mod clip;
+mod draw;
 pub mod error;
 pub mod figure;
 pub mod font;
+mod layout;
 pub mod point_plots;
 pub mod polar_plots;
 pub mod render;

@@ -167,7 +167,10 @@ pub enum TableError {
         /// Field width.
         width: usize,
     },
-    /// Reading or writing a file failed.
+    /// Writing an output file failed.
+    #[error(transparent)]
+    Output(#[from] crate::output::OutputError),
+    /// Reading a file failed.
     #[error("{path}: {source}")]
     Io {
         /// The file.

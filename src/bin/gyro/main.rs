@@ -6,13 +6,13 @@ use anyhow::{bail, Context, Result};
 use clap::{Args, Parser, Subcommand};
 use paper::{PAPER_TAKEOFF, PAPER_TRIM};
 use polargen::diagnostics::error_line;
+use polargen::output::{check_output_path, write_output, OutputError};
 use polargen::rotor::aircraft::{MAX_ISA_ALTITUDE_M, MAX_MASS_KG, MAX_SPEED_KT};
 use polargen::rotor::cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds};
 use polargen::rotor::trim::{trim_aircraft, TrimParams, TrimResult};
 use polargen::rotor::{simulate_takeoff, Aircraft, TakeoffResult};
 use polargen::section::PolarPoint;
-use polargen::table::io::{check_output_path, write_atomic};
-use polargen::table::{read_table, PolarTable, TableError, TableMeta};
+use polargen::table::{read_table, PolarTable, TableMeta};
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::io::Write as _;
@@ -719,9 +719,9 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             let section = load_section(&table)?;
             let t = simulate_takeoff(&ac, &section)?;
             if let Some(path) = history {
-                write_atomic(&path, |w| {
+                write_output(&path, |w| {
                     t.write_history_csv(w)
-                        .map_err(|e| TableError::io(&path, e.into()))
+                        .map_err(|e| OutputError::io(&path, e.into()))
                 })
                 .context("--history")?;
             }

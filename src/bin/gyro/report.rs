@@ -14,14 +14,14 @@ use crate::{load_aircraft, load_section, paper_cases, rel, trimmed_speeds, PAPER
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use polargen::geometry::airfoil_key;
+use polargen::output::{check_output_path, write_output, OutputError};
 use polargen::plot::polar_plots::{mark_lift_coefficient, polar_figure};
 use polargen::plot::{AxisRange, Figure, Marker};
 use polargen::rotor::cruise::{cruise_blade_alpha, sweep_speeds};
 use polargen::rotor::trim::TrimParams;
 use polargen::rotor::{rpm_to_rad_s, Aircraft, Atmosphere, TakeoffResult, TrimResult};
 use polargen::table::fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
-use polargen::table::io::{check_output_path, write_atomic};
-use polargen::table::{PolarTable, TableError};
+use polargen::table::PolarTable;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -137,9 +137,9 @@ pub fn run(args: &ReportArgs, buf: &mut String) -> Result<()> {
 
     let text = markdown(args, &ac, &foils, &rotor);
     let readme = args.out.join(REPORT_README);
-    write_atomic(&readme, |w| {
+    write_output(&readme, |w| {
         w.write_all(text.as_bytes())
-            .map_err(|e| TableError::io(&readme, e))
+            .map_err(|e| OutputError::io(&readme, e))
     })
     .with_context(|| format!("cannot write {}", readme.display()))?;
     written.push(readme);

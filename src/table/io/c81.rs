@@ -30,8 +30,8 @@
 //! * Fields: Mach F7.3, α F7.2, coefficients with as many decimals (≤ 4) as leave at least one
 //!   leading blank, so that free-format (whitespace-splitting) readers work too.
 
-use super::atomic::write_atomic;
 use super::xfoil_polar::re_label;
+use crate::output::write_output;
 use crate::section::SectionAero;
 use crate::table::{PolarTable, TableError};
 use std::io::Write;
@@ -243,7 +243,7 @@ pub fn write_c81(
         if !(re.is_finite() && re > 0.0) {
             return Err(TableError::BadRe(re));
         }
-        write_atomic(path, |w| write_c81_to(table, re, options.outer_step_deg, w))?;
+        write_output(path, |w| write_c81_to(table, re, options.outer_step_deg, w))?;
         return Ok(vec![path.to_path_buf()]);
     }
     let stem = path
@@ -261,7 +261,7 @@ pub fn write_c81(
         } else {
             path.with_file_name(format!("{stem}_Re{}.{ext}", re_label(re)))
         };
-        write_atomic(&file, |w| {
+        write_output(&file, |w| {
             write_c81_to(table, re, options.outer_step_deg, w)
         })?;
         written.push(file);

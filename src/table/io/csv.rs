@@ -7,7 +7,7 @@
 //! `panels` (default 0) and `solver` (default empty) are optional. A (Re, M) node without rows
 //! cannot be represented and reads back as a ragged grid.
 
-use super::atomic::write_atomic;
+use crate::output::write_output;
 use crate::section::PolarPoint;
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::collections::HashMap;
@@ -87,7 +87,7 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
 
 /// Write `table` as CSV to `path` (atomically).
 pub fn write_csv(table: &PolarTable, path: &Path) -> Result<(), TableError> {
-    write_atomic(path, |w| write_csv_to(table, w))
+    write_output(path, |w| write_csv_to(table, w))
 }
 
 /// Read a table from a CSV file.

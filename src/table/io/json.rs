@@ -2,7 +2,7 @@
 //! parameters), pretty-printed. Non-finite values of unconverged points are written as the
 //! strings `"NaN"`, `"inf"`, `"-inf"`.
 
-use super::atomic::write_atomic;
+use crate::output::write_output;
 use crate::table::{PolarTable, TableError};
 use std::io::Write;
 use std::path::Path;
@@ -16,7 +16,7 @@ pub fn write_json_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableE
 
 /// Write `table` as JSON to `path` (atomically).
 pub fn write_json(table: &PolarTable, path: &Path) -> Result<(), TableError> {
-    write_atomic(path, |w| write_json_to(table, w))
+    write_output(path, |w| write_json_to(table, w))
 }
 
 /// Parse a table from JSON text (validated like [`PolarTable::new`]).

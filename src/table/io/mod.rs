@@ -1,9 +1,8 @@
 //! Table files: CSV and JSON (written and read back exactly), XFOIL polar text (written, and
 //! read as a one-polar table) and C81 (written).
-//! Every writer goes through [`atomic::write_atomic`], so a failure never leaves half a file
-//! and missing folders are created.
+//! Every writer goes through [`write_output`](crate::output::write_output), so a failure
+//! never leaves half a file and missing folders are created.
 
-pub mod atomic;
 pub mod c81;
 pub mod csv;
 pub mod json;
@@ -14,7 +13,6 @@ use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
 pub use self::c81::C81Options;
-pub use atomic::{check_output_path, prepare_output_path, write_atomic};
 
 /// A table file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -4,7 +4,7 @@
 //! fields). Only converged points are written, sorted by α. The version line names this
 //! table's solver instead of XFOIL.
 
-use super::atomic::write_atomic;
+use crate::output::write_output;
 use crate::section::PolarPoint;
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::io::Write;
@@ -93,7 +93,7 @@ pub fn write_xfoil_polars(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf
         } else {
             path.with_file_name(polar_file_name(&stem, re, mach))
         };
-        write_atomic(&file, |w| write_polar_to(table.meta(), re, mach, points, w))?;
+        write_output(&file, |w| write_polar_to(table.meta(), re, mach, points, w))?;
         written.push(file);
     }
     Ok(written)
