@@ -29,6 +29,7 @@ pub mod boundary_layer;
 pub mod diagnostics;
 pub mod geometry;
 pub mod inviscid;
+pub(crate) mod numerics;
 pub mod output;
 pub mod plot;
 pub mod polar;

@@ -5,8 +5,16 @@
 //! α; the induced velocity `v_i` is positive *downwards* (opposing positive thrust), so the
 //! net upflow through the disc is V·sin α − v_i.
 
+use crate::numerics::roots::{bracketed_root_of, first_rising_bracket};
+
 /// Number of scan intervals used to bracket the smallest momentum-theory root.
 const SCAN_INTERVALS: usize = 64;
+
+/// Relative width of the bracket at which the momentum-theory root is accepted.
+const ROOT_TOLERANCE: f64 = 1e-12;
+
+/// Most refinement steps of the momentum-theory root.
+const ROOT_ITERATIONS: usize = 100;
 
 /// Uniform induced velocity from Glauert's momentum theory in forward flight,
 /// T = 2ρA·v_i·V′ with V′ = √((V cos α)² + (V sin α − v_i)²)
@@ -35,29 +43,10 @@ pub fn glauert_induced_velocity(
     let g = |v: f64| v * (edge * edge + (axial - v).powi(2)).sqrt() - target;
     // g(0) = −target < 0 and g(v) ≥ v (v − axial) ≥ target beyond this bound.
     let upper = axial.max(0.0) + target.sqrt() + 1e-9;
-    let mut lo = 0.0;
-    let mut hi = upper;
     let step = upper / SCAN_INTERVALS as f64;
-    for k in 1..=SCAN_INTERVALS {
-        let v = step * k as f64;
-        if g(v) >= 0.0 {
-            lo = v - step;
-            hi = v;
-            break;
-        }
-    }
-    for _ in 0..80 {
-        let mid = 0.5 * (lo + hi);
-        if g(mid) >= 0.0 {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-        if hi - lo <= 1e-12 * (1.0 + hi) {
-            break;
-        }
-    }
-    sign * 0.5 * (lo + hi)
+    let grid = (0..=SCAN_INTERVALS).map(|k| step * k as f64);
+    let (lo, hi) = first_rising_bracket(grid, g).unwrap_or(((0.0, g(0.0)), (upper, g(upper))));
+    sign * bracketed_root_of(g, lo, hi, ROOT_TOLERANCE * (1.0 + upper), ROOT_ITERATIONS)
 }
 
 /// Thrust that momentum theory associates with a uniform induced velocity `v_i`:

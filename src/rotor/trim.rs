@@ -6,15 +6,16 @@
 //! drag, F_prop = D_R + D_P the propeller thrust and L/D = G/(D_R + D_P).
 //!
 //! Both unknowns are found by nested one-dimensional root finding with brackets: for each α_H
-//! the autorotation rpm (scan down from high rpm until the torque changes sign, then an
-//! Illinois-safeguarded secant), and α_H from the lift balance the same way. Brackets make the
-//! solve robust; the secant makes it fast.
+//! the autorotation rpm (scan down from high rpm until the torque changes sign, then the
+//! crate's bracketed root finder, an Illinois-safeguarded secant), and α_H from the lift
+//! balance the same way. Brackets make the solve robust; the secant makes it fast.
 
 use super::aircraft::Aircraft;
 use super::atmosphere::Atmosphere;
 use super::propeller::{PropellerError, PropellerMap};
 use super::rotor::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::{rad_s_to_rpm, rpm_to_rad_s, KT_TO_MS};
+use crate::numerics::roots::bracketed_root;
 use crate::section::SectionAero;
 use serde::Serialize;
 
@@ -132,44 +133,6 @@ pub struct TrimResult {
     /// lay outside the section table and were clamped to its edge (0 when the table covers
     /// the rotor).
     pub table_clamped_fraction: f64,
-}
-
-/// Root of `f` in the bracket [a, b] (f(a)·f(b) ≤ 0): secant steps with the Illinois
-/// modification of regula falsi (Dowell & Jarratt 1971), which keeps the bracket.
-fn bracketed_root<E>(
-    mut f: impl FnMut(f64) -> Result<f64, E>,
-    (mut a, mut fa): (f64, f64),
-    (mut b, mut fb): (f64, f64),
-    xtol: f64,
-    max_iterations: usize,
-) -> Result<f64, E> {
-    let mut side = 0i8;
-    for _ in 0..max_iterations {
-        if fa == 0.0 {
-            return Ok(a);
-        }
-        if fb == 0.0 || (b - a).abs() < xtol {
-            return Ok(b);
-        }
-        let mut c = (a * fb - b * fa) / (fb - fa);
-        if !c.is_finite() || c <= a.min(b) || c >= a.max(b) {
-            c = 0.5 * (a + b);
-        }
-        let fc = f(c)?;
-        if fc * fb < 0.0 {
-            a = b;
-            fa = fb;
-            side = 0;
-        } else {
-            if side == 1 {
-                fa *= 0.5;
-            }
-            side = 1;
-        }
-        b = c;
-        fb = fc;
-    }
-    Ok(b)
 }
 
 /// Autorotation: the rotor speed at which the aerodynamic torque vanishes, for airspeed `v`

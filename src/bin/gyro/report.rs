@@ -804,7 +804,7 @@ fn table5(o: &mut String, foils: &[Airfoil]) {
     outln!(o);
     outln!(
         o,
-        "Ours: the α at which the table lookup gives Cl = {PAPER_TABLE5_CL} (bisection on the \
+        "Ours: the α at which the table lookup gives Cl = {PAPER_TABLE5_CL} (bracketed root of the \
          interpolated lift curve), then Cd at that α. The paper prints XFOIL 6.94 values to three \
          decimals (a rounding of up to ±0.0005, i.e. ±4 … 8 % of these values); the XFOIL 6.99 \
          column is our reference run of the same cases (160 panels, Ncrit 9, linear \
