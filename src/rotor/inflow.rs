@@ -6,6 +6,18 @@
 //! net upflow through the disc is V·sin α − v_i.
 
 use crate::numerics::roots::{bracketed_root_of, first_rising_bracket};
+use serde::Deserialize;
+
+/// Induced-inflow model, as named in an aircraft preset (`inflow = "glauert"` or `"drees"`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum InflowModel {
+    /// Uniform inflow from Glauert's momentum theory ([`glauert_induced_velocity`]).
+    Glauert,
+    /// Glauert's mean value with Drees' linear fore-aft and lateral gradients
+    /// ([`drees_coefficients`]).
+    Drees,
+}
 
 /// Number of scan intervals used to bracket the smallest momentum-theory root.
 const SCAN_INTERVALS: usize = 64;

@@ -10,7 +10,8 @@
 //! * [`blade_element`] — velocity triangle and loads of one strip (reverse flow included).
 //! * [`inflow`] — induced velocity: Glauert momentum theory, Drees linear inflow, tip loss.
 //! * [`flapping`] — first-harmonic teeter motion of the blade pair.
-//! * [`rotor`] — azimuth-averaged rotor forces, torque and the flapping solution.
+//! * [`disc_loads`] — the rotor disc: azimuth-averaged forces and torque of the blade-element
+//!   sum, solved together with the induced inflow and the teeter flapping.
 //! * [`trim`] — autorotation rpm and level-cruise trim.
 //! * [`cruise`] — power-required speed sweep and blade α(ψ) in trimmed cruise.
 //! * [`propeller`] — propeller/engine map (Rotax 912 with reduction gear).
@@ -20,17 +21,17 @@ pub mod aircraft;
 pub mod atmosphere;
 pub mod blade_element;
 pub mod cruise;
+pub mod disc_loads;
 pub mod flapping;
 pub mod inflow;
 pub mod propeller;
-#[allow(clippy::module_inception)]
-pub mod rotor;
 pub mod takeoff;
 pub mod trim;
 
 pub use aircraft::{Aircraft, AircraftError};
-pub use atmosphere::Atmosphere;
-pub use rotor::{FlightCondition, InflowModel, Rotor, RotorError, RotorSolution};
+pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
+pub use disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
+pub use inflow::InflowModel;
 
 pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
 pub use trim::{TrimError, TrimResult};

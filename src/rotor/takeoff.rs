@@ -22,8 +22,8 @@
 
 use super::aircraft::Aircraft;
 use super::atmosphere::Atmosphere;
+use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::propeller::{PropellerError, PropellerMap};
-use super::rotor::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::{rad_s_to_rpm, rpm_to_rad_s, G0};
 use crate::section::SectionAero;
 use serde::Serialize;

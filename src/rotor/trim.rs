@@ -11,9 +11,9 @@
 //! balance the same way. Brackets make the solve robust; the secant makes it fast.
 
 use super::aircraft::Aircraft;
-use super::atmosphere::Atmosphere;
+use super::atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
+use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::propeller::{PropellerError, PropellerMap};
-use super::rotor::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::{rad_s_to_rpm, rpm_to_rad_s, KT_TO_MS};
 use crate::numerics::roots::bracketed_root;
 use crate::section::SectionAero;
@@ -51,6 +51,12 @@ pub enum TrimError {
     /// Invalid input (speed, mass).
     #[error("invalid trim input: {0}")]
     Input(&'static str),
+    /// The altitude is outside the atmosphere model.
+    #[error(
+        "invalid trim input: altitude must be within the ISA troposphere, 0 to {} m",
+        MAX_ISA_ALTITUDE_M
+    )]
+    Altitude,
 }
 
 /// Search ranges and tolerances of the trim solvers.
@@ -273,10 +279,8 @@ pub fn trim_aircraft<S: SectionAero + ?Sized>(
     if !(mass_kg.is_finite() && mass_kg > 0.0) {
         return Err(TrimError::Input("mass must be a positive number"));
     }
-    if !(0.0..=super::aircraft::MAX_ISA_ALTITUDE_M).contains(&altitude_m) {
-        return Err(TrimError::Input(
-            "altitude must be within the ISA troposphere, 0 to 11000 m",
-        ));
+    if !(0.0..=MAX_ISA_ALTITUDE_M).contains(&altitude_m) {
+        return Err(TrimError::Altitude);
     }
     let rotor = Rotor::from_params(&aircraft.rotor);
     let prop = PropellerMap::calibrate(&aircraft.propeller)?;

@@ -7,9 +7,10 @@ use clap::{Args, Parser, Subcommand};
 use paper::{PAPER_TAKEOFF, PAPER_TRIM};
 use polargen::diagnostics::error_line;
 use polargen::output::{check_output_path, write_output, OutputError};
-use polargen::rotor::aircraft::{MAX_ISA_ALTITUDE_M, MAX_MASS_KG, MAX_SPEED_KT};
+use polargen::rotor::aircraft::{MAX_MASS_KG, MAX_SPEED_KT};
 use polargen::rotor::cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds};
 use polargen::rotor::trim::{trim_aircraft, TrimParams, TrimResult};
+use polargen::rotor::MAX_ISA_ALTITUDE_M;
 use polargen::rotor::{simulate_takeoff, Aircraft, TakeoffResult};
 use polargen::section::PolarPoint;
 use polargen::table::{read_table, PolarTable, TableMeta};
@@ -59,8 +60,8 @@ enum Command {
         /// Mass in kg (default: the preset's).
         #[arg(long, allow_hyphen_values = true)]
         mass: Option<f64>,
-        /// ISA altitude in metres, 0 to 11000.
-        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true,
+              help = format!("ISA altitude in metres, 0 to {MAX_ISA_ALTITUDE_M}"))]
         altitude_m: f64,
         /// Print JSON instead of text.
         #[arg(long)]

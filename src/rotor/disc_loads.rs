@@ -11,6 +11,7 @@ use super::blade_element::{strip_load, AirState, StripFlow};
 use super::flapping::{first_harmonics, Teeter};
 use super::inflow::{
     drees_coefficients, gessow_myers_tip_loss, glauert_induced_velocity, glauert_thrust,
+    InflowModel,
 };
 use crate::section::SectionAero;
 use std::f64::consts::TAU;
@@ -29,15 +30,6 @@ pub enum RotorError {
         /// Size of the last Newton step (scaled).
         step: f64,
     },
-}
-
-/// Induced-inflow model.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum InflowModel {
-    /// Uniform inflow from Glauert's momentum theory.
-    Glauert,
-    /// Glauert's mean value with Drees' linear fore-aft and lateral gradients.
-    Drees,
 }
 
 /// Tunable numerics of the coupled inflow/flapping Newton iteration.
@@ -535,11 +527,7 @@ impl Rotor {
             azimuth_steps: p.azimuth_steps,
             tip_loss_b: p.tip_loss_b,
             induced_power_factor: p.induced_power_factor,
-            inflow: if p.inflow == "drees" {
-                InflowModel::Drees
-            } else {
-                InflowModel::Glauert
-            },
+            inflow: p.inflow,
             solver: RotorSolverParams::default(),
         }
     }
