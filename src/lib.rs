@@ -33,6 +33,7 @@ pub(crate) mod numerics;
 pub mod output;
 pub mod plot;
 pub mod polar;
+pub mod report;
 pub mod rotor;
 pub mod section;
 pub mod table;

@@ -3,8 +3,8 @@
 
 mod table_support;
 
-use polargen::section::PolarPoint;
 use polargen::section::SectionAero;
+use polargen::section::{FlowCondition, PolarPoint};
 use polargen::table::io::c81::{write_c81, C81Options};
 use polargen::table::io::csv::parse_csv;
 use polargen::table::io::json::parse_json;
@@ -49,7 +49,7 @@ fn awkward_table() -> PolarTable {
             pts[4].converged = false;
             pts[4].cd = f64::INFINITY;
             pts[4].cm = f64::NEG_INFINITY;
-            list.push((re, m, pts));
+            list.push((FlowCondition::new(re, m), pts));
         }
     }
     let mut m = meta("NACA 8-H-12, \"reflexed\"");
@@ -525,13 +525,13 @@ fn output_does_not_depend_on_polar_order() {
     let mut list = Vec::new();
     for &re in &[5e5, 1e6, 2e6] {
         for &m in &[0.0, 0.3] {
-            list.push((re, m, analytic_polar(re, m, &alphas)));
+            list.push((FlowCondition::new(re, m), analytic_polar(re, m, &alphas)));
         }
     }
     let a = PolarTable::from_polars(meta("order"), list.clone()).unwrap();
     list.reverse();
     list.swap(1, 4);
-    for (_, _, pts) in list.iter_mut() {
+    for (_, pts) in list.iter_mut() {
         pts.reverse();
     }
     let b = PolarTable::from_polars(meta("order"), list).unwrap();

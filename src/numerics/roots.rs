@@ -119,7 +119,7 @@ mod tests {
     fn the_first_rising_interval_is_found() {
         let xs = (0..=20).map(|k| f64::from(k) * 0.5);
         // Falls through zero at 1, rises through it at 3 and again at 7.
-        let f = |x: f64| (x - 1.0) * (x - 3.0) * (x - 7.0) * -1.0;
+        let f = |x: f64| -((x - 1.0) * (x - 3.0) * (x - 7.0));
         let ((a, fa), (b, fb)) = first_rising_bracket(xs, f).unwrap();
         assert_eq!((a, b), (2.5, 3.0));
         assert!(fa < 0.0 && fb >= 0.0);

@@ -167,6 +167,20 @@ pub fn render_with(
     })
 }
 
+/// Width of a one-panel figure drawn by [`render_with_legend_room`] (px): wider than a grid
+/// cell, so that a long legend (curves, maxima, reference values) fits in two rows.
+const SINGLE_PANEL_WIDTH: u32 = 960;
+
+/// Renders `figure` to `path` with default [`RenderParams`], a one-panel figure wider
+/// (960 px) so that its legend has room.
+pub fn render_with_legend_room(figure: &Figure, path: &Path) -> Result<(), PlotError> {
+    let mut params = RenderParams::default();
+    if figure.panels.len() == 1 {
+        params.panel_width = SINGLE_PANEL_WIDTH;
+    }
+    render_with(figure, path, &params)
+}
+
 /// Renders `figure` to an SVG document in memory (default parameters).
 pub fn render_svg_string(figure: &Figure) -> Result<String, PlotError> {
     let params = RenderParams::default();

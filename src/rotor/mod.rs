@@ -16,6 +16,7 @@
 //! * [`cruise`] — power-required speed sweep and blade α(ψ) in trimmed cruise.
 //! * [`propeller`] — propeller/engine map (Rotax 912 with reduction gear).
 //! * [`takeoff`] — time-domain takeoff simulation to 15 m.
+//! * [`study`] — the paper's clean-versus-contaminated study and its published values.
 
 pub mod aircraft;
 pub mod atmosphere;
@@ -25,6 +26,7 @@ pub mod disc_loads;
 pub mod flapping;
 pub mod inflow;
 pub mod propeller;
+pub mod study;
 pub mod takeoff;
 pub mod trim;
 
@@ -33,6 +35,7 @@ pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
 pub use inflow::InflowModel;
 
+pub use cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds};
 pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
 pub use trim::{TrimError, TrimResult};
 

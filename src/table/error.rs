@@ -170,6 +170,22 @@ pub enum TableError {
     /// Writing an output file failed.
     #[error(transparent)]
     Output(#[from] crate::output::OutputError),
+    /// An input file is missing or not a regular file.
+    #[error("cannot read table {path}: {reason}")]
+    Input {
+        /// The file.
+        path: PathBuf,
+        /// What it is instead of a readable file.
+        reason: &'static str,
+    },
+    /// The content of the table file `path` is wrong.
+    #[error("{path}: {source}")]
+    File {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong in it.
+        source: Box<TableError>,
+    },
     /// Reading a file failed.
     #[error("{path}: {source}")]
     Io {

@@ -1,5 +1,6 @@
 //! Re × Mach × α polar tables: grid, interpolating lookup with a 360° extension, file formats.
 //!
+//! * [`build`] — solving a table: the viscous polars of one airfoil on a Re × M × α grid.
 //! * [`grid`] — [`PolarTable`]: one polar per (Re, M) node, metadata, validation, accessors.
 //! * [`lookup`] — the α curve of one polar (monotone cubic, gaps bridged) and the
 //!   [`SectionAero`] implementation (linear in ln Re and in M between polars).
@@ -11,7 +12,7 @@
 //! * [`error`] — [`TableError`].
 //!
 //! ```
-//! use polargen::section::{PolarPoint, SectionAero};
+//! use polargen::section::{FlowCondition, PolarPoint, SectionAero};
 //! use polargen::table::{PolarTable, TableMeta};
 //!
 //! let meta = TableMeta {
@@ -41,7 +42,10 @@
 //! };
 //! let table = PolarTable::from_polars(
 //!     meta,
-//!     vec![(1e6, 0.0, polar(1e6)), (4e6, 0.0, polar(4e6))],
+//!     vec![
+//!         (FlowCondition::new(1e6, 0.0), polar(1e6)),
+//!         (FlowCondition::new(4e6, 0.0), polar(4e6)),
+//!     ],
 //! )
 //! .unwrap();
 //! let l = table.lookup(2.5, 2e6, 0.0); // halfway in ln Re: 0.25 + 0.025
@@ -50,6 +54,7 @@
 //! assert!(rev.post_stall && rev.mach_clamped && rev.cl < 0.0);
 //! ```
 
+pub mod build;
 pub mod error;
 pub mod fixed_condition;
 pub mod grid;
@@ -57,7 +62,9 @@ pub mod io;
 pub mod lookup;
 pub mod post_stall;
 
+pub use build::{build_table, BuildError, GridSpec};
 pub use error::TableError;
+pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
 pub use grid::{PolarTable, TableMeta};
-pub use io::{read_table, write_table, TableFormat};
+pub use io::{read_lookup_table, read_table, write_table, TableFormat};
 pub use post_stall::PostStallParams;

@@ -25,6 +25,7 @@
 pub mod bl_model;
 pub mod block_solver;
 mod dense;
+pub mod distributions;
 pub mod error;
 pub mod forces;
 pub mod march;

@@ -130,10 +130,10 @@ pub fn same_bits(a: &PolarTable, b: &PolarTable) -> bool {
         && a.mach() == b.mach()
         && pa.len() == pb.len()
         && pa.iter().zip(&pb).all(|(x, y)| {
-            x.0.to_bits() == y.0.to_bits()
-                && x.1.to_bits() == y.1.to_bits()
-                && x.2.len() == y.2.len()
-                && x.2.iter().zip(y.2).all(|(p, q)| {
+            x.0.reynolds.to_bits() == y.0.reynolds.to_bits()
+                && x.0.mach.to_bits() == y.0.mach.to_bits()
+                && x.1.len() == y.1.len()
+                && x.1.iter().zip(y.1).all(|(p, q)| {
                     let f = |p: &PolarPoint| {
                         [
                             p.alpha, p.cl, p.cd, p.cdp, p.cdf, p.cm, p.xtr_top, p.xtr_bot,

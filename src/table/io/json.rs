@@ -24,12 +24,6 @@ pub fn parse_json(text: &str) -> Result<PolarTable, TableError> {
     serde_json::from_str(text).map_err(|e| json_error(&e))
 }
 
-/// Read a table from a JSON file.
-pub fn read_json(path: &Path) -> Result<PolarTable, TableError> {
-    let text = std::fs::read_to_string(path).map_err(|e| TableError::io(path, e))?;
-    parse_json(&text)
-}
-
 /// A serde_json error as a one-line [`TableError::Json`].
 fn json_error(e: &serde_json::Error) -> TableError {
     let full = e.to_string();

@@ -5,7 +5,7 @@
 //! table's solver instead of XFOIL.
 
 use crate::output::write_output;
-use crate::section::PolarPoint;
+use crate::section::{FlowCondition, PolarPoint};
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -87,7 +87,7 @@ pub fn write_xfoil_polars(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "polar".to_string());
     let mut written = Vec::new();
-    for (re, mach, points) in table.polars() {
+    for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
         let file = if single {
             path.to_path_buf()
         } else {
@@ -199,10 +199,4 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
         solver,
     };
     PolarTable::new(meta, vec![re], vec![mach], vec![points])
-}
-
-/// Read an XFOIL polar file; see [`parse_xfoil_polar`].
-pub fn read_xfoil_polar(path: &Path) -> Result<PolarTable, TableError> {
-    let text = std::fs::read_to_string(path).map_err(|e| TableError::io(path, e))?;
-    parse_xfoil_polar(&text)
 }
