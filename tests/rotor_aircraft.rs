@@ -2,8 +2,7 @@
 
 mod rotor_support;
 
-use polargen::rotor::propeller::PropellerMap;
-use polargen::rotor::{Aircraft, AircraftError, Atmosphere, KT_TO_MS};
+use polargen::rotor::{Aircraft, AircraftError, Atmosphere, PropellerMap, KT_TO_MS};
 use rotor_support::mtosport;
 
 #[test]

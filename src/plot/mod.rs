@@ -1,8 +1,12 @@
 //! SVG/PNG plots of polars, point distributions and rotor results (plotters, shipped font).
 //!
-//! * [`figure`] — solver-independent description of a multi-panel line plot.
-//! * [`render`](mod@render) — draws a [`Figure`] to SVG or PNG (chosen by the file extension).
-//! * [`font`] — the embedded DejaVu Sans font used for all text.
+//! The facade: the figure model ([`Figure`], [`Panel`], [`Series`], [`Marker`], [`Style`]),
+//! [`render`] and its variants, [`check_image_path`], [`PlotError`], and the domain figures:
+//!
+//! * `figure` — solver-independent description of a multi-panel line plot.
+//! * `render`, `layout`, `axes`, `clip`, `draw` — drawing a [`Figure`] to SVG or PNG (chosen
+//!   by the file extension): entry points, pixel layout, tick scales, clipping, plotters calls.
+//! * `font` — the embedded DejaVu Sans font used for all text.
 //! * [`polar_plots`] — Cl–α, Cd–Cl, Cl/Cd–α, Cm–α overlays of polars.
 //! * [`point_plots`] — Cp(x) and boundary-layer distributions (H, Cf, N) at one α.
 //! * [`rotor_plots`] — blade α vs azimuth, takeoff time histories, power required.
@@ -26,13 +30,13 @@
 mod axes;
 mod clip;
 mod draw;
-pub mod error;
-pub mod figure;
-pub mod font;
+mod error;
+mod figure;
+mod font;
 mod layout;
 pub mod point_plots;
 pub mod polar_plots;
-pub mod render;
+mod render;
 pub mod rotor_plots;
 
 pub use error::PlotError;

@@ -116,7 +116,7 @@ fn ideal_induced_power_factor() -> f64 {
     1.0
 }
 
-/// Propeller and engine map (see [`crate::rotor::propeller`]).
+/// Propeller and engine data (the map they calibrate: [`crate::rotor::PropellerMap`]).
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PropellerParams {
@@ -137,7 +137,7 @@ pub struct PropellerParams {
     /// Highest engine rpm allowed (full-throttle rpm never exceeds it) \[rpm\].
     pub max_engine_rpm: f64,
     /// Zero-torque advance ratio of the propeller as a multiple of its zero-thrust advance
-    /// ratio, k = J_Q/J0 ≥ 1 (see [`crate::rotor::propeller`]).
+    /// ratio, k = J_Q/J0 ≥ 1 (see [`crate::rotor::PropellerMap`]).
     pub zero_torque_j_factor: f64,
 }
 
@@ -154,7 +154,7 @@ pub struct TakeoffParams {
     /// Rolling-friction coefficient of the wheels.
     pub rolling_friction: f64,
     /// Airspeed the pilot accelerates to during the climb, reached at the screen height \[kt\]
-    /// (see [`crate::rotor::takeoff`] for the pilot model).
+    /// (see [`crate::rotor::simulate_takeoff`] for the pilot model).
     pub climb_speed_kt: f64,
     /// Pilot gain: rate of change of the rotor-disc angle per airspeed error [deg/s per m/s].
     pub pilot_gain_deg_per_ms: f64,

@@ -228,7 +228,7 @@ impl Rotor {
     /// Velocity triangle of blade 1 at radius `r`, azimuth `psi`:
     /// U_T = Ωr + V cos α_H sin ψ,
     /// U_P = V sin α_H − v_i(r, ψ) − Ωr dβ/dψ − V cos α_H β cos ψ,
-    /// U_R = V cos α_H cos ψ (radial, drag only; see [`super::blade_element`])
+    /// U_R = V cos α_H cos ψ (radial, drag only; see [`StripFlow`](super::StripFlow))
     /// (small flap angles; Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §4.7,
     /// with the normal velocity counted upwards).
     pub fn strip_flow(

@@ -121,6 +121,15 @@ pub enum TableError {
         /// What is wrong.
         message: String,
     },
+    /// A JSON or XFOIL polar file is not UTF-8 text.
+    #[error("not UTF-8 text")]
+    NotText,
+    /// A CSV header names neither a polargen table nor a single polar.
+    #[error(
+        "CSV header lacks column '{0}' of a polargen table and the columns alpha, cl, cd of a \
+         single polar"
+    )]
+    CsvLayout(&'static str),
     /// The CSV header lacks a required column.
     #[error("CSV header lacks column '{0}'")]
     MissingColumn(String),

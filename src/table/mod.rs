@@ -1,15 +1,22 @@
 //! Re × Mach × α polar tables: grid, interpolating lookup with a 360° extension, file formats.
 //!
-//! * [`build`] — solving a table: the viscous polars of one airfoil on a Re × M × α grid.
-//! * [`grid`] — [`PolarTable`]: one polar per (Re, M) node, metadata, validation, accessors.
-//! * [`lookup`] — the α curve of one polar (monotone cubic, gaps bridged) and the
-//!   [`SectionAero`] implementation (linear in ln Re and in M between polars).
-//! * [`fixed_condition`] — queries at one (Re, M) between nodes: the polar sampled by lookups,
+//! The facade: [`PolarTable`] and its [`TableMeta`]; [`build_table`] on a [`GridSpec`];
+//! [`read_table`] / [`read_lookup_table`] / [`parse_table`] and [`write_table`] /
+//! [`write_c81`] in the [`TableFormat`]s; [`sample_polar`] and [`alpha_at_cl`] at one (Re, M);
+//! [`PostStallParams`]; [`TableError`] and [`BuildError`]. Inside (private):
+//!
+//! * `build` — solving a table: the viscous polars of one airfoil on a Re × M × α grid.
+//! * `grid` — [`PolarTable`]: one polar per (Re, M) node, metadata, validation, accessors.
+//! * `lookup` — the α curve of one polar (monotone cubic, gaps bridged) and the
+//!   [`SectionAero`](crate::section::SectionAero) implementation (linear in ln Re and in M
+//!   between polars).
+//! * `fixed_condition` — queries at one (Re, M) between nodes: the polar sampled by lookups,
 //!   α and Cd where Cl reaches a target (paper Table 5).
-//! * [`post_stall`] — the 360° extension beyond the computed α range (Viterna–Corrigan and a
+//! * `post_stall` — the 360° extension beyond the computed α range (Viterna–Corrigan and a
 //!   flat plate).
-//! * [`io`] — CSV, JSON, XFOIL polar and C81 files, written atomically.
-//! * [`error`] — [`TableError`].
+//! * `io` — CSV, JSON, XFOIL polar, C81 and single-polar CSV files; one reader that
+//!   recognises the layout, writers through [`output`](crate::output).
+//! * `error` — [`TableError`].
 //!
 //! ```
 //! use polargen::section::{FlowCondition, PolarPoint, SectionAero};
@@ -54,17 +61,19 @@
 //! assert!(rev.post_stall && rev.mach_clamped && rev.cl < 0.0);
 //! ```
 
-pub mod build;
-pub mod error;
-pub mod fixed_condition;
-pub mod grid;
-pub mod io;
-pub mod lookup;
-pub mod post_stall;
+mod build;
+mod error;
+mod fixed_condition;
+mod grid;
+mod io;
+mod lookup;
+mod post_stall;
 
-pub use build::{build_table, BuildError, GridSpec};
+pub use build::{build_table, BuildError, GridSpec, DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE};
 pub use error::TableError;
 pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
 pub use grid::{PolarTable, TableMeta};
-pub use io::{read_lookup_table, read_table, write_table, TableFormat};
+pub use io::{
+    parse_table, read_lookup_table, read_table, write_c81, write_table, C81Options, TableFormat,
+};
 pub use post_stall::PostStallParams;

@@ -1,7 +1,7 @@
 //! `gyro` — gyroplane rotor performance from airfoil polar tables: cruise trim, takeoff,
 //! clean-versus-contaminated comparison (paper Tables 3 and 4), power-required sweeps, rotor
 //! plots ([`plot`]) and the paper report ([`polargen::report`]). Text output is formatted in
-//! [`print`].
+//! [`print`](mod@print).
 
 #[path = "../common/cli.rs"]
 mod cli;
@@ -13,11 +13,10 @@ use clap::{Args, Parser, Subcommand};
 use cli::Tool;
 use polargen::output::{check_output_path, write_output, OutputError};
 use polargen::report::{check_report_paths, write_report, ReportInputs};
-use polargen::rotor::aircraft::{MAX_MASS_KG, MAX_SPEED_KT};
 use polargen::rotor::study::{paper_runs, SpeedSweep};
-use polargen::rotor::trim::{trim_aircraft, TrimParams};
 use polargen::rotor::{
-    cruise_blade_alpha, simulate_takeoff, sweep_speeds, Aircraft, MAX_ISA_ALTITUDE_M,
+    cruise_blade_alpha, simulate_takeoff, sweep_speeds, trim_aircraft, Aircraft, TrimParams,
+    MAX_ISA_ALTITUDE_M, MAX_MASS_KG, MAX_SPEED_KT,
 };
 use polargen::table::read_lookup_table;
 use std::path::{Path, PathBuf};

@@ -30,8 +30,10 @@ use polargen::plot::polar_plots::{compact_number, overlay_title, polar_figure, t
 use polargen::plot::{check_image_path, render};
 use polargen::polar::{parse_alpha_range, solve_at_cl, TargetClParams};
 use polargen::section::{FlowCondition, PolarPoint};
-use polargen::table::build::{DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE};
-use polargen::table::{build_table, read_table, write_table, GridSpec, TableFormat};
+use polargen::table::{
+    build_table, read_table, write_table, GridSpec, TableFormat, DEFAULT_ALPHA, DEFAULT_MACH,
+    DEFAULT_RE,
+};
 use polargen::viscous::distributions::write_distributions_csv;
 use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};
 

@@ -4,16 +4,16 @@
 //! Every writer goes through [`write_output`](crate::output::write_output), so a failure
 //! never leaves half a file and missing folders are created.
 
-pub mod c81;
-pub mod csv;
-pub mod json;
-pub mod xfoil_polar;
+mod c81;
+mod csv;
+mod json;
+mod xfoil_polar;
 
 use super::{PolarTable, TableError};
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
-pub use self::c81::C81Options;
+pub use self::c81::{write_c81, C81Options};
 
 /// A table file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -91,12 +91,15 @@ pub fn write_table(
     }
 }
 
-/// Read a table file, once, recognising its layout (see [`Layout::detect`]): a polargen CSV or
+/// Read a table file, once, recognising its layout from its extension and first line: a polargen CSV or
 /// JSON table, an XFOIL polar file (a one-polar table), or a single-polar CSV with columns
 /// `alpha, cl, cd[, cdp, cm, xtr_top, xtr_bot]` such as the XFOIL reference polars (a
 /// one-polar table at the Re and M of a file name like `…_Re1.9e6_M0.41_…`, else Re 10⁶,
 /// M 0). Every error names the file.
 pub fn read_table(path: &Path) -> Result<PolarTable, TableError> {
+    if let Ok(TableFormat::C81) = TableFormat::from_path(path) {
+        return Err(TableError::NotReadable("C81"));
+    }
     let bytes = read_input_file(path)?;
     // Name the file, unless the error already does.
     let in_file = |source: TableError| {
@@ -109,25 +112,31 @@ pub fn read_table(path: &Path) -> Result<PolarTable, TableError> {
             }
         }
     };
-    let text = || {
-        std::str::from_utf8(&bytes).map_err(|_| {
-            TableError::io(
-                path,
-                std::io::Error::new(
-                    std::io::ErrorKind::InvalidData,
-                    "stream did not contain valid UTF-8",
-                ),
-            )
-        })
+    let layout = Layout::detect(path, &bytes).map_err(in_file)?;
+    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("");
+    parse_layout(&bytes, layout, stem).map_err(in_file)
+}
+
+/// Parse a table held in memory in `format` (CSV is polargen's long form; C81 has no reader).
+pub fn parse_table(bytes: &[u8], format: TableFormat) -> Result<PolarTable, TableError> {
+    let layout = match format {
+        TableFormat::Csv => Layout::Csv,
+        TableFormat::Json => Layout::Json,
+        TableFormat::XfoilPolar => Layout::XfoilPolar,
+        TableFormat::C81 => return Err(TableError::NotReadable("C81")),
     };
-    match Layout::detect(path, &bytes).map_err(in_file)? {
-        Layout::Csv => csv::parse_csv(bytes.as_slice()).map_err(in_file),
-        Layout::PolarCsv => {
-            let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("");
-            csv::parse_polar_csv(bytes.as_slice(), stem).map_err(in_file)
-        }
-        Layout::Json => json::parse_json(text()?).map_err(in_file),
-        Layout::XfoilPolar => xfoil_polar::parse_xfoil_polar(text()?).map_err(in_file),
+    parse_layout(bytes, layout, "")
+}
+
+/// Parse `bytes` laid out as `layout`; `stem` is the file stem a single-polar CSV takes its
+/// flow condition from.
+fn parse_layout(bytes: &[u8], layout: Layout, stem: &str) -> Result<PolarTable, TableError> {
+    let text = || std::str::from_utf8(bytes).map_err(|_| TableError::NotText);
+    match layout {
+        Layout::Csv => csv::parse_csv(bytes),
+        Layout::PolarCsv => csv::parse_polar_csv(bytes, stem),
+        Layout::Json => json::parse_json(text()?),
+        Layout::XfoilPolar => xfoil_polar::parse_xfoil_polar(text()?),
     }
 }
 
@@ -176,7 +185,7 @@ impl Layout {
     /// The layout of a file from its extension, and from its first line where the extension
     /// does not decide: a `.csv` whose header names the `airfoil`, `re` and `mach` columns is
     /// a polargen table, one naming `alpha`, `cl` and `cd` (and not those) a single polar, any
-    /// other a polargen table with columns missing (its reader says which). A file with
+    /// other is refused naming what is missing (an empty one is left to the CSV reader). A file with
     /// another extension is recognised by its start: `{` (JSON), `Calculated polar for:`
     /// (XFOIL) or a CSV header as above.
     fn detect(path: &Path, bytes: &[u8]) -> Result<Self, TableError> {
@@ -197,8 +206,14 @@ impl Layout {
         } else {
             None
         };
+        let neither = || match ["airfoil", "re", "mach"].into_iter().find(|n| !has(&[n])) {
+            Some(missing) if columns.iter().any(|c| !c.is_empty()) => {
+                Err(TableError::CsvLayout(missing))
+            }
+            _ => Ok(Self::Csv),
+        };
         match TableFormat::from_path(path) {
-            Ok(TableFormat::Csv) => Ok(csv.unwrap_or(Self::Csv)),
+            Ok(TableFormat::Csv) => csv.map_or_else(neither, Ok),
             Ok(TableFormat::Json) => Ok(Self::Json),
             Ok(TableFormat::XfoilPolar) => Ok(Self::XfoilPolar),
             Ok(TableFormat::C81) => Err(TableError::NotReadable("C81")),

@@ -200,3 +200,16 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
     };
     PolarTable::new(meta, vec![re], vec![mach], vec![points])
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn file_names_carry_re_and_mach() {
+        assert_eq!(re_label(1e6), "1e6");
+        assert_eq!(re_label(999_999.9999999), "1e6");
+        assert_eq!(re_label(2.5e5), "2.5e5");
+        assert_eq!(polar_file_name("x", 2.5e5, 0.3), "x_Re2.5e5_M0.3.pol");
+    }
+}
