@@ -87,6 +87,16 @@ impl OutputError {
     }
 }
 
+/// `v` with `decimals` decimals and never a negative zero (a value that rounds to zero is
+/// written `0.000`, not `-0.000`): how numbers are written into text outputs.
+pub fn fixed_decimals(v: f64, decimals: usize) -> String {
+    let s = format!("{v:.decimals$}");
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => s,
+    }
+}
+
 /// Where the bytes for an output path go.
 #[derive(Clone, Debug, PartialEq, Eq)]
 enum Target {

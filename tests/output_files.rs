@@ -2,26 +2,12 @@
 //! temporary file left behind, old content kept on failure), symbolic links written through,
 //! and streams (`-`, `/dev/stdout`, devices) written in place, never renamed over.
 
+mod table_support;
+
 use polargen::output::{check_output_path, write_output, OutputError};
 use std::path::{Path, PathBuf};
 use std::process::Command;
-
-/// A fresh, empty scratch folder in the system temporary directory.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("polargen_output_{name}_{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn files_in(dir: &Path) -> Vec<String> {
-    let mut v: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    v.sort();
-    v
-}
+use table_support::{files_in, scratch};
 
 /// A writer body failing after half its output, with an error of the caller's own type.
 #[derive(Debug)]

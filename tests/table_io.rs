@@ -9,25 +9,8 @@ use polargen::table::{
     parse_table, read_table, write_c81, write_table, C81Options, PolarTable, TableError,
     TableFormat,
 };
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use table_support::*;
-
-/// A fresh, empty scratch folder in the system temporary directory.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("polargen_table_{name}_{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn files_in(dir: &Path) -> Vec<String> {
-    let mut v: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    v.sort();
-    v
-}
 
 /// A table with awkward values: non-terminating binary fractions, tiny and large magnitudes,
 /// unconverged points holding NaN and ±∞, a name with a comma.

@@ -4,6 +4,7 @@
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 
 use super::figure::AxisRange;
+use crate::output::fixed_decimals;
 
 /// Axis limits in plot coordinates for one axis: fixed, or the padded extent of `values`.
 pub(crate) fn axis_limits(range: AxisRange, values: &[f64], padding: f64) -> (f64, f64) {
@@ -144,14 +145,9 @@ impl Ranged for TickedAxis {
 /// Formats a tick value with `decimals` decimals, or in scientific notation for `None`
 /// (no "-0").
 pub(super) fn format_tick(v: f64, decimals: Option<usize>) -> String {
-    let s = match decimals {
-        Some(d) => format!("{v:.d$}"),
+    match decimals {
+        Some(d) => fixed_decimals(v, d),
         None => format!("{v:.3e}"),
-    };
-    if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
-        s[1..].to_string()
-    } else {
-        s
     }
 }
 

@@ -79,10 +79,8 @@ pub struct PlotPointArgs {
     #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES, allow_hyphen_values = true)]
     pub panels: usize,
 
-    /// Newton convergence threshold on the RMS relative change of the boundary-layer
-    /// variables (XFOIL uses 1e-4).
-    #[arg(long, default_value_t = ViscousParams::default().tolerance, allow_hyphen_values = true)]
-    pub tolerance: f64,
+    #[command(flatten)]
+    pub newton: Newton,
 
     /// Output image: FILE.svg or FILE.png.
     #[arg(long, value_name = "FILE")]
@@ -182,10 +180,8 @@ pub struct RunArgs {
     #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES, allow_hyphen_values = true)]
     pub panels: usize,
 
-    /// Newton convergence threshold on the RMS relative change of the boundary-layer
-    /// variables (XFOIL uses 1e-4).
-    #[arg(long, default_value_t = ViscousParams::default().tolerance, allow_hyphen_values = true)]
-    pub tolerance: f64,
+    #[command(flatten)]
+    pub newton: Newton,
 
     /// Worker threads (0 = all cores); a polar's two α branches run in parallel, so more
     /// than two threads per polar are not started.
@@ -200,4 +196,13 @@ pub struct RunArgs {
     /// Output file; standard output when absent (csv and json only).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+}
+
+/// The Newton threshold of the viscous solver.
+#[derive(Args, Debug)]
+pub struct Newton {
+    /// Newton convergence threshold on the RMS relative change of the boundary-layer
+    /// variables (XFOIL uses 1e-4).
+    #[arg(long, default_value_t = ViscousParams::default().tolerance, allow_hyphen_values = true)]
+    pub tolerance: f64,
 }

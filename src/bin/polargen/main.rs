@@ -24,7 +24,7 @@ use args::{Cli, Command, ConvertArgs, PlotArgs, PlotPointArgs, RunArgs};
 use cli::Tool;
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
 use polargen::inviscid::PanelSystem;
-use polargen::output::{check_output_path, write_output, OutputError};
+use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError};
 use polargen::plot::point_plots::{solutions_figure, solutions_title};
 use polargen::plot::polar_plots::{compact_number, overlay_title, polar_figure, transition_label};
 use polargen::plot::{check_image_path, render};
@@ -139,8 +139,8 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
             .with_context(|| format!("alpha {alpha}"))?;
         csv.push_str(&format!(
             "{alpha},{},0,{},true\n",
-            fixed6(sol.cl),
-            fixed6(sol.cm)
+            fixed_decimals(sol.cl, 6),
+            fixed_decimals(sol.cm, 6)
         ));
     }
     let path = cli.out.as_deref().unwrap_or(Path::new("-"));
@@ -182,7 +182,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     };
     let (xtr_top, xtr_bot) = transition(cli)?;
     check_ncrit(cli.ncrit)?;
-    check_tolerance(cli.tolerance)?;
+    check_tolerance(cli.newton.tolerance)?;
     if let Some(path) = &cli.out {
         check_out(path)?;
     }
@@ -201,7 +201,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     let start = Instant::now();
     let base = ViscousParams {
         ncrit: cli.ncrit,
-        tolerance: cli.tolerance,
+        tolerance: cli.newton.tolerance,
         xtr_top,
         xtr_bot,
         ..ViscousParams::default()
@@ -342,7 +342,7 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
     check_re(args.re)?;
     check_mach(args.mach)?;
     check_ncrit(args.ncrit)?;
-    check_tolerance(args.tolerance)?;
+    check_tolerance(args.newton.tolerance)?;
     let xtrs = parse_list("xtr", &args.xtr)?;
     xtrs.iter().try_for_each(|&x| check_xtr("xtr", x))?;
     check_image_path(&args.out).context("--out")?;
@@ -354,7 +354,7 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
     for &xtr in &xtrs {
         let params = ViscousParams {
             ncrit: args.ncrit,
-            tolerance: args.tolerance,
+            tolerance: args.newton.tolerance,
             ..ViscousParams::at(args.re, args.mach, xtr)
         };
         let mut solver = ViscousSolver::new(&foil, params).context("viscous solver")?;
@@ -417,16 +417,6 @@ fn progress_bar(total: u64) -> Option<indicatif::ProgressBar> {
         bar.set_style(style);
     }
     Some(bar)
-}
-
-/// `v` with 6 decimals, without the sign of a value that rounds to zero.
-fn fixed6(v: f64) -> String {
-    let s = format!("{v:.6}");
-    if s == "-0.000000" {
-        s[1..].to_string()
-    } else {
-        s
-    }
 }
 
 #[cfg(test)]

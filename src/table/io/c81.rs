@@ -31,7 +31,7 @@
 //!   leading blank, so that free-format (whitespace-splitting) readers work too.
 
 use super::xfoil_polar::re_label;
-use crate::output::write_output;
+use crate::output::{fixed_decimals, write_output};
 use crate::section::SectionAero;
 use crate::table::{PolarTable, TableError};
 use std::io::Write;
@@ -137,13 +137,7 @@ const MIN_OUTER_GAP_DEG: f64 = 1.0;
 fn field(v: f64, max_dec: usize, blank: bool) -> Result<String, TableError> {
     let limit = if blank { FIELD - 1 } else { FIELD };
     for d in (0..=max_dec).rev() {
-        // A value that rounds to zero is written as 0 (never "-0.000").
-        let v = if (v * 10f64.powi(d as i32)).round() == 0.0 {
-            0.0
-        } else {
-            v
-        };
-        let s = format!("{v:.d$}");
+        let s = fixed_decimals(v, d);
         if s.len() <= limit {
             return Ok(format!("{s:>FIELD$}"));
         }
