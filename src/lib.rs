@@ -1,27 +1,57 @@
 //! polargen — airfoil polar tables from an XFOIL-class viscous–inviscid solver, and a
 //! gyroplane rotor strip model that consumes them.
 //!
+//! # Layers
+//!
 //! Data flows one way through the module tree; a lower layer never imports a higher one:
 //!
 //! ```text
-//! geometry → inviscid → boundary_layer → viscous → polar → table → rotor
-//!                                                            ↘ plot (reads tables and rotor results)
+//! geometry → inviscid → boundary_layer → viscous → polar → table → rotor → report
+//!                                                              ↘ plot ↗
+//! leaf modules every layer may use: section, compressibility, output, diagnostics
 //! ```
 //!
 //! * [`geometry`] — airfoil shapes (NACA 4/5-digit, coordinate files, named registry), splines,
 //!   curvature-based paneling.
 //! * [`inviscid`] — linear-vorticity stream-function panel method (Drela 1989), unit solutions,
-//!   source influence for the viscous coupling, Karman–Tsien compressibility.
+//!   source influence for the viscous coupling.
 //! * [`boundary_layer`] — integral boundary-layer closures, amplification (e^n) and the
 //!   discrete equations for one interval (Drela & Giles 1987).
-//! * [`viscous`] — wake, viscous–inviscid coupling and the global Newton solve.
+//! * [`viscous`] — wake, viscous–inviscid coupling and the global Newton solve; the surface
+//!   distributions of a solution.
 //! * [`polar`] — α sweeps with warm starts and recovery of failed points.
-//! * [`table`] — Re × Mach × α tables, lookup with 360° extension, file formats.
-//! * [`rotor`] — blade-element model of a teetering gyroplane rotor: trim and takeoff.
-//! * [`plot`] — SVG/PNG plots of polars, point distributions and rotor results.
+//! * [`table`] — Re × Mach × α tables: building ([`table::build_table`]), lookups with a 360°
+//!   extension, one reader that recognises every readable layout ([`table::read_table`]), and
+//!   the writers.
+//! * [`rotor`] — blade-element model of a teetering gyroplane rotor: trim, takeoff, cruise
+//!   sweeps, and [`rotor::study`], the paper's clean-versus-contaminated study.
+//! * [`plot`] — SVG/PNG figures of polars, point distributions and rotor results.
+//! * [`report`] — the paper report: Tables 3–5 beside the paper's values, figures, words.
+//!
+//! Leaf modules:
+//!
 //! * [`section`] — the shared vocabulary of section data: polar points, flow conditions and
 //!   the lookup interface the rotor consumes.
-//! * [`diagnostics`] — one-line error text for the command-line tools.
+//! * [`compressibility`] — γ and the Karman–Tsien relations (Cp, speed, critical Cp).
+//! * [`output`] — every result file goes through it: path checks, atomic writes, `-` for
+//!   standard output, streams written in place; [`output::OutputError`].
+//! * [`diagnostics`] — an error and its causes on one line, for the command-line tools.
+//!
+//! # Public API
+//!
+//! Each layer exports a narrow facade from its root and keeps its files `pub(crate)` or
+//! private. The main entry points:
+//!
+//! | task | API |
+//! |---|---|
+//! | load and panel an airfoil | [`geometry::airfoil_by_name_or_path`], [`geometry::Airfoil`] |
+//! | solve one viscous point or a sweep | [`viscous::ViscousSolver`] (a [`polar::WarmStartSolver`] for [`polar::sweep`]) |
+//! | build, read, write a table | [`table::build_table`], [`table::read_table`], [`table::write_table`] |
+//! | look up section coefficients | [`section::SectionAero`] on [`table::PolarTable`] |
+//! | trim, takeoff, sweeps | [`rotor::trim_aircraft`], [`rotor::simulate_takeoff`], [`rotor::study`] |
+//! | figures | [`plot::render`] with [`plot::polar_plots`], [`plot::point_plots`], [`plot::rotor_plots`] |
+//! | the paper report | [`report::write_report`] |
+//! | write any result file | [`output::write_output`] |
 
 #![warn(missing_docs)]
 
@@ -31,8 +61,10 @@ pub mod diagnostics;
 pub mod geometry;
 pub mod inviscid;
 mod numerics;
+pub mod output;
 pub mod plot;
 pub mod polar;
+pub mod report;
 pub mod rotor;
 pub mod section;
 pub mod table;

@@ -90,7 +90,7 @@ impl Lookup {
 }
 
 /// Anything that gives section coefficients at (α (deg), Re, M): the interface the rotor
-/// model consumes. [`PolarTable`] implements it; tests may use analytic sections.
+/// model consumes. [`PolarTable`](crate::table::PolarTable) implements it; tests may use analytic sections.
 pub trait SectionAero {
     /// Coefficients at angle of attack `alpha_deg` (any value, wrapped to ±180°), Reynolds
     /// number `re` and Mach number `mach`.

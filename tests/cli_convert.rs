@@ -3,8 +3,7 @@
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
-use polargen::table::io::csv::write_csv_to;
-use polargen::table::read_table;
+use polargen::table::{read_table, write_table, TableFormat};
 
 fn polargen(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_polargen"))
@@ -19,10 +18,11 @@ fn shipped(name: &str) -> PathBuf {
         .join(name)
 }
 
+/// The long-form CSV text of the table in `path`.
 fn csv_text(path: &std::path::Path) -> String {
-    let mut buf = Vec::new();
-    write_csv_to(&read_table(path).unwrap(), &mut buf).unwrap();
-    String::from_utf8(buf).unwrap()
+    let out = out_dir("csv-text").join("t.csv");
+    write_table(&read_table(path).unwrap(), &out, Some(TableFormat::Csv)).unwrap();
+    std::fs::read_to_string(out).unwrap()
 }
 
 fn out_dir(tag: &str) -> PathBuf {

@@ -194,13 +194,13 @@ fn formats_by_extension_and_flag() {
     };
     let json = dir.join("sub/t.json");
     run(&["--out", json.to_str().unwrap()]);
-    let table = polargen::table::io::read_table(&json).unwrap();
+    let table = polargen::table::read_table(&json).unwrap();
     assert_eq!(table.re(), &[1e6, 2e6]);
     assert_eq!(table.point_count(), 6);
 
     let csv = dir.join("t.csv");
     run(&["--out", csv.to_str().unwrap()]);
-    let back = polargen::table::io::read_table(&csv).unwrap();
+    let back = polargen::table::read_table(&csv).unwrap();
     assert_eq!(back, table);
 
     run(&[

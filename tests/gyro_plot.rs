@@ -5,7 +5,7 @@
 mod gyro_support;
 
 use gyro_support::{aircraft, assert_ok, assert_one_line_error, gyro, root};
-use polargen::table::fixed_condition::alpha_at_cl;
+use polargen::table::alpha_at_cl;
 use polargen::table::read_table;
 use std::path::{Path, PathBuf};
 

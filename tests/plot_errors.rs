@@ -86,7 +86,7 @@ fn path_under_a_file_or_a_folder_gives_unwritable_error() {
     for name in ["file/plot.svg", "file/sub/plot.png", "folder.svg"] {
         let path = dir.join(name);
         let err = render(&parabola("t"), &path).expect_err(name);
-        assert!(matches!(err, PlotError::Unwritable { .. }), "{err:?}");
+        assert!(matches!(err, PlotError::Output { .. }), "{err:?}");
         assert_one_line(&err, &path.display().to_string());
         assert_eq!(
             err.to_string(),

@@ -2,8 +2,7 @@
 
 mod rotor_support;
 
-use polargen::rotor::propeller::PropellerMap;
-use polargen::rotor::{Aircraft, AircraftError, Atmosphere, KT_TO_MS};
+use polargen::rotor::{Aircraft, AircraftError, Atmosphere, PropellerMap, KT_TO_MS};
 use rotor_support::mtosport;
 
 #[test]
@@ -77,7 +76,7 @@ fn unknown_field_and_bad_values_are_rejected() {
     let text = preset_text().replace("inflow = \"glauert\"", "inflow = \"vortex\"");
     assert_eq!(
         Aircraft::from_toml_str(&text, "t").unwrap_err().to_string(),
-        "aircraft parameter rotor.inflow = \"vortex\" is invalid: must be \"glauert\" or \"drees\""
+        "bad aircraft file t: unknown variant `vortex`, expected `glauert` or `drees`"
     );
     // Takeoff integration: a step that would take millions of steps, one too coarse to
     // resolve the rotor, a field above the ISA troposphere.

@@ -79,14 +79,24 @@ fn induced_power_factor_scales_the_induced_power() {
     let section = AnalyticSection::clean();
     let a = ideal.solve(&section, &cond, None).unwrap();
     let b = real.solve(&section, &cond, None).unwrap();
+    // Glauert's momentum theory, T = 2ρA·v·V′ with V′ = √((V cos α)² + (V sin α − v)²), solved
+    // for the induced velocity v by bisection (a reference independent of the library's).
     let ideal_of = |s: &polargen::rotor::RotorSolution| {
-        polargen::rotor::inflow::glauert_induced_velocity(
-            s.thrust,
-            atm.density,
-            ideal.disc_area(),
-            v,
-            cond.hub_aoa,
-        )
+        let (edge, axial) = (v * cond.hub_aoa.cos(), v * cond.hub_aoa.sin());
+        let g = |w: f64| {
+            2.0 * atm.density * ideal.disc_area() * w * (edge * edge + (axial - w).powi(2)).sqrt()
+                - s.thrust
+        };
+        let (mut lo, mut hi) = (0.0, 50.0);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if g(mid) < 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
     };
     assert!((a.induced_velocity / ideal_of(&a) - 1.0).abs() < 1e-6);
     assert!((b.induced_velocity / ideal_of(&b) - 1.15).abs() < 1e-6);

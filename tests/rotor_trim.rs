@@ -3,8 +3,10 @@
 
 mod rotor_support;
 
-use polargen::rotor::trim::{autorotation, trim_aircraft, trim_rotor, TrimError, TrimParams};
-use polargen::rotor::{rpm_to_rad_s, Atmosphere, FlightCondition, Rotor, KT_TO_MS};
+use polargen::rotor::{
+    autorotation, rpm_to_rad_s, trim_aircraft, trim_rotor, Atmosphere, FlightCondition, Rotor,
+    TrimError, TrimParams, KT_TO_MS,
+};
 use rotor_support::{mtosport, AnalyticSection};
 
 fn rotor() -> Rotor {

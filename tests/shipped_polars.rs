@@ -2,7 +2,7 @@
 //! on grid nodes, and interpolated values at the paper's condition against XFOIL.
 
 use polargen::section::SectionAero;
-use polargen::table::io::read_table;
+use polargen::table::read_table;
 use polargen::table::PolarTable;
 use std::path::Path;
 

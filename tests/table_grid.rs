@@ -2,6 +2,7 @@
 
 mod table_support;
 
+use polargen::section::FlowCondition;
 use polargen::section::PolarPoint;
 use polargen::section::SectionAero;
 use polargen::table::{PolarTable, TableError};
@@ -30,12 +31,12 @@ fn grid_shape_and_accessors() {
     assert!((p[10].cl - cl_model(0.0, 1e6, 0.2)).abs() < 1e-15);
     assert!(t.polar(1.5e6, 0.2).is_none());
     assert!(t.polar_at(3, 0).is_none());
-    let (re, mach, pts) = t.nearest_polar(1.3e6, 0.29);
-    assert_eq!((re, mach, pts.len()), (1e6, 0.2, 26));
-    let (re, mach, _) = t.nearest_polar(1.5e6, 0.31);
-    assert_eq!((re, mach), (2e6, 0.4)); // 1.5e6 is nearer 2e6 than 1e6 in ln Re
-    let (re, mach, _) = t.nearest_polar(1e9, -3.0);
-    assert_eq!((re, mach), (2e6, 0.0));
+    let (at, pts) = t.nearest_polar(1.3e6, 0.29);
+    assert_eq!((at, pts.len()), (FlowCondition::new(1e6, 0.2), 26));
+    let (at, _) = t.nearest_polar(1.5e6, 0.31);
+    assert_eq!(at, FlowCondition::new(2e6, 0.4)); // 1.5e6 is nearer 2e6 than 1e6 in ln Re
+    let (at, _) = t.nearest_polar(1e9, -3.0);
+    assert_eq!(at, FlowCondition::new(2e6, 0.0));
     assert_eq!(t.alpha_range(2, 2), Some((-10.0, 15.0)));
 }
 
@@ -45,7 +46,7 @@ fn from_polars_infers_axes_and_sorts_points() {
     let mut list = Vec::new();
     for &m in &[0.3, 0.0] {
         for &r in &[2e6, 5e5] {
-            list.push((r, m, analytic_polar(r, m, &alphas)));
+            list.push((FlowCondition::new(r, m), analytic_polar(r, m, &alphas)));
         }
     }
     let t = PolarTable::from_polars(meta("x"), list).unwrap();
@@ -72,14 +73,23 @@ fn unconverged_points_are_kept_and_counted() {
 fn ragged_and_duplicate_grids_are_rejected() {
     let alphas = [0.0, 1.0];
     let list = vec![
-        (1e6, 0.0, analytic_polar(1e6, 0.0, &alphas)),
-        (2e6, 0.0, analytic_polar(2e6, 0.0, &alphas)),
-        (1e6, 0.2, analytic_polar(1e6, 0.2, &alphas)),
+        (
+            FlowCondition::new(1e6, 0.0),
+            analytic_polar(1e6, 0.0, &alphas),
+        ),
+        (
+            FlowCondition::new(2e6, 0.0),
+            analytic_polar(2e6, 0.0, &alphas),
+        ),
+        (
+            FlowCondition::new(1e6, 0.2),
+            analytic_polar(1e6, 0.2, &alphas),
+        ),
     ];
     let e = PolarTable::from_polars(meta("x"), list.clone()).unwrap_err();
     assert_eq!(e.to_string(), "ragged grid: no polar at Re 2000000, M 0.2");
     let mut nan = list.clone();
-    nan[2].1 = f64::NAN;
+    nan[2].0.mach = f64::NAN;
     let e = PolarTable::from_polars(meta("x"), nan).unwrap_err();
     assert_eq!(e.to_string(), "Mach must be in [0, 1), got NaN");
     let mut dup = list;

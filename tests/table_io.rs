@@ -1,35 +1,16 @@
-//! Table files: CSV/JSON round trips, XFOIL polar and C81 structure, atomic writes, format
-//! inference and error messages.
+//! Table files: CSV/JSON round trips, XFOIL polar and C81 structure, format inference and error
+//! messages.
 
 mod table_support;
 
-use polargen::section::PolarPoint;
 use polargen::section::SectionAero;
-use polargen::table::io::c81::{write_c81, C81Options};
-use polargen::table::io::csv::parse_csv;
-use polargen::table::io::json::parse_json;
-use polargen::table::io::xfoil_polar::{polar_file_name, re_label};
-use polargen::table::io::{check_output_path, write_atomic};
-use polargen::table::{read_table, write_table, PolarTable, TableError, TableFormat};
-use std::path::{Path, PathBuf};
+use polargen::section::{FlowCondition, PolarPoint};
+use polargen::table::{
+    parse_table, read_table, write_c81, write_table, C81Options, PolarTable, TableError,
+    TableFormat,
+};
+use std::path::Path;
 use table_support::*;
-
-/// A fresh, empty scratch folder in the system temporary directory.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("polargen_table_{name}_{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn files_in(dir: &Path) -> Vec<String> {
-    let mut v: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    v.sort();
-    v
-}
 
 /// A table with awkward values: non-terminating binary fractions, tiny and large magnitudes,
 /// unconverged points holding NaN and ±∞, a name with a comma.
@@ -50,7 +31,7 @@ fn awkward_table() -> PolarTable {
             pts[4].converged = false;
             pts[4].cd = f64::INFINITY;
             pts[4].cm = f64::NEG_INFINITY;
-            list.push((re, m, pts));
+            list.push((FlowCondition::new(re, m), pts));
         }
     }
     let mut m = meta("NACA 8-H-12, \"reflexed\"");
@@ -100,7 +81,7 @@ fn csv_reader_accepts_minimal_columns_in_any_order() {
                 1,1e6,0,foil,9,1,1,0.11,0.01,0.004,-0.01,0.5,0.9,true\n\
                 0,1e6,0,foil,9,1,1,0,0.009,0.003,-0.012,0.6,0.8,1\n\
                 2,1e6,0,foil,9,1,1,0.22,0.012,0.005,-0.008,0.4,1,false\n";
-    let t = parse_csv(text.as_bytes()).unwrap();
+    let t = parse_table(text.as_bytes(), TableFormat::Csv).unwrap();
     assert_eq!(t.meta().airfoil, "foil");
     assert_eq!(t.meta().panels, 0);
     let p = t.polar(1e6, 0.0).unwrap();
@@ -112,7 +93,9 @@ fn csv_reader_accepts_minimal_columns_in_any_order() {
 }
 
 fn csv_err(text: &str) -> String {
-    parse_csv(text.as_bytes()).unwrap_err().to_string()
+    parse_table(text.as_bytes(), TableFormat::Csv)
+        .unwrap_err()
+        .to_string()
 }
 
 const HEAD: &str =
@@ -153,19 +136,23 @@ fn csv_errors_name_the_line_and_problem() {
 
 #[test]
 fn json_errors_name_the_position_and_problem() {
-    let e = parse_json("{\n  \"meta\": [1,\n").unwrap_err();
+    let e = parse_table("{\n  \"meta\": [1,\n".as_bytes(), TableFormat::Json).unwrap_err();
     assert!(matches!(e, TableError::Json { line: 2, .. }), "{e}");
     let t = awkward_table();
     let text = serde_json::to_string_pretty(&t)
         .unwrap()
         .replacen("0.41", "1.41", 1);
-    let e = parse_json(&text).unwrap_err().to_string();
+    let e = parse_table(text.as_bytes(), TableFormat::Json)
+        .unwrap_err()
+        .to_string();
     assert!(
         e.starts_with("JSON line") && e.contains("Mach must be in [0, 1), got 1.41"),
         "{e}"
     );
     assert!(!e.contains('\n'));
-    let e = parse_json("{\"meta\": 3}").unwrap_err().to_string();
+    let e = parse_table("{\"meta\": 3}".as_bytes(), TableFormat::Json)
+        .unwrap_err()
+        .to_string();
     assert!(
         e.starts_with("JSON line 1, column") && e.contains("invalid type"),
         "{e}"
@@ -196,7 +183,7 @@ fn format_inference_and_names() {
     let dir = scratch("explicit");
     let path = dir.join("table.txt");
     write_table(&analytic_table(), &path, Some(TableFormat::Json)).unwrap();
-    assert!(parse_json(&std::fs::read_to_string(&path).unwrap()).is_ok());
+    assert!(parse_table(&std::fs::read(&path).unwrap(), TableFormat::Json).is_ok());
     assert_eq!(
         read_table(&dir.join("x.c81")).unwrap_err().to_string(),
         "C81 files cannot be read back as tables (only CSV, JSON and XFOIL polar)"
@@ -262,9 +249,6 @@ fn xfoil_polar_files_have_xfoil_layout() {
     .unwrap();
     let path = dir.join("single.pol");
     assert_eq!(write_table(&single, &path, None).unwrap(), vec![path]);
-    assert_eq!(re_label(1e6), "1e6");
-    assert_eq!(re_label(999_999.9999999), "1e6");
-    assert_eq!(polar_file_name("x", 2.5e5, 0.3), "x_Re2.5e5_M0.3.pol");
     std::fs::remove_dir_all(dir).unwrap();
 }
 
@@ -419,9 +403,15 @@ fn c81_thins_long_alpha_lists_to_99_rows() {
         ],
     )
     .unwrap();
-    let mut buf = Vec::new();
-    polargen::table::io::c81::write_c81_to(&t, 1e6, 10.0, &mut buf).unwrap();
-    let text = String::from_utf8(buf).unwrap();
+    let dir = scratch("thin");
+    let path = dir.join("dense.c81");
+    let one_re = C81Options {
+        re: Some(1e6),
+        outer_step_deg: 10.0,
+    };
+    write_c81(&t, &path, &one_re).unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::remove_dir_all(dir).unwrap();
     let head = text.lines().next().unwrap();
     let na: usize = head[32..34].trim().parse().unwrap();
     assert!(na <= 99 && na > 80, "na {na}");
@@ -429,30 +419,9 @@ fn c81_thins_long_alpha_lists_to_99_rows() {
 }
 
 #[test]
-fn atomic_write_creates_folders_and_leaves_no_temp_files() {
-    let dir = scratch("atomic");
-    let path = dir.join("a/b/c.txt");
-    write_atomic(&path, |w| {
-        w.write_all(b"hello").map_err(|e| TableError::io("x", e))
-    })
-    .unwrap();
-    assert_eq!(std::fs::read_to_string(&path).unwrap(), "hello");
-    assert_eq!(files_in(&dir.join("a/b")), vec!["c.txt"]);
-    // A failing writer leaves the old content and no temporary file.
-    let e = write_atomic(&path, |w| {
-        w.write_all(b"half a fi")
-            .map_err(|e| TableError::io("x", e))?;
-        Err(TableError::Empty)
-    })
-    .unwrap_err();
-    assert!(matches!(e, TableError::Empty));
-    assert_eq!(std::fs::read_to_string(&path).unwrap(), "hello");
-    assert_eq!(files_in(&dir.join("a/b")), vec!["c.txt"]);
-    // …and no target at all when there was none.
-    let fresh = dir.join("a/b/new.csv");
-    assert!(write_atomic(&fresh, |_| Err(TableError::Empty)).is_err());
-    assert!(!fresh.exists());
-    assert_eq!(files_in(&dir.join("a/b")), vec!["c.txt"]);
+fn failed_table_writes_leave_nothing_behind() {
+    let dir = scratch("failed");
+    std::fs::create_dir_all(dir.join("folder.csv")).unwrap();
     // A C81 that cannot be written (value too wide for 7 characters) leaves nothing behind.
     let huge = PolarTable::new(
         meta("huge"),
@@ -465,80 +434,13 @@ fn atomic_write_creates_folders_and_leaves_no_temp_files() {
     let msg = e.to_string();
     assert!(msg.starts_with("value ") && msg.ends_with(" does not fit a 7-character field"));
     assert!(!dir.join("h.c81").exists());
-    assert_eq!(files_in(&dir), vec!["a"]);
-    std::fs::remove_dir_all(dir).unwrap();
-}
-
-#[test]
-fn output_paths_are_checked_before_writing() {
-    let dir = scratch("outpath");
-    std::fs::create_dir_all(dir.join("folder.csv")).unwrap();
-    std::fs::write(dir.join("plain"), "x").unwrap();
-    let msg = |p: PathBuf| check_output_path(&p).unwrap_err().to_string();
-    let d = dir.display();
-    assert_eq!(
-        msg(dir.join("folder.csv")),
-        format!("{d}/folder.csv: is a folder, not a file name")
-    );
-    assert_eq!(
-        msg(PathBuf::from(format!("{d}/new/"))),
-        format!("{d}/new/: is a folder, not a file name")
-    );
-    assert_eq!(
-        msg(dir.join("plain/sub/t.csv")),
-        format!("{d}/plain: is not a folder")
-    );
-    // Missing folders are fine (the writers create them); nothing was created by the checks.
-    check_output_path(&dir.join("a/b/t.csv")).unwrap();
-    check_output_path(Path::new("t.csv")).unwrap();
-    assert_eq!(files_in(&dir), vec!["folder.csv", "plain"]);
-    // The writers make the same checks.
-    let t = awkward_table();
-    let e = write_table(&t, &dir.join("folder.csv"), None).unwrap_err();
+    // The writers check the path like every output.
+    let e = write_table(&awkward_table(), &dir.join("folder.csv"), None).unwrap_err();
     assert_eq!(
         e.to_string(),
-        format!("{d}/folder.csv: is a folder, not a file name")
+        format!("{}/folder.csv: is a folder, not a file name", dir.display())
     );
-    // Devices and pipes are refused (never replaced by a regular file).
-    if Path::new("/dev/null").exists() {
-        assert_eq!(
-            msg(PathBuf::from("/dev/null")),
-            "/dev/null: is not a regular file"
-        );
-        let e = write_atomic(Path::new("/dev/null"), |_| Ok(())).unwrap_err();
-        assert_eq!(e.to_string(), "/dev/null: is not a regular file");
-    }
-    std::fs::remove_dir_all(dir).unwrap();
-}
-
-/// A symbolic link is written through: the linked file gets the new content, the link stays.
-#[cfg(unix)]
-#[test]
-fn writers_follow_symbolic_links() {
-    let dir = scratch("symlink");
-    std::fs::create_dir_all(dir.join("real")).unwrap();
-    std::fs::write(dir.join("real/t.csv"), "old").unwrap();
-    std::os::unix::fs::symlink(dir.join("real/t.csv"), dir.join("link.csv")).unwrap();
-    write_atomic(&dir.join("link.csv"), |w| {
-        w.write_all(b"new").map_err(|e| TableError::io("x", e))
-    })
-    .unwrap();
-    let link = std::fs::symlink_metadata(dir.join("link.csv")).unwrap();
-    assert!(link.file_type().is_symlink());
-    assert_eq!(
-        std::fs::read_to_string(dir.join("real/t.csv")).unwrap(),
-        "new"
-    );
-    assert_eq!(files_in(&dir.join("real")), vec!["t.csv"]);
-    // A broken link is an error, and nothing is created.
-    std::os::unix::fs::symlink(dir.join("gone/x.csv"), dir.join("broken.csv")).unwrap();
-    let e = check_output_path(&dir.join("broken.csv")).unwrap_err();
-    assert!(
-        e.to_string()
-            .ends_with("broken.csv: is a broken symbolic link"),
-        "{e}"
-    );
-    assert!(!dir.join("gone").exists());
+    assert_eq!(files_in(&dir), vec!["folder.csv"]);
     std::fs::remove_dir_all(dir).unwrap();
 }
 
@@ -582,7 +484,7 @@ fn xfoil_polar_reader_handles_extra_columns_and_repeats() {
    2.000   0.4700   0.00650   0.00120  -0.0510  -1.1000   0.0400  -0.0080   0.5000   0.0700\n\
    0.000   0.2500   0.00600   0.00100  -0.0500  -1.5000   0.0300  -0.0100   0.6000   0.0700\n\
   -2.000   0.0300   0.00640   0.00110  -0.0490  -1.0000   0.0300  -0.0100   0.7000   0.0700\n";
-    let t = polargen::table::io::xfoil_polar::parse_xfoil_polar(text).unwrap();
+    let t = parse_table(text.as_bytes(), TableFormat::XfoilPolar).unwrap();
     assert_eq!(t.meta().solver, "XFOIL Version 6.99");
     assert_eq!((t.meta().ncrit, t.meta().xtr_bot_set), (5.0, 0.07));
     assert_eq!((t.re()[0], t.mach()[0]), (3e6, 0.2));
@@ -593,14 +495,14 @@ fn xfoil_polar_reader_handles_extra_columns_and_repeats() {
     assert!((p[2].cdf - 0.0053).abs() < 1e-15);
     let broken = text.replace("Ncrit =   5.000", "");
     assert_eq!(
-        polargen::table::io::xfoil_polar::parse_xfoil_polar(&broken)
+        parse_table(broken.as_bytes(), TableFormat::XfoilPolar)
             .unwrap_err()
             .to_string(),
         "XFOIL polar line 9: Mach/Re/Ncrit line is incomplete"
     );
     let bad = text.replace("0.4700", "0.47x0");
     assert_eq!(
-        polargen::table::io::xfoil_polar::parse_xfoil_polar(&bad)
+        parse_table(bad.as_bytes(), TableFormat::XfoilPolar)
             .unwrap_err()
             .to_string(),
         "XFOIL polar line 14: '0.47x0' is not a number"
@@ -614,13 +516,13 @@ fn output_does_not_depend_on_polar_order() {
     let mut list = Vec::new();
     for &re in &[5e5, 1e6, 2e6] {
         for &m in &[0.0, 0.3] {
-            list.push((re, m, analytic_polar(re, m, &alphas)));
+            list.push((FlowCondition::new(re, m), analytic_polar(re, m, &alphas)));
         }
     }
     let a = PolarTable::from_polars(meta("order"), list.clone()).unwrap();
     list.reverse();
     list.swap(1, 4);
-    for (_, _, pts) in list.iter_mut() {
+    for (_, pts) in list.iter_mut() {
         pts.reverse();
     }
     let b = PolarTable::from_polars(meta("order"), list).unwrap();

@@ -3,6 +3,7 @@
 
 mod table_support;
 
+use polargen::section::FlowCondition;
 use polargen::section::PolarPoint;
 use polargen::section::SectionAero;
 use polargen::table::{PolarTable, PostStallParams};
@@ -13,7 +14,7 @@ const EXACT: f64 = 1e-12;
 #[test]
 fn exact_on_grid_nodes() {
     let t = analytic_table();
-    for (re, mach, points) in t.polars() {
+    for (FlowCondition { reynolds: re, mach }, points) in t.polars() {
         for p in points {
             let l = t.lookup(p.alpha, re, mach);
             assert!((l.cl - p.cl).abs() < EXACT, "cl at {re} {mach} {}", p.alpha);

@@ -1,6 +1,7 @@
 //! Errors of the plotting layer: one-line messages naming the problem.
 
-use std::path::PathBuf;
+use crate::output::OutputError;
+use std::path::{Path, PathBuf};
 
 /// Why a figure could not be drawn or written.
 #[derive(Debug, thiserror::Error)]
@@ -11,13 +12,13 @@ pub enum PlotError {
         /// The requested output path.
         path: PathBuf,
     },
-    /// The output file (or its temporary sibling) could not be created, written or renamed.
-    #[error("cannot write plot {path}: {reason}")]
-    Unwritable {
+    /// The output file could not be created, written or renamed.
+    #[error("cannot write plot {}: {}", path.display(), source.detail_for(path))]
+    Output {
         /// The requested output path.
         path: PathBuf,
-        /// What the operating system or image encoder reported.
-        reason: String,
+        /// What went wrong, and where.
+        source: OutputError,
     },
     /// The figure has no panels.
     #[error("figure \"{title}\" has no panels to draw")]
@@ -63,4 +64,23 @@ pub enum PlotError {
     /// The plotting backend failed while drawing.
     #[error("drawing failed: {0}")]
     Draw(String),
+}
+
+impl PlotError {
+    /// An output error of the image file `path`.
+    pub fn output(path: &Path, source: OutputError) -> Self {
+        Self::Output {
+            path: path.to_path_buf(),
+            source,
+        }
+    }
+}
+
+impl From<OutputError> for PlotError {
+    fn from(source: OutputError) -> Self {
+        Self::Output {
+            path: source.path().to_path_buf(),
+            source,
+        }
+    }
 }

@@ -1,8 +1,12 @@
 //! SVG/PNG plots of polars, point distributions and rotor results (plotters, shipped font).
 //!
-//! * [`figure`] — solver-independent description of a multi-panel line plot.
-//! * [`render`](mod@render) — draws a [`Figure`] to SVG or PNG (chosen by the file extension).
-//! * [`font`] — the embedded DejaVu Sans font used for all text.
+//! The facade: the figure model ([`Figure`], [`Panel`], [`Series`], [`Marker`], [`Style`]),
+//! [`render`] and its variants, [`check_image_path`], [`PlotError`], and the domain figures:
+//!
+//! * `figure` — solver-independent description of a multi-panel line plot.
+//! * `render`, `layout`, `axes`, `clip`, `draw` — drawing a [`Figure`] to SVG or PNG (chosen
+//!   by the file extension): entry points, pixel layout, tick scales, clipping, plotters calls.
+//! * `font` — the embedded DejaVu Sans font used for all text.
 //! * [`polar_plots`] — Cl–α, Cd–Cl, Cl/Cd–α, Cm–α overlays of polars.
 //! * [`point_plots`] — Cp(x) and boundary-layer distributions (H, Cf, N) at one α.
 //! * [`rotor_plots`] — blade α vs azimuth, takeoff time histories, power required.
@@ -23,14 +27,20 @@
 //! # Ok::<(), polargen::plot::PlotError>(())
 //! ```
 
-pub mod error;
-pub mod figure;
-pub mod font;
+mod axes;
+mod clip;
+mod draw;
+mod error;
+mod figure;
+mod font;
+mod layout;
 pub mod point_plots;
 pub mod polar_plots;
-pub mod render;
+mod render;
 pub mod rotor_plots;
 
 pub use error::PlotError;
 pub use figure::{AxisRange, Figure, Line, Marker, MarkerKind, Panel, Series, Style};
-pub use render::{check_image_path, render, render_svg_string, render_with, RenderParams};
+pub use render::{
+    check_image_path, render, render_svg_string, render_with, render_with_legend_room, RenderParams,
+};

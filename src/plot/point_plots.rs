@@ -3,6 +3,8 @@
 //! the transition location marked, for several cases overlaid (e.g. clean vs fixed transition).
 
 use super::figure::{Figure, Marker, Panel, Series, Style};
+use crate::viscous::distributions::SurfaceDistributions;
+use crate::viscous::ViscousSolution;
 
 /// x/c axis limits of all point panels: the chord with a small margin, same for every panel.
 const X_LIMITS: (f64, f64) = (-0.02, 1.02);
@@ -91,4 +93,78 @@ fn bl_panels(cases: &[PointCase], ncrit: Option<f64>) -> [Panel; 3] {
             .push(Marker::hline(ncrit, format!("Ncrit = {ncrit}"), 7));
     }
     [h, cf, n]
+}
+
+/// All four distributions ([`point_figure`]) of viscous solutions given as (label, solution)
+/// at free-stream Mach number `mach`: for case `k` the upper surface solid and the lower
+/// surface dashed in palette colour `k`, labelled `<label> upper` and `<label> lower`, with the
+/// transition locations marked.
+pub fn solutions_figure(
+    runs: &[(&str, &ViscousSolution)],
+    mach: f64,
+    title: &str,
+    ncrit: Option<f64>,
+) -> Figure {
+    let distributions: Vec<SurfaceDistributions> = runs
+        .iter()
+        .flat_map(|(_, sol)| {
+            [
+                SurfaceDistributions::new(&sol.upper, mach),
+                SurfaceDistributions::new(&sol.lower, mach),
+            ]
+        })
+        .collect();
+    let labels: Vec<String> = runs
+        .iter()
+        .flat_map(|(label, _)| [format!("{label} upper"), format!("{label} lower")])
+        .collect();
+    let cases: Vec<PointCase> = distributions
+        .iter()
+        .zip(&labels)
+        .enumerate()
+        .map(|(k, (d, label))| {
+            let (point, upper) = (&runs[k / 2].1.point, k % 2 == 0);
+            let (style, xtr) = if upper {
+                (Style::solid(k / 2), point.xtr_top)
+            } else {
+                (Style::dashed(k / 2), point.xtr_bot)
+            };
+            PointCase {
+                label,
+                style,
+                cp: (&d.x, &d.cp),
+                h: (&d.x, &d.h),
+                cf: (&d.x, &d.cf),
+                n: (&d.x, &d.n),
+                x_transition: xtr.is_finite().then_some(xtr),
+            }
+        })
+        .collect();
+    point_figure(&cases, title, ncrit)
+}
+
+/// Title of a [`solutions_figure`]: the airfoil, Re, M and either the angle of attack or, for
+/// solutions at a target lift coefficient `cl`, that Cl and the α of each case.
+pub fn solutions_title(
+    airfoil: &str,
+    reynolds: f64,
+    mach: f64,
+    alpha_deg: f64,
+    cl: Option<f64>,
+    runs: &[(&str, &ViscousSolution)],
+) -> String {
+    let at = match cl {
+        Some(cl) => {
+            let alphas: Vec<String> = runs
+                .iter()
+                .map(|(label, s)| format!("{:.2}° {label}", s.point.alpha))
+                .collect();
+            format!("Cl {cl} (α {})", alphas.join(", "))
+        }
+        None => format!("α {alpha_deg}°"),
+    };
+    format!(
+        "{airfoil} — Re {}, M {mach}, {at}",
+        super::polar_plots::compact_number(reynolds)
+    )
 }

@@ -2,7 +2,7 @@
 //! or more polars (e.g. clean vs fixed transition, or ours vs XFOIL).
 
 use super::figure::{Figure, Marker, Panel, Series, Style};
-use crate::section::PolarPoint;
+use crate::section::{FlowCondition, PolarPoint};
 
 /// y-axis label of the panels that plot the lift coefficient.
 const CL_LABEL: &str = "Cl [-]";
@@ -89,4 +89,57 @@ fn usable_points(points: &[PolarPoint]) -> Vec<PolarPoint> {
         .collect();
     pts.sort_by(|a, b| a.alpha.total_cmp(&b.alpha));
     pts
+}
+
+/// Legend text of a transition setting (x/c on the upper and lower surface, 1 = free):
+/// `free`, `xtr 0.07`, or `xtr 0.05/0.1` (upper/lower).
+pub fn transition_label(xtr_top: f64, xtr_bot: f64) -> String {
+    if xtr_top >= 1.0 && xtr_bot >= 1.0 {
+        "free".to_string()
+    } else if xtr_top == xtr_bot {
+        format!("xtr {xtr_top}")
+    } else {
+        format!("xtr {xtr_top}/{xtr_bot}")
+    }
+}
+
+/// Compact number for titles: 1.9e6 → `1.9e6` (mantissa to three decimals), below 10⁴ as is.
+pub fn compact_number(v: f64) -> String {
+    if v >= 1e4 {
+        let e = v.log10().floor() as i32;
+        let m = v / 10f64.powi(e);
+        format!("{}e{e}", (m * 1000.0).round() / 1000.0)
+    } else {
+        format!("{v}")
+    }
+}
+
+/// Title of an overlay of polars taken from tables: the legend names joined by `vs`, then the
+/// flow condition drawn (`Re 1.9e6, M 0.41`), with `(nearest to …)` when that is not the
+/// condition `asked` for, or `several Re, M` when the polars were drawn at different ones.
+pub fn overlay_title(
+    names: &[&str],
+    drawn: &[FlowCondition],
+    asked: Option<FlowCondition>,
+) -> String {
+    let Some(&first) = drawn.first() else {
+        return names.join(" vs ");
+    };
+    let same = drawn.iter().all(|c| *c == first);
+    let at = if same {
+        format!("Re {}, M {}", compact_number(first.reynolds), first.mach)
+    } else {
+        "several Re, M".to_string()
+    };
+    let nearest = match asked {
+        Some(q) if same && q != first => {
+            format!(
+                " (nearest to Re {}, M {})",
+                compact_number(q.reynolds),
+                q.mach
+            )
+        }
+        _ => String::new(),
+    };
+    format!("{} — {at}{nearest}", names.join(" vs "))
 }

@@ -1,7 +1,12 @@
 //! Rotor results: blade local angle of attack vs azimuth, takeoff time histories and the
 //! power-required curve of a speed sweep, several cases overlaid (clean vs contaminated).
+//!
+//! The `*_figure` functions draw plain slices; [`alpha_figure`], [`takeoff_plot`] and
+//! [`power_plot`] take the rotor model's results and give each case its study style
+//! ([`case_style`]).
 
 use super::figure::{Figure, Marker, Panel, Series, Style};
+use crate::rotor::{TakeoffResult, TrimResult, KT_TO_MS};
 
 /// Palette index used for case-independent reference lines (grey).
 const REFERENCE_COLOR: usize = 7;
@@ -141,4 +146,105 @@ pub fn power_required_figure(cases: &[PowerCase], title: &str) -> Figure {
         }
     }
     Figure::new(title).with_panel(power).with_panel(thrust)
+}
+
+/// Line style of case `i` of the study: clean solid blue, contaminated dashed red (distinct in
+/// grey print).
+pub fn case_style(i: usize) -> Style {
+    if i == 0 {
+        Style::solid(0)
+    } else {
+        Style::dashed(1)
+    }
+}
+
+/// Blade α vs azimuth for the cases given as (label, (ψ \[deg\], α \[deg\]) samples over one
+/// revolution from ψ = 0); each curve is closed at ψ = 360° with its ψ = 0 value.
+pub fn alpha_figure(curves: &[(&str, &[(f64, f64)])], title: &str) -> Figure {
+    let closed: Vec<(Vec<f64>, Vec<f64>)> = curves
+        .iter()
+        .map(|(_, samples)| {
+            let mut psi: Vec<f64> = samples.iter().map(|s| s.0).collect();
+            let mut alpha: Vec<f64> = samples.iter().map(|s| s.1).collect();
+            if let Some(&(psi0, a0)) = samples.first() {
+                psi.push(psi0 + 360.0);
+                alpha.push(a0);
+            }
+            (psi, alpha)
+        })
+        .collect();
+    let cases: Vec<AzimuthCase> = curves
+        .iter()
+        .zip(&closed)
+        .enumerate()
+        .map(|(i, ((label, _), (psi, alpha)))| AzimuthCase {
+            label,
+            style: case_style(i),
+            psi_deg: psi,
+            alpha_deg: alpha,
+        })
+        .collect();
+    alpha_azimuth_figure(&cases, title)
+}
+
+/// Takeoff time histories of the cases given as (label, result): speed \[kt\], height \[m\],
+/// rotor rpm and flapping \[deg\] vs time, lift-off marked.
+pub fn takeoff_plot(runs: &[(&str, &TakeoffResult)], title: &str) -> Figure {
+    let columns: Vec<[Vec<f64>; 5]> = runs
+        .iter()
+        .map(|(_, r)| {
+            let h = &r.history;
+            [
+                h.iter().map(|s| s.t).collect(),
+                h.iter().map(|s| s.v / KT_TO_MS).collect(),
+                h.iter().map(|s| s.h).collect(),
+                h.iter().map(|s| s.rotor_rpm).collect(),
+                h.iter().map(|s| s.beta_deg).collect(),
+            ]
+        })
+        .collect();
+    let cases: Vec<TakeoffCase> = runs
+        .iter()
+        .zip(&columns)
+        .enumerate()
+        .map(|(i, ((label, r), [t, v, h, rpm, beta]))| TakeoffCase {
+            label,
+            style: case_style(i),
+            t,
+            speed_kt: v,
+            height_m: h,
+            rotor_rpm: rpm,
+            flapping_deg: beta,
+            liftoff_t: Some(r.liftoff_time_s),
+        })
+        .collect();
+    takeoff_figure(&cases, title)
+}
+
+/// Power and propeller thrust required vs airspeed for the cases given as (label, trims of a
+/// speed sweep in increasing speed).
+pub fn power_plot(sweeps: &[(&str, &[TrimResult])], title: &str) -> Figure {
+    let columns: Vec<[Vec<f64>; 3]> = sweeps
+        .iter()
+        .map(|(_, trims)| {
+            [
+                trims.iter().map(|t| t.airspeed_kt).collect(),
+                trims.iter().map(|t| t.power_required_kw).collect(),
+                trims.iter().map(|t| t.prop_thrust_n).collect(),
+            ]
+        })
+        .collect();
+    let cases: Vec<PowerCase> = sweeps
+        .iter()
+        .zip(&columns)
+        .enumerate()
+        .map(|(i, ((label, _), [v, p, f]))| PowerCase {
+            label,
+            style: case_style(i),
+            speed_kt: v,
+            power_kw: p,
+            thrust_n: f,
+        })
+        .collect();
+    power_required_figure(&cases, title)
 }

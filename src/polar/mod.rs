@@ -10,4 +10,3 @@ pub use grid::{run_grid, GridPolar};
 pub use range::{march_order, parse_alpha_range, RangeError, MAX_ALPHA_DEG, MAX_ALPHA_POINTS};
 pub use sweep::{sweep, SweepParams, WarmStartSolver};
 pub use target_cl::{solve_at_cl, TargetClError, TargetClParams};
-pub use viscous_sweep::ViscousSweep;

@@ -4,11 +4,8 @@ use super::sweep::WarmStartSolver;
 use crate::section::PolarPoint;
 use crate::viscous::{ViscousSolver, WarmStart};
 
-/// The viscous solver of a sweep: [`ViscousSolver`] itself, which is a [`WarmStartSolver`].
-/// A failed point is retried by the sweep's recovery ([`super::SweepParams`]), never by the
-/// solver.
-pub type ViscousSweep = ViscousSolver;
-
+// A failed point is retried by the sweep's recovery ([`super::SweepParams`]), never by the
+// solver.
 impl WarmStartSolver for ViscousSolver {
     type State = WarmStart;
 

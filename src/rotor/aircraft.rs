@@ -1,6 +1,9 @@
 //! Aircraft preset: rotor, airframe, propeller/engine and takeoff data, loaded from TOML.
 
+use super::atmosphere::MAX_ISA_ALTITUDE_M;
+use super::inflow::InflowModel;
 use serde::Deserialize;
+use std::borrow::Cow;
 use std::path::Path;
 
 /// Errors while loading or checking an aircraft preset.
@@ -30,17 +33,7 @@ pub enum AircraftError {
         /// Offending value.
         value: f64,
         /// What is required.
-        reason: &'static str,
-    },
-    /// A text value is not one of the accepted choices.
-    #[error("aircraft parameter {field} = \"{value}\" is invalid: {reason}")]
-    InvalidChoice {
-        /// Dotted field name.
-        field: &'static str,
-        /// Offending value.
-        value: String,
-        /// What is accepted.
-        reason: &'static str,
+        reason: Cow<'static, str>,
     },
 }
 
@@ -50,9 +43,6 @@ pub const MAX_MASS_KG: f64 = 100_000.0;
 /// Largest accepted airspeed \[kt\] (of a preset, and of the `gyro` commands, which take it as
 /// an exclusive bound).
 pub const MAX_SPEED_KT: f64 = 300.0;
-
-/// Highest altitude of the atmosphere model (top of the ISA troposphere) \[m\].
-pub const MAX_ISA_ALTITUDE_M: f64 = 11_000.0;
 
 /// Accepted takeoff integration time steps \[s\]: below, a run takes hundreds of thousands of
 /// steps; above, the integration of the rotor speed and flapping is no longer resolved.
@@ -114,7 +104,7 @@ pub struct RotorParams {
     #[serde(default)]
     pub tip_loss_b: Option<f64>,
     /// Induced-inflow model: "glauert" (uniform) or "drees" (linear).
-    pub inflow: String,
+    pub inflow: InflowModel,
     /// Induced-power factor κ (induced velocity = κ × Glauert's momentum value, see
     /// [`crate::rotor::Rotor::induced_power_factor`]); omitted → 1 (ideal momentum theory).
     #[serde(default = "ideal_induced_power_factor")]
@@ -126,7 +116,7 @@ fn ideal_induced_power_factor() -> f64 {
     1.0
 }
 
-/// Propeller and engine map (see [`crate::rotor::propeller`]).
+/// Propeller and engine data (the map they calibrate: [`crate::rotor::PropellerMap`]).
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PropellerParams {
@@ -147,7 +137,7 @@ pub struct PropellerParams {
     /// Highest engine rpm allowed (full-throttle rpm never exceeds it) \[rpm\].
     pub max_engine_rpm: f64,
     /// Zero-torque advance ratio of the propeller as a multiple of its zero-thrust advance
-    /// ratio, k = J_Q/J0 ≥ 1 (see [`crate::rotor::propeller`]).
+    /// ratio, k = J_Q/J0 ≥ 1 (see [`crate::rotor::PropellerMap`]).
     pub zero_torque_j_factor: f64,
 }
 
@@ -164,7 +154,7 @@ pub struct TakeoffParams {
     /// Rolling-friction coefficient of the wheels.
     pub rolling_friction: f64,
     /// Airspeed the pilot accelerates to during the climb, reached at the screen height \[kt\]
-    /// (see [`crate::rotor::takeoff`] for the pilot model).
+    /// (see [`crate::rotor::simulate_takeoff`] for the pilot model).
     pub climb_speed_kt: f64,
     /// Pilot gain: rate of change of the rotor-disc angle per airspeed error [deg/s per m/s].
     pub pilot_gain_deg_per_ms: f64,
@@ -214,7 +204,7 @@ impl Aircraft {
                 Err(AircraftError::Invalid {
                     field,
                     value,
-                    reason: "must be a positive number",
+                    reason: "must be a positive number".into(),
                 })
             }
         }
@@ -225,7 +215,7 @@ impl Aircraft {
                 Err(AircraftError::Invalid {
                     field,
                     value,
-                    reason: "must be zero or positive",
+                    reason: "must be zero or positive".into(),
                 })
             }
         }
@@ -233,7 +223,7 @@ impl Aircraft {
             field: &'static str,
             value: f64,
             (lo, hi): (f64, f64),
-            reason: &'static str,
+            reason: impl Into<Cow<'static, str>>,
         ) -> Result<(), AircraftError> {
             if value >= lo && value <= hi {
                 Ok(())
@@ -241,7 +231,7 @@ impl Aircraft {
                 Err(AircraftError::Invalid {
                     field,
                     value,
-                    reason,
+                    reason: reason.into(),
                 })
             }
         }
@@ -260,28 +250,28 @@ impl Aircraft {
             return Err(AircraftError::Invalid {
                 field: "rotor.root_cutout_m",
                 value: r.root_cutout_m,
-                reason: "must be smaller than the radius",
+                reason: "must be smaller than the radius".into(),
             });
         }
         if r.blades != 2 {
             return Err(AircraftError::Invalid {
                 field: "rotor.blades",
                 value: f64::from(r.blades),
-                reason: "the teetering-rotor model needs exactly 2 blades",
+                reason: "the teetering-rotor model needs exactly 2 blades".into(),
             });
         }
         if !r.incidence_deg.is_finite() || r.incidence_deg.abs() > 20.0 {
             return Err(AircraftError::Invalid {
                 field: "rotor.incidence_deg",
                 value: r.incidence_deg,
-                reason: "must be within ±20°",
+                reason: "must be within ±20°".into(),
             });
         }
         if !r.precone_deg.is_finite() || r.precone_deg.abs() > 10.0 {
             return Err(AircraftError::Invalid {
                 field: "rotor.precone_deg",
                 value: r.precone_deg,
-                reason: "must be within ±10°",
+                reason: "must be within ±10°".into(),
             });
         }
         positive("rotor.blade_mass_kg", r.blade_mass_kg)?;
@@ -291,14 +281,14 @@ impl Aircraft {
             return Err(AircraftError::Invalid {
                 field: "rotor.radial_strips",
                 value: r.radial_strips as f64,
-                reason: "must be between 2 and 200",
+                reason: "must be between 2 and 200".into(),
             });
         }
         if r.azimuth_steps < 8 || r.azimuth_steps > 720 || r.azimuth_steps % 2 != 0 {
             return Err(AircraftError::Invalid {
                 field: "rotor.azimuth_steps",
                 value: r.azimuth_steps as f64,
-                reason: "must be even and between 8 and 720",
+                reason: "must be even and between 8 and 720".into(),
             });
         }
         if let Some(b) = r.tip_loss_b {
@@ -306,22 +296,15 @@ impl Aircraft {
                 return Err(AircraftError::Invalid {
                     field: "rotor.tip_loss_b",
                     value: b,
-                    reason: "must be in (0.5, 1]",
+                    reason: "must be in (0.5, 1]".into(),
                 });
             }
-        }
-        if r.inflow != "glauert" && r.inflow != "drees" {
-            return Err(AircraftError::InvalidChoice {
-                field: "rotor.inflow",
-                value: r.inflow.clone(),
-                reason: "must be \"glauert\" or \"drees\"",
-            });
         }
         if !(r.induced_power_factor >= 1.0 && r.induced_power_factor <= 2.0) {
             return Err(AircraftError::Invalid {
                 field: "rotor.induced_power_factor",
                 value: r.induced_power_factor,
-                reason: "must be between 1 and 2",
+                reason: "must be between 1 and 2".into(),
             });
         }
         let p = &self.propeller;
@@ -342,14 +325,14 @@ impl Aircraft {
             return Err(AircraftError::Invalid {
                 field: "propeller.max_engine_rpm",
                 value: p.max_engine_rpm,
-                reason: "must be at least the static and the calibration engine rpm",
+                reason: "must be at least the static and the calibration engine rpm".into(),
             });
         }
         if !(1.0..=2.0).contains(&p.zero_torque_j_factor) {
             return Err(AircraftError::Invalid {
                 field: "propeller.zero_torque_j_factor",
                 value: p.zero_torque_j_factor,
-                reason: "must be between 1 and 2",
+                reason: "must be between 1 and 2".into(),
             });
         }
         let t = &self.takeoff;
@@ -359,7 +342,7 @@ impl Aircraft {
             return Err(AircraftError::Invalid {
                 field: "takeoff.head_angle_min_deg",
                 value: t.head_angle_min_deg,
-                reason: "must be below head_angle_max_deg",
+                reason: "must be below head_angle_max_deg".into(),
             });
         }
         non_negative("takeoff.rolling_friction", t.rolling_friction)?;
@@ -376,7 +359,7 @@ impl Aircraft {
             "takeoff.field_altitude_m",
             t.field_altitude_m,
             (0.0, MAX_ISA_ALTITUDE_M),
-            "must be within the ISA troposphere, 0 to 11000 m",
+            format!("must be within the ISA troposphere, 0 to {MAX_ISA_ALTITUDE_M} m"),
         )?;
         in_range(
             "takeoff.time_step_s",
@@ -394,7 +377,7 @@ impl Aircraft {
             return Err(AircraftError::Invalid {
                 field: "takeoff.max_time_s",
                 value: t.max_time_s,
-                reason: "gives more than 20000 time steps (max_time_s / time_step_s)",
+                reason: "gives more than 20000 time steps (max_time_s / time_step_s)".into(),
             });
         }
         Ok(())

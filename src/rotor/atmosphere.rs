@@ -17,6 +17,9 @@ const SUTH_T0: f64 = 273.15;
 /// Sutherland constant \[K\].
 const SUTH_S: f64 = 110.4;
 
+/// Highest altitude of the model: the top of the ISA troposphere (the tropopause) \[m\].
+pub const MAX_ISA_ALTITUDE_M: f64 = 11_000.0;
+
 /// Air state at one altitude.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Atmosphere {
@@ -35,11 +38,11 @@ pub struct Atmosphere {
 }
 
 impl Atmosphere {
-    /// ISA troposphere at `altitude_m` (clamped to 0 … 11 000 m):
+    /// ISA troposphere at `altitude_m` (clamped to 0 … [`MAX_ISA_ALTITUDE_M`]):
     /// T = T0 − L·h, p = p0 (T/T0)^(g/(R L)), ρ = p/(R T), a = √(γ R T),
     /// μ from Sutherland's law μ = μ0 (T/T0s)^1.5 (T0s + S)/(T + S).
     pub fn isa(altitude_m: f64) -> Self {
-        let h = altitude_m.clamp(0.0, 11_000.0);
+        let h = altitude_m.clamp(0.0, MAX_ISA_ALTITUDE_M);
         let temperature = T0 - LAPSE * h;
         let pressure = P0 * (temperature / T0).powf(super::G0 / (R_AIR * LAPSE));
         let density = pressure / (R_AIR * temperature);

@@ -122,11 +122,23 @@ pub fn strip_load(
 }
 
 /// Wraps an angle in degrees to (−180°, 180°].
-pub fn wrap_deg(a: f64) -> f64 {
+pub(crate) fn wrap_deg(a: f64) -> f64 {
     let w = (a + 180.0).rem_euclid(360.0) - 180.0;
     if w == -180.0 {
         180.0
     } else {
         w
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::wrap_deg;
+
+    #[test]
+    fn angles_wrap_to_the_half_open_circle() {
+        assert_eq!(wrap_deg(190.0), -170.0);
+        assert_eq!(wrap_deg(-180.0), 180.0);
+        assert_eq!(wrap_deg(30.0), 30.0);
     }
 }

@@ -4,7 +4,7 @@
 
 use super::aircraft::Aircraft;
 use super::atmosphere::Atmosphere;
-use super::rotor::Rotor;
+use super::disc_loads::Rotor;
 use super::trim::{trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
 use super::KT_TO_MS;
 use crate::section::SectionAero;

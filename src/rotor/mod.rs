@@ -3,37 +3,46 @@
 //!
 //! The rotor sees the airfoil only through [`SectionAero`](crate::section::SectionAero):
 //! every strip turns its local velocity into (α, Re, M) and asks the section for
-//! (c_l, c_d, c_m). Layers inside this module:
+//! (c_l, c_d, c_m). The facade is re-exported here (the aircraft, the rotor and its solution,
+//! trim, takeoff, cruise sweeps, the blade element) and [`study`]; the files inside:
 //!
-//! * [`atmosphere`] — ISA standard atmosphere (density, speed of sound, viscosity).
-//! * [`aircraft`] — the aircraft preset (rotor, airframe, propeller, takeoff data) from TOML.
-//! * [`blade_element`] — velocity triangle and loads of one strip (reverse flow included).
-//! * [`inflow`] — induced velocity: Glauert momentum theory, Drees linear inflow, tip loss.
-//! * [`flapping`] — first-harmonic teeter motion of the blade pair.
-//! * [`rotor`] — azimuth-averaged rotor forces, torque and the flapping solution.
-//! * [`trim`] — autorotation rpm and level-cruise trim.
-//! * [`cruise`] — power-required speed sweep and blade α(ψ) in trimmed cruise.
-//! * [`propeller`] — propeller/engine map (Rotax 912 with reduction gear).
-//! * [`takeoff`] — time-domain takeoff simulation to 15 m.
+//! * `atmosphere` — ISA standard atmosphere (density, speed of sound, viscosity).
+//! * `aircraft` — the aircraft preset (rotor, airframe, propeller, takeoff data) from TOML.
+//! * `blade_element` — velocity triangle and loads of one strip (reverse flow included).
+//! * `inflow` — induced velocity: Glauert momentum theory, Drees linear inflow, tip loss.
+//! * `flapping` — first-harmonic teeter motion of the blade pair.
+//! * `disc_loads` — the rotor disc: azimuth-averaged forces and torque of the blade-element
+//!   sum, solved together with the induced inflow and the teeter flapping.
+//! * `trim` — autorotation rpm and level-cruise trim.
+//! * `cruise` — power-required speed sweep and blade α(ψ) in trimmed cruise.
+//! * `propeller` — propeller/engine map (Rotax 912 with reduction gear).
+//! * `takeoff` — time-domain takeoff simulation to 15 m.
+//! * [`study`] — the paper's clean-versus-contaminated study and its published values.
 
-pub mod aircraft;
-pub mod atmosphere;
-pub mod blade_element;
-pub mod cruise;
-pub mod flapping;
-pub mod inflow;
-pub mod propeller;
-#[allow(clippy::module_inception)]
-pub mod rotor;
-pub mod takeoff;
-pub mod trim;
+mod aircraft;
+mod atmosphere;
+mod blade_element;
+mod cruise;
+mod disc_loads;
+mod flapping;
+mod inflow;
+mod propeller;
+pub mod study;
+mod takeoff;
+mod trim;
 
-pub use aircraft::{Aircraft, AircraftError};
-pub use atmosphere::Atmosphere;
-pub use rotor::{FlightCondition, InflowModel, Rotor, RotorError, RotorSolution};
-
+pub use aircraft::{
+    Aircraft, AircraftError, PropellerParams, RotorParams, TakeoffParams, MAX_MASS_KG, MAX_SPEED_KT,
+};
+pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
+pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};
+pub use cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds, SweepPoint};
+pub use disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution, RotorSolverParams};
+pub use flapping::Teeter;
+pub use inflow::InflowModel;
+pub use propeller::{PropellerError, PropellerMap};
 pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
-pub use trim::{TrimError, TrimResult};
+pub use trim::{autorotation, trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
 
 /// Knots to metres per second (1 kt = 1852 m / 3600 s, exact by definition).
 pub const KT_TO_MS: f64 = 1852.0 / 3600.0;

@@ -22,8 +22,8 @@
 
 use super::aircraft::Aircraft;
 use super::atmosphere::Atmosphere;
+use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::propeller::{PropellerError, PropellerMap};
-use super::rotor::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::{rad_s_to_rpm, rpm_to_rad_s, G0};
 use crate::section::SectionAero;
 use serde::Serialize;
@@ -81,7 +81,9 @@ pub struct TakeoffSample {
     pub beta_deg: f64,
 }
 
-/// Result of a takeoff run.
+/// Result of a takeoff run. Its serde form (what `gyro takeoff --json` prints) holds the paper's
+/// Table 4 quantities, the lift-off and screen speeds, the lift-off rotor speed and the time to
+/// the screen height; the other fields are left out of it.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TakeoffResult {
     /// Ground roll to lift-off s_TO \[m\].
@@ -91,6 +93,7 @@ pub struct TakeoffResult {
     /// Largest teeter amplitude during the run β_max \[deg\].
     pub max_flapping_deg: f64,
     /// Whether β_max reached the teeter stops.
+    #[serde(skip)]
     pub flap_stops_reached: bool,
     /// Airspeed at lift-off \[kt\].
     pub liftoff_speed_kt: f64,
@@ -99,6 +102,7 @@ pub struct TakeoffResult {
     /// Rotor speed at lift-off \[rpm\].
     pub liftoff_rotor_rpm: f64,
     /// Time from brake release to lift-off \[s\].
+    #[serde(skip)]
     pub liftoff_time_s: f64,
     /// Time from brake release to the screen height \[s\].
     pub screen_time_s: f64,

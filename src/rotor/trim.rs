@@ -6,15 +6,16 @@
 //! drag, F_prop = D_R + D_P the propeller thrust and L/D = G/(D_R + D_P).
 //!
 //! Both unknowns are found by nested one-dimensional root finding with brackets: for each α_H
-//! the autorotation rpm (scan down from high rpm until the torque changes sign, then an
-//! Illinois-safeguarded secant), and α_H from the lift balance the same way. Brackets make the
-//! solve robust; the secant makes it fast.
+//! the autorotation rpm (scan down from high rpm until the torque changes sign, then the
+//! crate's bracketed root finder, an Illinois-safeguarded secant), and α_H from the lift
+//! balance the same way. Brackets make the solve robust; the secant makes it fast.
 
 use super::aircraft::Aircraft;
-use super::atmosphere::Atmosphere;
+use super::atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
+use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::propeller::{PropellerError, PropellerMap};
-use super::rotor::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::{rad_s_to_rpm, rpm_to_rad_s, KT_TO_MS};
+use crate::numerics::roots::bracketed_root;
 use crate::section::SectionAero;
 use serde::Serialize;
 
@@ -50,6 +51,12 @@ pub enum TrimError {
     /// Invalid input (speed, mass).
     #[error("invalid trim input: {0}")]
     Input(&'static str),
+    /// The altitude is outside the atmosphere model.
+    #[error(
+        "invalid trim input: altitude must be within the ISA troposphere, 0 to {} m",
+        MAX_ISA_ALTITUDE_M
+    )]
+    Altitude,
 }
 
 /// Search ranges and tolerances of the trim solvers.
@@ -91,85 +98,81 @@ impl Default for TrimParams {
     }
 }
 
-/// Trimmed level flight.
+/// Trimmed level flight. Its serde form (what `gyro trim --json` and `gyro sweep --json`
+/// print) holds the paper's Table 3 quantities, the hub angle, the power, the flapping and the
+/// speed in knots (as `speed_kt`); the other fields are left out of it.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TrimResult {
-    /// Airspeed \[m/s\].
-    pub airspeed_ms: f64,
-    /// Airspeed \[kt\].
-    pub airspeed_kt: f64,
     /// Rotor speed n_R \[rpm\].
     pub rotor_rpm: f64,
     /// Tip-path-plane angle of attack α_R \[deg\].
     pub rotor_aoa_deg: f64,
-    /// Hub-plane angle of attack α_H \[deg\].
-    pub hub_aoa_deg: f64,
     /// Engine speed from the propeller map \[rpm\] (`None` if above the engine's maximum).
     pub engine_rpm: Option<f64>,
     /// Rotor drag D_R \[N\].
     pub rotor_drag_n: f64,
-    /// Rotor lift \[N\] (= weight at trim).
-    pub rotor_lift_n: f64,
     /// Airframe drag D_P \[N\].
     pub parasitic_drag_n: f64,
     /// Propeller thrust F_prop = D_R + D_P \[N\].
     pub prop_thrust_n: f64,
     /// Lift-to-drag ratio G/(D_R + D_P).
     pub lift_to_drag: f64,
+    /// Hub-plane angle of attack α_H \[deg\].
+    pub hub_aoa_deg: f64,
     /// Power required F_prop·V \[kW\].
     pub power_required_kw: f64,
     /// Longitudinal flapping β1c \[deg\] (negative = tip-path plane tilted back).
     pub beta1c_deg: f64,
     /// Lateral flapping β1s \[deg\].
     pub beta1s_deg: f64,
+    /// Airspeed \[kt\].
+    #[serde(rename = "speed_kt")]
+    pub airspeed_kt: f64,
+    /// Airspeed \[m/s\].
+    #[serde(skip)]
+    pub airspeed_ms: f64,
+    /// Rotor lift \[N\] (= weight at trim).
+    #[serde(skip)]
+    pub rotor_lift_n: f64,
     /// Advance ratio μ.
+    #[serde(skip)]
     pub advance_ratio: f64,
     /// Thrust coefficient C_T.
+    #[serde(skip)]
     pub thrust_coefficient: f64,
     /// Residual shaft torque at the trim point \[N m\] (≈ 0).
+    #[serde(skip)]
     pub torque_nm: f64,
     /// Fraction of the blade-element lookups at the trim point whose Reynolds or Mach number
     /// lay outside the section table and were clamped to its edge (0 when the table covers
     /// the rotor).
+    #[serde(skip)]
     pub table_clamped_fraction: f64,
 }
 
-/// Root of `f` in the bracket [a, b] (f(a)·f(b) ≤ 0): secant steps with the Illinois
-/// modification of regula falsi (Dowell & Jarratt 1971), which keeps the bracket.
-fn bracketed_root<E>(
-    mut f: impl FnMut(f64) -> Result<f64, E>,
-    (mut a, mut fa): (f64, f64),
-    (mut b, mut fb): (f64, f64),
-    xtol: f64,
-    max_iterations: usize,
-) -> Result<f64, E> {
-    let mut side = 0i8;
-    for _ in 0..max_iterations {
-        if fa == 0.0 {
-            return Ok(a);
+impl TrimResult {
+    /// What a user should read beside a trim that is a valid rotor solution but not one the
+    /// aircraft can fly as computed: the engine cannot reach the thrust, or the table did not
+    /// cover the rotor. One line each, starting `note: `.
+    pub fn notes(&self) -> Vec<String> {
+        let mut notes = Vec::new();
+        if self.engine_rpm.is_none() {
+            notes.push(format!(
+                "note: at {:.1} kt the propeller needs more than the engine's maximum rpm for \
+                 {:.0} N of thrust: the aircraft cannot fly this speed level",
+                self.airspeed_kt, self.prop_thrust_n
+            ));
         }
-        if fb == 0.0 || (b - a).abs() < xtol {
-            return Ok(b);
+        if self.table_clamped_fraction > 0.0 {
+            notes.push(format!(
+                "note: at {:.1} kt, {:.1} % of the blade-element lookups lie outside the \
+                 table's Reynolds/Mach range and use its edge values",
+                self.airspeed_kt,
+                100.0 * self.table_clamped_fraction
+            ));
         }
-        let mut c = (a * fb - b * fa) / (fb - fa);
-        if !c.is_finite() || c <= a.min(b) || c >= a.max(b) {
-            c = 0.5 * (a + b);
-        }
-        let fc = f(c)?;
-        if fc * fb < 0.0 {
-            a = b;
-            fa = fb;
-            side = 0;
-        } else {
-            if side == 1 {
-                fa *= 0.5;
-            }
-            side = 1;
-        }
-        b = c;
-        fb = fc;
+        notes
     }
-    Ok(b)
 }
 
 /// Autorotation: the rotor speed at which the aerodynamic torque vanishes, for airspeed `v`
@@ -310,10 +313,8 @@ pub fn trim_aircraft<S: SectionAero + ?Sized>(
     if !(mass_kg.is_finite() && mass_kg > 0.0) {
         return Err(TrimError::Input("mass must be a positive number"));
     }
-    if !(0.0..=super::aircraft::MAX_ISA_ALTITUDE_M).contains(&altitude_m) {
-        return Err(TrimError::Input(
-            "altitude must be within the ISA troposphere, 0 to 11000 m",
-        ));
+    if !(0.0..=MAX_ISA_ALTITUDE_M).contains(&altitude_m) {
+        return Err(TrimError::Altitude);
     }
     let rotor = Rotor::from_params(&aircraft.rotor);
     let prop = PropellerMap::calibrate(&aircraft.propeller)?;

@@ -121,6 +121,15 @@ pub enum TableError {
         /// What is wrong.
         message: String,
     },
+    /// A JSON or XFOIL polar file is not UTF-8 text.
+    #[error("not UTF-8 text")]
+    NotText,
+    /// A CSV header names neither a polargen table nor a single polar.
+    #[error(
+        "CSV header lacks column '{0}' of a polargen table and the columns alpha, cl, cd of a \
+         single polar"
+    )]
+    CsvLayout(&'static str),
     /// The CSV header lacks a required column.
     #[error("CSV header lacks column '{0}'")]
     MissingColumn(String),
@@ -167,7 +176,26 @@ pub enum TableError {
         /// Field width.
         width: usize,
     },
-    /// Reading or writing a file failed.
+    /// Writing an output file failed.
+    #[error(transparent)]
+    Output(#[from] crate::output::OutputError),
+    /// An input file is missing or not a regular file.
+    #[error("cannot read table {path}: {reason}")]
+    Input {
+        /// The file.
+        path: PathBuf,
+        /// What it is instead of a readable file.
+        reason: &'static str,
+    },
+    /// The content of the table file `path` is wrong.
+    #[error("{path}: {source}")]
+    File {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong in it.
+        source: Box<TableError>,
+    },
+    /// Reading a file failed.
     #[error("{path}: {source}")]
     Io {
         /// The file.

@@ -5,8 +5,8 @@
 //! Both go through [`SectionAero::lookup`] — the same interpolation the rotor model sees — so
 //! what they report is what the rotor uses.
 
-use crate::section::PolarPoint;
-use crate::section::{Lookup, SectionAero};
+use crate::numerics::roots::{bracketed_root_of, first_rising_bracket};
+use crate::section::{Lookup, PolarPoint, SectionAero};
 
 /// The polar of `section` at (`re`, `mach`), one point per α of `alphas` \[deg\], from lookups.
 ///
@@ -46,20 +46,23 @@ pub fn sample_polar<S: SectionAero + ?Sized>(
 pub struct LiftMatch {
     /// Angle of attack \[deg\] at which cl equals the target.
     pub alpha_deg: f64,
-    /// The lookup at that α (cl = target to within the bisection tolerance, cd, cm, flags).
+    /// The lookup at that α (cl = target to within the root tolerance, cd, cm, flags).
     pub lookup: Lookup,
 }
 
 /// Step of the upward α scan that brackets the target lift coefficient \[deg\].
 const SCAN_STEP_DEG: f64 = 0.25;
 
-/// Bisection stops when the bracket is narrower than this \[deg\].
+/// The root is accepted when its bracket is narrower than this \[deg\].
 const ALPHA_TOLERANCE_DEG: f64 = 1e-9;
+
+/// Most refinement steps of the root.
+const ROOT_ITERATIONS: usize = 200;
 
 /// The smallest α in [`alpha_min`, `alpha_max`] (deg) at which the lift coefficient of
 /// `section` at (`re`, `mach`) rises through `cl` — the attached-flow branch, below stall —
-/// found by an upward scan in 0.25° steps and bisection to 10⁻⁹°. `None` if cl stays on one
-/// side of the target over the whole interval.
+/// found by an upward scan in 0.25° steps and the crate's bracketed root finder to 10⁻⁹°.
+/// `None` if cl stays on one side of the target over the whole interval.
 pub fn alpha_at_cl<S: SectionAero + ?Sized>(
     section: &S,
     cl: f64,
@@ -73,40 +76,23 @@ pub fn alpha_at_cl<S: SectionAero + ?Sized>(
         return None;
     }
     let excess = |a: f64| section.lookup(a, re, mach).cl - cl;
-    let mut lo = alpha_min;
-    let mut f_lo = excess(lo);
-    if f_lo == 0.0 {
-        return Some(LiftMatch {
-            alpha_deg: lo,
-            lookup: section.lookup(lo, re, mach),
-        });
-    }
-    let mut hi = lo;
-    loop {
-        if hi >= alpha_max {
-            return None;
-        }
-        hi = (lo + SCAN_STEP_DEG).min(alpha_max);
-        let f_hi = excess(hi);
-        if f_lo < 0.0 && f_hi >= 0.0 {
-            break;
-        }
-        lo = hi;
-        f_lo = f_hi;
-    }
-    while hi - lo > ALPHA_TOLERANCE_DEG {
-        let mid = 0.5 * (lo + hi);
-        if excess(mid) < 0.0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    let alpha_deg = 0.5 * (lo + hi);
-    Some(LiftMatch {
+    let at = |alpha_deg: f64| LiftMatch {
         alpha_deg,
         lookup: section.lookup(alpha_deg, re, mach),
-    })
+    };
+    if excess(alpha_min) == 0.0 {
+        return Some(at(alpha_min));
+    }
+    let steps = ((alpha_max - alpha_min) / SCAN_STEP_DEG).ceil() as usize;
+    let grid = (0..=steps).map(|k| (alpha_min + k as f64 * SCAN_STEP_DEG).min(alpha_max));
+    let (lo, hi) = first_rising_bracket(grid, excess)?;
+    Some(at(bracketed_root_of(
+        excess,
+        lo,
+        hi,
+        ALPHA_TOLERANCE_DEG,
+        ROOT_ITERATIONS,
+    )))
 }
 
 #[cfg(test)]

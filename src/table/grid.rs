@@ -3,7 +3,7 @@
 use super::error::TableError;
 use super::lookup::{bracket, AlphaCurve};
 use super::post_stall::PostStallParams;
-use crate::section::PolarPoint;
+use crate::section::{FlowCondition, PolarPoint};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 /// How a table was made: the airfoil and the solver settings shared by all its polars.
@@ -113,14 +113,14 @@ impl PolarTable {
         })
     }
 
-    /// Build a table from `(re, mach, points)` polars in any order; the axes are the sorted
-    /// distinct Re and M values, and every (Re, M) pair must appear exactly once.
+    /// Build a table from polars given with their flow condition, in any order; the axes are
+    /// the sorted distinct Re and M values, and every (Re, M) pair must appear exactly once.
     pub fn from_polars(
         meta: TableMeta,
-        polars: Vec<(f64, f64, Vec<PolarPoint>)>,
+        polars: Vec<(FlowCondition, Vec<PolarPoint>)>,
     ) -> Result<Self, TableError> {
-        let mut re: Vec<f64> = polars.iter().map(|p| p.0).collect();
-        let mut mach: Vec<f64> = polars.iter().map(|p| p.1).collect();
+        let mut re: Vec<f64> = polars.iter().map(|p| p.0.reynolds).collect();
+        let mut mach: Vec<f64> = polars.iter().map(|p| p.0.mach).collect();
         if let Some(&r) = re.iter().find(|r| r.is_nan()) {
             return Err(TableError::BadRe(r));
         }
@@ -135,7 +135,14 @@ impl PolarTable {
             return Err(TableError::EmptyAxis("Re"));
         }
         let mut slots: Vec<Option<Vec<PolarPoint>>> = vec![None; re.len() * mach.len()];
-        for (r, m, pts) in polars {
+        for (
+            FlowCondition {
+                reynolds: r,
+                mach: m,
+            },
+            pts,
+        ) in polars
+        {
             let i = re.partition_point(|&v| v < r);
             let j = mach.partition_point(|&v| v < m);
             let slot = &mut slots[i * mach.len() + j];
@@ -211,9 +218,9 @@ impl PolarTable {
         self.polar_at(i, j)
     }
 
-    /// The node nearest to (Re, M) — nearest in ln Re and in M separately — as
-    /// `(re, mach, points)`.
-    pub fn nearest_polar(&self, re: f64, mach: f64) -> (f64, f64, &[PolarPoint]) {
+    /// The node nearest to (Re, M) — nearest in ln Re and in M separately — with its flow
+    /// condition.
+    pub fn nearest_polar(&self, re: f64, mach: f64) -> (FlowCondition, &[PolarPoint]) {
         let ln = if re > 0.0 { re.ln() } else { f64::NEG_INFINITY };
         let nearest = |axis: &[f64], x: f64| {
             let (i, w, _) = bracket(axis, x);
@@ -226,19 +233,20 @@ impl PolarTable {
         let i = nearest(&self.ln_re, ln);
         let j = nearest(&self.mach, mach);
         (
-            self.re[i],
-            self.mach[j],
+            FlowCondition::new(self.re[i], self.mach[j]),
             &self.polars[i * self.mach.len() + j],
         )
     }
 
-    /// All polars as `(re, mach, points)`, Re-major.
-    pub fn polars(&self) -> impl Iterator<Item = (f64, f64, &[PolarPoint])> {
+    /// All polars with their flow condition, Re-major.
+    pub fn polars(&self) -> impl Iterator<Item = (FlowCondition, &[PolarPoint])> {
         let nm = self.mach.len();
-        self.polars
-            .iter()
-            .enumerate()
-            .map(move |(k, p)| (self.re[k / nm], self.mach[k % nm], p.as_slice()))
+        self.polars.iter().enumerate().map(move |(k, p)| {
+            (
+                FlowCondition::new(self.re[k / nm], self.mach[k % nm]),
+                p.as_slice(),
+            )
+        })
     }
 
     /// Total number of points (converged or not).

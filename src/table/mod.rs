@@ -1,17 +1,25 @@
 //! Re × Mach × α polar tables: grid, interpolating lookup with a 360° extension, file formats.
 //!
-//! * [`grid`] — [`PolarTable`]: one polar per (Re, M) node, metadata, validation, accessors.
-//! * [`lookup`] — the α curve of one polar (monotone cubic, gaps bridged) and the
-//!   [`SectionAero`] implementation (linear in ln Re and in M between polars).
-//! * [`fixed_condition`] — queries at one (Re, M) between nodes: the polar sampled by lookups,
+//! The facade: [`PolarTable`] and its [`TableMeta`]; [`build_table`] on a [`GridSpec`];
+//! [`read_table`] / [`read_lookup_table`] / [`parse_table`] and [`write_table`] /
+//! [`write_c81`] in the [`TableFormat`]s; [`sample_polar`] and [`alpha_at_cl`] at one (Re, M);
+//! [`PostStallParams`]; [`TableError`] and [`BuildError`]. Inside (private):
+//!
+//! * `build` — solving a table: the viscous polars of one airfoil on a Re × M × α grid.
+//! * `grid` — [`PolarTable`]: one polar per (Re, M) node, metadata, validation, accessors.
+//! * `lookup` — the α curve of one polar (monotone cubic, gaps bridged) and the
+//!   [`SectionAero`](crate::section::SectionAero) implementation (linear in ln Re and in M
+//!   between polars).
+//! * `fixed_condition` — queries at one (Re, M) between nodes: the polar sampled by lookups,
 //!   α and Cd where Cl reaches a target (paper Table 5).
-//! * [`post_stall`] — the 360° extension beyond the computed α range (Viterna–Corrigan and a
+//! * `post_stall` — the 360° extension beyond the computed α range (Viterna–Corrigan and a
 //!   flat plate).
-//! * [`io`] — CSV, JSON, XFOIL polar and C81 files, written atomically.
-//! * [`error`] — [`TableError`].
+//! * `io` — CSV, JSON, XFOIL polar, C81 and single-polar CSV files; one reader that
+//!   recognises the layout, writers through [`output`](crate::output).
+//! * `error` — [`TableError`].
 //!
 //! ```
-//! use polargen::section::{PolarPoint, SectionAero};
+//! use polargen::section::{FlowCondition, PolarPoint, SectionAero};
 //! use polargen::table::{PolarTable, TableMeta};
 //!
 //! let meta = TableMeta {
@@ -41,7 +49,10 @@
 //! };
 //! let table = PolarTable::from_polars(
 //!     meta,
-//!     vec![(1e6, 0.0, polar(1e6)), (4e6, 0.0, polar(4e6))],
+//!     vec![
+//!         (FlowCondition::new(1e6, 0.0), polar(1e6)),
+//!         (FlowCondition::new(4e6, 0.0), polar(4e6)),
+//!     ],
 //! )
 //! .unwrap();
 //! let l = table.lookup(2.5, 2e6, 0.0); // halfway in ln Re: 0.25 + 0.025
@@ -50,14 +61,19 @@
 //! assert!(rev.post_stall && rev.mach_clamped && rev.cl < 0.0);
 //! ```
 
-pub mod error;
-pub mod fixed_condition;
-pub mod grid;
-pub mod io;
-pub mod lookup;
-pub mod post_stall;
+mod build;
+mod error;
+mod fixed_condition;
+mod grid;
+mod io;
+mod lookup;
+mod post_stall;
 
+pub use build::{build_table, BuildError, GridSpec, DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE};
 pub use error::TableError;
+pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
 pub use grid::{PolarTable, TableMeta};
-pub use io::{read_table, write_table, TableFormat};
+pub use io::{
+    parse_table, read_lookup_table, read_table, write_c81, write_table, C81Options, TableFormat,
+};
 pub use post_stall::PostStallParams;

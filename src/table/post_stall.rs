@@ -147,14 +147,8 @@ impl Extension360 {
     }
 
     /// (cl, cd, cm) at `alpha_deg`, which must lie outside the computed range, in
-    /// [−180°, lower α_s) or (upper α_s, 180°].
-    pub fn eval(&self, alpha_deg: f64) -> [f64; 3] {
-        let (s, c) = alpha_deg.to_radians().sin_cos();
-        self.eval_sc(alpha_deg, s, c)
-    }
-
-    /// As [`eval`](Self::eval), with `(sin α, cos α)` already known (shared by the four
-    /// polars of one table lookup).
+    /// [−180°, lower α_s) or (upper α_s, 180°], with `(sin α, cos α)` already known (shared by
+    /// the four polars of one table lookup).
     pub fn eval_sc(&self, alpha_deg: f64, sin_a: f64, cos_a: f64) -> [f64; 3] {
         let a = alpha_deg.to_radians();
         let side = if a > self.upper.a_s {

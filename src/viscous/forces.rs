@@ -6,13 +6,6 @@
 use crate::compressibility::KarmanTsien;
 use crate::inviscid::forces::{integrate_pressure, MOMENT_REFERENCE};
 
-/// Karman–Tsien compressible pressure coefficient from the incompressible one at free-stream
-/// Mach `mach` (XFOIL CPCALC; NaN outside 0 ≤ M < 1): the path the binaries import until they
-/// use [`KarmanTsien::cp_unchecked`] directly.
-pub fn karman_tsien_cp(cp_inc: f64, mach: f64) -> f64 {
-    KarmanTsien::new(mach).map_or(f64::NAN, |kt| kt.cp_unchecked(cp_inc))
-}
-
 /// Lift and moment coefficients (about [`MOMENT_REFERENCE`]) of a closed contour with surface
 /// speeds `q` (|q| = Ue/V∞ at the airfoil nodes): the Karman–Tsien Cp integrated as the
 /// inviscid pressures are ([`integrate_pressure`], XFOIL CPCALC + CLCALC).

@@ -26,8 +26,9 @@
 //! (CLCALC, CDCALC), and `solver` drives the iterations (VISCAL).
 
 mod block_solver;
+pub mod distributions;
 mod error;
-pub mod forces;
+mod forces;
 mod local_newton;
 mod march;
 mod newton;

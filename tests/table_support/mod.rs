@@ -130,10 +130,10 @@ pub fn same_bits(a: &PolarTable, b: &PolarTable) -> bool {
         && a.mach() == b.mach()
         && pa.len() == pb.len()
         && pa.iter().zip(&pb).all(|(x, y)| {
-            x.0.to_bits() == y.0.to_bits()
-                && x.1.to_bits() == y.1.to_bits()
-                && x.2.len() == y.2.len()
-                && x.2.iter().zip(y.2).all(|(p, q)| {
+            x.0.reynolds.to_bits() == y.0.reynolds.to_bits()
+                && x.0.mach.to_bits() == y.0.mach.to_bits()
+                && x.1.len() == y.1.len()
+                && x.1.iter().zip(y.1).all(|(p, q)| {
                     let f = |p: &PolarPoint| {
                         [
                             p.alpha, p.cl, p.cd, p.cdp, p.cdf, p.cm, p.xtr_top, p.xtr_bot,
@@ -144,4 +144,22 @@ pub fn same_bits(a: &PolarTable, b: &PolarTable) -> bool {
                     f(p) == f(q) && p.converged == q.converged && p.iterations == q.iterations
                 })
         })
+}
+
+/// A fresh, empty scratch folder in the system temporary directory.
+pub fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("polargen_test_{name}_{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// The names of the entries of `dir`, sorted.
+pub fn files_in(dir: &std::path::Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
 }

@@ -1,22 +1,32 @@
 //! `gyro` — gyroplane rotor performance from airfoil polar tables: cruise trim, takeoff,
 //! clean-versus-contaminated comparison (paper Tables 3 and 4), power-required sweeps, rotor
-//! plots ([`plot`]) and the paper report ([`report`]).
+//! plots ([`plot`]) and the paper report ([`polargen::report`]). Text output is formatted in
+//! [`print`](mod@print).
+
+#[path = "../common/cli.rs"]
+mod cli;
+mod plot;
+mod print;
 
 use anyhow::{bail, Context, Result};
 use clap::{Args, Parser, Subcommand};
-use paper::{PAPER_TAKEOFF, PAPER_TRIM};
-use polargen::diagnostics::error_line;
-use polargen::rotor::aircraft::{MAX_ISA_ALTITUDE_M, MAX_MASS_KG, MAX_SPEED_KT};
-use polargen::rotor::cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds};
-use polargen::rotor::trim::{trim_aircraft, TrimParams, TrimResult};
-use polargen::rotor::{simulate_takeoff, Aircraft, TakeoffResult};
-use polargen::section::PolarPoint;
-use polargen::table::io::{check_output_path, write_atomic};
-use polargen::table::{read_table, PolarTable, TableError, TableMeta};
-use serde::Serialize;
-use std::fmt::Write as _;
-use std::io::Write as _;
+use cli::Tool;
+use polargen::output::{check_output_path, write_output, OutputError};
+use polargen::report::{check_report_paths, write_report, ReportInputs};
+use polargen::rotor::study::{paper_runs, SpeedSweep};
+use polargen::rotor::{
+    cruise_blade_alpha, simulate_takeoff, sweep_speeds, trim_aircraft, Aircraft, TrimParams,
+    MAX_ISA_ALTITUDE_M, MAX_MASS_KG, MAX_SPEED_KT,
+};
+use polargen::table::read_lookup_table;
 use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// This tool's name and error prefix.
+const TOOL: Tool = Tool {
+    name: "gyro",
+    error_prefix: "gyro: ",
+};
 
 /// Appends one formatted line to an output `String` (writing to a `String` cannot fail).
 macro_rules! outln {
@@ -24,13 +34,11 @@ macro_rules! outln {
         $buf.push('\n')
     };
     ($buf:expr, $($arg:tt)*) => {{
+        use std::fmt::Write as _;
         let _ = writeln!($buf, $($arg)*);
     }};
 }
-
-mod paper;
-mod plot;
-mod report;
+pub(crate) use outln;
 
 #[derive(Parser)]
 #[command(
@@ -47,20 +55,16 @@ struct Cli {
 enum Command {
     /// Level-cruise trim: rotor rpm, rotor AoA, drags, propeller thrust, engine rpm, L/D.
     Trim {
-        /// Aircraft preset (TOML).
-        #[arg(long)]
-        aircraft: PathBuf,
-        /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
-        #[arg(long)]
-        table: PathBuf,
+        #[command(flatten)]
+        inputs: Inputs,
         /// Airspeed in knots.
         #[arg(long, default_value_t = 60.0, allow_hyphen_values = true)]
         speed_kt: f64,
         /// Mass in kg (default: the preset's).
         #[arg(long, allow_hyphen_values = true)]
         mass: Option<f64>,
-        /// ISA altitude in metres, 0 to 11000.
-        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true,
+              help = format!("ISA altitude in metres, 0 to {MAX_ISA_ALTITUDE_M}"))]
         altitude_m: f64,
         /// Print JSON instead of text.
         #[arg(long)]
@@ -68,12 +72,8 @@ enum Command {
     },
     /// Takeoff from brake release to the screen height: s_TO, s_15, β_max.
     Takeoff {
-        /// Aircraft preset (TOML).
-        #[arg(long)]
-        aircraft: PathBuf,
-        /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
-        #[arg(long)]
-        table: PathBuf,
+        #[command(flatten)]
+        inputs: Inputs,
         /// Mass in kg (default: the preset's).
         #[arg(long, allow_hyphen_values = true)]
         mass: Option<f64>,
@@ -101,12 +101,8 @@ enum Command {
     },
     /// Trim over a speed range: power-required curve.
     Sweep {
-        /// Aircraft preset (TOML).
-        #[arg(long)]
-        aircraft: PathBuf,
-        /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
-        #[arg(long)]
-        table: PathBuf,
+        #[command(flatten)]
+        inputs: Inputs,
         #[command(flatten)]
         speeds: SpeedRange,
         /// Mass in kg (default: the preset's).
@@ -118,12 +114,8 @@ enum Command {
     },
     /// Blade angle of attack α(ψ) at one radius in trimmed cruise (paper Fig. 10; ψ = 0 rear).
     Alpha {
-        /// Aircraft preset (TOML).
-        #[arg(long)]
-        aircraft: PathBuf,
-        /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
-        #[arg(long)]
-        table: PathBuf,
+        #[command(flatten)]
+        inputs: Inputs,
         /// Airspeed in knots.
         #[arg(long, default_value_t = 60.0, allow_hyphen_values = true)]
         speed_kt: f64,
@@ -140,116 +132,33 @@ enum Command {
         kind: plot::PlotKind,
     },
     /// The paper report: Tables 3, 4, 5 beside the paper's values and all figures, in one folder.
-    Report(report::ReportArgs),
+    Report(ReportArgs),
 }
 
-/// Reads the section table given with `--table`: a polargen table file (long-form CSV or
-/// JSON, [`read_table`]) or, as a fallback, a single XFOIL-style polar CSV with columns
-/// `alpha, cl, cd[, cdp, cm, xtr_top, xtr_bot]` (the XFOIL reference polars). A single polar
-/// becomes a one-node table at the Re and M parsed from a file name like `…_Re1.9e6_M0.41_…`
-/// (Re 1e6, M 0 if absent); lookups at other Re/M are clamped to that node.
-fn load_section(path: &Path) -> Result<PolarTable> {
-    if path.is_dir() {
-        bail!("cannot read table {}: is a folder", path.display());
-    }
-    if !path.is_file() {
-        bail!("cannot read table {}: no such file", path.display());
-    }
-    let table = match read_table(path) {
-        Ok(t) => t,
-        // A file with polargen's columns is a polargen table with an error in it: report
-        // that error, not the fallback reader's.
-        Err(table_err) if has_polargen_header(path) => {
-            return Err(anyhow::Error::new(table_err))
-                .with_context(|| format!("table {}", path.display()))
-        }
-        Err(table_err) => single_polar_table(path).with_context(|| {
-            format!("not a polargen table ({table_err}) nor an XFOIL polar CSV")
-        })?,
-    };
-    table
-        .require_lookup()
-        .with_context(|| format!("{}", path.display()))?;
-    Ok(table)
+/// The aircraft and the blade section of a single-section command.
+#[derive(Args)]
+struct Inputs {
+    /// Aircraft preset (TOML).
+    #[arg(long)]
+    aircraft: PathBuf,
+    /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
+    #[arg(long)]
+    table: PathBuf,
 }
 
-/// Whether `path` starts like a polargen table: JSON, or a CSV header naming the `airfoil`,
-/// `re` and `mach` columns.
-fn has_polargen_header(path: &Path) -> bool {
-    let Ok(text) = std::fs::read(path) else {
-        return false;
-    };
-    let head = String::from_utf8_lossy(&text[..text.len().min(4096)]);
-    let first = head.trim_start();
-    if first.starts_with('{') {
-        return true;
-    }
-    let header = first.lines().next().unwrap_or("");
-    let cols: Vec<&str> = header.split(',').map(str::trim).collect();
-    ["airfoil", "re", "mach"].iter().all(|c| cols.contains(c))
-}
-
-/// Number after `key` in a file stem such as `naca8h12_Re1.9e6_M0.41_free`.
-fn stem_number(stem: &str, key: &str) -> Option<f64> {
-    stem.split('_')
-        .find_map(|part| part.strip_prefix(key).and_then(|v| v.parse::<f64>().ok()))
-}
-
-fn single_polar_table(path: &Path) -> Result<PolarTable> {
-    let mut rd = csv::ReaderBuilder::new()
-        .trim(csv::Trim::All)
-        .from_path(path)
-        .with_context(|| format!("cannot read table {}", path.display()))?;
-    let headers = rd.headers()?.clone();
-    let col = |name: &str| headers.iter().position(|h| h.eq_ignore_ascii_case(name));
-    let (Some(ia), Some(il), Some(id)) = (col("alpha"), col("cl"), col("cd")) else {
-        bail!("table {} needs columns alpha, cl, cd", path.display());
-    };
-    let (icdp, icm, ixt, ixb) = (col("cdp"), col("cm"), col("xtr_top"), col("xtr_bot"));
-    let mut points = Vec::new();
-    for (n, rec) in rd.records().enumerate() {
-        let rec = rec.with_context(|| format!("table {} row {}", path.display(), n + 2))?;
-        let get = |i: usize| -> Result<f64> {
-            let s = rec.get(i).unwrap_or("");
-            s.parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite())
-                .with_context(|| {
-                    format!("table {} row {}: bad number '{s}'", path.display(), n + 2)
-                })
-        };
-        let opt = |i: Option<usize>, default: f64| -> Result<f64> {
-            i.map(get).transpose().map(|v| v.unwrap_or(default))
-        };
-        let cd = get(id)?;
-        let cdp = opt(icdp, 0.0)?;
-        points.push(PolarPoint {
-            alpha: get(ia)?,
-            cl: get(il)?,
-            cd,
-            cdp,
-            cdf: cd - cdp,
-            cm: opt(icm, 0.0)?,
-            xtr_top: opt(ixt, 1.0)?,
-            xtr_bot: opt(ixb, 1.0)?,
-            converged: true,
-            iterations: 0,
-            residual: 0.0,
-        });
-    }
-    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("");
-    let re = stem_number(stem, "Re").unwrap_or(1e6);
-    let mach = stem_number(stem, "M").unwrap_or(0.0);
-    let meta = TableMeta {
-        airfoil: stem.split('_').next().unwrap_or("polar").to_string(),
-        ncrit: 9.0,
-        xtr_top_set: 1.0,
-        xtr_bot_set: 1.0,
-        panels: 0,
-        solver: "XFOIL polar file".to_string(),
-    };
-    PolarTable::new(meta, vec![re], vec![mach], vec![points])
-        .with_context(|| format!("table {}", path.display()))
+/// `gyro report` options.
+#[derive(Args)]
+pub struct ReportArgs {
+    /// Aircraft preset (TOML).
+    #[arg(long, default_value = "aircraft/mtosport.toml")]
+    aircraft: PathBuf,
+    /// Folder holding naca8h12_free.csv, naca8h12_xtr0.07.csv, naca23012_free.csv and
+    /// naca23012_xtr0.07.csv (the shipped default-grid tables).
+    #[arg(long, default_value = "polars")]
+    polars: PathBuf,
+    /// Output folder (created if missing): README.md and the figures.
+    #[arg(long, default_value = "report")]
+    out: PathBuf,
 }
 
 fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
@@ -302,24 +211,12 @@ fn check_samples(samples: usize) -> Result<()> {
     Ok(())
 }
 
-/// Notes on stderr about a trim that is a valid rotor solution but not one the aircraft can
-/// fly as computed: the engine cannot reach the thrust, or the table did not cover the rotor.
-fn trim_notes(t: &TrimResult) {
-    if t.engine_rpm.is_none() {
-        eprintln!(
-            "gyro: note: at {:.1} kt the propeller needs more than the engine's maximum rpm \
-             for {:.0} N of thrust: the aircraft cannot fly this speed level",
-            t.airspeed_kt, t.prop_thrust_n
-        );
+/// The notes of a speed sweep on stderr, then an error if no speed trimmed.
+fn report_sweep(sweep: &SpeedSweep) -> Result<()> {
+    for note in sweep.notes() {
+        TOOL.say(note);
     }
-    if t.table_clamped_fraction > 0.0 {
-        eprintln!(
-            "gyro: note: at {:.1} kt, {:.1} % of the blade-element lookups lie outside the \
-             table's Reynolds/Mach range and use its edge values",
-            t.airspeed_kt,
-            100.0 * t.table_clamped_fraction
-        );
-    }
+    Ok(sweep.require_trims()?)
 }
 
 /// Airspeed range of a speed sweep (`gyro sweep`, `gyro plot power`).
@@ -363,320 +260,11 @@ impl SpeedRange {
     }
 }
 
-#[derive(Serialize)]
-struct TrimJson {
-    rotor_rpm: f64,
-    rotor_aoa_deg: f64,
-    engine_rpm: Option<f64>,
-    rotor_drag_n: f64,
-    parasitic_drag_n: f64,
-    prop_thrust_n: f64,
-    lift_to_drag: f64,
-    hub_aoa_deg: f64,
-    power_required_kw: f64,
-    beta1c_deg: f64,
-    beta1s_deg: f64,
-    speed_kt: f64,
-}
-
-impl From<&TrimResult> for TrimJson {
-    fn from(t: &TrimResult) -> Self {
-        Self {
-            rotor_rpm: t.rotor_rpm,
-            rotor_aoa_deg: t.rotor_aoa_deg,
-            engine_rpm: t.engine_rpm,
-            rotor_drag_n: t.rotor_drag_n,
-            parasitic_drag_n: t.parasitic_drag_n,
-            prop_thrust_n: t.prop_thrust_n,
-            lift_to_drag: t.lift_to_drag,
-            hub_aoa_deg: t.hub_aoa_deg,
-            power_required_kw: t.power_required_kw,
-            beta1c_deg: t.beta1c_deg,
-            beta1s_deg: t.beta1s_deg,
-            speed_kt: t.airspeed_kt,
-        }
-    }
-}
-
-#[derive(Serialize)]
-struct TakeoffJson {
-    takeoff_roll_m: f64,
-    distance_15m_m: f64,
-    max_flapping_deg: f64,
-    liftoff_speed_kt: f64,
-    screen_speed_kt: f64,
-    liftoff_rotor_rpm: f64,
-    screen_time_s: f64,
-}
-
-impl From<&TakeoffResult> for TakeoffJson {
-    fn from(t: &TakeoffResult) -> Self {
-        Self {
-            takeoff_roll_m: t.takeoff_roll_m,
-            distance_15m_m: t.distance_15m_m,
-            max_flapping_deg: t.max_flapping_deg,
-            liftoff_speed_kt: t.liftoff_speed_kt,
-            screen_speed_kt: t.screen_speed_kt,
-            liftoff_rotor_rpm: t.liftoff_rotor_rpm,
-            screen_time_s: t.screen_time_s,
-        }
-    }
-}
-
-fn engine_text(e: Option<f64>) -> String {
-    e.map_or_else(|| "above max".to_string(), |v| format!("{v:.0}"))
-}
-
-fn print_trim(buf: &mut String, t: &TrimResult) {
-    outln!(buf, "trim at {:.1} kt", t.airspeed_kt);
-    outln!(buf, "  rotor rpm n_R          {:8.1}", t.rotor_rpm);
-    outln!(
-        buf,
-        "  rotor AoA alpha_R [deg]{:8.2}   (hub {:.2})",
-        t.rotor_aoa_deg,
-        t.hub_aoa_deg
-    );
-    outln!(
-        buf,
-        "  engine rpm             {:>8}",
-        engine_text(t.engine_rpm)
-    );
-    outln!(buf, "  rotor drag D_R [N]     {:8.1}", t.rotor_drag_n);
-    outln!(buf, "  parasitic D_P [N]      {:8.1}", t.parasitic_drag_n);
-    outln!(buf, "  prop thrust F_prop [N] {:8.1}", t.prop_thrust_n);
-    outln!(buf, "  L/D                    {:8.2}", t.lift_to_drag);
-    outln!(buf, "  power required [kW]    {:8.1}", t.power_required_kw);
-    outln!(
-        buf,
-        "  flapping b1c, b1s [deg]{:8.2} {:.2}",
-        t.beta1c_deg,
-        t.beta1s_deg
-    );
-}
-
-fn print_takeoff(buf: &mut String, t: &TakeoffResult) {
-    outln!(buf, "takeoff");
-    outln!(buf, "  takeoff roll s_TO [m]      {:7.1}", t.takeoff_roll_m);
-    outln!(buf, "  distance to 15 m s_15 [m]  {:7.1}", t.distance_15m_m);
-    outln!(
-        buf,
-        "  max flapping beta_max [deg]{:7.2}{}",
-        t.max_flapping_deg,
-        if t.flap_stops_reached {
-            "  (on the stops)"
-        } else {
-            ""
-        }
-    );
-    outln!(
-        buf,
-        "  lift-off speed [kt]        {:7.1}  at {:.1} s, rotor {:.0} rpm",
-        t.liftoff_speed_kt,
-        t.liftoff_time_s,
-        t.liftoff_rotor_rpm
-    );
-    outln!(
-        buf,
-        "  speed at 15 m [kt]         {:7.1}  at {:.1} s",
-        t.screen_speed_kt,
-        t.screen_time_s
-    );
-}
-
-/// Trims of a speed sweep at the preset's mass, ISA sea level, that succeeded, in increasing
-/// speed; a speed without a trim is reported on stderr as skipped, prefixed with the case
-/// `label` if given. Error if no speed trims.
-fn trimmed_speeds(
-    aircraft: &Aircraft,
-    section: &PolarTable,
-    speeds_kt: &[f64],
-    label: Option<&str>,
-) -> Result<Vec<TrimResult>> {
-    let prefix = label.map_or(String::new(), |l| format!("{l}: "));
-    let mut trims = Vec::new();
-    for (v, r) in speed_sweep(
-        aircraft,
-        section,
-        speeds_kt,
-        aircraft.mass_kg,
-        0.0,
-        &TrimParams::default(),
-    ) {
-        match r {
-            Ok(t) => trims.push(t),
-            Err(e) => eprintln!("gyro: {prefix}skipped {v:.1} kt: {e}"),
-        }
-    }
-    if trims.is_empty() {
-        bail!("{prefix}no trim point in the speed range");
-    }
-    let clamped: Vec<&TrimResult> = trims
-        .iter()
-        .filter(|t| t.table_clamped_fraction > 0.0)
-        .collect();
-    if let Some(worst) = clamped.iter().max_by(|a, b| {
-        a.table_clamped_fraction
-            .total_cmp(&b.table_clamped_fraction)
-    }) {
-        eprintln!(
-            "gyro: note: {prefix}at {} of {} speeds some blade-element lookups lie outside the \
-             table's Reynolds/Mach range and use its edge values (most: {:.1} % at {:.1} kt)",
-            clamped.len(),
-            trims.len(),
-            100.0 * worst.table_clamped_fraction,
-            worst.airspeed_kt
-        );
-    }
-    Ok(trims)
-}
-
-/// Airspeed of the paper's cruise trim (Table 3) \[kt\].
-const PAPER_TRIM_SPEED_KT: f64 = 60.0;
-
-/// The paper's two computations for one blade section: trim at 60 kt, ISA sea level, the
-/// preset's mass (Table 3) and the takeoff (Table 4); `label` names the case in errors.
-fn paper_case(
-    ac: &Aircraft,
-    section: &PolarTable,
-    label: &str,
-) -> Result<(TrimResult, TakeoffResult)> {
-    let t = trim_aircraft(
-        ac,
-        section,
-        PAPER_TRIM_SPEED_KT,
-        ac.mass_kg,
-        0.0,
-        &TrimParams::default(),
-    )
-    .with_context(|| format!("{label} trim"))?;
-    let o = simulate_takeoff(ac, section).with_context(|| format!("{label} takeoff"))?;
-    Ok((t, o))
-}
-
-/// (trim, takeoff) of the clean and of the contaminated section.
-type CasePair = ((TrimResult, TakeoffResult), (TrimResult, TakeoffResult));
-
-/// [`paper_case`] for the clean and the contaminated section, run in parallel.
-fn paper_cases(ac: &Aircraft, clean: &PolarTable, dirty: &PolarTable) -> Result<CasePair> {
-    let (c, d) = rayon::join(
-        || paper_case(ac, clean, "clean"),
-        || paper_case(ac, dirty, "contaminated"),
-    );
-    Ok((c?, d?))
-}
-
-/// Relative change from `a` to `b` [%].
-fn rel(a: f64, b: f64) -> f64 {
-    100.0 * (b - a) / a
-}
-
-fn compare(
-    buf: &mut String,
-    ac: &Aircraft,
-    clean: &PolarTable,
-    dirty: &PolarTable,
-    json: bool,
-) -> Result<()> {
-    let ((tc, oc), (td, od)) = paper_cases(ac, clean, dirty)?;
-    let ours_trim = |t: &TrimResult| {
-        [
-            t.rotor_rpm,
-            t.rotor_aoa_deg,
-            t.engine_rpm.unwrap_or(f64::NAN),
-            t.rotor_drag_n,
-            t.parasitic_drag_n,
-            t.prop_thrust_n,
-            t.lift_to_drag,
-        ]
-    };
-    let ours_to = |t: &TakeoffResult| [t.takeoff_roll_m, t.distance_15m_m, t.max_flapping_deg];
-    if json {
-        #[derive(Serialize)]
-        struct Row {
-            quantity: &'static str,
-            paper_clean: f64,
-            paper_contaminated: f64,
-            ours_clean: f64,
-            ours_contaminated: f64,
-        }
-        let rows = |paper: &[(&'static str, f64, f64)], c: &[f64], d: &[f64]| -> Vec<Row> {
-            paper
-                .iter()
-                .zip(c.iter().zip(d))
-                .map(|(&(q, pc, pd), (&oc, &od))| Row {
-                    quantity: q,
-                    paper_clean: pc,
-                    paper_contaminated: pd,
-                    ours_clean: oc,
-                    ours_contaminated: od,
-                })
-                .collect()
-        };
-        let out = serde_json::json!({
-            "trim": rows(&PAPER_TRIM, &ours_trim(&tc), &ours_trim(&td)),
-            "takeoff": rows(&PAPER_TAKEOFF, &ours_to(&oc), &ours_to(&od)),
-        });
-        outln!(buf, "{}", serde_json::to_string_pretty(&out)?);
-        return Ok(());
-    }
-    let table =
-        |buf: &mut String, title: &str, paper: &[(&str, f64, f64)], c: &[f64], d: &[f64]| {
-            outln!(buf, "{title}");
-            outln!(
-                buf,
-                "  {:<28} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>8}",
-                "",
-                "paper",
-                "paper",
-                "paper",
-                "ours",
-                "ours",
-                "ours"
-            );
-            outln!(
-                buf,
-                "  {:<28} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>8}",
-                "quantity",
-                "clean",
-                "contam.",
-                "change",
-                "clean",
-                "contam.",
-                "change"
-            );
-            for (&(q, pc, pd), (&oc, &od)) in paper.iter().zip(c.iter().zip(d)) {
-                outln!(
-                    buf,
-                    "  {q:<28} {pc:>9.1} {pd:>9.1} {:>+7.1}% | {oc:>9.1} {od:>9.1} {:>+7.1}%",
-                    rel(pc, pd),
-                    rel(oc, od)
-                );
-            }
-        };
-    table(
-        buf,
-        "Table 3 — trim at 60 kt, ISA sea level",
-        &PAPER_TRIM,
-        &ours_trim(&tc),
-        &ours_trim(&td),
-    );
-    outln!(buf);
-    table(
-        buf,
-        "Table 4 — takeoff, ISA sea level, no wind",
-        &PAPER_TAKEOFF,
-        &ours_to(&oc),
-        &ours_to(&od),
-    );
-    Ok(())
-}
-
 /// Runs one command, appending its standard output to `buf`.
 fn run(cli: Cli, buf: &mut String) -> Result<()> {
     match cli.command {
         Command::Trim {
-            aircraft,
-            table,
+            inputs: Inputs { aircraft, table },
             speed_kt,
             mass,
             altitude_m,
@@ -685,7 +273,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             check_speed("speed-kt", speed_kt)?;
             check_altitude(altitude_m)?;
             let ac = load_aircraft(&aircraft, mass)?;
-            let section = load_section(&table)?;
+            let section = read_lookup_table(&table)?;
             let t = trim_aircraft(
                 &ac,
                 &section,
@@ -694,20 +282,15 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
                 altitude_m,
                 &TrimParams::default(),
             )?;
-            trim_notes(&t);
+            t.notes().iter().for_each(|n| TOOL.say(n));
             if json {
-                outln!(
-                    buf,
-                    "{}",
-                    serde_json::to_string_pretty(&TrimJson::from(&t))?
-                );
+                outln!(buf, "{}", serde_json::to_string_pretty(&t)?);
             } else {
-                print_trim(buf, &t);
+                print::trim(buf, &t);
             }
         }
         Command::Takeoff {
-            aircraft,
-            table,
+            inputs: Inputs { aircraft, table },
             mass,
             json,
             history,
@@ -716,23 +299,19 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
                 check_output_path(path).context("--history")?;
             }
             let ac = load_aircraft(&aircraft, mass)?;
-            let section = load_section(&table)?;
+            let section = read_lookup_table(&table)?;
             let t = simulate_takeoff(&ac, &section)?;
             if let Some(path) = history {
-                write_atomic(&path, |w| {
+                write_output(&path, |w| {
                     t.write_history_csv(w)
-                        .map_err(|e| TableError::io(&path, e.into()))
+                        .map_err(|e| OutputError::io(&path, e.into()))
                 })
                 .context("--history")?;
             }
             if json {
-                outln!(
-                    buf,
-                    "{}",
-                    serde_json::to_string_pretty(&TakeoffJson::from(&t))?
-                );
+                outln!(buf, "{}", serde_json::to_string_pretty(&t)?);
             } else {
-                print_takeoff(buf, &t);
+                print::takeoff(buf, &t);
             }
         }
         Command::Compare {
@@ -742,60 +321,34 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             json,
         } => {
             let ac = load_aircraft(&aircraft, None)?;
-            let c = load_section(&clean)?;
-            let d = load_section(&contaminated)?;
-            compare(buf, &ac, &c, &d, json)?;
+            let c = read_lookup_table(&clean)?;
+            let d = read_lookup_table(&contaminated)?;
+            let runs = paper_runs(&ac, &c, &d)?;
+            if json {
+                print::compare_json(buf, &runs)?;
+            } else {
+                print::compare(buf, &runs);
+            }
         }
         Command::Sweep {
-            aircraft,
-            table,
+            inputs: Inputs { aircraft, table },
             speeds,
             mass,
             json,
         } => {
             let speeds = speeds.checked()?;
             let ac = load_aircraft(&aircraft, mass)?;
-            let section = load_section(&table)?;
-            let rows: Vec<TrimJson> = trimmed_speeds(&ac, &section, &speeds, None)?
-                .iter()
-                .map(TrimJson::from)
-                .collect();
+            let section = read_lookup_table(&table)?;
+            let sweep = SpeedSweep::run(&ac, &section, &speeds, None);
+            report_sweep(&sweep)?;
             if json {
-                outln!(buf, "{}", serde_json::to_string_pretty(&rows)?);
+                outln!(buf, "{}", serde_json::to_string_pretty(&sweep.trims)?);
             } else {
-                outln!(
-                    buf,
-                    "{:>7} {:>7} {:>7} {:>8} {:>8} {:>8} {:>8} {:>6} {:>7}",
-                    "V[kt]",
-                    "n_R",
-                    "a_R",
-                    "engine",
-                    "D_R[N]",
-                    "D_P[N]",
-                    "F_P[N]",
-                    "L/D",
-                    "P[kW]"
-                );
-                for r in &rows {
-                    outln!(
-                        buf,
-                        "{:7.1} {:7.1} {:7.2} {:>8} {:8.1} {:8.1} {:8.1} {:6.2} {:7.1}",
-                        r.speed_kt,
-                        r.rotor_rpm,
-                        r.rotor_aoa_deg,
-                        engine_text(r.engine_rpm),
-                        r.rotor_drag_n,
-                        r.parasitic_drag_n,
-                        r.prop_thrust_n,
-                        r.lift_to_drag,
-                        r.power_required_kw
-                    );
-                }
+                print::sweep(buf, &sweep.trims);
             }
         }
         Command::Alpha {
-            aircraft,
-            table,
+            inputs: Inputs { aircraft, table },
             speed_kt,
             radius,
             samples,
@@ -804,7 +357,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             check_samples(samples)?;
             let ac = load_aircraft(&aircraft, None)?;
             check_radius(radius, &ac)?;
-            let section = load_section(&table)?;
+            let section = read_lookup_table(&table)?;
             let curve = cruise_blade_alpha(
                 &ac,
                 &section,
@@ -820,42 +373,47 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             }
         }
         Command::Plot { kind } => plot::run(kind)?,
-        Command::Report(args) => report::run(&args, buf)?,
+        Command::Report(args) => {
+            check_report_paths(&args.out).context("--out")?;
+            let outcome = write_report(&ReportInputs {
+                aircraft: args.aircraft,
+                polars: args.polars,
+                out: args.out,
+            })?;
+            for note in &outcome.notes {
+                TOOL.say(note);
+            }
+            for path in &outcome.written {
+                outln!(buf, "wrote {}", path.display());
+            }
+        }
     }
     Ok(())
 }
 
-fn main() {
-    let cli = match Cli::try_parse() {
+fn main() -> ExitCode {
+    let cli = match TOOL.parse::<Cli>() {
         Ok(cli) => cli,
-        Err(e) if !e.use_stderr() => e.exit(),
-        Err(e) => {
-            let text = e.to_string();
-            let message: Vec<&str> = text
-                .lines()
-                .take_while(|l| !l.starts_with("Usage:"))
-                .map(str::trim)
-                .filter(|l| !l.is_empty())
-                .collect();
-            eprintln!("gyro: {}", message.join(" ").trim_start_matches("error: "));
-            std::process::exit(2);
-        }
+        Err(code) => return code,
     };
     let mut buf = String::new();
-    if let Err(e) = run(cli, &mut buf) {
-        eprintln!("gyro: {}", error_line(e.as_ref()));
-        std::process::exit(1);
-    }
-    // A closed pipe (e.g. `gyro … | head`) is not an error of ours: stop quietly.
-    let mut stdout = std::io::stdout().lock();
-    match stdout
-        .write_all(buf.as_bytes())
-        .and_then(|()| stdout.flush())
-    {
-        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
-            eprintln!("gyro: cannot write output: {e}");
-            std::process::exit(1);
-        }
-        _ => {}
+    let result = run(cli, &mut buf).and_then(|()| {
+        let stdout = Path::new("-");
+        write_output(stdout, |w| {
+            w.write_all(buf.as_bytes())
+                .map_err(|e| OutputError::io(stdout, e))
+        })
+        .context("cannot write output")
+    });
+    TOOL.finish(result)
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::CommandFactory;
+
+    #[test]
+    fn cli_reference_is_current() {
+        super::cli::check_reference(super::Cli::command());
     }
 }

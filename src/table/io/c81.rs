@@ -30,8 +30,8 @@
 //! * Fields: Mach F7.3, α F7.2, coefficients with as many decimals (≤ 4) as leave at least one
 //!   leading blank, so that free-format (whitespace-splitting) readers work too.
 
-use super::atomic::write_atomic;
 use super::xfoil_polar::re_label;
+use crate::output::{fixed_decimals, write_output};
 use crate::section::SectionAero;
 use crate::table::{PolarTable, TableError};
 use std::io::Write;
@@ -137,13 +137,7 @@ const MIN_OUTER_GAP_DEG: f64 = 1.0;
 fn field(v: f64, max_dec: usize, blank: bool) -> Result<String, TableError> {
     let limit = if blank { FIELD - 1 } else { FIELD };
     for d in (0..=max_dec).rev() {
-        // A value that rounds to zero is written as 0 (never "-0.000").
-        let v = if (v * 10f64.powi(d as i32)).round() == 0.0 {
-            0.0
-        } else {
-            v
-        };
-        let s = format!("{v:.d$}");
+        let s = fixed_decimals(v, d);
         if s.len() <= limit {
             return Ok(format!("{s:>FIELD$}"));
         }
@@ -243,7 +237,7 @@ pub fn write_c81(
         if !(re.is_finite() && re > 0.0) {
             return Err(TableError::BadRe(re));
         }
-        write_atomic(path, |w| write_c81_to(table, re, options.outer_step_deg, w))?;
+        write_output(path, |w| write_c81_to(table, re, options.outer_step_deg, w))?;
         return Ok(vec![path.to_path_buf()]);
     }
     let stem = path
@@ -261,7 +255,7 @@ pub fn write_c81(
         } else {
             path.with_file_name(format!("{stem}_Re{}.{ext}", re_label(re)))
         };
-        write_atomic(&file, |w| {
+        write_output(&file, |w| {
             write_c81_to(table, re, options.outer_step_deg, w)
         })?;
         written.push(file);

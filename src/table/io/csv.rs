@@ -7,8 +7,8 @@
 //! `panels` (default 0) and `solver` (default empty) are optional. A (Re, M) node without rows
 //! cannot be represented and reads back as a ragged grid.
 
-use super::atomic::write_atomic;
-use crate::section::PolarPoint;
+use crate::output::write_output;
+use crate::section::{FlowCondition, PolarPoint};
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::collections::HashMap;
 use std::io::{Read, Write};
@@ -55,7 +55,7 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
         m.xtr_top_set.to_string(),
         m.xtr_bot_set.to_string(),
     );
-    for (re, mach, points) in table.polars() {
+    for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
         let (re, mach) = (re.to_string(), mach.to_string());
         for p in points {
             out.write_record([
@@ -87,13 +87,7 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
 
 /// Write `table` as CSV to `path` (atomically).
 pub fn write_csv(table: &PolarTable, path: &Path) -> Result<(), TableError> {
-    write_atomic(path, |w| write_csv_to(table, w))
-}
-
-/// Read a table from a CSV file.
-pub fn read_csv(path: &Path) -> Result<PolarTable, TableError> {
-    let f = std::fs::File::open(path).map_err(|e| TableError::io(path, e))?;
-    parse_csv(std::io::BufReader::new(f))
+    write_output(path, |w| write_csv_to(table, w))
 }
 
 /// Parse a long-form CSV table from `r`.
@@ -123,7 +117,7 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
     }
     let mut meta: Option<(TableMeta, u64)> = None;
     let mut index: HashMap<(u64, u64), usize> = HashMap::new();
-    let mut polars: Vec<(f64, f64, Vec<PolarPoint>)> = Vec::new();
+    let mut polars: Vec<(FlowCondition, Vec<PolarPoint>)> = Vec::new();
     for rec in rd.records() {
         let rec = rec.map_err(|e| csv_error(&e, 0))?;
         let line = rec.position().map_or(0, |p| p.line());
@@ -186,10 +180,10 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
         }
         let key = (re.to_bits(), mach.to_bits());
         let k = *index.entry(key).or_insert_with(|| {
-            polars.push((re, mach, Vec::new()));
+            polars.push((FlowCondition::new(re, mach), Vec::new()));
             polars.len() - 1
         });
-        polars[k].2.push(p);
+        polars[k].1.push(p);
     }
     let Some((meta, _)) = meta else {
         return Err(TableError::Csv {
@@ -198,6 +192,71 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
         });
     };
     PolarTable::from_polars(meta, polars)
+}
+
+/// Parse a CSV holding one polar, such as the XFOIL reference polars: columns `alpha`, `cl`,
+/// `cd` (any case, any order) and optionally `cdp` (default 0), `cm` (0), `xtr_top`,
+/// `xtr_bot` (1); every row is a converged point. The flow condition comes from the file stem
+/// `stem`, e.g. `naca8h12_Re1.9e6_M0.41_free` (Re 10⁶ and M 0 when absent), the airfoil name
+/// from its first `_`-separated part.
+pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableError> {
+    let mut rd = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .from_reader(r);
+    let headers = rd.headers().map_err(|e| csv_error(&e, 1))?.clone();
+    let col = |name: &str| headers.iter().position(|h| h.eq_ignore_ascii_case(name));
+    let need = |name: &str| col(name).ok_or_else(|| TableError::MissingColumn(name.to_string()));
+    let (ia, il, id) = (need("alpha")?, need("cl")?, need("cd")?);
+    let (icdp, icm, ixt, ixb) = (col("cdp"), col("cm"), col("xtr_top"), col("xtr_bot"));
+    let mut points = Vec::new();
+    for rec in rd.records() {
+        let rec = rec.map_err(|e| csv_error(&e, 0))?;
+        let line = rec.position().map_or(0, |p| p.line());
+        let get = |i: usize| -> Result<f64, TableError> {
+            let s = rec.get(i).unwrap_or("");
+            s.parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| TableError::Csv {
+                    line,
+                    message: format!("{} '{s}' is not a finite number", &headers[i]),
+                })
+        };
+        let opt = |i: Option<usize>, default: f64| i.map_or(Ok(default), get);
+        let cd = get(id)?;
+        let cdp = opt(icdp, 0.0)?;
+        points.push(PolarPoint {
+            alpha: get(ia)?,
+            cl: get(il)?,
+            cd,
+            cdp,
+            cdf: cd - cdp,
+            cm: opt(icm, 0.0)?,
+            xtr_top: opt(ixt, 1.0)?,
+            xtr_bot: opt(ixb, 1.0)?,
+            converged: true,
+            iterations: 0,
+            residual: 0.0,
+        });
+    }
+    let stem_number = |key: &str| {
+        stem.split('_')
+            .find_map(|part| part.strip_prefix(key).and_then(|v| v.parse::<f64>().ok()))
+    };
+    let meta = TableMeta {
+        airfoil: stem.split('_').next().unwrap_or("polar").to_string(),
+        ncrit: 9.0,
+        xtr_top_set: 1.0,
+        xtr_bot_set: 1.0,
+        panels: 0,
+        solver: "XFOIL polar file".to_string(),
+    };
+    PolarTable::new(
+        meta,
+        vec![stem_number("Re").unwrap_or(1e6)],
+        vec![stem_number("M").unwrap_or(0.0)],
+        vec![points],
+    )
 }
 
 /// Name of the first metadata field in which `b` differs from `a`.

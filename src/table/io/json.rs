@@ -2,7 +2,7 @@
 //! parameters), pretty-printed. Non-finite values of unconverged points are written as the
 //! strings `"NaN"`, `"inf"`, `"-inf"`.
 
-use super::atomic::write_atomic;
+use crate::output::write_output;
 use crate::table::{PolarTable, TableError};
 use std::io::Write;
 use std::path::Path;
@@ -16,18 +16,12 @@ pub fn write_json_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableE
 
 /// Write `table` as JSON to `path` (atomically).
 pub fn write_json(table: &PolarTable, path: &Path) -> Result<(), TableError> {
-    write_atomic(path, |w| write_json_to(table, w))
+    write_output(path, |w| write_json_to(table, w))
 }
 
 /// Parse a table from JSON text (validated like [`PolarTable::new`]).
 pub fn parse_json(text: &str) -> Result<PolarTable, TableError> {
     serde_json::from_str(text).map_err(|e| json_error(&e))
-}
-
-/// Read a table from a JSON file.
-pub fn read_json(path: &Path) -> Result<PolarTable, TableError> {
-    let text = std::fs::read_to_string(path).map_err(|e| TableError::io(path, e))?;
-    parse_json(&text)
 }
 
 /// A serde_json error as a one-line [`TableError::Json`].

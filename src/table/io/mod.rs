@@ -1,20 +1,19 @@
 //! Table files: CSV and JSON (written and read back exactly), XFOIL polar text (written, and
-//! read as a one-polar table) and C81 (written).
-//! Every writer goes through [`atomic::write_atomic`], so a failure never leaves half a file
-//! and missing folders are created.
+//! read as a one-polar table), C81 (written) and single-polar CSV (read). [`read_table`] is the
+//! one reader: it reads a file once and recognises its layout.
+//! Every writer goes through [`write_output`](crate::output::write_output), so a failure
+//! never leaves half a file and missing folders are created.
 
-pub mod atomic;
-pub mod c81;
-pub mod csv;
-pub mod json;
-pub mod xfoil_polar;
+mod c81;
+mod csv;
+mod json;
+mod xfoil_polar;
 
 use super::{PolarTable, TableError};
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
-pub use self::c81::C81Options;
-pub use atomic::{check_output_path, prepare_output_path, write_atomic};
+pub use self::c81::{write_c81, C81Options};
 
 /// A table file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -92,13 +91,141 @@ pub fn write_table(
     }
 }
 
-/// Read a table from a CSV, JSON or XFOIL polar file (format from the extension; a polar
-/// file gives a one-polar table).
+/// Read a table file, once, recognising its layout from its extension and first line: a polargen CSV or
+/// JSON table, an XFOIL polar file (a one-polar table), or a single-polar CSV with columns
+/// `alpha, cl, cd[, cdp, cm, xtr_top, xtr_bot]` such as the XFOIL reference polars (a
+/// one-polar table at the Re and M of a file name like `…_Re1.9e6_M0.41_…`, else Re 10⁶,
+/// M 0). Every error names the file.
 pub fn read_table(path: &Path) -> Result<PolarTable, TableError> {
-    match TableFormat::from_path(path)? {
-        TableFormat::Csv => csv::read_csv(path),
-        TableFormat::Json => json::read_json(path),
-        TableFormat::XfoilPolar => xfoil_polar::read_xfoil_polar(path),
-        TableFormat::C81 => Err(TableError::NotReadable("C81")),
+    if let Ok(TableFormat::C81) = TableFormat::from_path(path) {
+        return Err(TableError::NotReadable("C81"));
+    }
+    let bytes = read_input_file(path)?;
+    // Name the file, unless the error already does.
+    let in_file = |source: TableError| {
+        if source.to_string().contains(&path.display().to_string()) {
+            source
+        } else {
+            TableError::File {
+                path: path.to_path_buf(),
+                source: Box::new(source),
+            }
+        }
+    };
+    let layout = Layout::detect(path, &bytes).map_err(in_file)?;
+    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("");
+    parse_layout(&bytes, layout, stem).map_err(in_file)
+}
+
+/// Parse a table held in memory in `format` (CSV is polargen's long form; C81 has no reader).
+pub fn parse_table(bytes: &[u8], format: TableFormat) -> Result<PolarTable, TableError> {
+    let layout = match format {
+        TableFormat::Csv => Layout::Csv,
+        TableFormat::Json => Layout::Json,
+        TableFormat::XfoilPolar => Layout::XfoilPolar,
+        TableFormat::C81 => return Err(TableError::NotReadable("C81")),
+    };
+    parse_layout(bytes, layout, "")
+}
+
+/// Parse `bytes` laid out as `layout`; `stem` is the file stem a single-polar CSV takes its
+/// flow condition from.
+fn parse_layout(bytes: &[u8], layout: Layout, stem: &str) -> Result<PolarTable, TableError> {
+    let text = || std::str::from_utf8(bytes).map_err(|_| TableError::NotText);
+    match layout {
+        Layout::Csv => csv::parse_csv(bytes),
+        Layout::PolarCsv => csv::parse_polar_csv(bytes, stem),
+        Layout::Json => json::parse_json(text()?),
+        Layout::XfoilPolar => xfoil_polar::parse_xfoil_polar(text()?),
+    }
+}
+
+/// [`read_table`], for a consumer that looks coefficients up (the rotor model): a table
+/// without two converged points in any polar is refused ([`PolarTable::require_lookup`]).
+pub fn read_lookup_table(path: &Path) -> Result<PolarTable, TableError> {
+    let table = read_table(path)?;
+    table.require_lookup().map_err(|e| TableError::File {
+        path: path.to_path_buf(),
+        source: Box::new(e),
+    })?;
+    Ok(table)
+}
+
+/// The bytes of the input file `path`: a regular file (a folder, a device or a FIFO is refused
+/// before it is opened).
+pub(crate) fn read_input_file(path: &Path) -> Result<Vec<u8>, TableError> {
+    let refuse = |reason: &'static str| TableError::Input {
+        path: path.to_path_buf(),
+        reason,
+    };
+    match std::fs::metadata(path) {
+        Ok(m) if m.is_dir() => return Err(refuse("is a folder")),
+        Ok(m) if !m.is_file() => return Err(refuse("is not a regular file")),
+        Ok(_) => {}
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Err(refuse("no such file")),
+        Err(e) => return Err(TableError::io(path, e)),
+    }
+    std::fs::read(path).map_err(|e| TableError::io(path, e))
+}
+
+/// How a table file is laid out, as far as reading it is concerned.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Layout {
+    /// polargen's long-form CSV.
+    Csv,
+    /// A CSV holding one polar: columns alpha, cl, cd and optional others.
+    PolarCsv,
+    /// polargen's JSON.
+    Json,
+    /// XFOIL's polar-file text.
+    XfoilPolar,
+}
+
+impl Layout {
+    /// The layout of a file from its extension, and from its first line where the extension
+    /// does not decide: a `.csv` whose header names the `airfoil`, `re` and `mach` columns is
+    /// a polargen table, one naming `alpha`, `cl` and `cd` (and not those) a single polar, any
+    /// other is refused naming what is missing (an empty one is left to the CSV reader). A file with
+    /// another extension is recognised by its start: `{` (JSON), `Calculated polar for:`
+    /// (XFOIL) or a CSV header as above.
+    fn detect(path: &Path, bytes: &[u8]) -> Result<Self, TableError> {
+        let head = String::from_utf8_lossy(&bytes[..bytes.len().min(4096)]);
+        let first = head.trim_start();
+        let columns: Vec<String> = first
+            .lines()
+            .next()
+            .unwrap_or("")
+            .split(',')
+            .map(|c| c.trim().to_ascii_lowercase())
+            .collect();
+        let has = |names: &[&str]| names.iter().all(|n| columns.iter().any(|c| c == n));
+        let csv = if has(&["airfoil", "re", "mach"]) {
+            Some(Self::Csv)
+        } else if has(&["alpha", "cl", "cd"]) {
+            Some(Self::PolarCsv)
+        } else {
+            None
+        };
+        let neither = || match ["airfoil", "re", "mach"].into_iter().find(|n| !has(&[n])) {
+            Some(missing) if columns.iter().any(|c| !c.is_empty()) => {
+                Err(TableError::CsvLayout(missing))
+            }
+            _ => Ok(Self::Csv),
+        };
+        match TableFormat::from_path(path) {
+            Ok(TableFormat::Csv) => csv.map_or_else(neither, Ok),
+            Ok(TableFormat::Json) => Ok(Self::Json),
+            Ok(TableFormat::XfoilPolar) => Ok(Self::XfoilPolar),
+            Ok(TableFormat::C81) => Err(TableError::NotReadable("C81")),
+            Err(unknown) => {
+                if first.starts_with('{') {
+                    Ok(Self::Json)
+                } else if head.contains("Calculated polar for:") {
+                    Ok(Self::XfoilPolar)
+                } else {
+                    csv.ok_or(unknown)
+                }
+            }
+        }
     }
 }

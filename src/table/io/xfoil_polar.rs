@@ -4,8 +4,8 @@
 //! fields). Only converged points are written, sorted by α. The version line names this
 //! table's solver instead of XFOIL.
 
-use super::atomic::write_atomic;
-use crate::section::PolarPoint;
+use crate::output::write_output;
+use crate::section::{FlowCondition, PolarPoint};
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -87,13 +87,13 @@ pub fn write_xfoil_polars(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "polar".to_string());
     let mut written = Vec::new();
-    for (re, mach, points) in table.polars() {
+    for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
         let file = if single {
             path.to_path_buf()
         } else {
             path.with_file_name(polar_file_name(&stem, re, mach))
         };
-        write_atomic(&file, |w| write_polar_to(table.meta(), re, mach, points, w))?;
+        write_output(&file, |w| write_polar_to(table.meta(), re, mach, points, w))?;
         written.push(file);
     }
     Ok(written)
@@ -201,8 +201,15 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
     PolarTable::new(meta, vec![re], vec![mach], vec![points])
 }
 
-/// Read an XFOIL polar file; see [`parse_xfoil_polar`].
-pub fn read_xfoil_polar(path: &Path) -> Result<PolarTable, TableError> {
-    let text = std::fs::read_to_string(path).map_err(|e| TableError::io(path, e))?;
-    parse_xfoil_polar(&text)
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn file_names_carry_re_and_mach() {
+        assert_eq!(re_label(1e6), "1e6");
+        assert_eq!(re_label(999_999.9999999), "1e6");
+        assert_eq!(re_label(2.5e5), "2.5e5");
+        assert_eq!(polar_file_name("x", 2.5e5, 0.3), "x_Re2.5e5_M0.3.pol");
+    }
 }

@@ -11,7 +11,9 @@ use super::blade_element::{strip_load, AirState, StripFlow};
 use super::flapping::{first_harmonics, Teeter};
 use super::inflow::{
     drees_coefficients, gessow_myers_tip_loss, glauert_induced_velocity, glauert_thrust,
+    InflowModel,
 };
+use crate::numerics::small_dense;
 use crate::section::SectionAero;
 use std::f64::consts::TAU;
 
@@ -29,15 +31,6 @@ pub enum RotorError {
         /// Size of the last Newton step (scaled).
         step: f64,
     },
-}
-
-/// Induced-inflow model.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum InflowModel {
-    /// Uniform inflow from Glauert's momentum theory.
-    Glauert,
-    /// Glauert's mean value with Drees' linear fore-aft and lateral gradients.
-    Drees,
 }
 
 /// Tunable numerics of the coupled inflow/flapping Newton iteration.
@@ -236,7 +229,7 @@ impl Rotor {
     /// Velocity triangle of blade 1 at radius `r`, azimuth `psi`:
     /// U_T = Ωr + V cos α_H sin ψ,
     /// U_P = V sin α_H − v_i(r, ψ) − Ωr dβ/dψ − V cos α_H β cos ψ,
-    /// U_R = V cos α_H cos ψ (radial, drag only; see [`super::blade_element`])
+    /// U_R = V cos α_H cos ψ (radial, drag only; see [`StripFlow`](super::StripFlow))
     /// (small flap angles; Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §4.7,
     /// with the normal velocity counted upwards).
     pub fn strip_flow(
@@ -400,7 +393,7 @@ impl Rotor {
                     jac[i][j] = (fp[i] - f[i]) / p.fd_step;
                 }
             }
-            let Some(dz) = solve3(jac, [-f[0], -f[1], -f[2]]) else {
+            let Some(dz) = small_dense::solve(jac, [-f[0], -f[1], -f[2]]) else {
                 return Err(RotorError::NoConvergence {
                     iterations: iter,
                     step: f64::NAN,
@@ -492,35 +485,6 @@ impl Rotor {
     }
 }
 
-/// Solves a 3×3 linear system by Gaussian elimination with partial pivoting; `None` if singular.
-fn solve3(mut a: [[f64; 3]; 3], mut b: [f64; 3]) -> Option<[f64; 3]> {
-    for col in 0..3 {
-        let piv = (col..3).max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))?;
-        if a[piv][col].abs() < 1e-300 || !a[piv][col].is_finite() {
-            return None;
-        }
-        a.swap(col, piv);
-        b.swap(col, piv);
-        let pivot_row = a[col];
-        for row in col + 1..3 {
-            let f = a[row][col] / pivot_row[col];
-            for (x, p) in a[row].iter_mut().zip(pivot_row.iter()).skip(col) {
-                *x -= f * p;
-            }
-            b[row] -= f * b[col];
-        }
-    }
-    let mut x = [0.0; 3];
-    for row in (0..3).rev() {
-        let mut s = b[row];
-        for k in row + 1..3 {
-            s -= a[row][k] * x[k];
-        }
-        x[row] = s / a[row][row];
-    }
-    Some(x)
-}
-
 impl Rotor {
     /// Builds the rotor model from the preset's rotor section.
     pub fn from_params(p: &super::aircraft::RotorParams) -> Self {
@@ -535,11 +499,7 @@ impl Rotor {
             azimuth_steps: p.azimuth_steps,
             tip_loss_b: p.tip_loss_b,
             induced_power_factor: p.induced_power_factor,
-            inflow: if p.inflow == "drees" {
-                InflowModel::Drees
-            } else {
-                InflowModel::Glauert
-            },
+            inflow: p.inflow,
             solver: RotorSolverParams::default(),
         }
     }

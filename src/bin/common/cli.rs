@@ -1,0 +1,138 @@
+//! What both command-line tools share (included by `polargen` and `gyro` with `#[path]`):
+//! clap errors and run errors as one line on stderr with the tool's prefix, exit codes (a
+//! closed standard output ends a run quietly), notes, and the Markdown command-line reference
+//! generated from the clap definitions (`docs/cli/<tool>.md`, checked by each tool's tests).
+
+use polargen::diagnostics::error_line;
+use std::fmt::Display;
+use std::process::ExitCode;
+
+/// A command-line tool: its name and the prefix of its error lines.
+pub struct Tool {
+    /// Program name, the prefix of every line it writes to stderr.
+    pub name: &'static str,
+    /// Prefix of a failed run's error line.
+    pub error_prefix: &'static str,
+}
+
+impl Tool {
+    /// Parses the command line. Help and version go to stdout (exit 0); any other clap error
+    /// becomes one line `<name>: <message>` on stderr without the usage block (exit 2).
+    pub fn parse<P: clap::Parser>(&self) -> Result<P, ExitCode> {
+        match P::try_parse() {
+            Ok(p) => Ok(p),
+            Err(e) if !e.use_stderr() => {
+                let _ = e.print();
+                Err(ExitCode::SUCCESS)
+            }
+            Err(e) => {
+                let text = e.render().to_string();
+                let message: Vec<&str> = text
+                    .lines()
+                    .take_while(|l| !l.starts_with("Usage:"))
+                    .map(str::trim)
+                    .filter(|l| !l.is_empty())
+                    .collect();
+                eprintln!(
+                    "{}: {}",
+                    self.name,
+                    message.join(" ").trim_start_matches("error: ")
+                );
+                Err(ExitCode::from(2))
+            }
+        }
+    }
+
+    /// The exit of a run: success; quietly success when standard output was closed by its
+    /// reader (`… | head`); otherwise the error and its causes as one line on stderr, exit 1.
+    pub fn finish(&self, result: anyhow::Result<()>) -> ExitCode {
+        match result {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) if closed_pipe(&e) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("{}{}", self.error_prefix, error_line(e.as_ref()));
+                ExitCode::FAILURE
+            }
+        }
+    }
+
+    /// A line on stderr: `<name>: <text>`.
+    pub fn say(&self, text: impl Display) {
+        eprintln!("{}: {text}", self.name);
+    }
+}
+
+/// Whether `e` comes from writing into a pipe whose reader has gone.
+fn closed_pipe(e: &anyhow::Error) -> bool {
+    e.chain().any(|c| {
+        c.downcast_ref::<std::io::Error>()
+            .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
+    })
+}
+
+#[cfg(test)]
+/// The command-line reference of `cmd` in Markdown: one section per command and subcommand
+/// holding its `--help` text.
+pub fn markdown_reference(mut cmd: clap::Command) -> String {
+    cmd.build();
+    let name = cmd.get_name().to_string();
+    let mut out = format!(
+        "# `{name}` command-line reference\n\n\
+         Generated from the tool's argument definitions by its test `cli_reference_is_current` \
+         (`UPDATE_CLI_REFERENCE=1 cargo test --bin {name} cli_reference` rewrites it); do not \
+         edit by hand.\n"
+    );
+    push_command(&mut out, &mut cmd, &name);
+    out
+}
+
+#[cfg(test)]
+/// Appends the section of `cmd` (called `path` on the command line) and of its subcommands.
+fn push_command(out: &mut String, cmd: &mut clap::Command, path: &str) {
+    let help = cmd.render_long_help().to_string();
+    out.push_str(&format!(
+        "\n## `{path}`\n\n```text\n{}\n```\n",
+        help.trim_end()
+    ));
+    for sub in cmd.get_subcommands_mut() {
+        if sub.get_name() == "help" {
+            continue;
+        }
+        let sub_path = format!("{path} {}", sub.get_name());
+        push_command(out, sub, &sub_path);
+    }
+}
+
+/// Checks that `docs/cli/<tool>.md` holds the current reference of `cmd`, or rewrites it when
+/// the environment variable `UPDATE_CLI_REFERENCE` is set.
+#[cfg(test)]
+pub fn check_reference(cmd: clap::Command) {
+    let name = cmd.get_name().to_string();
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("docs/cli")
+        .join(format!("{name}.md"));
+    let current = markdown_reference(cmd);
+    if std::env::var_os("UPDATE_CLI_REFERENCE").is_some() {
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(&path, &current).unwrap();
+    }
+    let shipped = std::fs::read_to_string(&path).unwrap_or_default();
+    assert!(
+        shipped == current,
+        "{} is stale: run `UPDATE_CLI_REFERENCE=1 cargo test --bin {name} cli_reference`",
+        path.display()
+    );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_closed_pipe_is_recognised_through_context() {
+        let io = std::io::Error::from(std::io::ErrorKind::BrokenPipe);
+        let e = anyhow::Error::new(io).context("writing the table");
+        assert!(closed_pipe(&e));
+        assert!(!closed_pipe(&anyhow::anyhow!("other")));
+    }
+}

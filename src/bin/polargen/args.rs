@@ -1,0 +1,208 @@
+//! `polargen`'s command line: the main job (polars and tables) and its subcommands.
+
+use clap::{Args, Parser, Subcommand};
+use polargen::viscous::ViscousParams;
+use std::path::PathBuf;
+
+/// Airfoil polars and Re × Mach × α tables with an XFOIL-class viscous–inviscid solver.
+#[derive(Parser, Debug)]
+#[command(
+    name = "polargen",
+    version,
+    about,
+    args_conflicts_with_subcommands = true,
+    subcommand_negates_reqs = true
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+
+    #[command(flatten)]
+    pub run: RunArgs,
+}
+
+/// Subcommands besides the main job (computing polars and tables).
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Overlay polars from tables (CSV or JSON): Cl–α, Cd–Cl, Cl/Cd–α, Cm–α; SVG or PNG by
+    /// the extension of --out.
+    Plot(PlotArgs),
+    /// Convert a table (CSV, JSON or XFOIL polar) to another format: csv, json, xfoil or c81.
+    Convert(ConvertArgs),
+    /// Cp(x) and boundary-layer distributions (H, Cf, N) at one α or Cl, one case per
+    /// transition setting overlaid (e.g. --xtr 1,0.07: clean vs tripped).
+    PlotPoint(PlotPointArgs),
+}
+
+/// `polargen plot-point` options.
+#[derive(Args, Debug)]
+pub struct PlotPointArgs {
+    /// Airfoil: a name (naca8h12, nacaDDDD, nacaDDDDD) or a coordinate file.
+    #[arg(long, value_name = "NAME|PATH")]
+    pub airfoil: String,
+
+    /// Chord Reynolds number.
+    #[arg(long, allow_hyphen_values = true)]
+    pub re: f64,
+
+    /// Mach number, 0 ≤ M < 1.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub mach: f64,
+
+    /// Angle of attack in degrees.
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        required_unless_present = "cl",
+        conflicts_with = "cl"
+    )]
+    pub alpha: Option<f64>,
+
+    /// Lift coefficient instead of α: each case is solved at the α giving this Cl.
+    #[arg(long, allow_hyphen_values = true)]
+    pub cl: Option<f64>,
+
+    /// Transition settings to overlay, comma-separated x/c on both surfaces (1 = free).
+    #[arg(
+        long,
+        value_name = "LIST",
+        default_value = "1",
+        allow_hyphen_values = true
+    )]
+    pub xtr: String,
+
+    /// Critical amplification ratio N of the e^n criterion.
+    #[arg(long, default_value_t = 9.0, allow_hyphen_values = true)]
+    pub ncrit: f64,
+
+    /// Number of panel nodes.
+    #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES, allow_hyphen_values = true)]
+    pub panels: usize,
+
+    #[command(flatten)]
+    pub newton: Newton,
+
+    /// Output image: FILE.svg or FILE.png.
+    #[arg(long, value_name = "FILE")]
+    pub out: PathBuf,
+
+    /// Also write the distributions as CSV (one row per station, surfaces and wake).
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+
+    /// Figure title (default: airfoil, Re, M, α or Cl).
+    #[arg(long)]
+    pub title: Option<String>,
+}
+
+/// `polargen convert` options.
+#[derive(Args, Debug)]
+pub struct ConvertArgs {
+    /// Table written by polargen (.csv, .json) or an XFOIL polar file (.pol).
+    #[arg(value_name = "TABLE")]
+    pub table: PathBuf,
+
+    /// Output file; the format follows its extension unless --format is given (xfoil and
+    /// c81 may write one file per (Re, M) or per Re, named after it).
+    #[arg(long, value_name = "FILE")]
+    pub out: PathBuf,
+
+    /// Output format: csv, json, xfoil or c81.
+    #[arg(long)]
+    pub format: Option<String>,
+}
+
+/// `polargen plot` options.
+#[derive(Args, Debug)]
+pub struct PlotArgs {
+    /// Tables written by polargen (.csv or .json).
+    #[arg(required = true, value_name = "TABLE")]
+    pub tables: Vec<PathBuf>,
+
+    /// Output image: FILE.svg or FILE.png.
+    #[arg(long, value_name = "FILE")]
+    pub out: PathBuf,
+
+    /// Reynolds number of the polar to draw from a grid table (nearest node).
+    #[arg(long, allow_hyphen_values = true)]
+    pub re: Option<f64>,
+
+    /// Mach number of the polar to draw from a grid table (nearest node).
+    #[arg(long, allow_hyphen_values = true)]
+    pub mach: Option<f64>,
+
+    /// Figure title (default: airfoils and the Re, M drawn).
+    #[arg(long)]
+    pub title: Option<String>,
+}
+
+/// Options of the main job: polars and tables.
+#[derive(Args, Debug)]
+pub struct RunArgs {
+    /// Airfoil: naca8h12, naca23012, nacaDDDD, nacaDDDDD, or a coordinate file (Selig,
+    /// Lednicer or plain x y).
+    #[arg(long, value_name = "NAME|PATH", required = true)]
+    pub airfoil: Option<String>,
+
+    /// Inviscid panel solution only (cd = 0); output `alpha,cl,cd,cm,converged`.
+    #[arg(long)]
+    pub inviscid: bool,
+
+    /// Chord Reynolds numbers, comma-separated (default: the rotor grid 0.25e6,…,2.5e6).
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub re: Option<String>,
+
+    /// Mach numbers, comma-separated, 0 ≤ M < 1 (default: 0,0.2,0.3,0.4,0.5; inviscid: 0).
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub mach: Option<String>,
+
+    /// Angles of attack in degrees: A0:A1:DA (inclusive) or one value (default −10:20:0.5).
+    #[arg(long, allow_hyphen_values = true)]
+    pub alpha: Option<String>,
+
+    /// Forced transition x/c on both surfaces (1 = free transition, e^n).
+    #[arg(long, value_name = "X", allow_hyphen_values = true, conflicts_with_all = ["xtr_top", "xtr_bot"])]
+    pub xtr: Option<f64>,
+
+    /// Forced transition x/c on the upper surface (1 = free).
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub xtr_top: Option<f64>,
+
+    /// Forced transition x/c on the lower surface (1 = free).
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub xtr_bot: Option<f64>,
+
+    /// Critical amplification ratio N of the e^n transition criterion.
+    #[arg(long, default_value_t = 9.0, allow_hyphen_values = true)]
+    pub ncrit: f64,
+
+    /// Number of panel nodes after curvature-based repaneling (XFOIL PANE).
+    #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES, allow_hyphen_values = true)]
+    pub panels: usize,
+
+    #[command(flatten)]
+    pub newton: Newton,
+
+    /// Worker threads (0 = all cores); a polar's two α branches run in parallel, so more
+    /// than two threads per polar are not started.
+    #[arg(long, default_value_t = 0, allow_hyphen_values = true)]
+    pub threads: usize,
+
+    /// Output format: csv, json, xfoil (one .pol per Re, M) or c81 (one file per Re);
+    /// default: from --out's extension, else csv.
+    #[arg(long)]
+    pub format: Option<String>,
+
+    /// Output file; standard output when absent (csv and json only).
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+}
+
+/// The Newton threshold of the viscous solver.
+#[derive(Args, Debug)]
+pub struct Newton {
+    /// Newton convergence threshold on the RMS relative change of the boundary-layer
+    /// variables (XFOIL uses 1e-4).
+    #[arg(long, default_value_t = ViscousParams::default().tolerance, allow_hyphen_values = true)]
+    pub tolerance: f64,
+}

@@ -1,0 +1,430 @@
+//! `polargen` — airfoil polars and Re × Mach × α tables from the command line.
+//!
+//! * `polargen --airfoil naca8h12 --xtr 0.07` — the default rotor grid (Re 0.25…2.5·10⁶ ×
+//!   M 0…0.5 × α −10…20°) as a long-form CSV table;
+//! * `--re`, `--mach` (comma lists) and `--alpha A0:A1:DA` override each axis; one value each
+//!   gives a single polar;
+//! * `--inviscid` — the panel solution only (`alpha,cl,cd,cm,converged`).
+//!
+//! Every error is one line on stderr with a non-zero exit status; no output file is left
+//! half-written (files are written to a temporary name and renamed).
+
+mod args;
+#[path = "../common/cli.rs"]
+mod cli;
+
+use std::io::IsTerminal;
+use std::path::Path;
+use std::process::ExitCode;
+use std::time::Instant;
+
+use anyhow::{bail, Context, Result};
+use args::{Cli, Command, ConvertArgs, PlotArgs, PlotPointArgs, RunArgs};
+
+use cli::Tool;
+use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
+use polargen::inviscid::PanelSystem;
+use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError};
+use polargen::plot::point_plots::{solutions_figure, solutions_title};
+use polargen::plot::polar_plots::{compact_number, overlay_title, polar_figure, transition_label};
+use polargen::plot::{check_image_path, render};
+use polargen::polar::{parse_alpha_range, solve_at_cl, TargetClParams};
+use polargen::section::{FlowCondition, PolarPoint};
+use polargen::table::{
+    build_table, read_table, write_table, GridSpec, TableFormat, DEFAULT_ALPHA, DEFAULT_MACH,
+    DEFAULT_RE,
+};
+use polargen::viscous::distributions::write_distributions_csv;
+use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};
+
+/// This tool's name and error prefix.
+const TOOL: Tool = Tool {
+    name: "polargen",
+    error_prefix: "polargen: error: ",
+};
+
+/// Smallest and largest panel-node counts accepted by `--panels`.
+const PANEL_RANGE: (usize, usize) = (20, 1000);
+
+fn main() -> ExitCode {
+    let cli = match TOOL.parse::<Cli>() {
+        Ok(c) => c,
+        Err(code) => return code,
+    };
+    TOOL.finish(match &cli.command {
+        Some(Command::Plot(args)) => plot_tables(args),
+        Some(Command::Convert(args)) => convert_table(args),
+        Some(Command::PlotPoint(args)) => plot_point(args),
+        None if cli.run.inviscid => run_inviscid(&cli.run),
+        None => run_viscous(&cli.run),
+    })
+}
+
+/// Parse a comma-separated list of distinct finite numbers, naming the flag in the error.
+fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>> {
+    let mut out: Vec<f64> = Vec::new();
+    for item in text.split(',').map(str::trim) {
+        match item.parse::<f64>() {
+            Ok(v) if v.is_finite() => {
+                if out.contains(&v) {
+                    bail!("--{flag} '{text}': '{item}' is given twice");
+                }
+                out.push(v)
+            }
+            _ => bail!("--{flag} '{text}': '{item}' is not a finite number"),
+        }
+    }
+    Ok(out)
+}
+
+/// Check `--out` before any computation: a file name (not a folder), below a folder.
+fn check_out(path: &Path) -> Result<()> {
+    check_output_path(path).context("--out")?;
+    Ok(())
+}
+
+/// Mach numbers from `--mach` (or `default`), each checked to lie in [0, 1).
+fn mach_list(cli: &RunArgs, default: &[f64]) -> Result<Vec<f64>> {
+    let list = match &cli.mach {
+        Some(t) => parse_list("mach", t)?,
+        None => default.to_vec(),
+    };
+    list.iter().try_for_each(|&m| check_mach(m))?;
+    Ok(list)
+}
+
+/// Check the panel count and load + repanel the airfoil.
+fn load_airfoil(spec: Option<&str>, panels: usize) -> Result<Airfoil> {
+    if !(PANEL_RANGE.0..=PANEL_RANGE.1).contains(&panels) {
+        bail!(
+            "--panels {panels}: must be between {} and {}",
+            PANEL_RANGE.0,
+            PANEL_RANGE.1
+        );
+    }
+    let spec = spec.context("--airfoil is required")?;
+    let given = airfoil_by_name_or_path(spec).context("--airfoil")?;
+    let (raw, normalised) = given
+        .in_chord_units()
+        .with_context(|| format!("locating the chord of {}", given.name))?;
+    if normalised {
+        TOOL.say(format!(
+            "note: {spec}: chord is not 1 or the leading edge is not at the origin; coordinates \
+             normalised to unit chord (LE at 0,0, TE at 1,0)"
+        ));
+    }
+    let foil = raw
+        .repanel(panels, &PanelingParams::default())
+        .with_context(|| format!("paneling {}", raw.name))?;
+    Ok(foil)
+}
+
+/// `--inviscid`: the panel solution at one Mach number.
+fn run_inviscid(cli: &RunArgs) -> Result<()> {
+    let mach = match mach_list(cli, &[0.0])?.as_slice() {
+        [m] => *m,
+        _ => bail!("--mach: --inviscid takes one Mach number"),
+    };
+    let alphas =
+        parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA)).context("--alpha")?;
+    if let Some(path) = &cli.out {
+        check_out(path)?;
+    }
+    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels)?;
+    let system = PanelSystem::new(&foil).context("panel system")?;
+    let mut csv = String::from("alpha,cl,cd,cm,converged\n");
+    for &alpha in &alphas {
+        let sol = system
+            .solve(alpha, mach)
+            .with_context(|| format!("alpha {alpha}"))?;
+        csv.push_str(&format!(
+            "{alpha},{},0,{},true\n",
+            fixed_decimals(sol.cl, 6),
+            fixed_decimals(sol.cm, 6)
+        ));
+    }
+    let path = cli.out.as_deref().unwrap_or(Path::new("-"));
+    write_output(path, |w| {
+        w.write_all(csv.as_bytes())
+            .map_err(|e| OutputError::io(path, e))
+    })?;
+    Ok(())
+}
+
+/// The transition setting of `--xtr` or `--xtr-top`/`--xtr-bot`, checked.
+fn transition(cli: &RunArgs) -> Result<(f64, f64)> {
+    let (xtr_top, xtr_bot) = match cli.xtr {
+        Some(x) => (x, x),
+        None => (cli.xtr_top.unwrap_or(1.0), cli.xtr_bot.unwrap_or(1.0)),
+    };
+    let flags = match cli.xtr {
+        Some(_) => ["xtr", "xtr"],
+        None => ["xtr-top", "xtr-bot"],
+    };
+    for (flag, x) in flags.into_iter().zip([xtr_top, xtr_bot]) {
+        check_xtr(flag, x)?;
+    }
+    Ok((xtr_top, xtr_bot))
+}
+
+/// The viscous polar(s) or table.
+fn run_viscous(cli: &RunArgs) -> Result<()> {
+    let reynolds = match &cli.re {
+        Some(t) => parse_list("re", t)?,
+        None => DEFAULT_RE.to_vec(),
+    };
+    reynolds.iter().try_for_each(|&r| check_re(r))?;
+    let grid = GridSpec {
+        reynolds,
+        mach: mach_list(cli, &DEFAULT_MACH)?,
+        alpha_deg: parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA))
+            .context("--alpha")?,
+    };
+    let (xtr_top, xtr_bot) = transition(cli)?;
+    check_ncrit(cli.ncrit)?;
+    check_tolerance(cli.newton.tolerance)?;
+    if let Some(path) = &cli.out {
+        check_out(path)?;
+    }
+    let format = match (&cli.format, &cli.out) {
+        (Some(f), _) => f.parse::<TableFormat>().context("--format")?,
+        (None, Some(path)) => TableFormat::from_path(path).context("--out")?,
+        (None, None) => TableFormat::Csv,
+    };
+    if cli.out.is_none() && matches!(format, TableFormat::XfoilPolar | TableFormat::C81) {
+        bail!("--format {}: needs --out (it writes files)", format.name());
+    }
+    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels)?;
+
+    let total = grid.point_count();
+    let bar = progress_bar(total as u64);
+    let start = Instant::now();
+    let base = ViscousParams {
+        ncrit: cli.ncrit,
+        tolerance: cli.newton.tolerance,
+        xtr_top,
+        xtr_bot,
+        ..ViscousParams::default()
+    };
+    let table = build_table(&foil, cli.panels, &grid, &base, cli.threads, |n| {
+        if let Some(b) = &bar {
+            b.inc(n as u64);
+        }
+    })?;
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let converged = table.converged_count();
+    TOOL.say(format!(
+        "{converged} of {total} points converged ({:.1} %) in {:.1} s",
+        100.0 * converged as f64 / total.max(1) as f64,
+        start.elapsed().as_secs_f64()
+    ));
+    if converged == 0 {
+        bail!("no point converged; no table written");
+    }
+    let path = cli.out.as_deref().unwrap_or(Path::new("-"));
+    let files = write_table(&table, path, Some(format))?;
+    if files.len() > 1 {
+        TOOL.say(format!("wrote {} files", files.len()));
+    }
+    Ok(())
+}
+
+/// A `--re` value: a positive Reynolds number.
+fn check_re(re: f64) -> Result<()> {
+    if !(re.is_finite() && re > 0.0) {
+        bail!("--re {re}: the Reynolds number must be positive");
+    }
+    Ok(())
+}
+
+/// A `--mach` value: in [0, 1).
+fn check_mach(mach: f64) -> Result<()> {
+    if !(0.0..1.0).contains(&mach) {
+        bail!("--mach {mach}: the Mach number must be in [0, 1)");
+    }
+    Ok(())
+}
+
+/// A transition location given with `--<flag>`: x/c in [0, 1].
+fn check_xtr(flag: &str, x: f64) -> Result<()> {
+    if !(0.0..=1.0).contains(&x) {
+        bail!("--{flag} {x}: the transition location must be in [0, 1] (1 = free)");
+    }
+    Ok(())
+}
+
+/// The `--ncrit` flag: a positive number.
+fn check_ncrit(ncrit: f64) -> Result<()> {
+    if !(ncrit.is_finite() && ncrit > 0.0) {
+        bail!("--ncrit {ncrit}: must be a positive number");
+    }
+    Ok(())
+}
+
+/// The `--tolerance` flag: a Newton threshold in (0, 1).
+fn check_tolerance(tolerance: f64) -> Result<()> {
+    if !(tolerance > 0.0 && tolerance < 1.0) {
+        bail!("--tolerance {tolerance}: must be a number in (0, 1)");
+    }
+    Ok(())
+}
+
+/// `polargen plot`: overlay one polar from each table.
+fn plot_tables(args: &PlotArgs) -> Result<()> {
+    check_image_path(&args.out).context("--out")?;
+    let mut curves: Vec<(String, Vec<PolarPoint>)> = Vec::new();
+    let mut conditions: Vec<FlowCondition> = Vec::new();
+    for path in &args.tables {
+        let table = read_table(path)?;
+        let grid = table.re().len() * table.mach().len() > 1;
+        if grid && (args.re.is_none() || args.mach.is_none()) {
+            bail!(
+                "{}: a grid table ({} Re x {} M): give --re and --mach",
+                path.display(),
+                table.re().len(),
+                table.mach().len()
+            );
+        }
+        let re = args.re.unwrap_or(table.re()[0]);
+        let mach = args.mach.unwrap_or(table.mach()[0]);
+        check_inside("re", re, table.re(), path)?;
+        check_inside("mach", mach, table.mach(), path)?;
+        let (at, points) = table.nearest_polar(re, mach);
+        if !points.iter().any(|p| p.converged) {
+            bail!(
+                "{}: the polar at Re {}, M {} has no converged point to draw",
+                path.display(),
+                compact_number(at.reynolds),
+                at.mach
+            );
+        }
+        let meta = table.meta();
+        let trip = transition_label(meta.xtr_top_set, meta.xtr_bot_set);
+        curves.push((format!("{} {trip}", meta.airfoil), points.to_vec()));
+        conditions.push(at);
+    }
+    let title = args.title.clone().unwrap_or_else(|| {
+        let names: Vec<&str> = curves.iter().map(|c| c.0.as_str()).collect();
+        let asked = args
+            .re
+            .zip(args.mach)
+            .map(|(r, m)| FlowCondition::new(r, m));
+        overlay_title(&names, &conditions, asked)
+    });
+    let refs: Vec<(&str, &[PolarPoint])> = curves
+        .iter()
+        .map(|(l, p)| (l.as_str(), p.as_slice()))
+        .collect();
+    render(&polar_figure(&refs, &title), &args.out)?;
+    Ok(())
+}
+
+/// `polargen convert`: read a table and write it in another format.
+fn convert_table(args: &ConvertArgs) -> Result<()> {
+    check_out(&args.out)?;
+    let format = match &args.format {
+        Some(f) => f.parse::<TableFormat>().context("--format")?,
+        None => TableFormat::from_path(&args.out).context("--out")?,
+    };
+    let table = read_table(&args.table)?;
+    let files = write_table(&table, &args.out, Some(format))?;
+    if files.len() > 1 {
+        TOOL.say(format!("wrote {} files", files.len()));
+    }
+    Ok(())
+}
+
+/// `polargen plot-point`: solve each transition setting at the α (or Cl) asked for and draw
+/// Cp and the boundary-layer distributions of both surfaces.
+fn plot_point(args: &PlotPointArgs) -> Result<()> {
+    check_re(args.re)?;
+    check_mach(args.mach)?;
+    check_ncrit(args.ncrit)?;
+    check_tolerance(args.newton.tolerance)?;
+    let xtrs = parse_list("xtr", &args.xtr)?;
+    xtrs.iter().try_for_each(|&x| check_xtr("xtr", x))?;
+    check_image_path(&args.out).context("--out")?;
+    if let Some(path) = &args.csv {
+        check_output_path(path).context("--csv")?;
+    }
+    let foil = load_airfoil(Some(&args.airfoil), args.panels)?;
+    let mut runs: Vec<(String, ViscousSolution)> = Vec::new();
+    for &xtr in &xtrs {
+        let params = ViscousParams {
+            ncrit: args.ncrit,
+            tolerance: args.newton.tolerance,
+            ..ViscousParams::at(args.re, args.mach, xtr)
+        };
+        let mut solver = ViscousSolver::new(&foil, params).context("viscous solver")?;
+        let label = transition_label(xtr, xtr);
+        let solution = match (args.alpha, args.cl) {
+            (_, Some(cl)) => solve_at_cl(&mut solver, cl, &TargetClParams::default())
+                .with_context(|| label.clone())?,
+            (Some(alpha), None) => {
+                if !alpha.is_finite() {
+                    bail!("--alpha {alpha}: not a finite angle");
+                }
+                let sol = solver.solve(alpha);
+                if !sol.point.converged {
+                    bail!("{label}: the viscous solution did not converge at alpha {alpha} deg");
+                }
+                sol
+            }
+            (None, None) => bail!("give --alpha or --cl"),
+        };
+        runs.push((label, solution));
+    }
+    let cases: Vec<(&str, &ViscousSolution)> = runs.iter().map(|(l, s)| (l.as_str(), s)).collect();
+    let title = args.title.clone().unwrap_or_else(|| {
+        let alpha = args.alpha.unwrap_or(0.0);
+        solutions_title(&foil.name, args.re, args.mach, alpha, args.cl, &cases)
+    });
+    // The image first: if it cannot be written, no CSV is left behind either.
+    let figure = solutions_figure(&cases, args.mach, &title, Some(args.ncrit));
+    render(&figure, &args.out)?;
+    if let Some(path) = &args.csv {
+        write_output(path, |w| {
+            write_distributions_csv(&cases, args.mach, w).map_err(|e| OutputError::io(path, e))
+        })?;
+    }
+    Ok(())
+}
+
+/// Error when `value` lies outside a table axis (beyond 0.1 % of the span).
+fn check_inside(flag: &str, value: f64, axis: &[f64], path: &Path) -> Result<()> {
+    let (lo, hi) = (axis[0], axis[axis.len() - 1]);
+    let slack = 1e-3 * (hi - lo).abs().max(hi.abs() * 1e-3);
+    if !value.is_finite() || value < lo - slack || value > hi + slack {
+        bail!(
+            "--{flag} {value}: outside the table {} ({lo} … {hi})",
+            path.display()
+        );
+    }
+    Ok(())
+}
+
+/// A progress bar on stderr when stderr is a terminal; nothing otherwise.
+fn progress_bar(total: u64) -> Option<indicatif::ProgressBar> {
+    if !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let bar = indicatif::ProgressBar::new(total);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} points, eta {eta}")
+    {
+        bar.set_style(style);
+    }
+    Some(bar)
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::CommandFactory;
+
+    #[test]
+    fn cli_reference_is_current() {
+        super::cli::check_reference(super::Cli::command());
+    }
+}

@@ -1,0 +1,326 @@
+//! The paper report: the comparison with the DLR contamination study in one folder.
+//!
+//! [`write_report`] reads the shipped polar tables, runs the cruise trim (Table 3), the takeoff
+//! (Table 4), the blade α(ψ) (Fig. 10) and the power-required sweep for the clean and the
+//! contaminated 8-H-12 rotor ([`rotor::study`](crate::rotor::study)), looks up Cd at Cl = 0.8
+//! (Table 5) for both airfoils, draws every figure (PNG and SVG) and writes `README.md` with
+//! our numbers beside the paper's and the differences in words. Everything is computed on each
+//! run; nothing in the report is typed in except the paper's own values.
+
+/// Appends one formatted line to an output `String` (writing to a `String` cannot fail).
+macro_rules! outln {
+    ($buf:expr) => {
+        $buf.push('\n')
+    };
+    ($buf:expr, $($arg:tt)*) => {{
+        use std::fmt::Write as _;
+        let _ = writeln!($buf, $($arg)*);
+    }};
+}
+
+mod figures;
+mod markdown;
+mod words;
+
+use crate::geometry::airfoil_key;
+use crate::output::{check_output_path, write_output, OutputError};
+use crate::plot::rotor_plots::{power_plot, takeoff_plot};
+use crate::plot::{render_with_legend_room, Figure, PlotError};
+use crate::rotor::study::paper::{Table5Row, SECTION_MACH, SECTION_RE, TABLE5, TABLE5_CL};
+use crate::rotor::study::{
+    blade_alpha_cases, paper_runs, sweep_cases, SpeedSweep, StudyError, CASE_LABELS,
+    PAPER_TRIM_SPEED_KT,
+};
+use crate::rotor::{sweep_speeds, Aircraft, AircraftError, TakeoffResult, TrimResult};
+use crate::table::{alpha_at_cl, read_lookup_table, LiftMatch, PolarTable, TableError};
+use std::path::{Path, PathBuf};
+
+/// Radius fraction of the blade α(ψ) curve (paper Fig. 10: ≈ 90 % R).
+const FIG10_RADIUS: f64 = 0.9;
+
+/// Azimuth samples of the blade α(ψ) curve (1° resolution).
+const FIG10_SAMPLES: usize = 360;
+
+/// Speed range of the power-required sweep \[kt\]: from, to, step.
+const SWEEP_KT: (f64, f64, f64) = (30.0, 90.0, 5.0);
+
+/// α interval searched for Cl = 0.8 \[deg\] (the attached-flow branch of both airfoils).
+const TABLE5_ALPHA_RANGE: (f64, f64) = (-5.0, 15.0);
+
+/// Suffix of the free-transition and the fixed-transition table files.
+const TRANSITIONS: [&str; 2] = ["free", "xtr0.07"];
+
+/// Transition setting (x/c on both surfaces) of the free and the fixed-transition tables.
+const TRANSITION_XTR: [f64; 2] = [1.0, 0.07];
+
+/// Image formats of every report figure.
+const FIGURE_FORMATS: [&str; 2] = ["png", "svg"];
+
+/// File stems of the rotor figures: blade α(ψ), takeoff, power required.
+const ROTOR_FIGURES: [&str; 3] = ["blade_alpha", "takeoff", "power_required"];
+
+/// The report's text file.
+const REPORT_README: &str = "README.md";
+
+/// Where the report reads from and writes to.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ReportInputs {
+    /// Aircraft preset (TOML).
+    pub aircraft: PathBuf,
+    /// Folder holding `naca8h12_free.csv`, `naca8h12_xtr0.07.csv`, `naca23012_free.csv` and
+    /// `naca23012_xtr0.07.csv` (the shipped default-grid tables).
+    pub polars: PathBuf,
+    /// Output folder (created if missing): `README.md` and the figures.
+    pub out: PathBuf,
+}
+
+/// What a report run wrote, and what a user should read beside it.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct ReportOutcome {
+    /// The files written, figures first, `README.md` last.
+    pub written: Vec<PathBuf>,
+    /// Notes on the computations (speeds without a trim, lookups beyond a table's range).
+    pub notes: Vec<String>,
+}
+
+/// Why the report could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum ReportError {
+    /// The output folder or a file in it cannot be written.
+    #[error(transparent)]
+    Output(#[from] OutputError),
+    /// The aircraft preset is wrong.
+    #[error(transparent)]
+    Aircraft(#[from] AircraftError),
+    /// A table cannot be read.
+    #[error(transparent)]
+    Table(#[from] TableError),
+    /// A table holds another case than its file name promises.
+    #[error(
+        "{}: holds {airfoil} with transition at {xtr_top}/{xtr_bot} (upper/lower), expected \
+         {stem} at {xtr}",
+        path.display()
+    )]
+    MisnamedTable {
+        /// The table file.
+        path: PathBuf,
+        /// The airfoil it holds.
+        airfoil: String,
+        /// Its upper-surface transition setting.
+        xtr_top: f64,
+        /// Its lower-surface transition setting.
+        xtr_bot: f64,
+        /// The airfoil its name promises.
+        stem: &'static str,
+        /// The transition setting its name promises.
+        xtr: f64,
+    },
+    /// A rotor computation failed.
+    #[error(transparent)]
+    Study(#[from] StudyError),
+    /// A figure cannot be drawn or written.
+    #[error(transparent)]
+    Plot(#[from] PlotError),
+    /// The report's text cannot be written.
+    #[error("cannot write {}", path.display())]
+    Text {
+        /// `README.md` in the output folder.
+        path: PathBuf,
+        /// Why.
+        #[source]
+        source: OutputError,
+    },
+}
+
+/// Both tables of one airfoil and its Table 5 lookups.
+struct FoilTables {
+    row: &'static Table5Row,
+    /// Free, fixed-transition table.
+    tables: [PolarTable; 2],
+    /// Table file paths as given.
+    paths: [PathBuf; 2],
+    /// Cl = 0.8 matches at Re 1.9e6, M 0.41: free, fixed.
+    at_cl: [Option<LiftMatch>; 2],
+}
+
+/// Everything computed for the rotor (8-H-12 blade section), clean and contaminated.
+struct RotorResults {
+    trims: [TrimResult; 2],
+    takeoffs: [TakeoffResult; 2],
+    /// Blade α(ψ) samples (ψ, α) \[deg\] per case.
+    alpha: Vec<Vec<(f64, f64)>>,
+    /// The power-required sweep per case.
+    sweeps: Vec<SpeedSweep>,
+}
+
+/// Writes the report (see the module documentation) after [`check_report_paths`].
+pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError> {
+    check_report_paths(&inputs.out)?;
+    let ac = Aircraft::from_toml_file(&inputs.aircraft)?;
+    let foils = TABLE5
+        .iter()
+        .map(|row| load_foil(&inputs.polars, row))
+        .collect::<Result<Vec<_>, _>>()?;
+    let rotor = rotor_results(&ac, &foils[0].tables)?;
+    std::fs::create_dir_all(&inputs.out).map_err(|e| OutputError::io(&inputs.out, e))?;
+
+    let mut written = Vec::new();
+    let mut figure = |name: &str, fig: &Figure| -> Result<(), ReportError> {
+        for ext in FIGURE_FORMATS {
+            let path = inputs.out.join(format!("{name}.{ext}"));
+            render_with_legend_room(fig, &path)?;
+            written.push(path);
+        }
+        Ok(())
+    };
+    for foil in &foils {
+        figure(&polar_figure_name(foil.row), &figures::polar_overlay(foil))?;
+    }
+    let subject = format!("{}, {}", ac.name, foils[0].tables[0].meta().airfoil);
+    let [blade_alpha, takeoff, power_required] = ROTOR_FIGURES;
+    figure(blade_alpha, &figures::fig10(&rotor, &subject))?;
+    let runs: Vec<(&str, &TakeoffResult)> =
+        CASE_LABELS.iter().copied().zip(&rotor.takeoffs).collect();
+    figure(
+        takeoff,
+        &takeoff_plot(&runs, &format!("Takeoff to 15 m — {subject}")),
+    )?;
+    let sweeps: Vec<(&str, &[TrimResult])> = CASE_LABELS
+        .iter()
+        .zip(&rotor.sweeps)
+        .map(|(l, s)| (*l, s.trims.as_slice()))
+        .collect();
+    figure(
+        power_required,
+        &power_plot(
+            &sweeps,
+            &format!("Level flight, power required — {subject}"),
+        ),
+    )?;
+
+    let text = markdown::markdown(inputs, &ac, &foils, &rotor);
+    let readme = inputs.out.join(REPORT_README);
+    write_output(&readme, |w| {
+        w.write_all(text.as_bytes())
+            .map_err(|e| OutputError::io(&readme, e))
+    })
+    .map_err(|source| ReportError::Text {
+        path: readme.clone(),
+        source,
+    })?;
+    written.push(readme);
+    let notes = rotor.sweeps.iter().flat_map(SpeedSweep::notes).collect();
+    Ok(ReportOutcome { written, notes })
+}
+
+/// File stem of the polar figure of one Table 5 airfoil.
+fn polar_figure_name(row: &Table5Row) -> String {
+    format!("polar_{}", row.stem)
+}
+
+/// Check, before any computation, that the report folder and every file the report writes
+/// into it can be written (`out` not a regular file; no figure or README path a folder), so
+/// that a bad path cannot leave a half-written report behind.
+pub fn check_report_paths(out: &Path) -> Result<(), OutputError> {
+    if out.exists() && !out.is_dir() {
+        return Err(OutputError::BadPath {
+            path: out.to_path_buf(),
+            reason: "is not a folder",
+        });
+    }
+    let stems = TABLE5
+        .iter()
+        .map(polar_figure_name)
+        .chain(ROTOR_FIGURES.iter().map(|s| s.to_string()));
+    let mut files: Vec<PathBuf> = stems
+        .flat_map(|stem| FIGURE_FORMATS.map(|ext| out.join(format!("{stem}.{ext}"))))
+        .collect();
+    files.push(out.join(REPORT_README));
+    for file in files {
+        check_output_path(&file)?;
+    }
+    Ok(())
+}
+
+/// Check that a table file holds the case its name promises: the airfoil of `stem` (names
+/// compared by [`airfoil_key`], `NACA 8-H-12` ~ `naca8h12`) at transition `xtr` on both
+/// surfaces, so that a misnamed file cannot enter the report.
+fn check_table_case(
+    table: &PolarTable,
+    path: &Path,
+    stem: &'static str,
+    xtr: f64,
+) -> Result<(), ReportError> {
+    let meta = table.meta();
+    if airfoil_key(&meta.airfoil) != stem || meta.xtr_top_set != xtr || meta.xtr_bot_set != xtr {
+        return Err(ReportError::MisnamedTable {
+            path: path.to_path_buf(),
+            airfoil: meta.airfoil.clone(),
+            xtr_top: meta.xtr_top_set,
+            xtr_bot: meta.xtr_bot_set,
+            stem,
+            xtr,
+        });
+    }
+    Ok(())
+}
+
+/// Reads the free and fixed-transition tables of one airfoil and looks up Table 5.
+fn load_foil(dir: &Path, row: &'static Table5Row) -> Result<FoilTables, ReportError> {
+    let paths = TRANSITIONS.map(|t| dir.join(format!("{}_{t}.csv", row.stem)));
+    let [free, fixed] = [read_lookup_table(&paths[0])?, read_lookup_table(&paths[1])?];
+    for ((table, path), xtr) in [&free, &fixed].iter().zip(&paths).zip(TRANSITION_XTR) {
+        check_table_case(table, path, row.stem, xtr)?;
+    }
+    let at_cl = [&free, &fixed].map(|t| {
+        alpha_at_cl(
+            t,
+            TABLE5_CL,
+            SECTION_RE,
+            SECTION_MACH,
+            TABLE5_ALPHA_RANGE.0,
+            TABLE5_ALPHA_RANGE.1,
+        )
+    });
+    Ok(FoilTables {
+        row,
+        tables: [free, fixed],
+        paths,
+        at_cl,
+    })
+}
+
+/// Trim, takeoff, blade α(ψ) and the speed sweep for the clean and the contaminated section.
+fn rotor_results(ac: &Aircraft, tables: &[PolarTable; 2]) -> Result<RotorResults, ReportError> {
+    let sections = [&tables[0], &tables[1]];
+    let speeds = sweep_speeds(SWEEP_KT.0, SWEEP_KT.1, SWEEP_KT.2);
+    let (runs, (alpha, sweeps)) = rayon::join(
+        || paper_runs(ac, sections[0], sections[1]),
+        || {
+            rayon::join(
+                || {
+                    blade_alpha_cases(
+                        ac,
+                        &sections,
+                        &CASE_LABELS,
+                        PAPER_TRIM_SPEED_KT,
+                        FIG10_RADIUS,
+                        FIG10_SAMPLES,
+                    )
+                },
+                || sweep_cases(ac, &sections, &CASE_LABELS, &speeds),
+            )
+        },
+    );
+    let [clean, dirty] = runs?;
+    let alpha = alpha?;
+    for sweep in &sweeps {
+        sweep.require_trims()?;
+    }
+    Ok(RotorResults {
+        trims: [clean.trim, dirty.trim],
+        takeoffs: [clean.takeoff, dirty.takeoff],
+        alpha,
+        sweeps,
+    })
+}

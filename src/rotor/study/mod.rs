@@ -1,0 +1,247 @@
+//! The clean-versus-contaminated rotor study of the paper (Duda, Sachs, Seewald, Rohardt,
+//! DLR): the same aircraft computed with the clean and with the contaminated blade section.
+//!
+//! * [`paper_runs`] — the paper's two computations per section: the cruise trim at
+//!   [`PAPER_TRIM_SPEED_KT`] (Table 3) and the takeoff (Table 4), both sections in parallel;
+//! * [`blade_alpha_cases`], [`takeoff_cases`], [`sweep_cases`] — blade α(ψ) in trimmed cruise
+//!   (Fig. 10), takeoff time histories (Fig. 11) and power-required sweeps for one or more
+//!   sections, in parallel;
+//! * [`paper`] — the paper's published values, each beside the accessor of ours.
+//!
+//! Everything here only calls the trim, takeoff and cruise models; no new physics.
+
+pub mod paper;
+
+use super::cruise::{cruise_blade_alpha, speed_sweep};
+use super::takeoff::{simulate_takeoff, TakeoffError, TakeoffResult};
+use super::trim::{trim_aircraft, TrimError, TrimParams, TrimResult};
+use super::Aircraft;
+use crate::section::SectionAero;
+use rayon::prelude::*;
+
+/// Airspeed of the paper's cruise trim (Table 3) \[kt\].
+pub const PAPER_TRIM_SPEED_KT: f64 = 60.0;
+
+/// Names of the blade-section cases, in the order clean, contaminated.
+pub const CASE_LABELS: [&str; 2] = ["clean", "contaminated"];
+
+/// Why a computation of the study failed; `case` names the blade section.
+#[derive(Debug, thiserror::Error)]
+pub enum StudyError {
+    /// A trim failed.
+    #[error("{case} trim")]
+    Trim {
+        /// The case (e.g. `clean`).
+        case: String,
+        /// Why.
+        #[source]
+        source: TrimError,
+    },
+    /// A takeoff failed.
+    #[error("{case} takeoff")]
+    Takeoff {
+        /// The case.
+        case: String,
+        /// Why.
+        #[source]
+        source: TakeoffError,
+    },
+    /// No speed of a sweep could be trimmed.
+    #[error("{}no trim point in the speed range", prefix(case.as_deref()))]
+    NoTrimInRange {
+        /// The case, if the sweep is one of several.
+        case: Option<String>,
+    },
+}
+
+/// `"<case>: "`, or nothing without a case.
+fn prefix(case: Option<&str>) -> String {
+    case.map_or(String::new(), |c| format!("{c}: "))
+}
+
+/// The paper's two computations for one blade section.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PaperRun {
+    /// Trim at [`PAPER_TRIM_SPEED_KT`], ISA sea level, the preset's mass (Table 3).
+    pub trim: TrimResult,
+    /// Takeoff (Table 4).
+    pub takeoff: TakeoffResult,
+}
+
+/// The paper's trim and takeoff with `section`; `case` names it in errors.
+pub fn paper_run<S: SectionAero + ?Sized>(
+    aircraft: &Aircraft,
+    section: &S,
+    case: &str,
+) -> Result<PaperRun, StudyError> {
+    let trim = trim_aircraft(
+        aircraft,
+        section,
+        PAPER_TRIM_SPEED_KT,
+        aircraft.mass_kg,
+        0.0,
+        &TrimParams::default(),
+    )
+    .map_err(|source| StudyError::Trim {
+        case: case.to_string(),
+        source,
+    })?;
+    let takeoff = simulate_takeoff(aircraft, section).map_err(|source| StudyError::Takeoff {
+        case: case.to_string(),
+        source,
+    })?;
+    Ok(PaperRun { trim, takeoff })
+}
+
+/// [`paper_run`] for the clean and the contaminated section, in parallel.
+pub fn paper_runs<S: SectionAero + Sync + ?Sized>(
+    aircraft: &Aircraft,
+    clean: &S,
+    contaminated: &S,
+) -> Result<[PaperRun; 2], StudyError> {
+    let (c, d) = rayon::join(
+        || paper_run(aircraft, clean, CASE_LABELS[0]),
+        || paper_run(aircraft, contaminated, CASE_LABELS[1]),
+    );
+    Ok([c?, d?])
+}
+
+/// The trims of a speed sweep at the preset's mass, ISA sea level.
+#[derive(Debug)]
+pub struct SpeedSweep {
+    /// The case, if the sweep is one of several.
+    pub case: Option<String>,
+    /// The speeds that trimmed, in increasing speed.
+    pub trims: Vec<TrimResult>,
+    /// The speeds \[kt\] without a trim, and why.
+    pub skipped: Vec<(f64, TrimError)>,
+}
+
+impl SpeedSweep {
+    /// Sweep `speeds_kt` (in parallel) with `section`.
+    pub fn run<S: SectionAero + Sync + ?Sized>(
+        aircraft: &Aircraft,
+        section: &S,
+        speeds_kt: &[f64],
+        case: Option<&str>,
+    ) -> Self {
+        let mut trims = Vec::new();
+        let mut skipped = Vec::new();
+        let params = TrimParams::default();
+        for (v, r) in speed_sweep(aircraft, section, speeds_kt, aircraft.mass_kg, 0.0, &params) {
+            match r {
+                Ok(t) => trims.push(t),
+                Err(e) => skipped.push((v, e)),
+            }
+        }
+        Self {
+            case: case.map(str::to_string),
+            trims,
+            skipped,
+        }
+    }
+
+    /// Error when no speed trimmed.
+    pub fn require_trims(&self) -> Result<(), StudyError> {
+        if self.trims.is_empty() {
+            return Err(StudyError::NoTrimInRange {
+                case: self.case.clone(),
+            });
+        }
+        Ok(())
+    }
+
+    /// What a user should read beside the results: each skipped speed and why, and (as a note)
+    /// how many trims used lookups outside the table's Reynolds/Mach range. One line each.
+    pub fn notes(&self) -> Vec<String> {
+        let prefix = prefix(self.case.as_deref());
+        let mut notes: Vec<String> = self
+            .skipped
+            .iter()
+            .map(|(v, e)| format!("{prefix}skipped {v:.1} kt: {e}"))
+            .collect();
+        let clamped: Vec<&TrimResult> = self
+            .trims
+            .iter()
+            .filter(|t| t.table_clamped_fraction > 0.0)
+            .collect();
+        if let Some(worst) = clamped.iter().max_by(|a, b| {
+            a.table_clamped_fraction
+                .total_cmp(&b.table_clamped_fraction)
+        }) {
+            notes.push(format!(
+                "note: {prefix}at {} of {} speeds some blade-element lookups lie outside the \
+                 table's Reynolds/Mach range and use its edge values (most: {:.1} % at {:.1} kt)",
+                clamped.len(),
+                self.trims.len(),
+                100.0 * worst.table_clamped_fraction,
+                worst.airspeed_kt
+            ));
+        }
+        notes
+    }
+}
+
+/// Speed sweeps of several sections, one after the other (each sweep runs its speeds in
+/// parallel); `cases` names them.
+pub fn sweep_cases<S: SectionAero + Sync>(
+    aircraft: &Aircraft,
+    sections: &[&S],
+    cases: &[&str],
+    speeds_kt: &[f64],
+) -> Vec<SpeedSweep> {
+    sections
+        .iter()
+        .zip(cases)
+        .map(|(s, case)| SpeedSweep::run(aircraft, *s, speeds_kt, Some(case)))
+        .collect()
+}
+
+/// Blade α(ψ) at radius fraction `r_over_r` in trimmed level flight at `speed_kt` (ISA sea
+/// level), `samples` azimuths, for each section in parallel; `cases` names them.
+pub fn blade_alpha_cases<S: SectionAero + Sync>(
+    aircraft: &Aircraft,
+    sections: &[&S],
+    cases: &[&str],
+    speed_kt: f64,
+    r_over_r: f64,
+    samples: usize,
+) -> Result<Vec<Vec<(f64, f64)>>, StudyError> {
+    sections
+        .par_iter()
+        .zip(cases)
+        .map(|(s, case)| {
+            cruise_blade_alpha(
+                aircraft,
+                *s,
+                speed_kt,
+                0.0,
+                r_over_r,
+                samples,
+                &TrimParams::default(),
+            )
+            .map_err(|source| StudyError::Trim {
+                case: case.to_string(),
+                source,
+            })
+        })
+        .collect()
+}
+
+/// The takeoff with each section, in parallel; `cases` names them.
+pub fn takeoff_cases<S: SectionAero + Sync>(
+    aircraft: &Aircraft,
+    sections: &[&S],
+    cases: &[&str],
+) -> Result<Vec<TakeoffResult>, StudyError> {
+    sections
+        .par_iter()
+        .zip(cases)
+        .map(|(s, case)| {
+            simulate_takeoff(aircraft, *s).map_err(|source| StudyError::Takeoff {
+                case: case.to_string(),
+                source,
+            })
+        })
+        .collect()
+}

@@ -1,0 +1,138 @@
+//! Building a table: the viscous polars of one airfoil on a Reynolds × Mach × α grid, solved
+//! in parallel (one panel store for the whole grid, [`run_grid`]), collected into a
+//! [`PolarTable`] with the settings that made it.
+
+use super::{PolarTable, TableError, TableMeta};
+use crate::geometry::Airfoil;
+use crate::polar::{parse_alpha_range, run_grid, GridPolar, SweepParams};
+use crate::section::FlowCondition;
+use crate::viscous::{SharedPanels, ViscousError, ViscousParams, ViscousSolver};
+use std::sync::Arc;
+
+/// Reynolds numbers of the default rotor grid: the blade sections of a light gyroplane rotor
+/// (chord 0.2 m) from the inboard strips in cruise to the advancing tip.
+pub const DEFAULT_RE: [f64; 6] = [0.25e6, 0.5e6, 1.0e6, 1.5e6, 2.0e6, 2.5e6];
+
+/// Mach numbers of the default rotor grid.
+pub const DEFAULT_MACH: [f64; 5] = [0.0, 0.2, 0.3, 0.4, 0.5];
+
+/// α range of the default rotor grid, `A0:A1:DA` in degrees ([`parse_alpha_range`]).
+pub const DEFAULT_ALPHA: &str = "-10:20:0.5";
+
+/// The axes of a table to build.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GridSpec {
+    /// Chord Reynolds numbers.
+    pub reynolds: Vec<f64>,
+    /// Mach numbers.
+    pub mach: Vec<f64>,
+    /// Angles of attack \[deg\].
+    pub alpha_deg: Vec<f64>,
+}
+
+impl Default for GridSpec {
+    /// The default rotor grid: [`DEFAULT_RE`] × [`DEFAULT_MACH`] × [`DEFAULT_ALPHA`].
+    fn default() -> Self {
+        Self {
+            reynolds: DEFAULT_RE.to_vec(),
+            mach: DEFAULT_MACH.to_vec(),
+            alpha_deg: parse_alpha_range(DEFAULT_ALPHA).unwrap_or_default(),
+        }
+    }
+}
+
+impl GridSpec {
+    /// Every (Re, M) node, Re-major.
+    pub fn conditions(&self) -> Vec<FlowCondition> {
+        self.reynolds
+            .iter()
+            .flat_map(|&r| self.mach.iter().map(move |&m| FlowCondition::new(r, m)))
+            .collect()
+    }
+
+    /// Number of points the grid asks for.
+    pub fn point_count(&self) -> usize {
+        self.reynolds.len() * self.mach.len() * self.alpha_deg.len()
+    }
+}
+
+/// Why a table could not be built.
+#[derive(Debug, thiserror::Error)]
+pub enum BuildError {
+    /// The viscous solver could not be set up for the airfoil.
+    #[error("viscous solver")]
+    Solver(#[source] ViscousError),
+    /// The solved polars do not form a table.
+    #[error("building the table")]
+    Table(#[source] TableError),
+}
+
+/// Solve the viscous polars of `foil` (already paneled with `panels` nodes) on `grid` with
+/// the settings of `base` (its Re and M are replaced by each node's) on at most `threads`
+/// worker threads (0 = all cores), calling `on_points` with the number of points of each
+/// finished polar. Unconverged points are kept, flagged, in the table.
+pub fn build_table(
+    foil: &Airfoil,
+    panels: usize,
+    grid: &GridSpec,
+    base: &ViscousParams,
+    threads: usize,
+    on_points: impl Fn(usize) + Sync,
+) -> Result<PolarTable, BuildError> {
+    // One panel store for the whole grid: the per-α inviscid model does not depend on Re or M.
+    let store = Arc::new(SharedPanels::new(foil).map_err(BuildError::Solver)?);
+    let nodes: Vec<(f64, f64)> = grid
+        .conditions()
+        .iter()
+        .map(|c| (c.reynolds, c.mach))
+        .collect();
+    let polars = run_grid(
+        &nodes,
+        &grid.alpha_deg,
+        threads,
+        &SweepParams::default(),
+        |reynolds, mach| {
+            ViscousSolver::with_panels(
+                Arc::clone(&store),
+                ViscousParams {
+                    reynolds,
+                    mach,
+                    ..*base
+                },
+            )
+        },
+        |p: &GridPolar| on_points(p.points.len()),
+    )
+    .map_err(BuildError::Solver)?;
+    let meta = TableMeta {
+        airfoil: foil.name.clone(),
+        ncrit: base.ncrit,
+        xtr_top_set: base.xtr_top,
+        xtr_bot_set: base.xtr_bot,
+        panels,
+        solver: format!("polargen {}", env!("CARGO_PKG_VERSION")),
+    };
+    PolarTable::from_polars(
+        meta,
+        polars
+            .into_iter()
+            .map(|p| (FlowCondition::new(p.re, p.mach), p.points))
+            .collect(),
+    )
+    .map_err(BuildError::Table)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_default_grid_is_the_rotor_grid() {
+        let g = GridSpec::default();
+        assert_eq!(g.alpha_deg.len(), 61);
+        assert_eq!((g.alpha_deg[0], g.alpha_deg[60]), (-10.0, 20.0));
+        assert_eq!(g.conditions().len(), 30);
+        assert_eq!(g.conditions()[1], FlowCondition::new(0.25e6, 0.2));
+        assert_eq!(g.point_count(), 30 * 61);
+    }
+}
