@@ -6,6 +6,8 @@
 //! * [`SectionAero`] and [`Lookup`] — section coefficients at any (α, Re, M) with the flags a
 //!   consumer needs to judge them (clamped, post-stall, bridged).
 //!
+//! * [`wrap_deg`] — an angle of attack brought onto the circle the tables cover.
+//!
 //! A leaf module: it imports nothing from the solver layers, so every layer may use it.
 
 use serde::{Deserialize, Serialize};
@@ -95,4 +97,29 @@ pub trait SectionAero {
     /// Coefficients at angle of attack `alpha_deg` (any value, wrapped to ±180°), Reynolds
     /// number `re` and Mach number `mach`.
     fn lookup(&self, alpha_deg: f64, re: f64, mach: f64) -> Lookup;
+}
+
+/// Wrap an angle (deg) into [−180°, 180°]; values already inside are returned unchanged.
+#[inline]
+pub fn wrap_deg(a: f64) -> f64 {
+    if (-180.0..=180.0).contains(&a) {
+        a
+    } else {
+        (a + 180.0).rem_euclid(360.0) - 180.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::wrap_deg;
+
+    #[test]
+    fn angles_wrap_onto_the_closed_circle() {
+        assert_eq!(wrap_deg(190.0), -170.0);
+        assert_eq!(wrap_deg(-190.0), 170.0);
+        assert_eq!(wrap_deg(-180.0), -180.0);
+        assert_eq!(wrap_deg(180.0), 180.0);
+        assert_eq!(wrap_deg(30.1), 30.1);
+        assert_eq!(wrap_deg(720.0 + 45.0), 45.0);
+    }
 }

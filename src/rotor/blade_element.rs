@@ -19,7 +19,7 @@
 //! (σc_d0/8)(1 + 4.6μ²) (Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., ch. 5,
 //! profile power in forward flight; Johnson, *Helicopter Theory*, ch. 5).
 
-use crate::section::{Lookup, SectionAero};
+use crate::section::{wrap_deg, Lookup, SectionAero};
 
 /// Air state used by a strip (density, viscosity and speed of sound).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -118,27 +118,5 @@ pub fn strip_load(
         tangential: k_lift * flow.up - k_drag * flow.ut,
         normal: k_lift * flow.ut + k_drag * flow.up,
         radial: k_drag * flow.ur,
-    }
-}
-
-/// Wraps an angle in degrees to (−180°, 180°].
-pub(crate) fn wrap_deg(a: f64) -> f64 {
-    let w = (a + 180.0).rem_euclid(360.0) - 180.0;
-    if w == -180.0 {
-        180.0
-    } else {
-        w
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::wrap_deg;
-
-    #[test]
-    fn angles_wrap_to_the_half_open_circle() {
-        assert_eq!(wrap_deg(190.0), -170.0);
-        assert_eq!(wrap_deg(-180.0), 180.0);
-        assert_eq!(wrap_deg(30.0), 30.0);
     }
 }

@@ -20,7 +20,7 @@
 use super::post_stall::{Extension360, Junction, PostStallParams};
 use super::PolarTable;
 use crate::section::PolarPoint;
-use crate::section::{Lookup, SectionAero};
+use crate::section::{wrap_deg, Lookup, SectionAero};
 
 /// One polar prepared for fast lookups: converged points sorted by α, PCHIP slopes, bridged
 /// intervals and the 360° extension.
@@ -232,16 +232,6 @@ pub(crate) fn bracket(axis: &[f64], x: f64) -> (usize, f64, bool) {
     }
     let i = (axis.partition_point(|&v| v <= x).max(1) - 1).min(n - 2);
     (i, (x - axis[i]) / (axis[i + 1] - axis[i]), false)
-}
-
-/// Wrap an angle (deg) into [−180°, 180°]; values already inside are returned unchanged.
-#[inline]
-pub fn wrap_deg(a: f64) -> f64 {
-    if (-180.0..=180.0).contains(&a) {
-        a
-    } else {
-        (a + 180.0).rem_euclid(360.0) - 180.0
-    }
 }
 
 impl SectionAero for PolarTable {
