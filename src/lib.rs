@@ -8,7 +8,8 @@
 //! ```text
 //! geometry → inviscid → boundary_layer → viscous → polar → table → rotor → report
 //!                                                              ↘ plot ↗
-//! leaf modules every layer may use: section, compressibility, output, diagnostics
+//! leaf modules every layer may use: section, compressibility, input, output, limits,
+//! diagnostics
 //! ```
 //!
 //! * [`geometry`] — airfoil shapes (NACA 4/5-digit, coordinate files, named registry), splines,
@@ -35,6 +36,10 @@
 //! * [`compressibility`] — γ and the Karman–Tsien relations (Cp, speed, critical Cp).
 //! * [`output`] — every result file goes through it: path checks, atomic writes, `-` for
 //!   standard output, streams written in place; [`output::OutputError`].
+//! * [`input`] — every input file goes through it: regular files (or standard input where
+//!   allowed) up to a size cap; devices, FIFOs and folders refused at once.
+//! * [`limits`] — every bound on input sizes and on the work a request may ask for, in one
+//!   place.
 //! * [`diagnostics`] — an error and its causes on one line, for the command-line tools.
 //!
 //! # Public API
@@ -59,7 +64,9 @@ pub mod boundary_layer;
 pub mod compressibility;
 pub mod diagnostics;
 pub mod geometry;
+pub mod input;
 pub mod inviscid;
+pub mod limits;
 mod numerics;
 pub mod output;
 pub mod plot;

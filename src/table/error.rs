@@ -1,5 +1,6 @@
 //! Errors of table construction, lookup setup and file input/output.
 
+use crate::limits::short_number;
 use std::path::PathBuf;
 use thiserror::Error;
 
@@ -11,7 +12,7 @@ pub enum TableError {
     #[error("table has no {0} values")]
     EmptyAxis(&'static str),
     /// An axis is not strictly increasing.
-    #[error("{axis} axis is not strictly increasing: {value} follows {previous}")]
+    #[error("{axis} axis is not strictly increasing: {} follows {}", short_number(*value), short_number(*previous))]
     AxisOrder {
         /// `Re` or `Mach`.
         axis: &'static str,
@@ -21,10 +22,10 @@ pub enum TableError {
         value: f64,
     },
     /// A Reynolds number is not a positive finite number.
-    #[error("Re must be positive and finite, got {0}")]
+    #[error("Re must be positive and finite, got {}", short_number(*.0))]
     BadRe(f64),
     /// A Mach number is outside [0, 1).
-    #[error("Mach must be in [0, 1), got {0}")]
+    #[error("Mach must be in [0, 1), got {}", short_number(*.0))]
     BadMach(f64),
     /// The number of polars does not match the Re × Mach grid.
     #[error("ragged grid: {n_re} Re × {n_mach} Mach needs {expected} polars, got {got}")]
@@ -39,7 +40,7 @@ pub enum TableError {
         got: usize,
     },
     /// A (Re, M) node of the grid has no polar.
-    #[error("ragged grid: no polar at Re {re}, M {mach}")]
+    #[error("ragged grid: no polar at Re {}, M {}", short_number(*re), short_number(*mach))]
     MissingPolar {
         /// Reynolds number of the empty node.
         re: f64,
@@ -47,7 +48,7 @@ pub enum TableError {
         mach: f64,
     },
     /// The same (Re, M) node was given twice.
-    #[error("duplicate polar at Re {re}, M {mach}")]
+    #[error("duplicate polar at Re {}, M {}", short_number(*re), short_number(*mach))]
     DuplicatePolar {
         /// Reynolds number.
         re: f64,
@@ -55,7 +56,7 @@ pub enum TableError {
         mach: f64,
     },
     /// The same α appears twice in one polar.
-    #[error("duplicate alpha {alpha} in polar Re {re}, M {mach}")]
+    #[error("duplicate alpha {} in polar Re {}, M {}", short_number(*alpha), short_number(*re), short_number(*mach))]
     DuplicateAlpha {
         /// Reynolds number.
         re: f64,
@@ -65,7 +66,7 @@ pub enum TableError {
         alpha: f64,
     },
     /// A converged point (or any α) holds NaN or infinity, or α is outside ±180°.
-    #[error("{field} is {value} at Re {re}, M {mach}, alpha {alpha} (must be finite)")]
+    #[error("{field} is {} at Re {}, M {}, alpha {} (must be finite)", short_number(*value), short_number(*re), short_number(*mach), short_number(*alpha))]
     NotFinite {
         /// Column name.
         field: &'static str,
@@ -79,7 +80,7 @@ pub enum TableError {
         alpha: f64,
     },
     /// α outside [−180°, 180°].
-    #[error("alpha {alpha} outside [-180, 180] in polar Re {re}, M {mach}")]
+    #[error("alpha {} outside [-180, 180] in polar Re {}, M {}", short_number(*alpha), short_number(*re), short_number(*mach))]
     AlphaRange {
         /// Reynolds number.
         re: f64,
@@ -89,7 +90,7 @@ pub enum TableError {
         alpha: f64,
     },
     /// A converged point with negative drag (no physical section has it).
-    #[error("cd {cd} < 0 at alpha {alpha} in polar Re {re}, M {mach}")]
+    #[error("cd {} < 0 at alpha {} in polar Re {}, M {}", short_number(*cd), short_number(*alpha), short_number(*re), short_number(*mach))]
     NegativeDrag {
         /// Reynolds number.
         re: f64,
@@ -101,7 +102,7 @@ pub enum TableError {
         cd: f64,
     },
     /// A 360°-extension parameter is out of its range.
-    #[error("post-stall parameter {name} = {value} is invalid (must be {rule})")]
+    #[error("post-stall parameter {name} = {} is invalid (must be {rule})", short_number(*value))]
     BadPostStall {
         /// Field name.
         name: &'static str,
@@ -169,7 +170,7 @@ pub enum TableError {
         count: usize,
     },
     /// A value does not fit a fixed-width field of a text format.
-    #[error("value {value} does not fit a {width}-character field")]
+    #[error("value {} does not fit a {width}-character field", short_number(*value))]
     FieldOverflow {
         /// The value.
         value: f64,
@@ -179,14 +180,9 @@ pub enum TableError {
     /// Writing an output file failed.
     #[error(transparent)]
     Output(#[from] crate::output::OutputError),
-    /// An input file is missing or not a regular file.
-    #[error("cannot read table {path}: {reason}")]
-    Input {
-        /// The file.
-        path: PathBuf,
-        /// What it is instead of a readable file.
-        reason: &'static str,
-    },
+    /// An input file is missing, not a regular file, too large or unreadable.
+    #[error("cannot read table {}: {}", .0.path.display(), .0.problem)]
+    Input(#[source] crate::input::InputError),
     /// The content of the table file `path` is wrong.
     #[error("{path}: {source}")]
     File {
