@@ -19,11 +19,14 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use args::{Cli, Command, ConvertArgs, PlotArgs, PlotPointArgs, RunArgs};
+use args::{Cli, Command, ConvertArgs, PlotArgs, PlotPointArgs, RunArgs, Shape};
 
 use cli::Tool;
-use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
+use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams, CHORD_UNITS_TOLERANCE};
 use polargen::inviscid::PanelSystem;
+use polargen::limits::{
+    short_number, short_text, MAX_GRID_POINTS, MAX_NEWTON_TOLERANCE, PANEL_NODES,
+};
 use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError};
 use polargen::plot::point_plots::{solutions_figure, solutions_title};
 use polargen::plot::polar_plots::{compact_number, overlay_title, polar_figure, transition_label};
@@ -42,9 +45,6 @@ const TOOL: Tool = Tool {
     name: "polargen",
     error_prefix: "polargen: error: ",
 };
-
-/// Smallest and largest panel-node counts accepted by `--panels`.
-const PANEL_RANGE: (usize, usize) = (20, 1000);
 
 fn main() -> ExitCode {
     let cli = match TOOL.parse::<Cli>() {
@@ -67,11 +67,19 @@ fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>> {
         match item.parse::<f64>() {
             Ok(v) if v.is_finite() => {
                 if out.contains(&v) {
-                    bail!("--{flag} '{text}': '{item}' is given twice");
+                    bail!(
+                        "--{flag} '{}': '{}' is given twice",
+                        short_text(text),
+                        short_text(item)
+                    );
                 }
                 out.push(v)
             }
-            _ => bail!("--{flag} '{text}': '{item}' is not a finite number"),
+            _ => bail!(
+                "--{flag} '{}': '{}' is not a finite number",
+                short_text(text),
+                short_text(item)
+            ),
         }
     }
     Ok(out)
@@ -93,24 +101,43 @@ fn mach_list(cli: &RunArgs, default: &[f64]) -> Result<Vec<f64>> {
     Ok(list)
 }
 
-/// Check the panel count and load + repanel the airfoil.
-fn load_airfoil(spec: Option<&str>, panels: usize) -> Result<Airfoil> {
-    if !(PANEL_RANGE.0..=PANEL_RANGE.1).contains(&panels) {
+/// Check the panel count, load the airfoil (derotated on request), bring it into chord units
+/// and repanel it; say on stderr what was changed.
+fn load_airfoil(spec: Option<&str>, panels: usize, shape: &Shape) -> Result<Airfoil> {
+    if !(PANEL_NODES.0..=PANEL_NODES.1).contains(&panels) {
         bail!(
             "--panels {panels}: must be between {} and {}",
-            PANEL_RANGE.0,
-            PANEL_RANGE.1
+            PANEL_NODES.0,
+            PANEL_NODES.1
         );
     }
     let spec = spec.context("--airfoil is required")?;
-    let given = airfoil_by_name_or_path(spec).context("--airfoil")?;
+    let mut given = airfoil_by_name_or_path(spec).context("--airfoil")?;
+    let angle = given
+        .chord_angle_deg()
+        .with_context(|| format!("locating the chord of {}", given.name))?;
+    if shape.derotate {
+        given = given.derotated()?;
+        TOOL.say(format!(
+            "note: {spec}: rotated by {:.3} deg so that the chord line lies along x; alpha is \
+             measured from the chord line",
+            -angle
+        ));
+    } else if angle.to_radians().abs() > CHORD_UNITS_TOLERANCE {
+        TOOL.say(format!(
+            "note: {spec}: the chord line is inclined by {angle:.3} deg to the x axis; alpha is \
+             measured from the x axis of the coordinates (--derotate measures it from the \
+             chord line)"
+        ));
+    }
     let (raw, normalised) = given
         .in_chord_units()
         .with_context(|| format!("locating the chord of {}", given.name))?;
     if normalised {
         TOOL.say(format!(
             "note: {spec}: chord is not 1 or the leading edge is not at the origin; coordinates \
-             normalised to unit chord (LE at 0,0, TE at 1,0)"
+             normalised to unit chord by scaling and translation (LE at 0,0, TE at x = 1), \
+             not rotated"
         ));
     }
     let foil = raw
@@ -130,7 +157,7 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
     if let Some(path) = &cli.out {
         check_out(path)?;
     }
-    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels)?;
+    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels, &cli.shape)?;
     let system = PanelSystem::new(&foil).context("panel system")?;
     let mut csv = String::from("alpha,cl,cd,cm,converged\n");
     for &alpha in &alphas {
@@ -180,6 +207,16 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         alpha_deg: parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA))
             .context("--alpha")?,
     };
+    if grid.point_count() > MAX_GRID_POINTS {
+        bail!(
+            "{} Re x {} M x {} alpha = {} points: more than the limit of {MAX_GRID_POINTS} \
+             points per run",
+            grid.reynolds.len(),
+            grid.mach.len(),
+            grid.alpha_deg.len(),
+            grid.point_count()
+        );
+    }
     let (xtr_top, xtr_bot) = transition(cli)?;
     check_ncrit(cli.ncrit)?;
     check_tolerance(cli.newton.tolerance)?;
@@ -194,7 +231,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     if cli.out.is_none() && matches!(format, TableFormat::XfoilPolar | TableFormat::C81) {
         bail!("--format {}: needs --out (it writes files)", format.name());
     }
-    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels)?;
+    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels, &cli.shape)?;
 
     let total = grid.point_count();
     let bar = progress_bar(total as u64);
@@ -234,7 +271,10 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
 /// A `--re` value: a positive Reynolds number.
 fn check_re(re: f64) -> Result<()> {
     if !(re.is_finite() && re > 0.0) {
-        bail!("--re {re}: the Reynolds number must be positive");
+        bail!(
+            "--re {}: the Reynolds number must be positive",
+            short_number(re)
+        );
     }
     Ok(())
 }
@@ -242,7 +282,10 @@ fn check_re(re: f64) -> Result<()> {
 /// A `--mach` value: in [0, 1).
 fn check_mach(mach: f64) -> Result<()> {
     if !(0.0..1.0).contains(&mach) {
-        bail!("--mach {mach}: the Mach number must be in [0, 1)");
+        bail!(
+            "--mach {}: the Mach number must be in [0, 1)",
+            short_number(mach)
+        );
     }
     Ok(())
 }
@@ -250,7 +293,10 @@ fn check_mach(mach: f64) -> Result<()> {
 /// A transition location given with `--<flag>`: x/c in [0, 1].
 fn check_xtr(flag: &str, x: f64) -> Result<()> {
     if !(0.0..=1.0).contains(&x) {
-        bail!("--{flag} {x}: the transition location must be in [0, 1] (1 = free)");
+        bail!(
+            "--{flag} {}: the transition location must be in [0, 1] (1 = free)",
+            short_number(x)
+        );
     }
     Ok(())
 }
@@ -258,15 +304,19 @@ fn check_xtr(flag: &str, x: f64) -> Result<()> {
 /// The `--ncrit` flag: a positive number.
 fn check_ncrit(ncrit: f64) -> Result<()> {
     if !(ncrit.is_finite() && ncrit > 0.0) {
-        bail!("--ncrit {ncrit}: must be a positive number");
+        bail!("--ncrit {}: must be a positive number", short_number(ncrit));
     }
     Ok(())
 }
 
-/// The `--tolerance` flag: a Newton threshold in (0, 1).
+/// The `--tolerance` flag: a Newton threshold in (0, [`MAX_NEWTON_TOLERANCE`]].
 fn check_tolerance(tolerance: f64) -> Result<()> {
-    if !(tolerance > 0.0 && tolerance < 1.0) {
-        bail!("--tolerance {tolerance}: must be a number in (0, 1)");
+    if !(tolerance > 0.0 && tolerance <= MAX_NEWTON_TOLERANCE) {
+        bail!(
+            "--tolerance {}: must be above 0 and at most {MAX_NEWTON_TOLERANCE} (a looser \
+             threshold stops before the boundary layer has converged)",
+            short_number(tolerance)
+        );
     }
     Ok(())
 }
@@ -349,7 +399,7 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
     if let Some(path) = &args.csv {
         check_output_path(path).context("--csv")?;
     }
-    let foil = load_airfoil(Some(&args.airfoil), args.panels)?;
+    let foil = load_airfoil(Some(&args.airfoil), args.panels, &args.shape)?;
     let mut runs: Vec<(String, ViscousSolution)> = Vec::new();
     for &xtr in &xtrs {
         let params = ViscousParams {
@@ -364,7 +414,7 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
                 .with_context(|| label.clone())?,
             (Some(alpha), None) => {
                 if !alpha.is_finite() {
-                    bail!("--alpha {alpha}: not a finite angle");
+                    bail!("--alpha {}: not a finite angle", short_number(alpha));
                 }
                 let sol = solver.solve(alpha);
                 if !sol.point.converged {
@@ -398,8 +448,11 @@ fn check_inside(flag: &str, value: f64, axis: &[f64], path: &Path) -> Result<()>
     let slack = 1e-3 * (hi - lo).abs().max(hi.abs() * 1e-3);
     if !value.is_finite() || value < lo - slack || value > hi + slack {
         bail!(
-            "--{flag} {value}: outside the table {} ({lo} … {hi})",
-            path.display()
+            "--{flag} {}: outside the table {} ({} … {})",
+            short_number(value),
+            path.display(),
+            short_number(lo),
+            short_number(hi)
         );
     }
     Ok(())
