@@ -160,14 +160,27 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
     let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels, &cli.shape)?;
     let system = PanelSystem::new(&foil).context("panel system")?;
     let mut csv = String::from("alpha,cl,cd,cm,converged\n");
+    let mut supercritical: Vec<f64> = Vec::new();
     for &alpha in &alphas {
         let sol = system
             .solve(alpha, mach)
             .with_context(|| format!("alpha {alpha}"))?;
+        if sol.supercritical {
+            supercritical.push(alpha);
+        }
         csv.push_str(&format!(
             "{alpha},{},0,{},true\n",
             fixed_decimals(sol.cl, 6),
             fixed_decimals(sol.cm, 6)
+        ));
+    }
+    if let (Some(first), Some(last)) = (supercritical.first(), supercritical.last()) {
+        TOOL.say(format!(
+            "note: M {mach}: {} of {} points supercritical (alpha {first} … {last}): the \
+             minimum Cp is below the sonic Cp*, beyond the validity of the Karman-Tsien \
+             correction; those Cl and Cm are only indicative",
+            supercritical.len(),
+            alphas.len()
         ));
     }
     let path = cli.out.as_deref().unwrap_or(Path::new("-"));
