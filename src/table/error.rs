@@ -22,7 +22,11 @@ pub enum TableError {
         value: f64,
     },
     /// A Reynolds number is not a positive finite number.
-    #[error("Re must be positive and finite, got {}", short_number(*.0))]
+    #[error(
+        "Re must be positive and at most {}, got {}",
+        short_number(crate::table::MAX_RE),
+        short_number(*.0)
+    )]
     BadRe(f64),
     /// A Mach number is outside [0, 1).
     #[error("Mach must be in [0, 1), got {}", short_number(*.0))]
@@ -100,6 +104,48 @@ pub enum TableError {
         alpha: f64,
         /// The drag coefficient.
         cd: f64,
+    },
+    /// A metadata field is outside its range (NaN, a negative transition setting, …).
+    #[error("table {field} = {value} is invalid (must be {rule})")]
+    BadMeta {
+        /// Field name.
+        field: &'static str,
+        /// The value as text (numbers in short form).
+        value: String,
+        /// The allowed range.
+        rule: &'static str,
+    },
+    /// A polar without any point.
+    #[error("polar Re {}, M {} has no points", short_number(*re), short_number(*mach))]
+    EmptyPolar {
+        /// Reynolds number.
+        re: f64,
+        /// Mach number.
+        mach: f64,
+    },
+    /// A converged coefficient beyond what any section produces.
+    #[error(
+        "{field} = {} at alpha {} in polar Re {}, M {} is beyond the plausible range \
+         (|{field}| <= {})",
+        short_number(*value),
+        short_number(*alpha),
+        short_number(*re),
+        short_number(*mach),
+        short_number(*bound)
+    )]
+    Implausible {
+        /// Column name.
+        field: &'static str,
+        /// The value.
+        value: f64,
+        /// Its bound.
+        bound: f64,
+        /// Reynolds number.
+        re: f64,
+        /// Mach number.
+        mach: f64,
+        /// α (deg).
+        alpha: f64,
     },
     /// A 360°-extension parameter is out of its range.
     #[error("post-stall parameter {name} = {} is invalid (must be {rule})", short_number(*value))]
@@ -180,6 +226,10 @@ pub enum TableError {
     /// Writing an output file failed.
     #[error(transparent)]
     Output(#[from] crate::output::OutputError),
+    /// Writing into an output stream failed (before it is known which file the stream is;
+    /// the writers turn it into [`TableError::Output`] naming the file).
+    #[error("write failed: {0}")]
+    Write(#[source] std::io::Error),
     /// An input file is missing, not a regular file, too large or unreadable.
     #[error("cannot read table {}: {}", .0.path.display(), .0.problem)]
     Input(#[source] crate::input::InputError),
@@ -202,6 +252,15 @@ pub enum TableError {
 }
 
 impl TableError {
+    /// This error with a failed stream write ([`TableError::Write`]) attributed to the output
+    /// file `path`, as the user named it.
+    pub fn in_output(self, path: &std::path::Path) -> Self {
+        match self {
+            Self::Write(source) => Self::Output(crate::output::OutputError::io(path, source)),
+            other => other,
+        }
+    }
+
     /// Wrap an I/O error with the path it concerns.
     pub fn io(path: impl Into<PathBuf>, source: std::io::Error) -> Self {
         Self::Io {

@@ -72,7 +72,7 @@ mod post_stall;
 pub use build::{build_table, BuildError, GridSpec, DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE};
 pub use error::TableError;
 pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
-pub use grid::{PolarTable, TableMeta};
+pub use grid::{PolarTable, TableMeta, COEFFICIENT_BOUNDS, MAX_RE};
 pub use io::{
     parse_table, read_lookup_table, read_table, write_c81, write_table, C81Options, TableFormat,
 };

@@ -423,6 +423,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
 }
 
 fn main() -> ExitCode {
+    polargen::output::remove_staged_files_on_signals();
     let cli = match TOOL.parse::<Cli>() {
         Ok(cli) => cli,
         Err(code) => return code,

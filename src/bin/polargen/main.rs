@@ -47,6 +47,7 @@ const TOOL: Tool = Tool {
 };
 
 fn main() -> ExitCode {
+    polargen::output::remove_staged_files_on_signals();
     let cli = match TOOL.parse::<Cli>() {
         Ok(c) => c,
         Err(code) => return code,

@@ -4,7 +4,7 @@
 //! fields). Only converged points are written, sorted by α. The version line names this
 //! table's solver instead of XFOIL.
 
-use crate::output::write_output;
+use crate::output::OutputSet;
 use crate::section::{FlowCondition, PolarPoint};
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::io::Write;
@@ -50,8 +50,7 @@ pub fn write_polar_to(
             p.alpha, p.cl, p.cd, p.cdp, p.cm, p.xtr_top, p.xtr_bot
         ));
     }
-    w.write_all(s.as_bytes())
-        .map_err(|e| TableError::io("<polar writer>", e))
+    w.write_all(s.as_bytes()).map_err(TableError::Write)
 }
 
 /// File name of the polar at (Re, M) for output stem `stem`: `<stem>_Re<re>_M<mach>.pol`,
@@ -79,24 +78,47 @@ pub fn re_label(re: f64) -> String {
 
 /// Write the converged points of every polar of `table` as XFOIL polar files: `path` itself
 /// when the table has one polar, otherwise `<dir>/<stem>_Re<re>_M<mach>.pol` for each
-/// (Re, M), where `<stem>` is `path` without extension. Returns the files written.
+/// (Re, M), where `<stem>` is `path` without extension, all together or none
+/// ([`OutputSet`]). Two α that the F8.3 field would merge are refused. Returns the files
+/// written.
 pub fn write_xfoil_polars(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf>, TableError> {
     let single = table.re().len() * table.mach().len() == 1;
     let stem = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "polar".to_string());
-    let mut written = Vec::new();
+    let mut set = OutputSet::new();
     for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
+        check_alpha_resolution(re, mach, points)?;
         let file = if single {
             path.to_path_buf()
         } else {
             path.with_file_name(polar_file_name(&stem, re, mach))
         };
-        write_output(&file, |w| write_polar_to(table.meta(), re, mach, points, w))?;
-        written.push(file);
+        set.write(&file, |w| {
+            write_polar_to(table.meta(), re, mach, points, w).map_err(|e| e.in_output(&file))
+        })?;
     }
-    Ok(written)
+    Ok(set.commit()?)
+}
+
+/// The α of converged points must stay distinct in the F8.3 field, or reading the file back
+/// would merge two points into one.
+fn check_alpha_resolution(re: f64, mach: f64, points: &[PolarPoint]) -> Result<(), TableError> {
+    let mut written: Vec<String> = points
+        .iter()
+        .filter(|p| p.converged)
+        .map(|p| format!("{:8.3}", p.alpha))
+        .collect();
+    written.sort();
+    match written.windows(2).find(|w| w[0] == w[1]) {
+        Some(w) => Err(TableError::DuplicateAlpha {
+            re,
+            mach,
+            alpha: w[0].trim().parse().unwrap_or(f64::NAN),
+        }),
+        None => Ok(()),
+    }
 }
 
 /// Read an XFOIL polar file (as written by XFOIL's `PACC` or by
