@@ -190,6 +190,10 @@ pub enum TableError {
         /// What is wrong.
         message: String,
     },
+    /// The JSON text is well formed but does not describe a valid table (the check names
+    /// what is wrong; serde gives it no position).
+    #[error("JSON table: {0}")]
+    JsonTable(String),
     /// An XFOIL polar file could not be parsed.
     #[error("XFOIL polar line {line}: {message}")]
     Polar {

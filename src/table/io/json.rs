@@ -34,6 +34,9 @@ pub fn parse_json(text: &str) -> Result<PolarTable, TableError> {
 /// A serde_json error as a one-line [`TableError::Json`].
 fn json_error(e: &serde_json::Error) -> TableError {
     let full = e.to_string();
+    if e.line() == 0 {
+        return TableError::JsonTable(full);
+    }
     // serde_json appends " at line L column C"; the position is reported separately.
     let message = match full.rfind(" at line ") {
         Some(i) => full[..i].to_string(),

@@ -175,8 +175,7 @@ impl Layout {
     fn detect(path: &Path, bytes: &[u8]) -> Result<Self, TableError> {
         let head = String::from_utf8_lossy(&bytes[..bytes.len().min(4096)]);
         let first = head.trim_start();
-        let columns: Vec<String> = first
-            .lines()
+        let columns: Vec<String> = crate::input::text_lines(first)
             .next()
             .unwrap_or("")
             .split(',')

@@ -145,7 +145,7 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
     let mut cond = None;
     let mut columns: Option<Vec<String>> = None;
     let mut points: Vec<PolarPoint> = Vec::new();
-    for (i, raw) in text.lines().enumerate() {
+    for (i, raw) in crate::input::text_lines(text).enumerate() {
         let line = i + 1;
         let t = raw.trim();
         if let Some(cols) = columns.as_deref() {
