@@ -123,6 +123,26 @@ pub enum TableError {
         /// Mach number.
         mach: f64,
     },
+    /// The transition location of a converged point is not a chord fraction.
+    #[error(
+        "{field} = {} at alpha {} in polar Re {}, M {} is not a chord fraction in [0, 1]",
+        short_number(*value),
+        short_number(*alpha),
+        short_number(*re),
+        short_number(*mach)
+    )]
+    TransitionRange {
+        /// Column name.
+        field: &'static str,
+        /// The value.
+        value: f64,
+        /// Reynolds number.
+        re: f64,
+        /// Mach number.
+        mach: f64,
+        /// Angle of attack.
+        alpha: f64,
+    },
     /// A converged coefficient beyond what any section produces.
     #[error(
         "{field} = {} at alpha {} in polar Re {}, M {} is beyond the plausible range \
@@ -218,6 +238,17 @@ pub enum TableError {
         what: &'static str,
         /// Count needed.
         count: usize,
+    },
+    /// A positive header value prints as zero in the XFOIL polar header.
+    #[error(
+        "{field} = {} is below the resolution of the XFOIL polar header (it would read back as 0)",
+        short_number(*value)
+    )]
+    HeaderResolution {
+        /// `Re` or `ncrit`.
+        field: &'static str,
+        /// The value.
+        value: f64,
     },
     /// A value does not fit a fixed-width field of a text format.
     #[error("value {} does not fit a {width}-character field", short_number(*value))]

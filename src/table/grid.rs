@@ -3,8 +3,7 @@
 use super::error::TableError;
 use super::lookup::{bracket, AlphaCurve};
 use super::post_stall::PostStallParams;
-use crate::inviscid::MAX_SECTION_CL;
-use crate::limits::{short_number, short_text};
+use super::validation::{check_axis, check_meta, check_polar, MAX_RE};
 use crate::section::{FlowCondition, PolarPoint};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
@@ -62,7 +61,7 @@ impl PolarTable {
     /// Validates: metadata (N_crit > 0, transition settings in [0, 1], names without control
     /// characters); non-empty, strictly increasing axes; 0 < Re ≤ [`MAX_RE`]; 0 ≤ M < 1; no
     /// empty polar; finite α within ±180°, unique within each polar; finite coefficients,
-    /// cd ≥ 0 and the [`COEFFICIENT_BOUNDS`] at converged points. So every table that exists
+    /// cd ≥ 0 and the [`COEFFICIENT_BOUNDS`](super::COEFFICIENT_BOUNDS) at converged points. So every table that exists
     /// can be written and read back. Points are sorted by α. A table in which no polar has two converged points
     /// is accepted (see [`has_lookup`](Self::has_lookup)).
     pub fn new(
@@ -294,131 +293,6 @@ impl PolarTable {
     pub(crate) fn curve(&self, i_re: usize, i_mach: usize) -> &AlphaCurve {
         &self.curves[i_re * self.mach.len() + i_mach]
     }
-}
-
-/// Non-empty and strictly increasing.
-fn check_axis(name: &'static str, axis: &[f64]) -> Result<(), TableError> {
-    if axis.is_empty() {
-        return Err(TableError::EmptyAxis(name));
-    }
-    for w in axis.windows(2) {
-        if w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater) {
-            return Err(TableError::AxisOrder {
-                axis: name,
-                previous: w[0],
-                value: w[1],
-            });
-        }
-    }
-    Ok(())
-}
-
-/// Largest Reynolds number of a table: 10¹⁰, beyond ships' hulls; far above it the text
-/// formats' fixed fields no longer hold the value.
-pub const MAX_RE: f64 = 1e10;
-
-/// Plausibility bounds of the coefficients of a converged point: |Cl| ≤ 4π (the Joukowski
-/// bound, [`MAX_SECTION_CL`]), Cd ≤ 4 (twice a flat plate normal to the flow, Cd ≈ 2,
-/// Hoerner 1965 §3), |Cm| ≤ 4 (ten times the flat plate's quarter-chord moment at 90°).
-/// A value beyond is not a section coefficient (`Cl 1e300` at a converged point).
-pub const COEFFICIENT_BOUNDS: [(&str, f64); 3] = [("cl", MAX_SECTION_CL), ("cd", 4.0), ("cm", 4.0)];
-
-/// Check the metadata: a finite, positive N_crit, transition settings in [0, 1], names
-/// without control characters (they head text files).
-fn check_meta(meta: &TableMeta) -> Result<(), TableError> {
-    let bad = |field, value: f64, rule| TableError::BadMeta {
-        field,
-        value: short_number(value),
-        rule,
-    };
-    if !(meta.ncrit.is_finite() && meta.ncrit > 0.0) {
-        return Err(bad("ncrit", meta.ncrit, "a positive number"));
-    }
-    for (field, x) in [
-        ("xtr_top_set", meta.xtr_top_set),
-        ("xtr_bot_set", meta.xtr_bot_set),
-    ] {
-        if !(0.0..=1.0).contains(&x) {
-            return Err(bad(field, x, "in [0, 1]"));
-        }
-    }
-    for (field, text) in [("airfoil", &meta.airfoil), ("solver", &meta.solver)] {
-        if text.chars().any(char::is_control) {
-            return Err(TableError::BadMeta {
-                field,
-                value: format!("{:?}", short_text(text)),
-                rule: "text without control characters or line breaks",
-            });
-        }
-    }
-    Ok(())
-}
-
-/// Sort a polar by α and check α and the converged coefficients.
-fn check_polar(re: f64, mach: f64, polar: &mut [PolarPoint]) -> Result<(), TableError> {
-    if polar.is_empty() {
-        return Err(TableError::EmptyPolar { re, mach });
-    }
-    for p in polar.iter() {
-        if !p.alpha.is_finite() {
-            return Err(TableError::NotFinite {
-                field: "alpha",
-                value: p.alpha,
-                re,
-                mach,
-                alpha: p.alpha,
-            });
-        }
-        if p.alpha.abs() > 180.0 {
-            return Err(TableError::AlphaRange {
-                re,
-                mach,
-                alpha: p.alpha,
-            });
-        }
-        if p.converged {
-            for (field, value) in [("cl", p.cl), ("cd", p.cd), ("cm", p.cm)] {
-                if !value.is_finite() {
-                    return Err(TableError::NotFinite {
-                        field,
-                        value,
-                        re,
-                        mach,
-                        alpha: p.alpha,
-                    });
-                }
-            }
-            if p.cd < 0.0 {
-                return Err(TableError::NegativeDrag {
-                    re,
-                    mach,
-                    alpha: p.alpha,
-                    cd: p.cd,
-                });
-            }
-            for ((field, bound), value) in COEFFICIENT_BOUNDS.into_iter().zip([p.cl, p.cd, p.cm]) {
-                if value.abs() > bound {
-                    return Err(TableError::Implausible {
-                        field,
-                        value,
-                        bound,
-                        re,
-                        mach,
-                        alpha: p.alpha,
-                    });
-                }
-            }
-        }
-    }
-    polar.sort_by(|a, b| a.alpha.total_cmp(&b.alpha));
-    if let Some(w) = polar.windows(2).find(|w| w[0].alpha == w[1].alpha) {
-        return Err(TableError::DuplicateAlpha {
-            re,
-            mach,
-            alpha: w[0].alpha,
-        });
-    }
-    Ok(())
 }
 
 /// Weight of a (normalised) Re distance relative to a Mach distance when a polar without two

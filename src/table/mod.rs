@@ -68,12 +68,14 @@ mod grid;
 mod io;
 mod lookup;
 mod post_stall;
+mod validation;
 
 pub use build::{build_table, BuildError, GridSpec, DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE};
 pub use error::TableError;
 pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
-pub use grid::{PolarTable, TableMeta, COEFFICIENT_BOUNDS, MAX_RE};
+pub use grid::{PolarTable, TableMeta};
 pub use io::{
     parse_table, read_lookup_table, read_table, write_c81, write_table, C81Options, TableFormat,
 };
 pub use post_stall::PostStallParams;
+pub use validation::{COEFFICIENT_BOUNDS, MAX_RE};

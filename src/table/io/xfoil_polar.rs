@@ -10,7 +10,13 @@ use crate::table::{PolarTable, TableError, TableMeta};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-/// Write one polar in XFOIL's polar-file layout to `w`.
+/// Width and decimals of the point columns `alpha CL CD CDp CM Top_Xtr Bot_Xtr` (XFOIL's
+/// F8.3, F9.4, F10.5, F10.5, F9.4, F9.4, F9.4).
+const POLAR_FIELDS: [(usize, usize); 7] =
+    [(8, 3), (9, 4), (10, 5), (10, 5), (9, 4), (9, 4), (9, 4)];
+
+/// Write one polar in XFOIL's polar-file layout to `w`; a value wider than its field is
+/// refused ([`TableError::FieldOverflow`]).
 pub fn write_polar_to(
     meta: &TableMeta,
     re: f64,
@@ -35,20 +41,31 @@ pub fn write_polar_to(
         " xtrf = {:7.3} (top)      {:7.3} (bottom)  \n",
         meta.xtr_top_set, meta.xtr_bot_set
     ));
+    let re_field = format!("{:9.3}", re / 1e6);
+    let ncrit_field = format!("{:7.3}", meta.ncrit);
+    // Re and N_crit must stay positive when read back (Re 2.5e-7 would print as 0.000 e 6).
+    for (field, value, text) in [("Re", re, &re_field), ("ncrit", meta.ncrit, &ncrit_field)] {
+        if text.trim().parse::<f64>().map_or(true, |v| v <= 0.0) {
+            return Err(TableError::HeaderResolution { field, value });
+        }
+    }
     s.push_str(&format!(
-        " Mach = {:7.3}     Re = {:9.3} e 6     Ncrit = {:7.3}\n",
-        mach,
-        re / 1e6,
-        meta.ncrit
+        " Mach = {mach:7.3}     Re = {re_field} e 6     Ncrit = {ncrit_field}\n"
     ));
     s.push_str(" \n");
     s.push_str("   alpha    CL        CD       CDp       CM     Top_Xtr  Bot_Xtr\n");
     s.push_str("  ------ -------- --------- --------- -------- -------- --------\n");
     for p in points.iter().filter(|p| p.converged) {
-        s.push_str(&format!(
-            "{:8.3}{:9.4}{:10.5}{:10.5}{:9.4}{:9.4}{:9.4}\n",
-            p.alpha, p.cl, p.cd, p.cdp, p.cm, p.xtr_top, p.xtr_bot
-        ));
+        let values = [p.alpha, p.cl, p.cd, p.cdp, p.cm, p.xtr_top, p.xtr_bot];
+        for (value, (width, decimals)) in values.into_iter().zip(POLAR_FIELDS) {
+            let field = format!("{value:width$.decimals$}");
+            // A wider value would merge with its neighbour and not read back.
+            if field.len() > width || !value.is_finite() {
+                return Err(TableError::FieldOverflow { value, width });
+            }
+            s.push_str(&field);
+        }
+        s.push('\n');
     }
     w.write_all(s.as_bytes()).map_err(TableError::Write)
 }
