@@ -117,6 +117,7 @@ pub fn parse_airfoil_text(
 ) -> Result<(Airfoil, CoordinateFormat), GeometryError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines: Vec<DataLine> = Vec::new();
+    let mut uncounted = 0usize;
     for (k, raw) in text_lines(text).enumerate() {
         let line = k + 1;
         if let Some(b) = raw
@@ -133,11 +134,24 @@ pub fn parse_airfoil_text(
         if trimmed.is_empty() || trimmed.starts_with('#') {
             continue;
         }
+        // Beyond the point limit (and a name and a count line) lines are only counted.
+        if lines.len() > MAX_CONTOUR_POINTS + 1 {
+            uncounted += 1;
+            continue;
+        }
         let tokens: Vec<&str> = trimmed
             .split(|c: char| c.is_whitespace() || c == ',' || c == ';')
             .filter(|t| !t.is_empty())
             .collect();
         lines.push(DataLine { line, tokens });
+    }
+    if uncounted > 0 {
+        let named = !looks_like_pair(&lines[0].tokens);
+        return Err(GeometryError::TooManyPoints {
+            file: file.to_string(),
+            found: lines.len() + uncounted - usize::from(named),
+            max: MAX_CONTOUR_POINTS,
+        });
     }
     if lines.is_empty() {
         return Err(GeometryError::Empty {

@@ -181,6 +181,18 @@ pub enum GeometryError {
         /// Enclosed area / chord².
         ratio: f64,
     },
+    /// The end points are far apart: the contour is cut short.
+    #[error(
+        "{file}: the trailing-edge gap is {} of the contour's size (at most 0.3): the contour \
+         is open (a surface missing or cut short)",
+        short_number(*ratio)
+    )]
+    OpenContour {
+        /// File name (or airfoil name).
+        file: String,
+        /// Gap / extent.
+        ratio: f64,
+    },
     /// Two consecutive points coincide.
     #[error(
         "{file}:{line}: point ({}, {}) duplicates the previous point",

@@ -27,8 +27,8 @@ pub use paneling::{PaneledAirfoil, PanelingParams, DEFAULT_PANEL_NODES};
 pub use registry::{airfoil_by_name_or_path, airfoil_key, naca8h12};
 pub use spline::{ContourSpline, CubicSpline, EndCondition};
 pub use validation::{
-    MAX_REVERSE_TURNING_DEG, MAX_REVERSE_TURN_DEG, MAX_TURNING_DEG, MIN_AREA_RATIO, MIN_POINTS,
-    SPIKE_TURN_DEG,
+    MAX_REVERSE_TURNING_DEG, MAX_REVERSE_TURN_DEG, MAX_TE_GAP_RATIO, MAX_TURNING_DEG,
+    MIN_AREA_RATIO, MIN_POINTS, SPIKE_TURN_DEG,
 };
 
 /// Deviation of the chord (x of the TE midpoint less x of the leading-edge point) from 1 and of

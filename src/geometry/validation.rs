@@ -145,6 +145,13 @@ pub(crate) fn validate_contour(
         });
     }
     check_turning(x, y, line_of, file)?;
+    let gap = (x[0] - x[n - 1]).hypot(y[0] - y[n - 1]);
+    if gap > MAX_TE_GAP_RATIO * extent {
+        return Err(GeometryError::OpenContour {
+            file: file.to_string(),
+            ratio: gap / extent,
+        });
+    }
     let chord = span(x);
     let area = signed_area(x, y).abs();
     if area < MIN_AREA_RATIO * chord * chord {
@@ -155,6 +162,12 @@ pub(crate) fn validate_contour(
     }
     Ok(())
 }
+
+/// Largest trailing-edge gap (distance of the end points) as a fraction of the contour's
+/// extent: 0.3. Flatback wind-turbine sections reach 0.175 (Sandia FB-3500-1750, Berg &
+/// Zayas 2008); a larger gap is a contour cut short (a surface missing), whose panel
+/// solution is meaningless (a truncated NACA 2412 gave Cl 12 at 6°).
+pub const MAX_TE_GAP_RATIO: f64 = 0.3;
 
 /// Signed area enclosed by the contour closed through its end points (positive for
 /// counter-clockwise, i.e. XFOIL order), as in XFOIL `LOAD`.
