@@ -199,6 +199,15 @@ fn contours_of_every_bad_kind_are_refused_and_odd_but_valid_files_work() {
         &["--airfoil", s(&stray), "--inviscid"],
         "folds back at point",
     );
+    // The file cut short after the upper surface: an open arc, not a section.
+    let cut = d.join("cut.dat");
+    let p = points();
+    write_points(&cut, "cut", &p[..p.len() / 2 - 10], "\n");
+    refused(
+        "polargen",
+        &["--airfoil", s(&cut), "--inviscid"],
+        "the contour is open",
+    );
     // The contour listed three times.
     let thrice = d.join("thrice.dat");
     let p = points();
@@ -250,17 +259,19 @@ fn tables_that_cannot_round_trip_are_refused() {
             *l = f.join(",");
         }
     };
-    let cases: [(usize, &str, &str); 3] = [
-        (3, "nan", "ncrit = NaN is invalid"),
-        (5, "-0.5", "xtr_bot_set = -0.5 is invalid"),
-        (7, "7e250", "cl = 7e250 at alpha"),
+    let cases: [(usize, &str, &str, &str); 5] = [
+        (3, "nan", "ncrit = NaN is invalid", "pol"),
+        (5, "-0.5", "xtr_bot_set = -0.5 is invalid", "pol"),
+        (7, "7e250", "cl = 7e250 at alpha", "pol"),
+        (11, "3.5e9", "xtr_top = 3.5e9 at alpha -10", "csv"),
+        (1, "3e-7", "Re = 3e-7 is below the resolution", "pol"),
     ];
-    for (col, value, expect) in cases {
+    for (col, value, expect, ext) in cases {
         let mut l = lines.clone();
         edit(&mut l, col, value);
         let path = d.join(format!("t{col}.csv"));
         std::fs::write(&path, l.join("\n")).unwrap();
-        let out = d.join(format!("t{col}.pol"));
+        let out = d.join(format!("out{col}.{ext}"));
         refused("polargen", &["convert", s(&path), "--out", s(&out)], expect);
         assert!(!out.exists());
     }
