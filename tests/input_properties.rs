@@ -85,12 +85,10 @@ fn mutate(text: &str, mutations: &[Mutation]) -> Vec<u8> {
             Mutation::Number(n, r) => {
                 let mut tokens: Vec<(usize, usize)> = Vec::new();
                 for (i, l) in lines.iter().enumerate() {
-                    let mut k = 0;
-                    for t in l.split(|c: char| c == ',' || c.is_whitespace()) {
+                    for (k, t) in l.split(|c: char| c == ',' || c.is_whitespace()).enumerate() {
                         if t.parse::<f64>().is_ok() {
                             tokens.push((i, k));
                         }
-                        k += 1;
                     }
                 }
                 if let Some(&(i, k)) = tokens.get(n % tokens.len().max(1)) {
