@@ -274,7 +274,9 @@ proptest! {
         let seeds = table_seeds(&dir);
         let (ext, text) = seeds[seed].clone();
         let bytes = mutate(&text, &mutations);
+        let scratch = dir.clone();
         let verdict = bounded("table", move || check_table(&dir, &ext, &bytes));
+        let _ = std::fs::remove_dir_all(scratch);
         prop_assert!(verdict.is_ok(), "{}", verdict.unwrap_err());
     }
 }
