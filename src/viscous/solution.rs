@@ -6,6 +6,7 @@ use super::forces::{friction_drag, lift_and_moment, transition_x};
 use super::panel_model::PanelModel;
 use super::state::BlState;
 use super::stations::{StationLayout, Surface};
+use super::tangent::Tangent;
 use crate::boundary_layer::{BlModel, Regime};
 use crate::section::PolarPoint;
 
@@ -61,6 +62,10 @@ pub(super) struct Attempt {
     pub residual: f64,
     /// ξ of transition on the upper and lower surface.
     pub transition: [Option<f64>; 2],
+    /// Per surface, the turbulent fraction of the last transition interval.
+    pub turbulent_fraction: [Option<f64>; 2],
+    /// Derivative of the converged state along α (None if not converged).
+    pub tangent: Option<Tangent>,
 }
 
 /// Integrated coefficients and distributions of an attempt on `panels` with the boundary layer
