@@ -6,6 +6,7 @@ use std::f64::consts::PI;
 
 use super::error::InviscidError;
 use super::forces::MOMENT_REFERENCE;
+use super::influence::PanelLine;
 use crate::geometry::ContourSpline;
 
 /// Tunable constants of the panel geometry (XFOIL defaults).
@@ -84,6 +85,8 @@ pub struct PanelGeometry {
     pub ny: Vec<f64>,
     /// Panel angles (XFOIL APCALC): `atan2(Δx, −Δy)` for panel j → j+1, last entry the TE panel.
     pub apanel: Vec<f64>,
+    /// Tangents and source-stencil lengths of the panels j → j+1 (all but the TE panel).
+    pub(crate) panels: PanelLine,
     /// Arc length of the leading edge, where the contour tangent is normal to the line to the
     /// TE midpoint (XFOIL LEFIND, [`ContourSpline::leading_edge`]).
     pub s_le: f64,
@@ -188,6 +191,7 @@ impl PanelGeometry {
             nx,
             ny,
             apanel,
+            panels: PanelLine::new(x, y),
             s_le,
             chord,
             te: TrailingEdge {

@@ -19,9 +19,9 @@
 //!   row of the panel system.
 
 use faer::linalg::matmul::matmul;
-use faer::{Accum, Mat, Par};
+use faer::{Accum, Mat, MatMut, MatRef, Par};
 
-use super::influence::{airfoil_influence, wake_source_influence, Influence, Probe};
+use super::influence::{wake_source_influence, wake_source_psi, LineFrames};
 use super::system::PanelSystem;
 use super::wake::Wake;
 use crate::numerics::simd::reset_simd_state;
@@ -29,8 +29,8 @@ use crate::numerics::simd::reset_simd_state;
 /// The source influence matrix D for one airfoil and wake.
 #[derive(Clone, Debug)]
 pub struct SourceInfluence {
-    /// D, (N+NW) × (N+NW): `d[(i, j)] = ∂q_i/∂σ_j`.
-    pub d: Mat<f64>,
+    /// D, (N+NW) × (N+NW), row-major: `dij[i·(N+NW) + j] = ∂q_i/∂σ_j`.
+    pub dij: Vec<f64>,
 }
 
 impl SourceInfluence {
@@ -42,81 +42,71 @@ impl SourceInfluence {
         let nw = wake.len();
         let nt = n + nw;
         reset_simd_state();
-        let mut d = Mat::<f64>::zeros(nt, nt);
+        let mut dij = vec![0.0; nt * nt];
 
         // Airfoil rows, wake sources: −dψ/dσ_w on each node row, back-substituted.
-        let mut bw = Mat::<f64>::zeros(n + 1, nw);
+        let last_row = if g.te.sharp { n - 1 } else { n };
+        let mut psi = vec![0.0; last_row * nw];
+        wake_source_psi(
+            wake.source_line(),
+            &g.x[..last_row],
+            &g.y[..last_row],
+            &mut psi,
+        );
+        let mut bw = Mat::<f64>::from_fn(n + 1, nw, |i, j| {
+            if i < last_row {
+                -psi[j * last_row + i]
+            } else {
+                0.0
+            }
+        });
+        // Wake rows: direct source speeds, and (below) dq/dγ for the chain through the airfoil
+        // (the airfoil panels' rows were evaluated with the wake, `Wake::qn_gamma`).
         let mut psi_w = vec![0.0; nw];
         let mut qn_w = vec![0.0; nw];
-        let last_row = if g.te.sharp { n - 1 } else { n };
-        for i in 0..last_row {
-            let probe = Probe::airfoil_node(g, i);
-            wake_source_influence(
-                &wake.x,
-                &wake.y,
-                &wake.apanel,
-                &probe,
-                &mut psi_w,
-                &mut qn_w,
-            );
-            for j in 0..nw {
-                bw[(i, j)] = -psi_w[j];
-            }
-        }
-        // Wake rows: direct source speeds, and dq/dγ for the chain through the airfoil.
-        let mut c = Mat::<f64>::zeros(nw, n);
-        let mut inf = Influence::new(n);
+        let mut frames = LineFrames::default();
         for iw in 1..nw {
             let probe = wake.probe(iw);
-            airfoil_influence(g, &probe, true, &mut inf);
-            wake_source_influence(
-                &wake.x,
-                &wake.y,
-                &wake.apanel,
-                &probe,
-                &mut psi_w,
-                &mut qn_w,
-            );
-            for j in 0..n {
-                c[(iw, j)] = inf.qn_gamma[j];
-                d[(n + iw, j)] = inf.qn_source[j];
-            }
-            for j in 0..nw {
-                d[(n + iw, n + j)] = qn_w[j];
-            }
+            let line = wake.source_line();
+            wake_source_influence(line, &probe, &mut frames, &mut psi_w, &mut qn_w);
+            let row = &mut dij[(n + iw) * nt..(n + iw + 1) * nt];
+            row[..n].copy_from_slice(&wake.qn_source[iw * n..(iw + 1) * n]);
+            row[n..].copy_from_slice(&qn_w);
         }
         // Dense linear algebra last: airfoil rows of D from the factorised system.
         system.back_substitute(bw.as_mut());
+        let mut d = MatMut::from_row_major_slice_mut(&mut dij, nt, nt);
         d.as_mut()
             .submatrix_mut(0, 0, n, n)
             .copy_from(system.airfoil_source_sensitivity());
         d.as_mut()
             .submatrix_mut(0, n, n, nw)
             .copy_from(bw.as_ref().subrows(0, n));
-        let top = d.as_ref().subrows(0, n).to_owned();
-        matmul(
-            d.as_mut().subrows_mut(n, nw),
-            Accum::Add,
-            c.as_ref(),
-            top.as_ref(),
-            1.0,
-            Par::Seq,
-        );
+        let (top, bottom) = d.split_at_row_mut(n);
+        let c = MatRef::from_row_major_slice(&wake.qn_gamma, nw, n);
+        matmul(bottom, Accum::Add, c, top.as_ref(), 1.0, Par::Seq);
         reset_simd_state();
         // First wake node carries the TE speed.
-        for j in 0..nt {
-            d[(n, j)] = d[(n - 1, j)];
-        }
-        Self { d }
+        let (above, first_wake) = dij.split_at_mut(n * nt);
+        first_wake[..nt].copy_from_slice(&above[(n - 1) * nt..]);
+        Self { dij }
+    }
+
+    /// D as a matrix view.
+    #[cfg(test)]
+    pub fn d(&self) -> MatRef<'_, f64> {
+        let nt = (self.dij.len() as f64).sqrt().round() as usize;
+        MatRef::from_row_major_slice(&self.dij, nt, nt)
     }
 
     /// D·σ: speed change at every node for sources `sigma` (length N + NW).
     #[cfg(test)]
     pub fn apply(&self, sigma: &[f64]) -> Vec<f64> {
-        let nt = self.d.nrows();
+        let d = self.d();
+        let nt = d.nrows();
         assert_eq!(sigma.len(), nt, "one source per airfoil and wake node");
         (0..nt)
-            .map(|i| (0..nt).map(|j| self.d[(i, j)] * sigma[j]).sum())
+            .map(|i| (0..nt).map(|j| d[(i, j)] * sigma[j]).sum())
             .collect()
     }
 }
@@ -126,6 +116,7 @@ impl SourceInfluence {
 pub(crate) mod direct {
     use super::*;
     use crate::inviscid::influence::direct::{airfoil_source_value, wake_source_value};
+    use crate::inviscid::influence::{airfoil_influence, Influence, Probe};
     use crate::numerics::dense::dot;
 
     /// Tangential speeds at all airfoil and wake nodes for `alpha_deg` with nodal sources

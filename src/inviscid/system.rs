@@ -51,7 +51,7 @@ pub struct PanelSystem {
     /// Sharp-TE bisector control point (x, y, cos, sin of the bisector angle), if sharp.
     bisector: Option<(f64, f64, f64, f64)>,
     /// dγ_i/dσ_j for the airfoil sources, N × N, computed on first use (XFOIL DIJ airfoil
-    /// block, cached like XFOIL's LADIJ flag).
+    /// block, cached like XFOIL's LADIJ flag), stored transposed.
     airfoil_dij: OnceLock<Mat<f64>>,
 }
 
@@ -333,9 +333,12 @@ impl PanelSystem {
                 let mut b = self.source_rhs.clone();
                 self.lu.solve_in_place(b.as_mut());
                 reset_simd_state();
-                b.subrows(0, n).to_owned()
+                // Kept transposed: the view below is then row-major, as the influence
+                // matrices it is copied into.
+                b.subrows(0, n).transpose().to_owned()
             })
             .as_ref()
+            .transpose()
     }
 
     /// System right-hand side of the airfoil sources: entry (i, j) is −dψ_i/dm_j (−d(q_bis)/dm_j

@@ -3,7 +3,10 @@
 //! xutils.f SETEXP), and the inviscid wake speeds of the unit solutions (XFOIL QWCALC).
 
 use super::error::InviscidError;
-use super::influence::{airfoil_vortex_gradient, Probe};
+use super::influence::{
+    airfoil_influence_and_gradient, airfoil_vortex_gradient, Influence, PanelLine, Probe,
+    SourceLine,
+};
 use super::system::PanelSystem;
 use crate::numerics::dense::dot;
 use crate::numerics::simd::reset_simd_state;
@@ -55,6 +58,14 @@ pub struct Wake {
     /// Inviscid tangential speed at the wake nodes for the α = 0° and α = 90° unit solutions
     /// (XFOIL QINVU(:,1..2) on the wake; node 0 copies the airfoil's last node).
     pub qinv_unit: [Vec<f64>; 2],
+    /// Tangents and source-stencil lengths of the wake panels.
+    pub(crate) panels: PanelLine,
+    /// Row-major NW × N: the normal speed d(∂ψ/∂n)/dγ_j at each wake node (with its normal)
+    /// per airfoil vorticity (XFOIL DQDG on the wake; row 0 is not evaluated and stays zero).
+    pub(crate) qn_gamma: Vec<f64>,
+    /// Row-major NW × N: d(∂ψ/∂n)/dm_j at each wake node per airfoil mass defect (XFOIL
+    /// DQDM on the wake; row 0 zero).
+    pub(crate) qn_source: Vec<f64>,
 }
 
 impl Wake {
@@ -109,13 +120,17 @@ impl Wake {
         x[0] = g.te.x - params.te_offset * ny[0];
         y[0] = g.te.y + params.te_offset * nx[0];
 
-        // One gradient evaluation per node gives the streamline direction for the next node
-        // and the unit-solution tangential speeds (QWCALC) at this node.
+        // One evaluation of the airfoil panels per node gives the streamline direction for
+        // the next node, the unit-solution tangential speeds (QWCALC) at this node and, from
+        // node 1 on, the node's influence rows (the wake rows of QDCALC).
         let mut qinv_unit = [vec![0.0; nw], vec![0.0; nw]];
         qinv_unit[0][0] = system.gamma_unit(0)[n - 1];
         qinv_unit[1][0] = system.gamma_unit(1)[n - 1];
+        let mut qn_gamma = vec![0.0; nw * n];
+        let mut qn_source = vec![0.0; nw * n];
         let mut gx = vec![0.0; n];
         let mut gy = vec![0.0; n];
+        let mut inf = Influence::new(n);
         for i in 0..nw {
             if i > 0 {
                 let ds = spacing[i] - spacing[i - 1];
@@ -123,7 +138,13 @@ impl Wake {
                 y[i] = y[i - 1] + ds * nx[i];
             }
             let probe = Probe::wake_node(i, (x[i], y[i]), (nx[i], ny[i]));
-            airfoil_vortex_gradient(g, &probe, &mut gx, &mut gy);
+            if i == 0 {
+                airfoil_vortex_gradient(g, &probe, &mut inf, &mut gx, &mut gy);
+            } else {
+                airfoil_influence_and_gradient(g, &probe, &mut inf, &mut gx, &mut gy);
+                qn_gamma[i * n..(i + 1) * n].copy_from_slice(&inf.qn_gamma);
+                qn_source[i * n..(i + 1) * n].copy_from_slice(&inf.qn_source);
+            }
             if i > 0 {
                 for (k, q) in qinv_unit.iter_mut().enumerate() {
                     let gu = system.gamma_unit(k);
@@ -146,6 +167,7 @@ impl Wake {
             apanel[i] = grad[1].atan2(grad[0]);
         }
 
+        let panels = PanelLine::new(&x, &y);
         Ok(Self {
             x,
             y,
@@ -153,12 +175,25 @@ impl Wake {
             ny,
             apanel,
             qinv_unit,
+            panels,
+            qn_gamma,
+            qn_source,
         })
     }
 
     /// Wake node `i` as a field point of the influence routines.
     pub fn probe(&self, i: usize) -> Probe {
         Probe::wake_node(i, (self.x[i], self.y[i]), (self.nx[i], self.ny[i]))
+    }
+
+    /// The wake as a line of source panels (XFOIL PSWLIN).
+    pub fn source_line(&self) -> SourceLine<'_> {
+        SourceLine {
+            x: &self.x,
+            y: &self.y,
+            apanel: &self.apanel,
+            panels: &self.panels,
+        }
     }
 
     /// Number of wake nodes.

@@ -6,10 +6,12 @@
 //! * [`dense`] — matrix–vector and dot products with a fixed summation order.
 //! * [`small_dense`] — direct solves and inverses of 3×3 and 4×4 systems kept in registers.
 //! * [`roots`] — one-dimensional root finding on a bracket.
+//! * [`elementary`] — branch-free ln and atan2 that vectorise inside a kernel loop.
 //! * [`simd`] — AVX2 dispatch of a kernel and the vector-register hygiene around faer calls.
 
 pub(crate) mod dense;
 pub(crate) mod dual;
+pub(crate) mod elementary;
 pub(crate) mod roots;
 pub(crate) mod simd;
 pub(crate) mod small_dense;

@@ -23,7 +23,8 @@
 
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::lu::partial_pivoting::{factor, solve};
-use faer::{Mat, MatMut, Par};
+use faer::perm::PermRef;
+use faer::{Mat, MatMut, MatRef, Par};
 
 use super::error::ViscousError;
 use crate::numerics::dense::dot4;
@@ -126,6 +127,20 @@ impl<'a> BlockSystem<'a> {
             .flatten()
     }
 
+    /// r_k − Σ_p B_p y_p: station k's right-hand side with its upstream stations' part of
+    /// y = L⁻¹r eliminated (then y_k = A_k⁻¹ times it).
+    #[inline(always)]
+    fn upstream_eliminated(&self, k: usize, r_k: [f64; 3], y: &[[f64; 3]]) -> [f64; 3] {
+        let mut t = r_k;
+        for (p, b) in self.upstreams(k) {
+            let yp = y[*p];
+            for (r, tr) in t.iter_mut().enumerate() {
+                *tr -= b[r][0] * yp[0] + b[r][1] * yp[1] + b[r][2] * yp[2];
+            }
+        }
+        t
+    }
+
     /// Expands the system into a dense 3n×3n matrix (for tests).
     #[cfg(test)]
     pub fn to_dense(&self) -> Mat<f64> {
@@ -152,7 +167,8 @@ impl<'a> BlockSystem<'a> {
     /// Solves the system; returns w_k = (δs_k, δθ_k, δm_k) for every station.
     #[cfg(test)]
     pub fn solve(&self) -> Result<Vec<[f64; 3]>, ViscousError> {
-        self.clone().solve_with(&mut Vec::new())
+        let mut schur = Vec::new();
+        self.clone().factor_and_solve(&mut schur).map(|(_, w)| w)
     }
 
     /// Forward substitution y = L⁻¹ r, returned, and the mass rows of Y = L⁻¹ V, written into
@@ -202,16 +218,12 @@ impl<'a> BlockSystem<'a> {
             let a = &inv[k];
             // Y_k = Σ_j (A⁻¹W_k)_j G_j − Σ_p (A⁻¹B_p) Y_p: every input row read once and every
             // output row written once, in blocks of LANES columns.
-            let mut t = self.rhs[k];
+            let t = self.upstream_eliminated(k, self.rhs[k], &y);
             let (done, rest) = mass_rows.split_at_mut(k * n);
             let out2 = &mut rest[..n];
             let mut ups: [UpstreamRows<'_>; 2] = [(&[], &[], &[], [[0.0; 3]; 3]); 2];
             let mut n_ups = 0;
             for (p, b) in self.upstreams(k) {
-                let yp = y[*p];
-                for (r, tr) in t.iter_mut().enumerate() {
-                    *tr -= b[r][0] * yp[0] + b[r][1] * yp[1] + b[r][2] * yp[2];
-                }
                 let rows01 = match kept_slot[*p] {
                     Some(slot) if *p + 1 != k => &kept[2 * n * slot..2 * n * (slot + 1)],
                     _ => &prev[..],
@@ -268,10 +280,15 @@ impl<'a> BlockSystem<'a> {
         y
     }
 
-    /// Solves the system like [`solve`](Self::solve), consuming it, with `schur` as the memory
-    /// of the n × n Schur complement (any contents on entry, overwritten): a Newton loop passes
-    /// the same buffer every iteration, which is then still in cache and needs no zero-filling.
-    pub fn solve_with(self, schur: &mut Vec<f64>) -> Result<Vec<[f64; 3]>, ViscousError> {
+    /// Factors the system (block inverses, LU of the Schur complement) and solves it for its
+    /// own right-hand side; the factored system then solves further right-hand sides at O(n²)
+    /// each ([`FactoredSystem::solve`]). `schur` is the memory of the n × n Schur complement
+    /// (any contents on entry, overwritten): a Newton loop passes the same buffer every
+    /// iteration, which is then still in cache and needs no zero-filling.
+    pub fn factor_and_solve(
+        self,
+        schur: &mut Vec<f64>,
+    ) -> Result<(FactoredSystem<'_, 'a>, Vec<[f64; 3]>), ViscousError> {
         let n = self.n;
         let inv: Vec<Block3> = self
             .diag
@@ -281,42 +298,109 @@ impl<'a> BlockSystem<'a> {
             .collect::<Result<_, _>>()?;
 
         let y = self.forward_substitute(&inv, schur);
-        let mass_rows = schur;
 
         // Schur complement on the mass unknowns: (I + P Y) m = P y. The mass rows of Y, read
         // as columns, are Sᵀ in column-major order: Sᵀ is factored in place (no copy) and the
         // transposed system solved.
-        let mut m = Mat::<f64>::from_fn(n, 1, |i, _| y[i][2]);
         let mut perm = vec![0usize; n];
         let mut perm_inv = vec![0usize; n];
-        let req = factor::lu_in_place_scratch::<usize, f64>(n, n, Par::Seq, Default::default()).or(
-            solve::solve_transpose_in_place_scratch::<usize, f64>(n, 1, Par::Seq),
-        );
-        let mut buf = MemBuffer::new(req);
-        let stack = MemStack::new(&mut buf);
         {
-            let mut st = MatMut::from_column_major_slice_mut(mass_rows, n, n);
+            let mut buf = MemBuffer::new(factor::lu_in_place_scratch::<usize, f64>(
+                n,
+                n,
+                Par::Seq,
+                Default::default(),
+            ));
+            let mut st = MatMut::from_column_major_slice_mut(schur, n, n);
             for i in 0..n {
                 st[(i, i)] += 1.0;
             }
             // Sequential LU: the solver runs inside parallel sweeps, so no nested parallelism.
-            let (_, p) = factor::lu_in_place(
+            factor::lu_in_place(
                 st.as_mut(),
                 &mut perm,
                 &mut perm_inv,
                 Par::Seq,
-                stack,
+                MemStack::new(&mut buf),
                 Default::default(),
             );
-            solve::solve_transpose_in_place(
-                st.as_ref(),
-                st.as_ref(),
-                p,
-                m.as_mut(),
-                Par::Seq,
-                stack,
-            );
         }
+        let factored = FactoredSystem {
+            system: self,
+            inv,
+            schur_lu: schur,
+            perm,
+            perm_inv,
+        };
+        let w = factored.back_substitute(&factored.system.rhs, &y)?;
+        Ok((factored, w))
+    }
+}
+
+/// A factored [`BlockSystem`]: its block inverses and the LU factors of its Schur complement,
+/// which solve further right-hand sides without a new factorisation.
+pub struct FactoredSystem<'s, 'a> {
+    system: BlockSystem<'a>,
+    /// Inverses of the diagonal blocks A_k.
+    inv: Vec<Block3>,
+    /// LU factors of Sᵀ (n × n, column-major) and the row permutation.
+    schur_lu: &'s [f64],
+    perm: Vec<usize>,
+    perm_inv: Vec<usize>,
+}
+
+impl FactoredSystem<'_, '_> {
+    /// The residual change Σ_j (∂R/∂Ue_j)·due_j of every equation for an edge-speed change
+    /// `due` at fixed mass defects (the coefficients of the mass columns V, before G): the
+    /// right-hand side a change of the inviscid edge speed adds (XFOIL's DUE terms).
+    pub fn edge_speed_terms(&self, due: &[f64]) -> Vec<[f64; 3]> {
+        (0..self.system.n)
+            .map(|k| {
+                std::array::from_fn(|r| {
+                    self.system.mass_terms[3 * k + r]
+                        .terms()
+                        .map(|(j, c)| c * due[j])
+                        .sum()
+                })
+            })
+            .collect()
+    }
+
+    /// Solves the system with the right-hand side `rhs` (one [r₀, r₁, r₂] per station).
+    pub fn solve(&self, rhs: &[[f64; 3]]) -> Result<Vec<[f64; 3]>, ViscousError> {
+        let sys = &self.system;
+        let mut y = vec![[0.0; 3]; sys.n];
+        for k in 0..sys.n {
+            y[k] = mul3(&self.inv[k], &sys.upstream_eliminated(k, rhs[k], &y));
+        }
+        self.back_substitute(rhs, &y)
+    }
+
+    /// From the right-hand side r and y = L⁻¹r: the mass unknowns m from the Schur system,
+    /// then w = L⁻¹(r − V m).
+    fn back_substitute(
+        &self,
+        rhs: &[[f64; 3]],
+        y: &[[f64; 3]],
+    ) -> Result<Vec<[f64; 3]>, ViscousError> {
+        let sys = &self.system;
+        let n = sys.n;
+        let mut m = Mat::<f64>::from_fn(n, 1, |i, _| y[i][2]);
+        let mut buf = MemBuffer::new(solve::solve_transpose_in_place_scratch::<usize, f64>(
+            n,
+            1,
+            Par::Seq,
+        ));
+        let lu = MatRef::from_column_major_slice(self.schur_lu, n, n);
+        let perm = PermRef::new_checked(&self.perm, &self.perm_inv, n);
+        solve::solve_transpose_in_place(
+            lu,
+            lu,
+            perm,
+            m.as_mut(),
+            Par::Seq,
+            MemStack::new(&mut buf),
+        );
         if let Some(i) = (0..n).find(|&i| !m[(i, 0)].is_finite()) {
             return Err(ViscousError::SingularSystem { station: i });
         }
@@ -324,27 +408,27 @@ impl<'a> BlockSystem<'a> {
         // Back substitution w = L⁻¹(r − V m), block by block, with V m formed from G m; the
         // mass unknowns are m itself.
         let mdense: Vec<f64> = (0..n).map(|j| m[(j, 0)]).collect();
-        let gm: Vec<f64> = self
+        let gm: Vec<f64> = sys
             .mass_influence
             .chunks_exact(n)
             .map(|row| dot4(row, &mdense))
             .collect();
         let mut w = vec![[0.0; 3]; n];
         for k in 0..n {
-            let mut t = self.rhs[k];
+            let mut t = rhs[k];
             for (r, tr) in t.iter_mut().enumerate() {
-                *tr -= self.mass_terms[3 * k + r]
+                *tr -= sys.mass_terms[3 * k + r]
                     .terms()
                     .map(|(j, c)| c * gm[j])
                     .sum::<f64>();
             }
-            for (p, b) in self.upstreams(k) {
+            for (p, b) in sys.upstreams(k) {
                 let t_p = mul3(b, &w[*p]);
                 for (tr, d) in t.iter_mut().zip(t_p) {
                     *tr -= d;
                 }
             }
-            w[k] = mul3(&inv[k], &t);
+            w[k] = mul3(&self.inv[k], &t);
             w[k][2] = mdense[k];
         }
         Ok(w)

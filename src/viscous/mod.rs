@@ -39,6 +39,7 @@ mod solution;
 mod solver;
 mod state;
 mod stations;
+mod tangent;
 mod update;
 
 pub use error::ViscousError;
@@ -46,5 +47,5 @@ pub use march::MarchParams;
 pub use panel_model::{PanelModel, SharedPanels};
 pub use params::ViscousParams;
 pub use solution::{BlStation, ViscousSolution};
-pub use solver::{ViscousSolver, WarmStart};
+pub use solver::{SolverWork, ViscousSolver, WarmStart};
 pub use update::UpdateLimits;

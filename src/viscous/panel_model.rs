@@ -50,19 +50,12 @@ impl PanelModel {
             q.extend_from_slice(&wake.qinv_unit[k]);
             q
         });
-        let nt = system.n_nodes() + wake.x.len();
-        let mut dij = vec![0.0; nt * nt];
-        for (i, row) in dij.chunks_mut(nt).enumerate() {
-            for (j, v) in row.iter_mut().enumerate() {
-                *v = d.d[(i, j)];
-            }
-        }
         Ok(Self {
             airfoil: system.geometry().clone(),
             wake_x: wake.x,
             wake_y: wake.y,
             q_unit,
-            dij,
+            dij: d.dij,
         })
     }
 

@@ -51,6 +51,13 @@ pub struct ViscousParams {
     /// come from a near-singular system (stagnation point almost on a node); the next
     /// iteration then goes without the stagnation-point terms of ξ.
     pub exploded_step: f64,
+    /// A warm start begins from the previous converged state moved along its tangent to the
+    /// new α (an Euler predictor, see `viscous::tangent`; not in XFOIL) instead of from that
+    /// state itself.
+    pub tangent_predictor: bool,
+    /// Newton iteration cap of an attempt from a predicted state; one that has not converged
+    /// by then is repeated from the converged state itself (with `max_iterations`).
+    pub predicted_iterations: u32,
 }
 
 impl Default for ViscousParams {
@@ -69,6 +76,8 @@ impl Default for ViscousParams {
             carry_corrections_below: 1.0,
             min_pressure_drag: -2e-4,
             exploded_step: 1e6,
+            tangent_predictor: true,
+            predicted_iterations: 30,
         }
     }
 }

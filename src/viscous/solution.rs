@@ -6,6 +6,7 @@ use super::forces::{friction_drag, lift_and_moment, transition_x};
 use super::panel_model::PanelModel;
 use super::state::BlState;
 use super::stations::{StationLayout, Surface};
+use super::tangent::Tangent;
 use crate::boundary_layer::{BlModel, Regime};
 use crate::section::PolarPoint;
 
@@ -61,6 +62,10 @@ pub(super) struct Attempt {
     pub residual: f64,
     /// ξ of transition on the upper and lower surface.
     pub transition: [Option<f64>; 2],
+    /// Per surface, the turbulent fraction of the last transition interval.
+    pub turbulent_fraction: [Option<f64>; 2],
+    /// Derivative of the converged state along α (None if not converged).
+    pub tangent: Option<Tangent>,
 }
 
 /// Integrated coefficients and distributions of an attempt on `panels` with the boundary layer
@@ -81,6 +86,14 @@ pub(super) fn solution(
     }
     let kt = &bl.flow.karman_tsien;
     let (cl, cm) = lift_and_moment(&g.x, &g.y, &q, alpha_deg, kt);
+    // The closures of every station, once for the distributions and the friction drag.
+    let props: Vec<_> = (0..a.layout.len())
+        .map(|k| {
+            let v = a.state.vars(&a.layout, k);
+            bl.properties(&v, a.state.regime(&a.layout, k))
+                .unwrap_or_default()
+        })
+        .collect();
     let dist = |surface: Surface| -> Vec<BlStation> {
         a.layout
             .range(surface)
@@ -88,7 +101,7 @@ pub(super) fn solution(
                 let st = a.layout.stations[k];
                 let v = a.state.vars(&a.layout, k);
                 let regime = a.state.regime(&a.layout, k);
-                let p = bl.properties(&v, regime).unwrap_or_default();
+                let p = props[k];
                 let s = a.state.s[k];
                 let (x, y) = panels.node(st.node);
                 BlStation {
@@ -122,14 +135,10 @@ pub(super) fn solution(
         let mut tau = Vec::with_capacity(range.len());
         for k in range {
             let st = a.layout.stations[k];
-            let v = a.state.vars(&a.layout, k);
-            let p = bl
-                .properties(&v, a.state.regime(&a.layout, k))
-                .unwrap_or_default();
             xs.push(g.x[st.node]);
             ys.push(g.y[st.node]);
             xis.push(st.xi);
-            tau.push(p.tau_wall);
+            tau.push(props[k].tau_wall);
         }
         cdf += friction_drag(&xs, &ys, &tau, alpha_deg);
         xtr[side] = transition_x(&xis, &xs, a.transition[side]);

@@ -17,7 +17,10 @@ use super::remarch::remarch_mixed;
 use super::solution::{failed_solution, solution, Attempt, ViscousSolution};
 use super::state::BlState;
 use super::stations::{StationLayout, Surface};
-use super::update::apply_update;
+use super::tangent::Tangent;
+#[cfg(test)]
+use super::update::UpdateLimits;
+use super::update::{apply_update, UpdateResult};
 
 /// Opaque snapshot of a solver's warm-start state (see [`ViscousSolver::warm_start`]).
 #[derive(Clone, Debug)]
@@ -28,6 +31,13 @@ pub struct WarmStart(Option<WarmState>);
 struct WarmState {
     layout: StationLayout,
     state: BlState,
+    /// Its derivative along α, for the predicted start of the next point.
+    tangent: Option<Tangent>,
+    /// Per surface, the turbulent fraction of the transition interval of the converged state
+    /// ([`super::newton::TransitionPoint::turbulent_fraction`]).
+    turbulent_fraction: [Option<f64>; 2],
+    /// The predictor step that moved the state from the converged one (None: not moved).
+    predicted: Option<UpdateResult>,
 }
 
 /// Where the inviscid data come from.
@@ -55,6 +65,18 @@ pub struct ViscousSolver {
     /// α of the last fresh-start attempt that failed. A fresh start depends on α alone, so
     /// it is not repeated at that α (sweep recoveries revisit a failed α several times).
     fresh_failed_at: Option<f64>,
+    /// Work done so far.
+    work: SolverWork,
+}
+
+/// The work a solver has done since it was built: what the cost of a sweep is counted in
+/// (the cost model of `benches/`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SolverWork {
+    /// Newton attempts: from a converged neighbour (directly or predicted) or a fresh march.
+    pub attempts: u64,
+    /// Global Newton iterations of all attempts.
+    pub newton_iterations: u64,
 }
 
 impl ViscousSolver {
@@ -74,6 +96,7 @@ impl ViscousSolver {
             bl,
             warm: None,
             fresh_failed_at: None,
+            work: SolverWork::default(),
         })
     }
 
@@ -101,7 +124,13 @@ impl ViscousSolver {
             bl,
             warm: None,
             fresh_failed_at: None,
+            work: SolverWork::default(),
         })
+    }
+
+    /// The work done since the solver was built.
+    pub fn work(&self) -> SolverWork {
+        self.work
     }
 
     /// The parameters of this solver.
@@ -183,8 +212,29 @@ impl ViscousSolver {
         if fresh && self.fresh_failed_at == Some(alpha_deg) {
             return failed_solution(alpha_deg, 0);
         }
-        let result = self.attempt(alpha_deg, warm);
-        if fresh && !matches!(&result, Ok(a) if a.converged) {
+        let converged = |r: &Result<Attempt, ViscousError>| matches!(r, Ok(a) if a.converged);
+        let (max, cap) = (self.params.max_iterations, self.params.predicted_iterations);
+        let mut iterations = 0;
+        let result = match warm {
+            // From the predicted state first; where that does not converge within its shorter
+            // cap, from the converged state itself, as without a predictor.
+            Some(w) => match self.predicted(&w, alpha_deg) {
+                Some(p) => {
+                    let r = self.attempt(alpha_deg, Some(p), cap, &mut iterations);
+                    if converged(&r) {
+                        r
+                    } else {
+                        self.work.attempts += 1;
+                        self.attempt(alpha_deg, Some(w), max, &mut iterations)
+                    }
+                }
+                None => self.attempt(alpha_deg, Some(w), max, &mut iterations),
+            },
+            None => self.attempt(alpha_deg, None, max, &mut iterations),
+        };
+        self.work.attempts += 1;
+        self.work.newton_iterations += u64::from(iterations);
+        if fresh && !converged(&result) {
             self.fresh_failed_at = Some(alpha_deg);
         }
         match result {
@@ -195,6 +245,9 @@ impl ViscousSolver {
                     self.warm = Some(WarmState {
                         layout: a.layout,
                         state: a.state,
+                        tangent: a.tangent,
+                        turbulent_fraction: a.turbulent_fraction,
+                        predicted: None,
                     });
                     sol
                 } else {
@@ -211,11 +264,38 @@ impl ViscousSolver {
         }
     }
 
+    /// The warm state moved along its tangent to `alpha_deg` ([`Tangent::predict`]), if it has
+    /// one and the step is usable.
+    fn predicted(&self, warm: &WarmState, alpha_deg: f64) -> Option<WarmState> {
+        let tangent = warm.tangent.as_ref()?;
+        let mut state = warm.state.clone();
+        let limits = &self.params.limits;
+        let step = tangent
+            .predict(&self.bl, &warm.layout, &mut state, alpha_deg, limits)
+            .ok()?;
+        Some(WarmState {
+            layout: warm.layout.clone(),
+            state,
+            tangent: None,
+            turbulent_fraction: warm.turbulent_fraction,
+            predicted: Some(step),
+        })
+    }
+
     /// One Newton attempt from a warm state or a fresh march.
-    fn attempt(&self, alpha_deg: f64, warm: Option<WarmState>) -> Result<Attempt, ViscousError> {
+    /// At most `max_iterations` Newton iterations, counted in `iterations`.
+    fn attempt(
+        &self,
+        alpha_deg: f64,
+        warm: Option<WarmState>,
+        max_iterations: u32,
+        iterations: &mut u32,
+    ) -> Result<Attempt, ViscousError> {
         let n_af = self.panels.n_airfoil();
         let q_inv = self.panels.speeds(alpha_deg);
         let warm_started = warm.is_some();
+        let predicted = warm.as_ref().and_then(|w| w.predicted);
+        let mut turbulent_fraction = warm.as_ref().map_or([None, None], |w| w.turbulent_fraction);
         // The stagnation point of a warm start is where the warm state's viscous speed changes
         // sign (XFOIL VISCAL: GAMQV then STFIND), so that the remapped state and its edge speeds
         // agree; the Newton iterations then move it with the solution (STMOVE below).
@@ -231,7 +311,13 @@ impl ViscousSolver {
             Some(w) => {
                 let map = layout.map_from(&w.layout);
                 let mut s = w.state.remap(&map, &w.layout, &layout);
-                fix_crossed(&mut s, &map, &w.layout, &layout, &ue_inv);
+                fix_crossed(
+                    &mut s,
+                    &map,
+                    &w.layout,
+                    &layout,
+                    &layout.edge_speed(&q_start),
+                );
                 s
             }
             None => march(
@@ -243,13 +329,15 @@ impl ViscousSolver {
                 &self.params.march,
             ),
         };
-        let mut residual = f64::INFINITY;
+        // A predicted start continues like the iteration after the step that moved it.
+        let mut residual = predicted.map_or(f64::INFINITY, |p| p.rms_change);
+        let mut stagnation_terms =
+            !predicted.is_some_and(|p| p.max_change >= self.params.exploded_step);
         // Memory of the n × n Schur complement, reused by every iteration's solve.
         let mut schur = Vec::new();
-        let mut stagnation_terms = true;
         let mut transition = [None, None];
-        let mut turbulent_fraction = [None, None];
-        for iter in 1..=self.params.max_iterations {
+        for iter in 1..=max_iterations {
+            *iterations += 1;
             // Mixed-mode re-march (XFOIL MRCHDU) while the iteration is still far from
             // converged; close to convergence the Newton steps alone are quadratic.
             let remarch = residual > self.params.remarch_below;
@@ -287,7 +375,7 @@ impl ViscousSolver {
             turbulent_fraction = asm
                 .transition
                 .map(|t| t.map(|t| t.turbulent_fraction(&layout)));
-            let w = asm.system.solve_with(&mut schur)?;
+            let (system, w) = asm.system.factor_and_solve(&mut schur)?;
             let upd = apply_update(
                 &self.bl,
                 &coupling,
@@ -297,6 +385,14 @@ impl ViscousSolver {
                 &self.params.limits,
             )?;
             residual = upd.rms_change;
+            // The converged state's tangent along α, from this iteration's factored matrix.
+            let tangent = (residual < self.params.tolerance && self.params.tangent_predictor)
+                .then(|| {
+                    let ue_unit = self.panels.q_unit.each_ref().map(|q| layout.edge_speed(q));
+                    Tangent::new(&system, &ue_unit, &dv, alpha_deg).ok()
+                })
+                .flatten();
+            drop(system);
             // A step whose relative changes reach 1e6 came from a near-singular system (the
             // stagnation point almost on a node, ξ → 0 at the first station): the next
             // iteration goes without the stagnation-point terms, whose linearisation is then
@@ -304,8 +400,11 @@ impl ViscousSolver {
             stagnation_terms = upd.max_change < self.params.exploded_step;
             // Move the stagnation point with the viscous surface speed (XFOIL STMOVE).
             let q_nodes = viscous_node_speed(&layout, &state, &q_inv);
+            let mut tangent = tangent;
             if let Ok(new_layout) = StationLayout::new(&self.panels, &q_nodes[..n_af]) {
                 if new_layout.stagnation.ist != layout.stagnation.ist {
+                    // The tangent belongs to the old stations.
+                    tangent = None;
                     let map = new_layout.map_from(&layout);
                     let mut s = state.remap(&map, &layout, &new_layout);
                     let ue_new = new_layout.edge_speed(&q_nodes);
@@ -325,6 +424,8 @@ impl ViscousSolver {
                     iterations: iter,
                     residual,
                     transition,
+                    turbulent_fraction,
+                    tangent,
                 });
             }
         }
@@ -332,9 +433,11 @@ impl ViscousSolver {
             layout,
             state,
             converged: false,
-            iterations: self.params.max_iterations,
+            iterations: max_iterations,
             residual,
             transition,
+            turbulent_fraction,
+            tangent: None,
         })
     }
 }
@@ -366,3 +469,6 @@ fn fix_crossed(
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -6,7 +6,7 @@
 use super::error::ViscousError;
 use super::newton::Coupling;
 use super::state::BlState;
-use super::stations::Surface;
+use super::stations::{StationLayout, Surface};
 use crate::boundary_layer::BlModel;
 use crate::numerics::dense::mat_vec;
 
@@ -83,14 +83,32 @@ pub fn apply_update(
     mismatch: &[f64],
     limits: &UpdateLimits,
 ) -> Result<UpdateResult, ViscousError> {
-    let n = state.len();
+    let due = edge_speed_change(coupling.dv, w, mismatch);
+    apply_step(model, coupling.layout, state, w, &due, limits)
+}
+
+/// Edge-speed change of a step `w` = (δs, δθ, δm): δUe = e + Dv·δm, with e the change the
+/// step makes at fixed mass defects (the mismatch of a Newton step).
+pub fn edge_speed_change(dv: &[f64], w: &[[f64; 3]], e: &[f64]) -> Vec<f64> {
     let dm: Vec<f64> = w.iter().map(|x| x[2]).collect();
-    let layout = coupling.layout;
-    // δUe = e + D·δm.
-    let mut due = mat_vec(coupling.dv, &dm);
-    for (d, e) in due.iter_mut().zip(mismatch) {
+    let mut due = mat_vec(dv, &dm);
+    for (d, e) in due.iter_mut().zip(e) {
         *d += e;
     }
+    due
+}
+
+/// Applies the step `w` = (δs, δθ, δm) with the edge-speed change `due` per station, under
+/// XFOIL's relaxation and clipping (UPDATE, DSLIM).
+pub fn apply_step(
+    model: &BlModel,
+    layout: &StationLayout,
+    state: &mut BlState,
+    w: &[[f64; 3]],
+    due: &[f64],
+    limits: &UpdateLimits,
+) -> Result<UpdateResult, ViscousError> {
+    let n = state.len();
     let mut rlx: f64 = 1.0;
     let mut sumsq = 0.0;
     let mut max_change: f64 = 0.0;

@@ -54,16 +54,16 @@ fn check_columns(name: &str, alpha: f64) {
         minus[j] -= h;
         let qp = speeds_with_sources(&sys, &wake, alpha, &plus);
         let qm = speeds_with_sources(&sys, &wake, alpha, &minus);
-        let scale = (0..nt).map(|i| dij.d[(i, j)].abs()).fold(0.0, f64::max);
+        let scale = (0..nt).map(|i| dij.d()[(i, j)].abs()).fold(0.0, f64::max);
         assert!(scale > 0.0, "{name}: column {j} of D is zero");
         for i in 0..nt {
             let fd = (qp[i] - qm[i]) / (2.0 * h);
-            let err = (fd - dij.d[(i, j)]).abs() / scale;
+            let err = (fd - dij.d()[(i, j)]).abs() / scale;
             worst = worst.max(err);
             assert!(
                 err < 1.0e-7,
                 "{name}: D[{i},{j}] = {} but finite difference gives {fd}",
-                dij.d[(i, j)]
+                dij.d()[(i, j)]
             );
         }
     }
@@ -86,7 +86,7 @@ fn linearisation_is_exact() {
     let sys = PanelSystem::new(&xfoil_nodes("naca2412")).unwrap();
     let wake = Wake::new(&sys, 2.0).unwrap();
     let dij = SourceInfluence::new(&sys, &wake);
-    let sigma: Vec<f64> = pseudo_random(dij.d.nrows(), 11)
+    let sigma: Vec<f64> = pseudo_random(dij.d().nrows(), 11)
         .into_iter()
         .map(|v| 5.0e-3 * v)
         .collect();
@@ -120,7 +120,7 @@ fn displacement_accelerates_the_flow() {
     let ist = (0..n - 1)
         .find(|&i| gamma[i] >= 0.0 && gamma[i + 1] < 0.0)
         .unwrap();
-    let mut sigma = vec![0.0; dij.d.nrows()];
+    let mut sigma = vec![0.0; dij.d().nrows()];
     for i in 0..n {
         let dstar = 0.004 * g.x[i].max(0.0).powf(0.8);
         let m = gamma[i].abs() * dstar;

@@ -79,6 +79,44 @@ fn structured_solve_matches_dense_lu() {
     }
 }
 
+/// The factored system solves a further right-hand side like a dense LU, and the edge-speed
+/// terms are the mass-term coefficients applied to an edge-speed change.
+#[test]
+fn factored_system_solves_further_right_hand_sides() {
+    let (nu, nl, nw, seed) = (30, 35, 12, 3);
+    let n = nu + nl + nw;
+    let influence = random_influence(n, seed);
+    let sys = random_system(nu, nl, nw, seed, &influence);
+    let a = sys.to_dense();
+    let mut schur = Vec::new();
+    let (factored, _) = sys.clone().factor_and_solve(&mut schur).expect("solvable");
+    let mut g = Lcg::new(99);
+    let due: Vec<f64> = (0..n).map(|_| g.symmetric()).collect();
+    let terms = factored.edge_speed_terms(&due);
+    for (k, row) in terms.iter().enumerate() {
+        for (r, &t) in row.iter().enumerate() {
+            let direct: f64 = sys.mass_terms[3 * k + r]
+                .terms()
+                .map(|(j, c)| c * due[j])
+                .sum();
+            assert_eq!(t, direct);
+        }
+    }
+    let w = factored.solve(&terms).expect("solvable");
+    let mut b = Mat::<f64>::from_fn(3 * n, 1, |i, _| terms[i / 3][i % 3]);
+    a.partial_piv_lu().solve_in_place(b.as_mut());
+    let max_val = (0..3 * n).map(|i| b[(i, 0)].abs()).fold(1.0, f64::max);
+    for k in 0..n {
+        for r in 0..3 {
+            let err = (w[k][r] - b[(3 * k + r, 0)]).abs();
+            assert!(
+                err <= 1e-10 * max_val,
+                "station {k}, row {r}: error {err:e}"
+            );
+        }
+    }
+}
+
 #[test]
 fn mass_terms_merge_rows_and_expand_to_v() {
     let influence = [1.0, 2.0, 3.0, 4.0];
