@@ -8,7 +8,7 @@
 //! ```text
 //! geometry → inviscid → boundary_layer → viscous → polar → table → rotor → report
 //!                                                              ↘ plot ↗
-//! leaf modules every layer may use: section, compressibility, output, diagnostics
+//! leaf modules every layer may use: section, compressibility, output, diagnostics, inputs
 //! ```
 //!
 //! * [`geometry`] — airfoil shapes (NACA 4/5-digit, coordinate files, named registry), splines,
@@ -36,6 +36,7 @@
 //! * [`output`] — every result file goes through it: path checks, atomic writes, `-` for
 //!   standard output, streams written in place; [`output::OutputError`].
 //! * [`diagnostics`] — an error and its causes on one line, for the command-line tools.
+//! * [`inputs`] — checks of user-given values (flags, Python arguments) with one-line errors.
 //!
 //! # Public API
 //!
@@ -59,6 +60,7 @@ pub mod boundary_layer;
 pub mod compressibility;
 pub mod diagnostics;
 pub mod geometry;
+pub mod inputs;
 pub mod inviscid;
 mod numerics;
 pub mod output;

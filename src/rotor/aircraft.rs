@@ -2,6 +2,7 @@
 
 use super::atmosphere::MAX_ISA_ALTITUDE_M;
 use super::inflow::InflowModel;
+use crate::inputs::InputError;
 use serde::Deserialize;
 use std::borrow::Cow;
 use std::path::Path;
@@ -43,6 +44,43 @@ pub const MAX_MASS_KG: f64 = 100_000.0;
 /// Largest accepted airspeed \[kt\] (of a preset, and of the `gyro` commands, which take it as
 /// an exclusive bound).
 pub const MAX_SPEED_KT: f64 = 300.0;
+
+/// An airspeed argument \[kt\] (of `gyro` and the Python package): above 0 and below
+/// [`MAX_SPEED_KT`].
+pub fn check_speed_kt(name: &str, kt: f64) -> Result<(), InputError> {
+    if kt.is_finite() && kt > 0.0 && kt < MAX_SPEED_KT {
+        return Ok(());
+    }
+    Err(InputError::new(
+        name,
+        kt,
+        format!("must be above 0 and below {MAX_SPEED_KT} kt"),
+    ))
+}
+
+/// A mass argument that replaces the preset's \[kg\]: positive, at most [`MAX_MASS_KG`].
+pub fn check_mass_kg(name: &str, kg: f64) -> Result<(), InputError> {
+    if kg.is_finite() && kg > 0.0 && kg <= MAX_MASS_KG {
+        return Ok(());
+    }
+    Err(InputError::new(
+        name,
+        kg,
+        format!("must be a positive number of kg, at most {MAX_MASS_KG}"),
+    ))
+}
+
+/// An ISA altitude argument \[m\]: inside the troposphere of the atmosphere model.
+pub fn check_altitude_m(name: &str, m: f64) -> Result<(), InputError> {
+    if (0.0..=MAX_ISA_ALTITUDE_M).contains(&m) {
+        return Ok(());
+    }
+    Err(InputError::new(
+        name,
+        m,
+        format!("must be within the ISA troposphere, 0 to {MAX_ISA_ALTITUDE_M} m"),
+    ))
+}
 
 /// Accepted takeoff integration time steps \[s\]: below, a run takes hundreds of thousands of
 /// steps; above, the integration of the rotor speed and flapping is no longer resolved.
