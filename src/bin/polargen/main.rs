@@ -22,13 +22,14 @@ use anyhow::{bail, Context, Result};
 use args::{Cli, Command, ConvertArgs, PlotArgs, PlotPointArgs, RunArgs};
 
 use cli::Tool;
-use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
+use polargen::geometry::{airfoil_by_name_or_path, Airfoil};
+use polargen::inputs;
 use polargen::inviscid::PanelSystem;
 use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError};
 use polargen::plot::point_plots::{solutions_figure, solutions_title};
 use polargen::plot::polar_plots::{compact_number, overlay_title, polar_figure, transition_label};
 use polargen::plot::{check_image_path, render};
-use polargen::polar::{parse_alpha_range, solve_at_cl, TargetClParams};
+use polargen::polar::{parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams};
 use polargen::section::{FlowCondition, PolarPoint};
 use polargen::table::{
     build_table, read_table, write_table, GridSpec, TableFormat, DEFAULT_ALPHA, DEFAULT_MACH,
@@ -42,9 +43,6 @@ const TOOL: Tool = Tool {
     name: "polargen",
     error_prefix: "polargen: error: ",
 };
-
-/// Smallest and largest panel-node counts accepted by `--panels`.
-const PANEL_RANGE: (usize, usize) = (20, 1000);
 
 fn main() -> ExitCode {
     let cli = match TOOL.parse::<Cli>() {
@@ -93,29 +91,15 @@ fn mach_list(cli: &RunArgs, default: &[f64]) -> Result<Vec<f64>> {
     Ok(list)
 }
 
-/// Check the panel count and load + repanel the airfoil.
+/// Check the panel count and load + repanel the airfoil ([`Airfoil::solver_nodes`]).
 fn load_airfoil(spec: Option<&str>, panels: usize) -> Result<Airfoil> {
-    if !(PANEL_RANGE.0..=PANEL_RANGE.1).contains(&panels) {
-        bail!(
-            "--panels {panels}: must be between {} and {}",
-            PANEL_RANGE.0,
-            PANEL_RANGE.1
-        );
-    }
+    inputs::panels("--panels", panels)?;
     let spec = spec.context("--airfoil is required")?;
     let given = airfoil_by_name_or_path(spec).context("--airfoil")?;
-    let (raw, normalised) = given
-        .in_chord_units()
-        .with_context(|| format!("locating the chord of {}", given.name))?;
+    let (foil, normalised) = given.solver_nodes(panels)?;
     if normalised {
-        TOOL.say(format!(
-            "note: {spec}: chord is not 1 or the leading edge is not at the origin; coordinates \
-             normalised to unit chord (LE at 0,0, TE at 1,0)"
-        ));
+        TOOL.say(format!("note: {}", Airfoil::normalisation_note(spec)));
     }
-    let foil = raw
-        .repanel(panels, &PanelingParams::default())
-        .with_context(|| format!("paneling {}", raw.name))?;
     Ok(foil)
 }
 
@@ -181,8 +165,8 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
             .context("--alpha")?,
     };
     let (xtr_top, xtr_bot) = transition(cli)?;
-    check_ncrit(cli.ncrit)?;
-    check_tolerance(cli.newton.tolerance)?;
+    inputs::ncrit("--ncrit", cli.ncrit)?;
+    inputs::tolerance("--tolerance", cli.newton.tolerance)?;
     if let Some(path) = &cli.out {
         check_out(path)?;
     }
@@ -231,44 +215,19 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     Ok(())
 }
 
-/// A `--re` value: a positive Reynolds number.
+/// A `--re` value ([`inputs::reynolds`]).
 fn check_re(re: f64) -> Result<()> {
-    if !(re.is_finite() && re > 0.0) {
-        bail!("--re {re}: the Reynolds number must be positive");
-    }
-    Ok(())
+    Ok(inputs::reynolds("--re", re)?)
 }
 
-/// A `--mach` value: in [0, 1).
+/// A `--mach` value ([`inputs::mach`]).
 fn check_mach(mach: f64) -> Result<()> {
-    if !(0.0..1.0).contains(&mach) {
-        bail!("--mach {mach}: the Mach number must be in [0, 1)");
-    }
-    Ok(())
+    Ok(inputs::mach("--mach", mach)?)
 }
 
-/// A transition location given with `--<flag>`: x/c in [0, 1].
+/// A transition location given with `--<flag>` ([`inputs::transition`]).
 fn check_xtr(flag: &str, x: f64) -> Result<()> {
-    if !(0.0..=1.0).contains(&x) {
-        bail!("--{flag} {x}: the transition location must be in [0, 1] (1 = free)");
-    }
-    Ok(())
-}
-
-/// The `--ncrit` flag: a positive number.
-fn check_ncrit(ncrit: f64) -> Result<()> {
-    if !(ncrit.is_finite() && ncrit > 0.0) {
-        bail!("--ncrit {ncrit}: must be a positive number");
-    }
-    Ok(())
-}
-
-/// The `--tolerance` flag: a Newton threshold in (0, 1).
-fn check_tolerance(tolerance: f64) -> Result<()> {
-    if !(tolerance > 0.0 && tolerance < 1.0) {
-        bail!("--tolerance {tolerance}: must be a number in (0, 1)");
-    }
-    Ok(())
+    Ok(inputs::transition(&format!("--{flag}"), x)?)
 }
 
 /// `polargen plot`: overlay one polar from each table.
@@ -341,8 +300,8 @@ fn convert_table(args: &ConvertArgs) -> Result<()> {
 fn plot_point(args: &PlotPointArgs) -> Result<()> {
     check_re(args.re)?;
     check_mach(args.mach)?;
-    check_ncrit(args.ncrit)?;
-    check_tolerance(args.newton.tolerance)?;
+    inputs::ncrit("--ncrit", args.ncrit)?;
+    inputs::tolerance("--tolerance", args.newton.tolerance)?;
     let xtrs = parse_list("xtr", &args.xtr)?;
     xtrs.iter().try_for_each(|&x| check_xtr("xtr", x))?;
     check_image_path(&args.out).context("--out")?;
@@ -359,21 +318,16 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
         };
         let mut solver = ViscousSolver::new(&foil, params).context("viscous solver")?;
         let label = transition_label(xtr, xtr);
-        let solution = match (args.alpha, args.cl) {
-            (_, Some(cl)) => solve_at_cl(&mut solver, cl, &TargetClParams::default())
-                .with_context(|| label.clone())?,
-            (Some(alpha), None) => {
-                if !alpha.is_finite() {
-                    bail!("--alpha {alpha}: not a finite angle");
-                }
-                let sol = solver.solve(alpha);
-                if !sol.point.converged {
-                    bail!("{label}: the viscous solution did not converge at alpha {alpha} deg");
-                }
-                sol
+        let at = match (args.alpha, args.cl) {
+            (_, Some(cl)) => OperatingPoint::Cl(cl),
+            (Some(alpha), None) if !alpha.is_finite() => {
+                bail!("--alpha {alpha}: not a finite angle")
             }
+            (Some(alpha), None) => OperatingPoint::Alpha(alpha),
             (None, None) => bail!("give --alpha or --cl"),
         };
+        let solution = solve_operating_point(&mut solver, at, &TargetClParams::default())
+            .with_context(|| label.clone())?;
         runs.push((label, solution));
     }
     let cases: Vec<(&str, &ViscousSolution)> = runs.iter().map(|(l, s)| (l.as_str(), s)).collect();
