@@ -34,8 +34,8 @@ impl Airfoil {
     /// (`UserWarning`, the CLI's note) when the contour had to be normalised.
     pub fn solver_nodes(&self, py: Python<'_>, panels: usize) -> PyResult<Contour> {
         inputs::panels("panels", panels).map_err(|e| raise(None, e))?;
-        let (nodes, normalised) = shielded(|| self.contour.solver_nodes(panels))?
-            .map_err(|e| raise(Some("airfoil"), e))?;
+        let (nodes, normalised) =
+            shielded(|| self.contour.solver_nodes(panels))?.map_err(|e| raise(None, e))?;
         if normalised {
             let note = Contour::normalisation_note(&self.contour.name);
             PyErr::warn(

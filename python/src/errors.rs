@@ -63,8 +63,8 @@ pub trait Classify: Error + 'static {
 pub fn raise<E: Classify>(context: Option<&str>, e: E) -> PyErr {
     let line = error_line(&e);
     let message = match context {
-        Some(c) if !line.starts_with(c) => format!("{c}: {line}"),
-        _ => line,
+        Some(c) => format!("{c}: {line}"),
+        None => line,
     };
     exception(e.kind(), message)
 }

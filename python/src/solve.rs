@@ -34,8 +34,14 @@ impl Settings {
     /// Checks each setting as the CLI checks its flag.
     fn checked(xtr_top: f64, xtr_bot: f64, ncrit: f64, tolerance: f64) -> PyResult<Self> {
         let input = |r: Result<(), inputs::InputError>| r.map_err(|e| raise(None, e));
-        input(inputs::transition("xtr_top", xtr_top))?;
-        input(inputs::transition("xtr_bot", xtr_bot))?;
+        // One value for both surfaces is the argument `xtr` (the CLI's `--xtr`).
+        let names = if xtr_top == xtr_bot {
+            ["xtr", "xtr"]
+        } else {
+            ["xtr_top", "xtr_bot"]
+        };
+        input(inputs::transition(names[0], xtr_top))?;
+        input(inputs::transition(names[1], xtr_bot))?;
         input(inputs::ncrit("ncrit", ncrit))?;
         input(inputs::tolerance("tolerance", tolerance))?;
         Ok(Self {
