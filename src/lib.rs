@@ -53,6 +53,10 @@
 //! | figures | [`plot::render`] with [`plot::polar_plots`], [`plot::point_plots`], [`plot::rotor_plots`] |
 //! | the paper report | [`report::write_report`] |
 //! | write any result file | [`output::write_output`] |
+//! | check user-given values | [`inputs`], [`polar::check_alphas`], [`rotor::check_speed_kt`] |
+//!
+//! The Python package (`python/`, a workspace member built with PyO3 and maturin) is a thin
+//! layer over this API: it calls the functions above and adds no computation of its own.
 
 #![warn(missing_docs)]
 
