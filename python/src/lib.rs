@@ -25,7 +25,7 @@ mod _polargen {
     #[pymodule_export]
     use crate::rotor::PyAircraft;
     #[pymodule_export]
-    use crate::solve::{alpha_range, point, polar, table};
+    use crate::solve::{alpha_range, point, table};
     #[pymodule_export]
     use crate::table::Table;
 

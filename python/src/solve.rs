@@ -231,38 +231,8 @@ fn build(
     }
 }
 
-/// One viscous polar at (Re, M) over `alpha`, computed as the CLI computes it (a one-node
-/// table): a dict of columns plus `re`, `mach` and the table's metadata.
-#[pyfunction]
-#[allow(clippy::too_many_arguments)]
-#[pyo3(signature = (airfoil, re, mach, alpha, xtr_top, xtr_bot, ncrit, panels, tolerance, threads))]
-pub fn polar(
-    py: Python<'_>,
-    airfoil: &Airfoil,
-    re: f64,
-    mach: f64,
-    alpha: Vec<f64>,
-    xtr_top: f64,
-    xtr_bot: f64,
-    ncrit: f64,
-    panels: usize,
-    tolerance: f64,
-    threads: usize,
-) -> PyResult<Table> {
-    inputs::reynolds("re", re).map_err(|e| raise(None, e))?;
-    inputs::mach("mach", mach).map_err(|e| raise(None, e))?;
-    let settings = Settings::checked(xtr_top, xtr_bot, ncrit, tolerance)?;
-    let grid = GridSpec {
-        reynolds: vec![re],
-        mach: vec![mach],
-        alpha_deg: alpha,
-    };
-    let table = build(py, airfoil, grid, &settings, panels, threads, None)?;
-    Ok(Table::from(table))
-}
-
-/// A Re × M × α table, computed as the CLI computes it; `progress(done, total)` is called
-/// (on this thread) as polars finish.
+/// A Re × M × α table, computed as the CLI computes it (one polar: one Re and one Mach
+/// number); `progress(done, total)` is called (on this thread) as polars finish.
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]
 #[pyo3(signature = (airfoil, re, mach, alpha, xtr_top, xtr_bot, ncrit, panels, tolerance, threads, progress))]

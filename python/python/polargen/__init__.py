@@ -169,9 +169,9 @@ def polar(
     threads : worker threads (0 = all cores); the result does not depend on it.
     """
     top, bot = _transition(xtr)
-    result = _polargen.polar(
-        _airfoil(airfoil), float(re), float(mach), _alphas(alpha), top, bot,
-        float(ncrit), int(panels), float(tolerance), int(threads),
+    result = _polargen.table(
+        _airfoil(airfoil), [float(re)], [float(mach)], _alphas(alpha), top, bot,
+        float(ncrit), int(panels), float(tolerance), int(threads), None,
     )
     return Table(result).polars()[0]
 

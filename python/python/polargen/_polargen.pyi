@@ -112,10 +112,6 @@ class Aircraft:
 def alpha_range(text: str) -> npt.NDArray[np.float64]:
     """The α values of the range text ``A0:A1:DA`` (or one value), as the CLI's ``--alpha``."""
 
-def polar(
-    airfoil: Airfoil, re: float, mach: float, alpha: List[float], xtr_top: float,
-    xtr_bot: float, ncrit: float, panels: int, tolerance: float, threads: int,
-) -> PolarTable: ...
 def table(
     airfoil: Airfoil, re: List[float], mach: List[float], alpha: List[float], xtr_top: float,
     xtr_bot: float, ncrit: float, panels: int, tolerance: float, threads: int,
