@@ -157,6 +157,25 @@ impl Table {
         Ok(list)
     }
 
+    /// The polar at the node (re, mach) (relative tolerance 1e-9): (re, mach, columns) of the
+    /// node, or None.
+    fn polar<'py>(
+        &self,
+        py: Python<'py>,
+        re: f64,
+        mach: f64,
+    ) -> PyResult<Option<(f64, f64, Bound<'py, PyDict>)>> {
+        let Some(found) = self.inner.polar(re, mach) else {
+            return Ok(None);
+        };
+        let node = self
+            .inner
+            .polars()
+            .find(|(_, points)| std::ptr::eq(*points, found));
+        node.map(|(c, points)| Ok((c.reynolds, c.mach, polar_columns(py, points)?)))
+            .transpose()
+    }
+
     /// Section coefficients at every (alpha, re, mach) of three equally long 1-D arrays, with
     /// the flags: (cl, cd, cm, re_clamped, mach_clamped, post_stall, bridged).
     fn lookup<'py>(

@@ -42,6 +42,8 @@ def test_csv_and_json_read_back_exactly_and_xfoil_polars_read(tmp_path, shipped)
     one = pg.Table.read(files[0])
     assert len(one.re) == 1 and len(one.mach) == 1
     node = shipped.polar(one.re[0], one.mach[0])
+    with pytest.raises(KeyError, match="no polar at Re 1.234e"):
+        shipped.polar(1.234e6, 0.0)
     pol = one.polars()[0]
     keep = node.converged
     # The .pol text keeps XFOIL's fixed decimals.

@@ -4,6 +4,7 @@ number of worker threads; an exception from the progress callback stops the buil
 
 from __future__ import annotations
 
+import _thread
 import threading
 import time
 
@@ -72,4 +73,19 @@ def test_tqdm_like_progress_and_a_failing_callback():
     with pytest.raises(RuntimeError, match="stop here"):
         pg.table("naca2412", threads=1, progress=fail, **GRID)
     # Cancelled after the first polar rather than running all six.
+    assert time.perf_counter() - start < 10
+
+
+def test_ctrl_c_stops_a_table_after_the_polars_under_way():
+    """A KeyboardInterrupt (here raised by a timer as Ctrl-C would) stops the build: the rotor
+    grid's 30 polars at 0.25° steps take about 25 s on one thread, the interrupted build the
+    time of the polar under way."""
+    timer = threading.Timer(0.5, _thread.interrupt_main)
+    timer.start()
+    start = time.perf_counter()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            pg.table("naca2412", alpha="-10:20:0.25", threads=1)
+    finally:
+        timer.cancel()
     assert time.perf_counter() - start < 10

@@ -101,16 +101,6 @@ class Distribution:
     def __len__(self) -> int:
         return len(self.x)
 
-    @property
-    def n(self) -> np.ndarray:
-        """Amplification factor N on the laminar stations (NaN where turbulent)."""
-        return np.where(self.turbulent, np.nan, self.n_or_ctau)
-
-    @property
-    def ctau(self) -> np.ndarray:
-        """Shear-stress coefficient Cτ on the turbulent stations (NaN where laminar)."""
-        return np.where(self.turbulent, self.n_or_ctau, np.nan)
-
     def columns(self) -> Dict[str, np.ndarray]:
         """The columns as a dict of arrays."""
         return {name: getattr(self, name) for name in STATION_COLUMNS}

@@ -95,11 +95,11 @@ class Table:
 
     def polar(self, re: float, mach: float) -> Polar:
         """The polar at the node (``re``, ``mach``) (relative tolerance 1e-9)."""
-        for p in self.polars():
-            if abs(p.re - re) <= 1e-9 * abs(p.re) and abs(p.mach - mach) <= 1e-9 * max(abs(p.mach), 1.0):
-                return p
-        raise KeyError(f"no polar at Re {re:g}, M {mach:g} (axes: Re {list(self.re)}, "
-                       f"M {list(self.mach)})")
+        found = self._core.polar(float(re), float(mach))
+        if found is None:
+            raise KeyError(f"no polar at Re {re:g}, M {mach:g} (axes: Re {list(self.re)}, "
+                           f"M {list(self.mach)})")
+        return Polar(*found, self.meta)
 
     def lookup(self, alpha, re, mach) -> Lookup:
         """Section coefficients at angles ``alpha`` [deg] (any value, wrapped to ±180°),
