@@ -8,7 +8,8 @@
 //! ```text
 //! geometry → inviscid → boundary_layer → viscous → polar → table → rotor → report
 //!                                                              ↘ plot ↗
-//! leaf modules every layer may use: section, compressibility, output, diagnostics, inputs
+//! leaf modules every layer may use: section, compressibility, input, output, limits,
+//! diagnostics, arguments
 //! ```
 //!
 //! * [`geometry`] — airfoil shapes (NACA 4/5-digit, coordinate files, named registry), splines,
@@ -35,8 +36,13 @@
 //! * [`compressibility`] — γ and the Karman–Tsien relations (Cp, speed, critical Cp).
 //! * [`output`] — every result file goes through it: path checks, atomic writes, `-` for
 //!   standard output, streams written in place; [`output::OutputError`].
+//! * [`input`] — every input file goes through it: regular files (or standard input where
+//!   allowed) up to a size cap; devices, FIFOs and folders refused at once.
+//! * [`limits`] — every bound on input sizes and on the work a request may ask for, in one
+//!   place.
 //! * [`diagnostics`] — an error and its causes on one line, for the command-line tools.
-//! * [`inputs`] — checks of user-given values (flags, Python arguments) with one-line errors.
+//! * [`arguments`] — checks of user-given values (flags, Python arguments) with one-line
+//!   errors naming the argument.
 //!
 //! # Public API
 //!
@@ -60,12 +66,14 @@
 
 #![warn(missing_docs)]
 
+pub mod arguments;
 pub mod boundary_layer;
 pub mod compressibility;
 pub mod diagnostics;
 pub mod geometry;
-pub mod inputs;
+pub mod input;
 pub mod inviscid;
+pub mod limits;
 mod numerics;
 pub mod output;
 pub mod plot;

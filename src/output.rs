@@ -16,9 +16,21 @@
 //!   through (its target is replaced, the link stays). A failure at any step removes the
 //!   temporary file and leaves the target as it was.
 //!
-//! Paths are checked by [`check_output_path`] without touching the file system, so that a
-//! program can refuse a bad path before a long computation. Every error is an
-//! [`OutputError`] naming the path it concerns.
+//! Several files that belong together (a set of polars, a report) go through an
+//! [`OutputSet`]: staged in a hidden folder beside their targets and renamed into place
+//! together, or not at all. [`remove_staged_files_on_signals`] makes SIGINT/SIGTERM remove
+//! whatever is staged.
+//!
+//! Paths are checked by [`check_output_path`] before a long computation: the path itself,
+//! and that the folder that will hold the file accepts new files (a temporary probe file is
+//! created and removed). Every error is an [`OutputError`] naming the path it concerns, never
+//! a temporary name.
+
+mod interrupt;
+mod set;
+
+pub use interrupt::remove_staged_files_on_signals;
+pub use set::OutputSet;
 
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, BufWriter, Write};
@@ -110,12 +122,41 @@ enum Target {
     File(PathBuf),
 }
 
-/// Check that `path` can name an output, without changing the file system: `-`; a path to
+/// Check that `path` can name an output: `-`; a path to
 /// one of this process's descriptors, a device or a FIFO; or a file name (not ending in `/`,
 /// `.` or `..`) that, if it exists, is a regular file or a link to one (not a folder, socket
 /// or broken link), below a folder (the nearest existing folder above it must not be a file).
+///
+/// For a regular file it also checks, by creating and removing a temporary probe file, that
+/// the nearest existing folder that will hold it accepts new files (a read-only or
+/// permission-denied folder is found here, not after the computation).
 pub fn check_output_path(path: &Path) -> Result<(), OutputError> {
-    resolve(path).map(|_| ())
+    if let Target::File(target) = resolve(path)? {
+        let mut dir = match target.parent().filter(|d| !d.as_os_str().is_empty()) {
+            Some(d) => d.to_path_buf(),
+            None => PathBuf::from("."),
+        };
+        while !dir.is_dir() {
+            match dir.parent().filter(|d| !d.as_os_str().is_empty()) {
+                Some(d) => dir = d.to_path_buf(),
+                None => {
+                    dir = PathBuf::from(".");
+                    break;
+                }
+            }
+        }
+        tempfile::Builder::new()
+            .prefix(".polargen-probe.")
+            .tempfile_in(&dir)
+            .map_err(|e| OutputError::Io {
+                path: dir.clone(),
+                source: io::Error::new(
+                    e.kind(),
+                    format!("cannot create files in this folder: {}", without_path(e)),
+                ),
+            })?;
+    }
+    Ok(())
 }
 
 /// Write the output `path` (see the module documentation) with `body`, which writes the
@@ -210,6 +251,8 @@ struct Staged {
     target: PathBuf,
     /// The temporary file.
     file: tempfile::NamedTempFile,
+    /// Its listing for removal on interruption.
+    _registration: interrupt::Registration,
 }
 
 impl Staged {
@@ -239,10 +282,11 @@ impl Staged {
         }
         let file = builder
             .tempfile_in(dir)
-            .map_err(|e| OutputError::io(requested, e))?;
+            .map_err(|e| OutputError::io(requested, without_path(e)))?;
         Ok(Self {
             requested: requested.to_path_buf(),
             target: target.to_path_buf(),
+            _registration: interrupt::Registration::new(file.path()),
             file,
         })
     }
@@ -257,7 +301,24 @@ impl Staged {
         self.file
             .persist(&self.target)
             .map(|_| ())
-            .map_err(|e| OutputError::io(&requested, e.error))
+            .map_err(|e| OutputError::io(&requested, without_path(e.error)))
+    }
+}
+
+/// `e` without the temporary path the `tempfile` crate adds to its messages (errors name the
+/// file as the user requested it, never a hidden temporary name).
+pub(crate) fn without_path(e: io::Error) -> io::Error {
+    if let Some(code) = e.raw_os_error() {
+        return io::Error::from_raw_os_error(code);
+    }
+    let inner = e
+        .get_ref()
+        .and_then(|r| r.source())
+        .and_then(|s| s.downcast_ref::<io::Error>())
+        .and_then(io::Error::raw_os_error);
+    match inner {
+        Some(code) => io::Error::from_raw_os_error(code),
+        None => e,
     }
 }
 

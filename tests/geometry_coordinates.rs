@@ -123,10 +123,11 @@ fn duplicate_consecutive_points() {
 
 #[test]
 fn crossing_surfaces() {
-    // Upper-surface point at line 12 moved to y = -0.05, below the lower surface: the upper
-    // segment starting at line 11 crosses the lower segment starting at line 42.
+    // Upper-surface point at line 12 moved to y = -0.05, below the lower surface: both upper
+    // segments at it cross the lower surface; the leftmost crossing is reported, that of the
+    // segment starting at line 12 with the lower segment starting at line 41.
     assert!(err("bad_crossing.dat").ends_with(
-        ":11: surfaces cross: segment at line 11 intersects segment at line 42 near (0.51486, -0.02414)"
+        ":12: surfaces cross: segment at line 12 intersects segment at line 41 near (0.4943, -0.02437)"
     ));
 }
 
@@ -151,10 +152,11 @@ fn lednicer_count_mismatch() {
 #[test]
 fn missing_file() {
     let e = read_airfoil_file(&data("does_not_exist.dat")).unwrap_err();
-    assert!(matches!(e, GeometryError::Io { .. }));
-    assert!(e
-        .to_string()
-        .contains("does_not_exist.dat: cannot read file:"));
+    assert!(matches!(e, GeometryError::Input(_)));
+    assert!(
+        e.to_string().starts_with("cannot read airfoil file ")
+            && e.to_string().ends_with("does_not_exist.dat: no such file")
+    );
 }
 
 #[test]

@@ -127,34 +127,68 @@ fn node_count_and_density_follow_the_request() {
 }
 
 #[test]
-fn normalized_undoes_translation_rotation_and_scaling() {
+fn normalized_undoes_translation_and_scaling_but_never_rotates() {
     let a = naca("2412", &NacaOptions::default()).unwrap();
-    let (c, s) = (0.3f64.cos(), 0.3f64.sin());
     let moved = Airfoil {
         name: a.name.clone(),
-        x: a.x
-            .iter()
-            .zip(&a.y)
-            .map(|(x, y)| 2.5 * (c * x - s * y) + 4.0)
-            .collect(),
-        y: a.x
-            .iter()
-            .zip(&a.y)
-            .map(|(x, y)| 2.5 * (s * x + c * y) - 1.0)
-            .collect(),
+        x: a.x.iter().map(|x| 2.5 * x + 4.0).collect(),
+        y: a.y.iter().map(|y| 2.5 * y - 1.0).collect(),
     };
     let back = moved.normalized().unwrap();
     let orig = a.normalized().unwrap();
     for i in 0..a.x.len() {
         assert!((back.x[i] - orig.x[i]).abs() < 1e-12 && (back.y[i] - orig.y[i]).abs() < 1e-12);
     }
-    // LE point at the origin, TE midpoint at (1, 0).
+    // LE point at the origin, TE midpoint at x = 1; the chord line keeps its inclination.
     let (xl, yl) = back.leading_edge().unwrap();
     assert!(xl.abs() < 1e-9 && yl.abs() < 1e-9);
     let n = back.x.len();
     assert!((0.5 * (back.x[0] + back.x[n - 1]) - 1.0).abs() < 1e-12);
-    assert!((0.5 * (back.y[0] + back.y[n - 1])).abs() < 1e-12);
+    let angle = a.chord_angle_deg().unwrap();
+    assert!((back.chord_angle_deg().unwrap() - angle).abs() < 1e-9);
     assert!((moved.chord().unwrap() - 2.5 * a.chord().unwrap()).abs() < 1e-9);
+
+    // A rotated contour stays rotated; only derotated() turns the chord line onto x.
+    let (c, s) = (0.1f64.cos(), 0.1f64.sin());
+    let tilted = Airfoil {
+        name: a.name.clone(),
+        x: a.x.iter().zip(&a.y).map(|(x, y)| c * x - s * y).collect(),
+        y: a.x.iter().zip(&a.y).map(|(x, y)| s * x + c * y).collect(),
+    };
+    let kept = tilted.normalized().unwrap();
+    assert!((kept.chord_angle_deg().unwrap() - (angle + 0.1f64.to_degrees())).abs() < 1e-9);
+    let level = tilted.derotated().unwrap();
+    assert!(level.chord_angle_deg().unwrap().abs() < 1e-9);
+}
+
+#[test]
+fn chord_units_never_change_the_angle_reference() {
+    // The 8-H-12 ordinates scaled by 1.009 are used as given, by 1.011 normalised: the lift at
+    // α = 0 of the two must differ by the chord ratio only (it jumped from 0.0545 to 0.0242
+    // when normalisation also rotated the chord line onto x).
+    use polargen::inviscid::PanelSystem;
+    let base = polargen::geometry::naca8h12().unwrap();
+    let cl = |factor: f64| {
+        let scaled = Airfoil {
+            name: base.name.clone(),
+            x: base.x.iter().map(|x| x * factor).collect(),
+            y: base.y.iter().map(|y| y * factor).collect(),
+        };
+        let (unit, normalised) = scaled.in_chord_units().unwrap();
+        assert_eq!(normalised, factor > 1.01, "factor {factor}");
+        let paneled = unit.repanel(160, &PanelingParams::default()).unwrap();
+        PanelSystem::new(&paneled)
+            .unwrap()
+            .solve(0.0, 0.0)
+            .unwrap()
+            .cl
+    };
+    let (as_given, normalised) = (cl(1.009), cl(1.011));
+    assert!(
+        (as_given / 1.009 - normalised).abs() < 2e-3 * normalised.abs() + 1e-4,
+        "{as_given} {normalised}"
+    );
+    assert!(normalised > 0.045, "{normalised}");
 }
 
 #[test]

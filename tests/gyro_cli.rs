@@ -322,7 +322,7 @@ fn bad_values_and_paths_are_refused_up_front() {
         ),
         (
             trim(&["--altitude-m", "1e9"]),
-            "--altitude-m 1000000000: must be within the ISA troposphere",
+            "--altitude-m 1e9: must be within the ISA troposphere",
         ),
         (trim(&["--altitude-m", "-100"]), "--altitude-m -100"),
         (trim(&["--altitude-m", "nan"]), "--altitude-m NaN"),

@@ -81,3 +81,45 @@ fn kutta_condition_holds() {
         }
     }
 }
+
+#[test]
+fn irregular_contours_never_give_absurd_coefficients() {
+    // Contours that used to pass and give |Cl| up to 1e10 with converged = true: a contour
+    // listed twice (the second pass 0.1 % smaller), one stray point, a fold of the lower
+    // surface; each is refused, and no solution of them is returned.
+    let p = polargen::geometry::naca("0012", &Default::default())
+        .unwrap()
+        .repanel(160, &polargen::geometry::PanelingParams::default())
+        .unwrap();
+    let twice = foil(
+        p.x.iter()
+            .chain(
+                p.x.iter()
+                    .map(|x| 0.0005 + 0.999 * x)
+                    .collect::<Vec<_>>()
+                    .iter(),
+            )
+            .copied()
+            .collect(),
+        p.y.iter()
+            .chain(p.y.iter().map(|y| 0.999 * y).collect::<Vec<_>>().iter())
+            .copied()
+            .collect(),
+    );
+    let mut stray = foil(p.x.clone(), p.y.clone());
+    stray.y[40] += 0.3;
+    let mut fold = foil(p.x.clone(), p.y.clone());
+    fold.x[120] -= 0.2;
+    for (name, a) in [("twice", twice), ("stray", stray), ("fold", fold)] {
+        match PanelSystem::new(&a) {
+            Err(e) => assert!(!e.to_string().is_empty()),
+            Ok(s) => {
+                for alpha in [-5.0, 0.0, 5.0] {
+                    if let Ok(sol) = s.solve(alpha, 0.0) {
+                        panic!("{name}: alpha {alpha} gave Cl {}", sol.cl);
+                    }
+                }
+            }
+        }
+    }
+}

@@ -117,7 +117,7 @@ fn axes_are_validated() {
     );
     assert_eq!(
         msg(small(vec![0.0, 1e6], vec![0.0])),
-        "Re must be positive and finite, got 0"
+        "Re must be positive and at most 1e10, got 0"
     );
     assert_eq!(
         msg(small(vec![1e6], vec![0.5, 1.0])),

@@ -3,11 +3,11 @@
 
 use numpy::ndarray::Array2;
 use numpy::{AllowTypeChange, IntoPyArray, PyArray1, PyArray2, PyArrayLike1};
+use polargen::arguments;
 use polargen::geometry::{
     airfoil_by_name_or_path, airfoil_key, naca, read_airfoil_file, to_selig_string,
     Airfoil as Contour, GeometryError, NacaOptions,
 };
-use polargen::inputs;
 use pyo3::exceptions::PyUserWarning;
 use pyo3::prelude::*;
 use std::path::PathBuf;
@@ -33,7 +33,7 @@ impl Airfoil {
     /// The nodes the solvers work on (`Airfoil::solver_nodes`), after checking `panels`; warns
     /// (`UserWarning`, the CLI's note) when the contour had to be normalised.
     pub fn solver_nodes(&self, py: Python<'_>, panels: usize) -> PyResult<Contour> {
-        inputs::panels("panels", panels).map_err(|e| raise(None, e))?;
+        arguments::panels("panels", panels).map_err(|e| raise(None, e))?;
         let (nodes, normalised) =
             shielded(|| self.contour.solver_nodes(panels))?.map_err(|e| raise(None, e))?;
         if normalised {

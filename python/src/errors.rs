@@ -8,9 +8,10 @@ use std::error::Error;
 use std::io::ErrorKind;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
+use polargen::arguments::ArgumentError;
 use polargen::diagnostics::error_line;
 use polargen::geometry::GeometryError;
-use polargen::inputs::InputError;
+use polargen::input::{InputError, InputProblem};
 use polargen::output::OutputError;
 use polargen::polar::{OperatingPointError, RangeError, TargetClError};
 use polargen::rotor::{AircraftError, TakeoffError, TrimError};
@@ -83,6 +84,18 @@ fn io_kind(e: &(dyn Error + 'static)) -> Option<ErrorKind> {
 
 impl Classify for InputError {
     fn kind(&self) -> Kind {
+        Kind::File(match self.problem {
+            InputProblem::NotFound => Some(ErrorKind::NotFound),
+            InputProblem::Folder => Some(ErrorKind::IsADirectory),
+            InputProblem::NotRegular(_) | InputProblem::TooLarge { .. } | InputProblem::Os(_) => {
+                None
+            }
+        })
+    }
+}
+
+impl Classify for ArgumentError {
+    fn kind(&self) -> Kind {
         Kind::Input
     }
 }
@@ -96,13 +109,7 @@ impl Classify for RangeError {
 impl Classify for GeometryError {
     fn kind(&self) -> Kind {
         match self {
-            GeometryError::Io { file, .. } => {
-                Kind::File(Some(if std::path::Path::new(file).exists() {
-                    ErrorKind::Other
-                } else {
-                    ErrorKind::NotFound
-                }))
-            }
+            GeometryError::Input(e) => e.kind(),
             _ => Kind::Input,
         }
     }
@@ -117,11 +124,7 @@ impl Classify for OutputError {
 impl Classify for TableError {
     fn kind(&self) -> Kind {
         match self {
-            TableError::Input { reason, .. } => Kind::File(match *reason {
-                "no such file" => Some(ErrorKind::NotFound),
-                "is a folder" => Some(ErrorKind::IsADirectory),
-                _ => None,
-            }),
+            TableError::Input(e) => e.kind(),
             TableError::Io { source, .. } => Kind::File(Some(source.kind())),
             TableError::Output(o) => o.kind(),
             TableError::File { source, .. } => source.kind(),
@@ -133,7 +136,7 @@ impl Classify for TableError {
 impl Classify for AircraftError {
     fn kind(&self) -> Kind {
         match self {
-            AircraftError::Io { source, .. } => Kind::File(Some(source.kind())),
+            AircraftError::Input(e) => e.kind(),
             _ => Kind::Input,
         }
     }

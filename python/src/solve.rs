@@ -7,7 +7,7 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 use numpy::{IntoPyArray, PyArray1};
-use polargen::inputs;
+use polargen::arguments;
 use polargen::polar::{
     check_alphas, parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams,
 };
@@ -33,17 +33,17 @@ struct Settings {
 impl Settings {
     /// Checks each setting as the CLI checks its flag.
     fn checked(xtr_top: f64, xtr_bot: f64, ncrit: f64, tolerance: f64) -> PyResult<Self> {
-        let input = |r: Result<(), inputs::InputError>| r.map_err(|e| raise(None, e));
+        let input = |r: Result<(), arguments::ArgumentError>| r.map_err(|e| raise(None, e));
         // One value for both surfaces is the argument `xtr` (the CLI's `--xtr`).
         let names = if xtr_top == xtr_bot {
             ["xtr", "xtr"]
         } else {
             ["xtr_top", "xtr_bot"]
         };
-        input(inputs::transition(names[0], xtr_top))?;
-        input(inputs::transition(names[1], xtr_bot))?;
-        input(inputs::ncrit("ncrit", ncrit))?;
-        input(inputs::tolerance("tolerance", tolerance))?;
+        input(arguments::transition(names[0], xtr_top))?;
+        input(arguments::transition(names[1], xtr_bot))?;
+        input(arguments::ncrit("ncrit", ncrit))?;
+        input(arguments::tolerance("tolerance", tolerance))?;
         Ok(Self {
             xtr_top,
             xtr_bot,
@@ -132,9 +132,9 @@ pub fn alpha_range<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAr
 fn checked_axis(
     name: &str,
     values: Vec<f64>,
-    each: fn(&str, f64) -> Result<(), inputs::InputError>,
+    each: fn(&str, f64) -> Result<(), arguments::ArgumentError>,
 ) -> PyResult<Vec<f64>> {
-    inputs::distinct(name, &values).map_err(|e| raise(None, e))?;
+    arguments::distinct(name, &values).map_err(|e| raise(None, e))?;
     for &v in &values {
         each(name, v).map_err(|e| raise(None, e))?;
     }
@@ -251,8 +251,8 @@ pub fn table(
     progress: Option<Py<PyAny>>,
 ) -> PyResult<Table> {
     let grid = GridSpec {
-        reynolds: checked_axis("re", re, inputs::reynolds)?,
-        mach: checked_axis("mach", mach, inputs::mach)?,
+        reynolds: checked_axis("re", re, arguments::reynolds)?,
+        mach: checked_axis("mach", mach, arguments::mach)?,
         alpha_deg: alpha,
     };
     let settings = Settings::checked(xtr_top, xtr_bot, ncrit, tolerance)?;
@@ -279,8 +279,8 @@ pub fn point<'py>(
     panels: usize,
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
-    inputs::reynolds("re", re).map_err(|e| raise(None, e))?;
-    inputs::mach("mach", mach).map_err(|e| raise(None, e))?;
+    arguments::reynolds("re", re).map_err(|e| raise(None, e))?;
+    arguments::mach("mach", mach).map_err(|e| raise(None, e))?;
     let settings = Settings::checked(xtr_top, xtr_bot, ncrit, tolerance)?;
     let at = match (alpha, cl) {
         (Some(a), None) => OperatingPoint::Alpha(a),

@@ -3,15 +3,17 @@
 //!
 //! Format conventions follow XFOIL's `AREAD` (Drela): a first line that is not a pair of
 //! numbers is the airfoil name; a first data pair with both values > 1.5 is a Lednicer
-//! point-count header; a clockwise contour is reversed (XFOIL `LOAD`, sign of the area).
+//! point-count header (here: two whole numbers within the point limit, so that a Selig file
+//! in millimetres is not taken for one); a clockwise contour is reversed (XFOIL `LOAD`, sign
+//! of the area). Line ends may be `\n`, `\r\n` or `\r`; validation: [`super::validation`].
 
 use std::path::Path;
 
 use super::error::GeometryError;
+use super::validation::{signed_area, validate_contour};
 use super::Airfoil;
-
-/// Minimum number of contour points accepted from a file.
-pub const MIN_POINTS: usize = 10;
+use crate::input::{read_input, text_lines};
+use crate::limits::MAX_CONTOUR_POINTS;
 
 /// Layout of a coordinate file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -85,10 +87,7 @@ fn looks_like_pair(tokens: &[&str]) -> bool {
 /// Reads and parses an airfoil coordinate file (any supported format).
 pub fn read_airfoil_file(path: &Path) -> Result<Airfoil, GeometryError> {
     let file = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|e| GeometryError::Io {
-        file: file.clone(),
-        reason: e.to_string(),
-    })?;
+    let bytes = read_input(path).map_err(GeometryError::Input)?;
     let fallback = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
@@ -118,7 +117,8 @@ pub fn parse_airfoil_text(
 ) -> Result<(Airfoil, CoordinateFormat), GeometryError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines: Vec<DataLine> = Vec::new();
-    for (k, raw) in text.lines().enumerate() {
+    let mut uncounted = 0usize;
+    for (k, raw) in text_lines(text).enumerate() {
         let line = k + 1;
         if let Some(b) = raw
             .bytes()
@@ -134,11 +134,24 @@ pub fn parse_airfoil_text(
         if trimmed.is_empty() || trimmed.starts_with('#') {
             continue;
         }
+        // Beyond the point limit (and a name and a count line) lines are only counted.
+        if lines.len() > MAX_CONTOUR_POINTS + 1 {
+            uncounted += 1;
+            continue;
+        }
         let tokens: Vec<&str> = trimmed
             .split(|c: char| c.is_whitespace() || c == ',' || c == ';')
             .filter(|t| !t.is_empty())
             .collect();
         lines.push(DataLine { line, tokens });
+    }
+    if uncounted > 0 {
+        let named = !looks_like_pair(&lines[0].tokens);
+        return Err(GeometryError::TooManyPoints {
+            file: file.to_string(),
+            found: lines.len() + uncounted - usize::from(named),
+            max: MAX_CONTOUR_POINTS,
+        });
     }
     if lines.is_empty() {
         return Err(GeometryError::Empty {
@@ -159,7 +172,13 @@ pub fn parse_airfoil_text(
     }
 
     let first = parse_pair(&body[0], file)?;
-    let is_lednicer = has_name && first.0 > 1.5 && first.1 > 1.5;
+    // XFOIL's rule (both values > 1.5), restricted to whole numbers within the point limit,
+    // so that a Selig file in millimetres is not taken for a count header.
+    let point_count = |v: f64| -> Option<usize> {
+        (v > 1.5 && v.fract() == 0.0 && v <= MAX_CONTOUR_POINTS as f64).then_some(v as usize)
+    };
+    let lednicer_counts = point_count(first.0).zip(point_count(first.1));
+    let is_lednicer = has_name && lednicer_counts.is_some();
     let (format, data) = if is_lednicer {
         (CoordinateFormat::Lednicer, &body[1..])
     } else if has_name {
@@ -181,19 +200,7 @@ pub fn parse_airfoil_text(
 
     if format == CoordinateFormat::Lednicer {
         let header_line = body[0].line;
-        let count = |v: f64| -> Option<usize> {
-            (v.fract().abs() < 1e-9 && (1.0..1.0e6).contains(&v)).then_some(v as usize)
-        };
-        let (nu, nl) = match (count(first.0), count(first.1)) {
-            (Some(a), Some(b)) => (a, b),
-            _ => {
-                return Err(GeometryError::BadNumber {
-                    file: file.to_string(),
-                    line: header_line,
-                    token: format!("{} {}", first.0, first.1),
-                })
-            }
-        };
+        let (nu, nl) = lednicer_counts.unwrap_or((0, 0));
         if nu + nl != pts.len() {
             return Err(GeometryError::LednicerCount {
                 file: file.to_string(),
@@ -239,109 +246,4 @@ pub fn to_selig_string(airfoil: &Airfoil) -> String {
         out.push_str(&format!("{x:12.8} {y:12.8}\n"));
     }
     out
-}
-
-/// Signed area enclosed by the contour closed through its end points (positive for
-/// counter-clockwise, i.e. XFOIL order), as in XFOIL `LOAD`.
-pub(crate) fn signed_area(x: &[f64], y: &[f64]) -> f64 {
-    let n = x.len();
-    let mut area = 0.0;
-    for i in 0..n {
-        let j = (i + 1) % n;
-        area += 0.5 * (y[i] + y[j]) * (x[i] - x[j]);
-    }
-    area
-}
-
-/// Checks a contour: enough points, all finite, no duplicate consecutive points and no
-/// crossing of non-adjacent segments. `line_of[i]` is the line (or point number) reported
-/// for point i; `file` names the source.
-pub(crate) fn validate_contour(
-    x: &[f64],
-    y: &[f64],
-    line_of: &[usize],
-    file: &str,
-) -> Result<(), GeometryError> {
-    let n = x.len();
-    if n < MIN_POINTS {
-        return Err(GeometryError::TooFewPoints {
-            file: file.to_string(),
-            found: n,
-            min: MIN_POINTS,
-        });
-    }
-    for i in 0..n {
-        if !(x[i].is_finite() && y[i].is_finite()) {
-            return Err(GeometryError::NonFinite {
-                file: file.to_string(),
-                line: line_of[i],
-                token: format!("({}, {})", x[i], y[i]),
-            });
-        }
-    }
-    let scale = x
-        .iter()
-        .chain(y.iter())
-        .fold(0.0f64, |m, v| m.max(v.abs()))
-        .max(f64::MIN_POSITIVE);
-    for i in 1..n {
-        if (x[i] - x[i - 1]).hypot(y[i] - y[i - 1]) <= 1e-12 * scale {
-            return Err(GeometryError::DuplicatePoint {
-                file: file.to_string(),
-                line: line_of[i],
-                x: x[i],
-                y: y[i],
-            });
-        }
-    }
-    // A closed TE (end points equal up to round-off) makes the first and last segments
-    // neighbours, which must not count as a crossing.
-    let closed = (x[0] - x[n - 1]).hypot(y[0] - y[n - 1]) <= 1e-9 * scale;
-    if let Some((i, j, px, py)) = first_crossing(x, y, closed) {
-        return Err(GeometryError::SelfIntersecting {
-            file: file.to_string(),
-            line_a: line_of[i],
-            line_b: line_of[j],
-            x: px,
-            y: py,
-        });
-    }
-    Ok(())
-}
-
-/// First pair of non-adjacent polyline segments (i, i+1), (j, j+1), i < j, that cross
-/// properly (each segment's end points strictly on opposite sides of the other), with the
-/// crossing point. With `closed`, the first and last segments are treated as adjacent.
-fn first_crossing(x: &[f64], y: &[f64], closed: bool) -> Option<(usize, usize, f64, f64)> {
-    let n = x.len();
-    let orient = |a: usize, b: usize, c: usize| -> f64 {
-        (x[b] - x[a]) * (y[c] - y[a]) - (y[b] - y[a]) * (x[c] - x[a])
-    };
-    for i in 0..n - 1 {
-        let (xmin_i, xmax_i) = (x[i].min(x[i + 1]), x[i].max(x[i + 1]));
-        let (ymin_i, ymax_i) = (y[i].min(y[i + 1]), y[i].max(y[i + 1]));
-        for j in i + 2..n - 1 {
-            if closed && i == 0 && j == n - 2 {
-                continue;
-            }
-            if x[j].max(x[j + 1]) < xmin_i
-                || x[j].min(x[j + 1]) > xmax_i
-                || y[j].max(y[j + 1]) < ymin_i
-                || y[j].min(y[j + 1]) > ymax_i
-            {
-                continue;
-            }
-            let d1 = orient(i, i + 1, j);
-            let d2 = orient(i, i + 1, j + 1);
-            let d3 = orient(j, j + 1, i);
-            let d4 = orient(j, j + 1, i + 1);
-            if d1 * d2 < 0.0 && d3 * d4 < 0.0 {
-                let t = d1 / (d1 - d2);
-                let px = x[j] + t * (x[j + 1] - x[j]);
-                let py = y[j] + t * (y[j + 1] - y[j]);
-                return Some((i, j, px, py));
-            }
-        }
-    }
-    None
 }

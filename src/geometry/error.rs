@@ -2,19 +2,16 @@
 //! splines and paneling. Every message is one line naming the problem (and for files the
 //! file name and line number).
 
+use crate::input::InputError;
+use crate::limits::{short_number, short_text};
 use thiserror::Error;
 
 /// Everything that can go wrong while building, reading or paneling an airfoil.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum GeometryError {
-    /// The file could not be opened or read.
-    #[error("{file}: cannot read file: {reason}")]
-    Io {
-        /// File name as given.
-        file: String,
-        /// Operating-system reason.
-        reason: String,
-    },
+    /// The file could not be read: missing, not a regular file, too large or unreadable.
+    #[error("cannot read airfoil file {}: {}", .0.path.display(), .0.problem)]
+    Input(#[source] InputError),
     /// The file is not UTF-8 text.
     #[error("{file}: not a text file (invalid UTF-8 at byte {offset})")]
     NotUtf8 {
@@ -40,7 +37,7 @@ pub enum GeometryError {
         file: String,
     },
     /// A token that should be a number is not one.
-    #[error("{file}:{line}: cannot parse '{token}' as a number")]
+    #[error("{file}:{line}: cannot parse '{}' as a number", short_text(token))]
     BadNumber {
         /// File name as given.
         file: String,
@@ -50,7 +47,7 @@ pub enum GeometryError {
         token: String,
     },
     /// A coordinate is NaN or infinite.
-    #[error("{file}:{line}: coordinate '{token}' is not finite")]
+    #[error("{file}:{line}: coordinate '{}' is not finite", short_text(token))]
     NonFinite {
         /// File name as given.
         file: String,
@@ -79,8 +76,129 @@ pub enum GeometryError {
         /// Minimum accepted.
         min: usize,
     },
+    /// More points than [`MAX_CONTOUR_POINTS`](crate::limits::MAX_CONTOUR_POINTS).
+    #[error("{file}: {found} points, more than the limit of {max}")]
+    TooManyPoints {
+        /// File name (or airfoil name).
+        file: String,
+        /// Points found.
+        found: usize,
+        /// Most accepted.
+        max: usize,
+    },
+    /// A coordinate beyond [`MAX_COORDINATE`](crate::limits::MAX_COORDINATE).
+    #[error(
+        "{file}:{line}: coordinate {} is beyond the limit of ±{} (chord units, or a length \
+         unit such as mm)",
+        short_number(*value),
+        short_number(*limit)
+    )]
+    CoordinateTooLarge {
+        /// File name (or airfoil name).
+        file: String,
+        /// 1-based line number (point number for in-memory airfoils).
+        line: usize,
+        /// The coordinate.
+        value: f64,
+        /// The limit.
+        limit: f64,
+    },
+    /// The contour spans less than [`MIN_CONTOUR_EXTENT`](crate::limits::MIN_CONTOUR_EXTENT).
+    #[error(
+        "{file}: the contour spans only {}, less than {}: too small to be resolved",
+        short_number(*extent),
+        short_number(*limit)
+    )]
+    TooSmall {
+        /// File name (or airfoil name).
+        file: String,
+        /// The larger of the x and y spans.
+        extent: f64,
+        /// The limit.
+        limit: f64,
+    },
+    /// A point repeats an earlier, non-adjacent point.
+    #[error(
+        "{file}:{line}: point ({}, {}) repeats the point at line {first_line}: the contour \
+         passes through it twice (listed twice, or folded back)",
+        short_number(*x),
+        short_number(*y)
+    )]
+    RepeatedPoint {
+        /// File name (or airfoil name).
+        file: String,
+        /// 1-based line number of the repetition.
+        line: usize,
+        /// 1-based line number of the first occurrence.
+        first_line: usize,
+        /// x of the point.
+        x: f64,
+        /// y of the point.
+        y: f64,
+    },
+    /// The contour does not go once around the section.
+    #[error(
+        "{file}: the contour turns through {:.0}° from its first to its last segment, more \
+         than one pass around a section (180° and the trailing-edge angle): is it listed \
+         twice?",
+        degrees.abs()
+    )]
+    Turning {
+        /// File name (or airfoil name).
+        file: String,
+        /// The total turning in degrees.
+        degrees: f64,
+    },
+    /// The contour folds back on itself at a point other than the leading edge.
+    #[error(
+        "{file}:{line}: the contour folds back at point ({}, {}) (a turn of {:.0}°): a stray \
+         point or a spike, not a smooth surface",
+        short_number(*x),
+        short_number(*y),
+        degrees
+    )]
+    Spike {
+        /// File name (or airfoil name).
+        file: String,
+        /// 1-based line number of the point.
+        line: usize,
+        /// x of the point.
+        x: f64,
+        /// y of the point.
+        y: f64,
+        /// The turn at the point (degrees).
+        degrees: f64,
+    },
+    /// The contour encloses (almost) no area.
+    #[error(
+        "{file}: the contour encloses almost no area ({} of the chord squared): a section of \
+         zero thickness cannot be solved",
+        short_number(*ratio)
+    )]
+    ZeroThickness {
+        /// File name (or airfoil name).
+        file: String,
+        /// Enclosed area / chord².
+        ratio: f64,
+    },
+    /// The end points are far apart: the contour is cut short.
+    #[error(
+        "{file}: the trailing-edge gap is {} of the contour's size (at most 0.3): the contour \
+         is open (a surface missing or cut short)",
+        short_number(*ratio)
+    )]
+    OpenContour {
+        /// File name (or airfoil name).
+        file: String,
+        /// Gap / extent.
+        ratio: f64,
+    },
     /// Two consecutive points coincide.
-    #[error("{file}:{line}: point ({x}, {y}) duplicates the previous point")]
+    #[error(
+        "{file}:{line}: point ({}, {}) duplicates the previous point",
+        short_number(*x),
+        short_number(*y)
+    )]
     DuplicatePoint {
         /// File name (or airfoil name).
         file: String,
@@ -92,7 +210,12 @@ pub enum GeometryError {
         y: f64,
     },
     /// Two non-adjacent contour segments cross.
-    #[error("{file}:{line_a}: surfaces cross: segment at line {line_a} intersects segment at line {line_b} near ({x:.5}, {y:.5})")]
+    #[error(
+        "{file}:{line_a}: surfaces cross: segment at line {line_a} intersects segment at line \
+         {line_b} near ({}, {})",
+        short_number(*x),
+        short_number(*y)
+    )]
     SelfIntersecting {
         /// File name (or airfoil name).
         file: String,

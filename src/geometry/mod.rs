@@ -15,19 +15,25 @@ mod naca;
 mod paneling;
 mod registry;
 mod spline;
+mod validation;
 
+use crate::limits::short_number;
 pub use coordinates::{
     parse_airfoil_bytes, parse_airfoil_text, read_airfoil_file, to_selig_string, CoordinateFormat,
-    MIN_POINTS,
 };
 pub use error::GeometryError;
 pub use naca::{naca, NacaOptions, NacaSection, TrailingEdge};
 pub use paneling::{PaneledAirfoil, PanelingParams, DEFAULT_PANEL_NODES};
 pub use registry::{airfoil_by_name_or_path, airfoil_key, naca8h12};
 pub use spline::{ContourSpline, CubicSpline, EndCondition};
+pub use validation::{
+    MAX_REVERSE_TURNING_DEG, MAX_REVERSE_TURN_DEG, MAX_TE_GAP_RATIO, MAX_TURNING_DEG,
+    MIN_AREA_RATIO, MIN_POINTS, SPIKE_TURN_DEG,
+};
 
-/// Deviation of the chord from 1 and of the leading-edge point from the origin (chord units)
-/// up to which [`Airfoil::in_chord_units`] keeps a contour as given.
+/// Deviation of the chord (x of the TE midpoint less x of the leading-edge point) from 1 and of
+/// the leading-edge point from the origin (chord units) up to which
+/// [`Airfoil::in_chord_units`] keeps a contour as given.
 pub const CHORD_UNITS_TOLERANCE: f64 = 0.01;
 
 /// An airfoil contour as an ordered list of points in XFOIL order: from the upper-surface
@@ -57,9 +63,10 @@ impl Airfoil {
         self.x.is_empty()
     }
 
-    /// Checks the contour as the file reader does: equal x/y lengths, at least
-    /// [`MIN_POINTS`] finite points, no duplicate consecutive points, no
-    /// crossing segments. Errors name the airfoil and the 1-based point number.
+    /// Checks the contour as the file reader does: equal x/y lengths, then the checks of the
+    /// file reader (point count and coordinate limits, no repeated points, no crossing
+    /// segments, one turn around the section without spikes, a thickness). Errors name the
+    /// airfoil and the 1-based point number.
     pub fn validate(&self) -> Result<(), GeometryError> {
         if self.x.len() != self.y.len() {
             return Err(GeometryError::LengthMismatch {
@@ -69,7 +76,7 @@ impl Airfoil {
             });
         }
         let numbers: Vec<usize> = (1..=self.x.len()).collect();
-        coordinates::validate_contour(&self.x, &self.y, &numbers, &self.name)
+        validation::validate_contour(&self.x, &self.y, &numbers, &self.name)
     }
 
     /// Trailing-edge gap: distance between the first and the last point (XFOIL `GAP`).
@@ -108,29 +115,55 @@ impl Airfoil {
         Ok((xt - xl).hypot(yt - yl))
     }
 
-    /// Copy translated, derotated and scaled so that the leading-edge point is at the
-    /// origin and the TE midpoint at (1, 0) (XFOIL `NORM` plus derotation).
+    /// Copy translated and scaled so that the leading-edge point is at the origin and the TE
+    /// midpoint at x = 1 (XFOIL `NORM`): never rotated, so that angles of attack keep the
+    /// reference of the coordinates (their x axis). A TE midpoint that is not aft of the
+    /// leading edge is an error.
     pub fn normalized(&self) -> Result<Airfoil, GeometryError> {
         let sp = self.spline()?;
         let (xl, yl) = sp.point(sp.leading_edge()?);
-        let (xt, yt) = sp.te_midpoint();
-        let (dx, dy) = (xt - xl, yt - yl);
-        let c2 = dx * dx + dy * dy;
-        if !(c2 > 0.0 && c2.is_finite()) {
+        let (xt, _) = sp.te_midpoint();
+        let chord = xt - xl;
+        if !(chord > 0.0 && chord.is_finite()) {
             return Err(GeometryError::Paneling(format!(
-                "{}: zero chord, cannot normalise",
-                self.name
+                "{}: the trailing edge is not aft of the leading edge (x {} vs {}), cannot \
+                 normalise",
+                self.name,
+                short_number(xt),
+                short_number(xl)
             )));
         }
-        // Rotation by −atan2(dy, dx) and scaling by 1/c in one step: (u, v) = R·(p − LE)/c.
-        let (ca, sa) = (dx / c2, dy / c2);
+        let scale = 1.0 / chord;
+        Ok(Airfoil {
+            name: self.name.clone(),
+            x: self.x.iter().map(|&px| (px - xl) * scale).collect(),
+            y: self.y.iter().map(|&py| (py - yl) * scale).collect(),
+        })
+    }
+
+    /// Inclination of the chord line (leading-edge point to TE midpoint) to the x axis, in
+    /// degrees, positive when the trailing edge is above the leading edge.
+    pub fn chord_angle_deg(&self) -> Result<f64, GeometryError> {
+        let sp = self.spline()?;
+        let (xl, yl) = sp.point(sp.leading_edge()?);
+        let (xt, yt) = sp.te_midpoint();
+        Ok((yt - yl).atan2(xt - xl).to_degrees())
+    }
+
+    /// Copy rotated about the leading-edge point so that the chord line lies along +x (angles
+    /// of attack are then measured from the chord line); not scaled or translated. Only on a
+    /// user's explicit request: it changes the angle reference of the coordinates.
+    pub fn derotated(&self) -> Result<Airfoil, GeometryError> {
+        let sp = self.spline()?;
+        let (xl, yl) = sp.point(sp.leading_edge()?);
+        let (sa, ca) = (-self.chord_angle_deg()?.to_radians()).sin_cos();
         let (x, y) = self
             .x
             .iter()
             .zip(&self.y)
             .map(|(&px, &py)| {
                 let (rx, ry) = (px - xl, py - yl);
-                (ca * rx + sa * ry, ca * ry - sa * rx)
+                (xl + ca * rx - sa * ry, yl + sa * rx + ca * ry)
             })
             .unzip();
         Ok(Airfoil {
@@ -140,20 +173,20 @@ impl Airfoil {
         })
     }
 
-    /// The contour in chord units. A contour whose chord is 1 and whose leading-edge point is
-    /// at the origin within [`CHORD_UNITS_TOLERANCE`] is returned as given (like XFOIL, which
-    /// does not normalise, so results on standard files match XFOIL's); any other (e.g.
-    /// ordinates in millimetres or percent, or a shifted contour) is [`normalized`]. The flag
-    /// says whether it was normalised.
+    /// The contour in chord units. A contour whose leading-edge point is at the origin and
+    /// whose TE midpoint is at x = 1 within [`CHORD_UNITS_TOLERANCE`] is returned as given
+    /// (like XFOIL, which does not normalise, so results on standard files match XFOIL's); any
+    /// other (e.g. ordinates in millimetres or percent, or a shifted contour) is
+    /// [`normalized`]: translated and scaled, never rotated. The flag says whether it was
+    /// normalised.
     ///
     /// [`normalized`]: Self::normalized
     pub fn in_chord_units(&self) -> Result<(Airfoil, bool), GeometryError> {
         let sp = self.spline()?;
         let (xl, yl) = sp.point(sp.leading_edge()?);
-        let (xt, yt) = sp.te_midpoint();
-        let chord = (xt - xl).hypot(yt - yl);
+        let (xt, _) = sp.te_midpoint();
         let tol = CHORD_UNITS_TOLERANCE;
-        if (chord - 1.0).abs() <= tol && xl.hypot(yl) <= tol {
+        if (xt - xl - 1.0).abs() <= tol && xl.hypot(yl) <= tol {
             Ok((self.clone(), false))
         } else {
             Ok((self.normalized()?, true))
@@ -180,7 +213,8 @@ impl Airfoil {
     pub fn normalisation_note(given: &str) -> String {
         format!(
             "{given}: chord is not 1 or the leading edge is not at the origin; coordinates \
-             normalised to unit chord (LE at 0,0, TE at 1,0)"
+             normalised to unit chord by scaling and translation (LE at 0,0, TE at x = 1), \
+             not rotated"
         )
     }
 

@@ -7,6 +7,7 @@ use super::coordinates::{parse_airfoil_text, read_airfoil_file};
 use super::error::GeometryError;
 use super::naca::{naca, NacaOptions};
 use super::Airfoil;
+use crate::input;
 
 /// NACA 8-H-12 ordinates (NACA TN 1998, Table I), embedded so they are found from any
 /// working directory. Provenance: `geometry/README.md`.
@@ -30,10 +31,11 @@ pub fn airfoil_key(name: &str) -> String {
 /// * `naca8h12` (also `NACA 8-H-12`, any case) → embedded 8-H-12 ordinates;
 /// * `nacaDDDD` / `nacaDDDDD` / `NACA 2412` (any case, spaces allowed) → NACA generator with
 ///   XFOIL's conventions ([`NacaOptions::default`]), e.g. `naca23012`;
-/// * otherwise an existing file path → coordinate-file reader.
+/// * otherwise an existing path → coordinate-file reader ([`crate::input`]: a device, FIFO or
+///   broken link is named as such).
 ///
 /// A NACA-looking name with an invalid designation reports why, a folder gives
-/// [`GeometryError::AirfoilIsFolder`], and anything else that is not a file gives
+/// [`GeometryError::AirfoilIsFolder`], and a path where nothing exists gives
 /// [`GeometryError::UnknownAirfoil`] listing what is accepted.
 pub fn airfoil_by_name_or_path(s: &str) -> Result<Airfoil, GeometryError> {
     let trimmed = s.trim();
@@ -53,13 +55,14 @@ pub fn airfoil_by_name_or_path(s: &str) -> Result<Airfoil, GeometryError> {
             });
         }
     }
-    if !trimmed.is_empty() && path.is_file() {
-        return read_airfoil_file(path);
-    }
     if !trimmed.is_empty() && path.is_dir() {
         return Err(GeometryError::AirfoilIsFolder {
             name: trimmed.to_string(),
         });
+    }
+    if !trimmed.is_empty() && input::exists(path) {
+        // A file, or a device, FIFO or broken link that the reader names as such.
+        return read_airfoil_file(path);
     }
     Err(GeometryError::UnknownAirfoil {
         name: trimmed.to_string(),

@@ -4,6 +4,7 @@ use thiserror::Error;
 
 use crate::compressibility::MachOutOfRange;
 use crate::geometry::GeometryError;
+use crate::limits::short_number;
 
 /// Everything that can go wrong when building or solving the panel system.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -36,6 +37,21 @@ pub enum InviscidError {
     /// The influence matrix could not be factorised into a usable solution.
     #[error("panel influence matrix is singular (self-intersecting or degenerate contour?)")]
     SingularSystem,
+    /// The solution is outside what any airfoil can produce (see
+    /// [`MAX_UNIT_SPEED`](crate::inviscid::MAX_UNIT_SPEED) and
+    /// [`MAX_SECTION_CL`](crate::inviscid::MAX_SECTION_CL)): a contour the panel method cannot
+    /// resolve.
+    #[error(
+        "the panel solution is not physical ({what} = {}): the contour is too irregular for \
+         the panel method (a stray point, a fold, or surfaces nearly on top of each other)",
+        short_number(*value)
+    )]
+    Implausible {
+        /// `surface speed` or `Cl`.
+        what: &'static str,
+        /// Its value.
+        value: f64,
+    },
     /// Mach number outside the subsonic range [0, 1).
     #[error(transparent)]
     InvalidMach(#[from] MachOutOfRange),

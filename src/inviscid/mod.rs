@@ -40,7 +40,7 @@ mod tests;
 
 pub use contour::{PanelGeometry, PanelParams, TrailingEdge};
 pub use error::InviscidError;
-pub use system::{InviscidSolution, PanelSystem};
+pub use system::{InviscidSolution, PanelSystem, MAX_SECTION_CL, MAX_UNIT_SPEED};
 
 pub(crate) use source_influence::SourceInfluence;
 pub(crate) use system::superpose;

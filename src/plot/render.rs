@@ -157,7 +157,7 @@ pub fn render_with(
                 let root = BitMapBackend::new(file, layout.size).into_drawing_area();
                 draw_figure(&root, figure, params, &layout)?;
                 root.present()
-                    .map_err(|e| OutputError::io(path, std::io::Error::other(e.to_string())).into())
+                    .map_err(|e| OutputError::io(path, encoder_io_error(&e.to_string())).into())
             }
         }
     })
@@ -165,6 +165,22 @@ pub fn render_with(
         PlotError::Output { source, .. } => PlotError::output(path, source),
         other => other,
     })
+}
+
+/// The operating-system error inside the PNG encoder's error, whose text is the Rust debug form
+/// of nested error values (`ImageError(IoError(Os { code: 28, … }))`, the bitmap backend's
+/// error types are not exported to name them): the OS error when its code is there, else a
+/// plain sentence.
+fn encoder_io_error(debug: &str) -> std::io::Error {
+    let code = debug.split("code: ").nth(1).and_then(|rest| {
+        rest.split(|c: char| !c.is_ascii_digit())
+            .next()
+            .and_then(|d| d.parse::<i32>().ok())
+    });
+    match code {
+        Some(code) => std::io::Error::from_raw_os_error(code),
+        None => std::io::Error::other("the PNG encoder could not write the file"),
+    }
 }
 
 /// Width of a one-panel figure drawn by [`render_with_legend_room`] (px): wider than a grid

@@ -1,6 +1,6 @@
 //! Angle-of-attack ranges `A0:A1:DA` and the order in which a sweep visits them.
 
-use crate::inputs::{self, InputError};
+use crate::arguments::{self, ArgumentError};
 use thiserror::Error;
 
 /// Why an α range was rejected.
@@ -31,6 +31,16 @@ pub enum RangeError {
         /// The offending field.
         field: String,
     },
+    /// The step is below the 10⁻⁹° resolution of the values, so two of them coincide.
+    #[error(
+        "alpha range '{text}': step {step} deg is below the 1e-9 deg resolution of the angles"
+    )]
+    StepTooSmall {
+        /// The whole range text.
+        text: String,
+        /// The step.
+        step: String,
+    },
     /// Too many points (a typo such as a tiny step).
     #[error("alpha range '{text}' has {count} points (at most {max})")]
     TooMany {
@@ -43,8 +53,7 @@ pub enum RangeError {
     },
 }
 
-/// Largest number of α values one range may produce.
-pub const MAX_ALPHA_POINTS: usize = 100_000;
+pub use crate::limits::MAX_ALPHA_POINTS;
 
 /// Largest |α| (deg) a range may reach.
 pub const MAX_ALPHA_DEG: f64 = 180.0;
@@ -60,8 +69,8 @@ pub fn parse_alpha_range(text: &str) -> Result<Vec<f64>, RangeError> {
         match f.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
             _ => Err(RangeError::Number {
-                text: text.to_string(),
-                field: f.to_string(),
+                text: crate::limits::short_text(text),
+                field: crate::limits::short_text(f),
             }),
         }
     };
@@ -69,8 +78,8 @@ pub fn parse_alpha_range(text: &str) -> Result<Vec<f64>, RangeError> {
         let v = num(f)?;
         if v.abs() > MAX_ALPHA_DEG {
             return Err(RangeError::OutOfRange {
-                text: text.to_string(),
-                field: f.to_string(),
+                text: crate::limits::short_text(text),
+                field: crate::limits::short_text(f),
             });
         }
         Ok(v)
@@ -80,42 +89,49 @@ pub fn parse_alpha_range(text: &str) -> Result<Vec<f64>, RangeError> {
         [a0, a1, da] => {
             let (a0, a1, da) = (angle(a0)?, angle(a1)?, num(da)?);
             if da == 0.0 {
-                return Err(RangeError::ZeroStep(text.to_string()));
+                return Err(RangeError::ZeroStep(crate::limits::short_text(text)));
             }
             let span = (a1 - a0) / da;
             if span < -1e-9 {
-                return Err(RangeError::Empty(text.to_string()));
+                return Err(RangeError::Empty(crate::limits::short_text(text)));
             }
             let n = (span + 1e-9).floor();
             if n + 1.0 > MAX_ALPHA_POINTS as f64 {
                 return Err(RangeError::TooMany {
-                    text: text.to_string(),
+                    text: crate::limits::short_text(text),
                     count: (n + 1.0).min(usize::MAX as f64) as usize,
                     max: MAX_ALPHA_POINTS,
                 });
             }
-            Ok((0..=n as usize)
+            let values: Vec<f64> = (0..=n as usize)
                 .map(|i| round9(a0 + i as f64 * da))
-                .collect())
+                .collect();
+            if values.windows(2).any(|w| w[0] == w[1]) {
+                return Err(RangeError::StepTooSmall {
+                    text: crate::limits::short_text(text),
+                    step: crate::limits::short_number(da),
+                });
+            }
+            Ok(values)
         }
-        _ => Err(RangeError::Syntax(text.to_string())),
+        _ => Err(RangeError::Syntax(crate::limits::short_text(text))),
     }
 }
 
 /// An α list given as values (the Python package's arrays) rather than as a range: not empty,
-/// finite, none twice ([`inputs::distinct`]), every angle within ±[`MAX_ALPHA_DEG`] and at most
+/// finite, none twice ([`arguments::distinct`]), every angle within ±[`MAX_ALPHA_DEG`] and at most
 /// [`MAX_ALPHA_POINTS`] of them. `name` is the argument as the caller calls it.
-pub fn check_alphas(name: &str, alphas: &[f64]) -> Result<(), InputError> {
+pub fn check_alphas(name: &str, alphas: &[f64]) -> Result<(), ArgumentError> {
     if alphas.len() > MAX_ALPHA_POINTS {
-        return Err(InputError::new(
+        return Err(ArgumentError::with_text(
             name,
             "",
             format!("{} values (at most {MAX_ALPHA_POINTS})", alphas.len()),
         ));
     }
-    inputs::distinct(name, alphas)?;
+    arguments::distinct(name, alphas)?;
     match alphas.iter().find(|a| a.abs() > MAX_ALPHA_DEG) {
-        Some(a) => Err(InputError::new(name, a, "outside -180…180 deg")),
+        Some(a) => Err(ArgumentError::new(name, *a, "outside -180…180 deg")),
         None => Ok(()),
     }
 }
@@ -193,6 +209,15 @@ mod tests {
             Err(RangeError::TooMany { .. })
         ));
         assert_eq!(parse_alpha_range("-180:180:90").unwrap().len(), 5);
+        // Values that coincide after rounding are refused before any solve.
+        assert!(matches!(
+            parse_alpha_range("0:1e-10:1e-10"),
+            Err(RangeError::StepTooSmall { .. })
+        ));
+        assert!(matches!(
+            parse_alpha_range("5:5.000000003:3e-10"),
+            Err(RangeError::StepTooSmall { .. })
+        ));
         for bad in ["170:190:10", "1e300", "-180.5:0:1"] {
             assert!(
                 matches!(parse_alpha_range(bad), Err(RangeError::OutOfRange { .. })),

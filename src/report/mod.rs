@@ -23,7 +23,7 @@ mod markdown;
 mod words;
 
 use crate::geometry::airfoil_key;
-use crate::output::{check_output_path, write_output, OutputError};
+use crate::output::{check_output_path, OutputError, OutputSet};
 use crate::plot::rotor_plots::{power_plot, takeoff_plot};
 use crate::plot::{render_with_legend_room, Figure, PlotError};
 use crate::rotor::study::paper::{Table5Row, SECTION_MACH, SECTION_RE, TABLE5, TABLE5_CL};
@@ -162,14 +162,19 @@ pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError>
         .map(|row| load_foil(&inputs.polars, row))
         .collect::<Result<Vec<_>, _>>()?;
     let rotor = rotor_results(&ac, &foils[0].tables)?;
-    std::fs::create_dir_all(&inputs.out).map_err(|e| OutputError::io(&inputs.out, e))?;
-
-    let mut written = Vec::new();
+    // Every file of the report appears together with the others, or none does.
+    let mut set = OutputSet::new();
     let mut figure = |name: &str, fig: &Figure| -> Result<(), ReportError> {
         for ext in FIGURE_FORMATS {
             let path = inputs.out.join(format!("{name}.{ext}"));
-            render_with_legend_room(fig, &path)?;
-            written.push(path);
+            let staged = set.stage(&path)?;
+            render_with_legend_room(fig, &staged).map_err(|e| match e {
+                PlotError::Output { source, .. } => PlotError::output(
+                    &path,
+                    OutputError::io(&path, std::io::Error::other(source.detail_for(&staged))),
+                ),
+                other => other,
+            })?;
         }
         Ok(())
     };
@@ -200,7 +205,7 @@ pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError>
 
     let text = markdown::markdown(inputs, &ac, &foils, &rotor);
     let readme = inputs.out.join(REPORT_README);
-    write_output(&readme, |w| {
+    set.write(&readme, |w| {
         w.write_all(text.as_bytes())
             .map_err(|e| OutputError::io(&readme, e))
     })
@@ -208,7 +213,7 @@ pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError>
         path: readme.clone(),
         source,
     })?;
-    written.push(readme);
+    let written = set.commit()?;
     let notes = rotor.sweeps.iter().flat_map(SpeedSweep::notes).collect();
     Ok(ReportOutcome { written, notes })
 }

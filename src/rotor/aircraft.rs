@@ -2,7 +2,8 @@
 
 use super::atmosphere::MAX_ISA_ALTITUDE_M;
 use super::inflow::InflowModel;
-use crate::inputs::InputError;
+use crate::arguments::ArgumentError;
+use crate::input::{read_input, InputError};
 use serde::Deserialize;
 use std::borrow::Cow;
 use std::path::Path;
@@ -10,13 +11,14 @@ use std::path::Path;
 /// Errors while loading or checking an aircraft preset.
 #[derive(Debug, thiserror::Error)]
 pub enum AircraftError {
-    /// The file could not be read.
-    #[error("cannot read aircraft file {path}: {source}")]
-    Io {
+    /// The file could not be read: missing, not a regular file, too large or unreadable.
+    #[error("cannot read aircraft file {}: {}", .0.path.display(), .0.problem)]
+    Input(#[source] InputError),
+    /// The file is not UTF-8 text.
+    #[error("bad aircraft file {path}: not UTF-8 text")]
+    NotText {
         /// File path.
         path: String,
-        /// Underlying error.
-        source: std::io::Error,
     },
     /// The TOML is malformed, has a missing field or an unknown one.
     #[error("bad aircraft file {path}: {message}")]
@@ -27,7 +29,7 @@ pub enum AircraftError {
         message: String,
     },
     /// A value is outside its physical range.
-    #[error("aircraft parameter {field} = {value} is invalid: {reason}")]
+    #[error("aircraft parameter {field} = {} is invalid: {reason}", short_number(*value))]
     Invalid {
         /// Dotted field name.
         field: &'static str,
@@ -38,20 +40,19 @@ pub enum AircraftError {
     },
 }
 
-/// Largest accepted aircraft mass \[kg\] (a sanity bound far above any gyroplane).
-pub const MAX_MASS_KG: f64 = 100_000.0;
-
-/// Largest accepted airspeed \[kt\] (of a preset, and of the `gyro` commands, which take it as
-/// an exclusive bound).
-pub const MAX_SPEED_KT: f64 = 300.0;
+use crate::limits::short_number;
+use crate::limits::{
+    AZIMUTH_STEPS, MAX_ROTOR_CELLS, MAX_TAKEOFF_CELL_STEPS, MAX_TAKEOFF_STEPS, RADIAL_STRIPS,
+};
+pub use crate::limits::{MAX_MASS_KG, MAX_SPEED_KT};
 
 /// An airspeed argument \[kt\] (of `gyro` and the Python package): above 0 and below
 /// [`MAX_SPEED_KT`].
-pub fn check_speed_kt(name: &str, kt: f64) -> Result<(), InputError> {
+pub fn check_speed_kt(name: &str, kt: f64) -> Result<(), ArgumentError> {
     if kt.is_finite() && kt > 0.0 && kt < MAX_SPEED_KT {
         return Ok(());
     }
-    Err(InputError::new(
+    Err(ArgumentError::new(
         name,
         kt,
         format!("must be above 0 and below {MAX_SPEED_KT} kt"),
@@ -59,11 +60,11 @@ pub fn check_speed_kt(name: &str, kt: f64) -> Result<(), InputError> {
 }
 
 /// A mass argument that replaces the preset's \[kg\]: positive, at most [`MAX_MASS_KG`].
-pub fn check_mass_kg(name: &str, kg: f64) -> Result<(), InputError> {
+pub fn check_mass_kg(name: &str, kg: f64) -> Result<(), ArgumentError> {
     if kg.is_finite() && kg > 0.0 && kg <= MAX_MASS_KG {
         return Ok(());
     }
-    Err(InputError::new(
+    Err(ArgumentError::new(
         name,
         kg,
         format!("must be a positive number of kg, at most {MAX_MASS_KG}"),
@@ -71,11 +72,11 @@ pub fn check_mass_kg(name: &str, kg: f64) -> Result<(), InputError> {
 }
 
 /// An ISA altitude argument \[m\]: inside the troposphere of the atmosphere model.
-pub fn check_altitude_m(name: &str, m: f64) -> Result<(), InputError> {
+pub fn check_altitude_m(name: &str, m: f64) -> Result<(), ArgumentError> {
     if (0.0..=MAX_ISA_ALTITUDE_M).contains(&m) {
         return Ok(());
     }
-    Err(InputError::new(
+    Err(ArgumentError::new(
         name,
         m,
         format!("must be within the ISA troposphere, 0 to {MAX_ISA_ALTITUDE_M} m"),
@@ -88,11 +89,6 @@ const TAKEOFF_TIME_STEP_RANGE_S: (f64, f64) = (1e-3, 0.1);
 
 /// Longest accepted simulated takeoff time \[s\].
 const TAKEOFF_MAX_TIME_S: f64 = 600.0;
-
-/// Most takeoff integration steps (max_time_s / time_step_s) a preset may ask for: each step
-/// costs four rotor evaluations (≈ 4 ms), so this bounds a run that never leaves the ground
-/// to about 80 s of computing (the shipped preset: 6 000).
-const TAKEOFF_MAX_STEPS: f64 = 20_000.0;
 
 /// Whole-aircraft data.
 #[derive(Clone, Debug, Deserialize)]
@@ -211,11 +207,12 @@ pub struct TakeoffParams {
 impl Aircraft {
     /// Reads and checks a TOML preset.
     pub fn from_toml_file(path: &Path) -> Result<Self, AircraftError> {
-        let text = std::fs::read_to_string(path).map_err(|source| AircraftError::Io {
-            path: path.display().to_string(),
-            source,
+        let bytes = read_input(path).map_err(AircraftError::Input)?;
+        let origin = path.display().to_string();
+        let text = String::from_utf8(bytes).map_err(|_| AircraftError::NotText {
+            path: origin.clone(),
         })?;
-        Self::from_toml_str(&text, &path.display().to_string())
+        Self::from_toml_str(&text, &origin)
     }
 
     /// Parses and checks a TOML preset held in memory; `origin` names it in errors.
@@ -315,18 +312,42 @@ impl Aircraft {
         positive("rotor.blade_mass_kg", r.blade_mass_kg)?;
         non_negative("rotor.hub_inertia_kg_m2", r.hub_inertia_kg_m2)?;
         positive("rotor.flap_stop_deg", r.flap_stop_deg)?;
-        if r.radial_strips < 2 || r.radial_strips > 200 {
+        if !(RADIAL_STRIPS.0..=RADIAL_STRIPS.1).contains(&r.radial_strips) {
             return Err(AircraftError::Invalid {
                 field: "rotor.radial_strips",
                 value: r.radial_strips as f64,
-                reason: "must be between 2 and 200".into(),
+                reason: format!(
+                    "must be between {} and {}",
+                    RADIAL_STRIPS.0, RADIAL_STRIPS.1
+                )
+                .into(),
             });
         }
-        if r.azimuth_steps < 8 || r.azimuth_steps > 720 || r.azimuth_steps % 2 != 0 {
+        if !(AZIMUTH_STEPS.0..=AZIMUTH_STEPS.1).contains(&r.azimuth_steps)
+            || r.azimuth_steps % 2 != 0
+        {
             return Err(AircraftError::Invalid {
                 field: "rotor.azimuth_steps",
                 value: r.azimuth_steps as f64,
-                reason: "must be even and between 8 and 720".into(),
+                reason: format!(
+                    "must be even and between {} and {}",
+                    AZIMUTH_STEPS.0, AZIMUTH_STEPS.1
+                )
+                .into(),
+            });
+        }
+        if r.cells() > MAX_ROTOR_CELLS {
+            return Err(AircraftError::Invalid {
+                field: "rotor.azimuth_steps",
+                value: r.azimuth_steps as f64,
+                reason: format!(
+                    "with {} radial strips gives {} blade-element cells, more than the limit \
+                     of {MAX_ROTOR_CELLS} (radial_strips × azimuth_steps; every rotor \
+                     evaluation costs in proportion)",
+                    r.radial_strips,
+                    r.cells()
+                )
+                .into(),
             });
         }
         if let Some(b) = r.tip_loss_b {
@@ -411,11 +432,27 @@ impl Aircraft {
             (t.time_step_s, TAKEOFF_MAX_TIME_S),
             "must be between one time step and 600 s",
         )?;
-        if t.max_time_s / t.time_step_s > TAKEOFF_MAX_STEPS {
+        let steps = t.max_time_s / t.time_step_s;
+        if steps > MAX_TAKEOFF_STEPS as f64 {
             return Err(AircraftError::Invalid {
                 field: "takeoff.max_time_s",
                 value: t.max_time_s,
-                reason: "gives more than 20000 time steps (max_time_s / time_step_s)".into(),
+                reason: format!(
+                    "gives more than {MAX_TAKEOFF_STEPS} time steps (max_time_s / time_step_s)"
+                )
+                .into(),
+            });
+        }
+        if steps * r.cells() as f64 > MAX_TAKEOFF_CELL_STEPS as f64 {
+            return Err(AircraftError::Invalid {
+                field: "takeoff.max_time_s",
+                value: t.max_time_s,
+                reason: format!(
+                    "gives {steps:.0} time steps of {} rotor cells, more than the limit of \
+                     {MAX_TAKEOFF_CELL_STEPS} steps × cells",
+                    r.cells()
+                )
+                .into(),
             });
         }
         Ok(())
@@ -423,6 +460,11 @@ impl Aircraft {
 }
 
 impl RotorParams {
+    /// Blade-element cells of one rotor evaluation: radial strips × azimuth steps.
+    pub fn cells(&self) -> usize {
+        self.radial_strips.saturating_mul(self.azimuth_steps)
+    }
+
     /// Polar moment of inertia of the rotor about the shaft \[kg m²\]: hub plus N_b uniform
     /// blades spanning root cut-out r0 … R, I_b = m_b (R³ − r0³) / (3 (R − r0)).
     pub fn polar_inertia(&self) -> f64 {

@@ -1,5 +1,6 @@
 //! Errors of table construction, lookup setup and file input/output.
 
+use crate::limits::short_number;
 use std::path::PathBuf;
 use thiserror::Error;
 
@@ -11,7 +12,7 @@ pub enum TableError {
     #[error("table has no {0} values")]
     EmptyAxis(&'static str),
     /// An axis is not strictly increasing.
-    #[error("{axis} axis is not strictly increasing: {value} follows {previous}")]
+    #[error("{axis} axis is not strictly increasing: {} follows {}", short_number(*value), short_number(*previous))]
     AxisOrder {
         /// `Re` or `Mach`.
         axis: &'static str,
@@ -21,10 +22,14 @@ pub enum TableError {
         value: f64,
     },
     /// A Reynolds number is not a positive finite number.
-    #[error("Re must be positive and finite, got {0}")]
+    #[error(
+        "Re must be positive and at most {}, got {}",
+        short_number(crate::table::MAX_RE),
+        short_number(*.0)
+    )]
     BadRe(f64),
     /// A Mach number is outside [0, 1).
-    #[error("Mach must be in [0, 1), got {0}")]
+    #[error("Mach must be in [0, 1), got {}", short_number(*.0))]
     BadMach(f64),
     /// The number of polars does not match the Re × Mach grid.
     #[error("ragged grid: {n_re} Re × {n_mach} Mach needs {expected} polars, got {got}")]
@@ -39,7 +44,7 @@ pub enum TableError {
         got: usize,
     },
     /// A (Re, M) node of the grid has no polar.
-    #[error("ragged grid: no polar at Re {re}, M {mach}")]
+    #[error("ragged grid: no polar at Re {}, M {}", short_number(*re), short_number(*mach))]
     MissingPolar {
         /// Reynolds number of the empty node.
         re: f64,
@@ -47,7 +52,7 @@ pub enum TableError {
         mach: f64,
     },
     /// The same (Re, M) node was given twice.
-    #[error("duplicate polar at Re {re}, M {mach}")]
+    #[error("duplicate polar at Re {}, M {}", short_number(*re), short_number(*mach))]
     DuplicatePolar {
         /// Reynolds number.
         re: f64,
@@ -55,7 +60,7 @@ pub enum TableError {
         mach: f64,
     },
     /// The same α appears twice in one polar.
-    #[error("duplicate alpha {alpha} in polar Re {re}, M {mach}")]
+    #[error("duplicate alpha {} in polar Re {}, M {}", short_number(*alpha), short_number(*re), short_number(*mach))]
     DuplicateAlpha {
         /// Reynolds number.
         re: f64,
@@ -65,7 +70,7 @@ pub enum TableError {
         alpha: f64,
     },
     /// A converged point (or any α) holds NaN or infinity, or α is outside ±180°.
-    #[error("{field} is {value} at Re {re}, M {mach}, alpha {alpha} (must be finite)")]
+    #[error("{field} is {} at Re {}, M {}, alpha {} (must be finite)", short_number(*value), short_number(*re), short_number(*mach), short_number(*alpha))]
     NotFinite {
         /// Column name.
         field: &'static str,
@@ -79,7 +84,7 @@ pub enum TableError {
         alpha: f64,
     },
     /// α outside [−180°, 180°].
-    #[error("alpha {alpha} outside [-180, 180] in polar Re {re}, M {mach}")]
+    #[error("alpha {} outside [-180, 180] in polar Re {}, M {}", short_number(*alpha), short_number(*re), short_number(*mach))]
     AlphaRange {
         /// Reynolds number.
         re: f64,
@@ -89,7 +94,7 @@ pub enum TableError {
         alpha: f64,
     },
     /// A converged point with negative drag (no physical section has it).
-    #[error("cd {cd} < 0 at alpha {alpha} in polar Re {re}, M {mach}")]
+    #[error("cd {} < 0 at alpha {} in polar Re {}, M {}", short_number(*cd), short_number(*alpha), short_number(*re), short_number(*mach))]
     NegativeDrag {
         /// Reynolds number.
         re: f64,
@@ -100,8 +105,70 @@ pub enum TableError {
         /// The drag coefficient.
         cd: f64,
     },
+    /// A metadata field is outside its range (NaN, a negative transition setting, …).
+    #[error("table {field} = {value} is invalid (must be {rule})")]
+    BadMeta {
+        /// Field name.
+        field: &'static str,
+        /// The value as text (numbers in short form).
+        value: String,
+        /// The allowed range.
+        rule: &'static str,
+    },
+    /// A polar without any point.
+    #[error("polar Re {}, M {} has no points", short_number(*re), short_number(*mach))]
+    EmptyPolar {
+        /// Reynolds number.
+        re: f64,
+        /// Mach number.
+        mach: f64,
+    },
+    /// The transition location of a converged point is not a chord fraction.
+    #[error(
+        "{field} = {} at alpha {} in polar Re {}, M {} is not a chord fraction in [0, 1]",
+        short_number(*value),
+        short_number(*alpha),
+        short_number(*re),
+        short_number(*mach)
+    )]
+    TransitionRange {
+        /// Column name.
+        field: &'static str,
+        /// The value.
+        value: f64,
+        /// Reynolds number.
+        re: f64,
+        /// Mach number.
+        mach: f64,
+        /// Angle of attack.
+        alpha: f64,
+    },
+    /// A converged coefficient beyond what any section produces.
+    #[error(
+        "{field} = {} at alpha {} in polar Re {}, M {} is beyond the plausible range \
+         (|{field}| <= {})",
+        short_number(*value),
+        short_number(*alpha),
+        short_number(*re),
+        short_number(*mach),
+        short_number(*bound)
+    )]
+    Implausible {
+        /// Column name.
+        field: &'static str,
+        /// The value.
+        value: f64,
+        /// Its bound.
+        bound: f64,
+        /// Reynolds number.
+        re: f64,
+        /// Mach number.
+        mach: f64,
+        /// α (deg).
+        alpha: f64,
+    },
     /// A 360°-extension parameter is out of its range.
-    #[error("post-stall parameter {name} = {value} is invalid (must be {rule})")]
+    #[error("post-stall parameter {name} = {} is invalid (must be {rule})", short_number(*value))]
     BadPostStall {
         /// Field name.
         name: &'static str,
@@ -143,6 +210,10 @@ pub enum TableError {
         /// What is wrong.
         message: String,
     },
+    /// The JSON text is well formed but does not describe a valid table (the check names
+    /// what is wrong; serde gives it no position).
+    #[error("JSON table: {0}")]
+    JsonTable(String),
     /// An XFOIL polar file could not be parsed.
     #[error("XFOIL polar line {line}: {message}")]
     Polar {
@@ -168,8 +239,19 @@ pub enum TableError {
         /// Count needed.
         count: usize,
     },
+    /// A positive header value prints as zero in the XFOIL polar header.
+    #[error(
+        "{field} = {} is below the resolution of the XFOIL polar header (it would read back as 0)",
+        short_number(*value)
+    )]
+    HeaderResolution {
+        /// `Re` or `ncrit`.
+        field: &'static str,
+        /// The value.
+        value: f64,
+    },
     /// A value does not fit a fixed-width field of a text format.
-    #[error("value {value} does not fit a {width}-character field")]
+    #[error("value {} does not fit a {width}-character field", short_number(*value))]
     FieldOverflow {
         /// The value.
         value: f64,
@@ -179,14 +261,13 @@ pub enum TableError {
     /// Writing an output file failed.
     #[error(transparent)]
     Output(#[from] crate::output::OutputError),
-    /// An input file is missing or not a regular file.
-    #[error("cannot read table {path}: {reason}")]
-    Input {
-        /// The file.
-        path: PathBuf,
-        /// What it is instead of a readable file.
-        reason: &'static str,
-    },
+    /// Writing into an output stream failed (before it is known which file the stream is;
+    /// the writers turn it into [`TableError::Output`] naming the file).
+    #[error("write failed: {0}")]
+    Write(#[source] std::io::Error),
+    /// An input file is missing, not a regular file, too large or unreadable.
+    #[error("cannot read table {}: {}", .0.path.display(), .0.problem)]
+    Input(#[source] crate::input::InputError),
     /// The content of the table file `path` is wrong.
     #[error("{path}: {source}")]
     File {
@@ -206,6 +287,15 @@ pub enum TableError {
 }
 
 impl TableError {
+    /// This error with a failed stream write ([`TableError::Write`]) attributed to the output
+    /// file `path`, as the user named it.
+    pub fn in_output(self, path: &std::path::Path) -> Self {
+        match self {
+            Self::Write(source) => Self::Output(crate::output::OutputError::io(path, source)),
+            other => other,
+        }
+    }
+
     /// Wrap an I/O error with the path it concerns.
     pub fn io(path: impl Into<PathBuf>, source: std::io::Error) -> Self {
         Self::Io {

@@ -3,6 +3,7 @@
 use super::error::TableError;
 use super::lookup::{bracket, AlphaCurve};
 use super::post_stall::PostStallParams;
+use super::validation::{check_axis, check_meta, check_polar, MAX_RE};
 use crate::section::{FlowCondition, PolarPoint};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
@@ -57,9 +58,11 @@ impl PartialEq for PolarTable {
 impl PolarTable {
     /// Build a table from its axes and `re.len()·mach.len()` polars in Re-major order.
     ///
-    /// Validates: non-empty, strictly increasing axes; Re > 0 and finite; 0 ≤ M < 1; finite
-    /// α within ±180°, unique within each polar; finite coefficients and cd ≥ 0 at converged
-    /// points. Points are sorted by α. A table in which no polar has two converged points
+    /// Validates: metadata (N_crit > 0, transition settings in [0, 1], names without control
+    /// characters); non-empty, strictly increasing axes; 0 < Re ≤ [`MAX_RE`]; 0 ≤ M < 1; no
+    /// empty polar; finite α within ±180°, unique within each polar; finite coefficients,
+    /// cd ≥ 0 and the [`COEFFICIENT_BOUNDS`](super::COEFFICIENT_BOUNDS) at converged points. So every table that exists
+    /// can be written and read back. Points are sorted by α. A table in which no polar has two converged points
     /// is accepted (see [`has_lookup`](Self::has_lookup)).
     pub fn new(
         meta: TableMeta,
@@ -79,9 +82,10 @@ impl PolarTable {
         params: PostStallParams,
     ) -> Result<Self, TableError> {
         params.validate()?;
+        check_meta(&meta)?;
         check_axis("Re", &re)?;
         check_axis("Mach", &mach)?;
-        if let Some(&r) = re.iter().find(|r| !(r.is_finite() && **r > 0.0)) {
+        if let Some(&r) = re.iter().find(|r| !(**r > 0.0 && **r <= MAX_RE)) {
             return Err(TableError::BadRe(r));
         }
         if let Some(&m) = mach.iter().find(|m| !((0.0..1.0).contains(*m))) {
@@ -289,75 +293,6 @@ impl PolarTable {
     pub(crate) fn curve(&self, i_re: usize, i_mach: usize) -> &AlphaCurve {
         &self.curves[i_re * self.mach.len() + i_mach]
     }
-}
-
-/// Non-empty and strictly increasing.
-fn check_axis(name: &'static str, axis: &[f64]) -> Result<(), TableError> {
-    if axis.is_empty() {
-        return Err(TableError::EmptyAxis(name));
-    }
-    for w in axis.windows(2) {
-        if w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater) {
-            return Err(TableError::AxisOrder {
-                axis: name,
-                previous: w[0],
-                value: w[1],
-            });
-        }
-    }
-    Ok(())
-}
-
-/// Sort a polar by α and check α and the converged coefficients.
-fn check_polar(re: f64, mach: f64, polar: &mut [PolarPoint]) -> Result<(), TableError> {
-    for p in polar.iter() {
-        if !p.alpha.is_finite() {
-            return Err(TableError::NotFinite {
-                field: "alpha",
-                value: p.alpha,
-                re,
-                mach,
-                alpha: p.alpha,
-            });
-        }
-        if p.alpha.abs() > 180.0 {
-            return Err(TableError::AlphaRange {
-                re,
-                mach,
-                alpha: p.alpha,
-            });
-        }
-        if p.converged {
-            for (field, value) in [("cl", p.cl), ("cd", p.cd), ("cm", p.cm)] {
-                if !value.is_finite() {
-                    return Err(TableError::NotFinite {
-                        field,
-                        value,
-                        re,
-                        mach,
-                        alpha: p.alpha,
-                    });
-                }
-            }
-            if p.cd < 0.0 {
-                return Err(TableError::NegativeDrag {
-                    re,
-                    mach,
-                    alpha: p.alpha,
-                    cd: p.cd,
-                });
-            }
-        }
-    }
-    polar.sort_by(|a, b| a.alpha.total_cmp(&b.alpha));
-    if let Some(w) = polar.windows(2).find(|w| w[0].alpha == w[1].alpha) {
-        return Err(TableError::DuplicateAlpha {
-            re,
-            mach,
-            alpha: w[0].alpha,
-        });
-    }
-    Ok(())
 }
 
 /// Weight of a (normalised) Re distance relative to a Mach distance when a polar without two

@@ -70,6 +70,7 @@ mod grid;
 mod io;
 mod lookup;
 mod post_stall;
+mod validation;
 
 pub use build::{
     build_table, build_table_cancellable, BuildError, GridSpec, DEFAULT_ALPHA, DEFAULT_MACH,
@@ -82,3 +83,4 @@ pub use io::{
     parse_table, read_lookup_table, read_table, write_c81, write_table, C81Options, TableFormat,
 };
 pub use post_stall::PostStallParams;
+pub use validation::{COEFFICIENT_BOUNDS, MAX_RE};

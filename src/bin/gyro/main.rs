@@ -11,6 +11,7 @@ mod print;
 use anyhow::{bail, Context, Result};
 use clap::{Args, Parser, Subcommand};
 use cli::Tool;
+use polargen::limits::{short_number, AZIMUTH_SAMPLES, MAX_SWEEP_CELL_SPEEDS, MAX_SWEEP_SPEEDS};
 use polargen::output::{check_output_path, write_output, OutputError};
 use polargen::report::{check_report_paths, write_report, ReportInputs};
 use polargen::rotor::study::{paper_runs, SpeedSweep};
@@ -170,9 +171,6 @@ fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
     Ok(ac)
 }
 
-/// Most trims one speed sweep may ask for.
-const MAX_SWEEP_SPEEDS: usize = 1000;
-
 /// An airspeed flag ([`check_speed_kt`]).
 fn check_speed(flag: &str, kt: f64) -> Result<()> {
     Ok(check_speed_kt(&format!("--{flag}"), kt)?)
@@ -183,8 +181,9 @@ fn check_radius(radius: f64, aircraft: &Aircraft) -> Result<()> {
     let root = aircraft.rotor.root_cutout_m / aircraft.rotor.radius_m;
     if !(radius > root && radius <= 1.0) {
         bail!(
-            "--radius {radius}: must be a fraction of R on the blade, in ({root:.3}, 1] \
+            "--radius {}: must be a fraction of R on the blade, in ({root:.3}, 1] \
              (outboard of the {} m root cut-out)",
+            short_number(radius),
             aircraft.rotor.root_cutout_m
         );
     }
@@ -192,8 +191,22 @@ fn check_radius(radius: f64, aircraft: &Aircraft) -> Result<()> {
 }
 
 fn check_samples(samples: usize) -> Result<()> {
-    if !(4..=3600).contains(&samples) {
-        bail!("--samples {samples}: must be between 4 and 3600");
+    let (lo, hi) = AZIMUTH_SAMPLES;
+    if !(lo..=hi).contains(&samples) {
+        bail!("--samples {samples}: must be between {lo} and {hi}");
+    }
+    Ok(())
+}
+
+/// A speed sweep of `speeds` trims of `aircraft` within [`MAX_SWEEP_CELL_SPEEDS`].
+fn check_sweep_work(speeds: &[f64], aircraft: &Aircraft) -> Result<()> {
+    let cells = aircraft.rotor.cells();
+    if speeds.len().saturating_mul(cells) > MAX_SWEEP_CELL_SPEEDS {
+        bail!(
+            "--step-kt: {} speeds of a rotor with {cells} cells exceed the limit of \
+             {MAX_SWEEP_CELL_SPEEDS} speeds × cells; use a larger step",
+            speeds.len()
+        );
     }
     Ok(())
 }
@@ -231,16 +244,24 @@ impl SpeedRange {
         check_speed("from-kt", from_kt)?;
         check_speed("to-kt", to_kt)?;
         if to_kt < from_kt {
-            bail!("--to-kt {to_kt}: below --from-kt {from_kt}");
+            bail!(
+                "--to-kt {}: below --from-kt {}",
+                short_number(to_kt),
+                short_number(from_kt)
+            );
         }
         if !(step_kt.is_finite() && step_kt > 0.0) {
-            bail!("--step-kt {step_kt}: must be a positive number of knots");
+            bail!(
+                "--step-kt {}: must be a positive number of knots",
+                short_number(step_kt)
+            );
         }
         let count = ((to_kt - from_kt) / step_kt).floor() + 1.0;
         if count > MAX_SWEEP_SPEEDS as f64 {
             bail!(
-                "--step-kt {step_kt}: gives {count:.0} speeds from {from_kt} to {to_kt} kt \
-                 (at most {MAX_SWEEP_SPEEDS})"
+                "--step-kt {}: gives {count:.0} speeds from {from_kt} to {to_kt} kt \
+                 (at most {MAX_SWEEP_SPEEDS})",
+                short_number(step_kt)
             );
         }
         Ok(sweep_speeds(from_kt, to_kt, step_kt))
@@ -325,6 +346,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
         } => {
             let speeds = speeds.checked()?;
             let ac = load_aircraft(&aircraft, mass)?;
+            check_sweep_work(&speeds, &ac)?;
             let section = read_lookup_table(&table)?;
             let sweep = SpeedSweep::run(&ac, &section, &speeds, None);
             report_sweep(&sweep)?;
@@ -379,6 +401,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
 }
 
 fn main() -> ExitCode {
+    polargen::output::remove_staged_files_on_signals();
     let cli = match TOOL.parse::<Cli>() {
         Ok(cli) => cli,
         Err(code) => return code,

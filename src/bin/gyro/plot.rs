@@ -113,6 +113,7 @@ pub fn run(kind: PlotKind) -> Result<()> {
         }
         PlotKind::Power { speeds, .. } => {
             let speeds = speeds.checked()?;
+            crate::check_sweep_work(&speeds, &aircraft)?;
             let sweeps = sweep_cases(&aircraft, &sections, labels, &speeds);
             for sweep in &sweeps {
                 crate::report_sweep(sweep)?;

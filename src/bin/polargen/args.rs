@@ -41,6 +41,9 @@ pub struct PlotPointArgs {
     #[arg(long, value_name = "NAME|PATH")]
     pub airfoil: String,
 
+    #[command(flatten)]
+    pub shape: Shape,
+
     /// Chord Reynolds number.
     #[arg(long, allow_hyphen_values = true)]
     pub re: f64,
@@ -144,6 +147,9 @@ pub struct RunArgs {
     #[arg(long, value_name = "NAME|PATH", required = true)]
     pub airfoil: Option<String>,
 
+    #[command(flatten)]
+    pub shape: Shape,
+
     /// Inviscid panel solution only (cd = 0); output `alpha,cl,cd,cm,converged`.
     #[arg(long)]
     pub inviscid: bool,
@@ -205,4 +211,14 @@ pub struct Newton {
     /// variables (XFOIL uses 1e-4).
     #[arg(long, default_value_t = ViscousParams::default().tolerance, allow_hyphen_values = true)]
     pub tolerance: f64,
+}
+
+/// How a coordinate file's shape is taken.
+#[derive(Args, Debug)]
+pub struct Shape {
+    /// Rotate the coordinates so that the chord line (leading edge to trailing-edge midpoint)
+    /// lies along x, measuring α from the chord line; without it α is measured from the x
+    /// axis of the file (a contour not in chord units is only scaled and translated).
+    #[arg(long)]
+    pub derotate: bool,
 }

@@ -19,12 +19,13 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use args::{Cli, Command, ConvertArgs, PlotArgs, PlotPointArgs, RunArgs};
+use args::{Cli, Command, ConvertArgs, PlotArgs, PlotPointArgs, RunArgs, Shape};
 
 use cli::Tool;
-use polargen::geometry::{airfoil_by_name_or_path, Airfoil};
-use polargen::inputs;
+use polargen::arguments;
+use polargen::geometry::{airfoil_by_name_or_path, Airfoil, CHORD_UNITS_TOLERANCE};
 use polargen::inviscid::PanelSystem;
+use polargen::limits::{short_number, short_text, MAX_GRID_POINTS};
 use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError};
 use polargen::plot::point_plots::{solutions_figure, solutions_title};
 use polargen::plot::polar_plots::{compact_number, overlay_title, polar_figure, transition_label};
@@ -45,6 +46,7 @@ const TOOL: Tool = Tool {
 };
 
 fn main() -> ExitCode {
+    polargen::output::remove_staged_files_on_signals();
     let cli = match TOOL.parse::<Cli>() {
         Ok(c) => c,
         Err(code) => return code,
@@ -65,11 +67,19 @@ fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>> {
         match item.parse::<f64>() {
             Ok(v) if v.is_finite() => {
                 if out.contains(&v) {
-                    bail!("--{flag} '{text}': '{item}' is given twice");
+                    bail!(
+                        "--{flag} '{}': '{}' is given twice",
+                        short_text(text),
+                        short_text(item)
+                    );
                 }
                 out.push(v)
             }
-            _ => bail!("--{flag} '{text}': '{item}' is not a finite number"),
+            _ => bail!(
+                "--{flag} '{}': '{}' is not a finite number",
+                short_text(text),
+                short_text(item)
+            ),
         }
     }
     Ok(out)
@@ -91,11 +101,29 @@ fn mach_list(cli: &RunArgs, default: &[f64]) -> Result<Vec<f64>> {
     Ok(list)
 }
 
-/// Check the panel count and load + repanel the airfoil ([`Airfoil::solver_nodes`]).
-fn load_airfoil(spec: Option<&str>, panels: usize) -> Result<Airfoil> {
-    inputs::panels("--panels", panels)?;
+/// Check the panel count, load the airfoil (derotated on request), bring it into chord units
+/// and repanel it ([`Airfoil::solver_nodes`]); say on stderr what was changed.
+fn load_airfoil(spec: Option<&str>, panels: usize, shape: &Shape) -> Result<Airfoil> {
+    arguments::panels("--panels", panels)?;
     let spec = spec.context("--airfoil is required")?;
-    let given = airfoil_by_name_or_path(spec).context("--airfoil")?;
+    let mut given = airfoil_by_name_or_path(spec).context("--airfoil")?;
+    let angle = given
+        .chord_angle_deg()
+        .with_context(|| format!("locating the chord of {}", given.name))?;
+    if shape.derotate {
+        given = given.derotated()?;
+        TOOL.say(format!(
+            "note: {spec}: rotated by {:.3} deg so that the chord line lies along x; alpha is \
+             measured from the chord line",
+            -angle
+        ));
+    } else if angle.to_radians().abs() > CHORD_UNITS_TOLERANCE {
+        TOOL.say(format!(
+            "note: {spec}: the chord line is inclined by {angle:.3} deg to the x axis; alpha is \
+             measured from the x axis of the coordinates (--derotate measures it from the \
+             chord line)"
+        ));
+    }
     let (foil, normalised) = given.solver_nodes(panels)?;
     if normalised {
         TOOL.say(format!("note: {}", Airfoil::normalisation_note(spec)));
@@ -114,17 +142,30 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
     if let Some(path) = &cli.out {
         check_out(path)?;
     }
-    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels)?;
+    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels, &cli.shape)?;
     let system = PanelSystem::new(&foil).context("panel system")?;
     let mut csv = String::from("alpha,cl,cd,cm,converged\n");
+    let mut supercritical: Vec<f64> = Vec::new();
     for &alpha in &alphas {
         let sol = system
             .solve(alpha, mach)
             .with_context(|| format!("alpha {alpha}"))?;
+        if sol.supercritical {
+            supercritical.push(alpha);
+        }
         csv.push_str(&format!(
             "{alpha},{},0,{},true\n",
             fixed_decimals(sol.cl, 6),
             fixed_decimals(sol.cm, 6)
+        ));
+    }
+    if let (Some(first), Some(last)) = (supercritical.first(), supercritical.last()) {
+        TOOL.say(format!(
+            "note: M {mach}: {} of {} points supercritical (alpha {first} … {last}): the \
+             minimum Cp is below the sonic Cp*, beyond the validity of the Karman-Tsien \
+             correction; those Cl and Cm are only indicative",
+            supercritical.len(),
+            alphas.len()
         ));
     }
     let path = cli.out.as_deref().unwrap_or(Path::new("-"));
@@ -164,9 +205,19 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         alpha_deg: parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA))
             .context("--alpha")?,
     };
+    if grid.point_count() > MAX_GRID_POINTS {
+        bail!(
+            "{} Re x {} M x {} alpha = {} points: more than the limit of {MAX_GRID_POINTS} \
+             points per run",
+            grid.reynolds.len(),
+            grid.mach.len(),
+            grid.alpha_deg.len(),
+            grid.point_count()
+        );
+    }
     let (xtr_top, xtr_bot) = transition(cli)?;
-    inputs::ncrit("--ncrit", cli.ncrit)?;
-    inputs::tolerance("--tolerance", cli.newton.tolerance)?;
+    arguments::ncrit("--ncrit", cli.ncrit)?;
+    arguments::tolerance("--tolerance", cli.newton.tolerance)?;
     if let Some(path) = &cli.out {
         check_out(path)?;
     }
@@ -178,7 +229,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     if cli.out.is_none() && matches!(format, TableFormat::XfoilPolar | TableFormat::C81) {
         bail!("--format {}: needs --out (it writes files)", format.name());
     }
-    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels)?;
+    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels, &cli.shape)?;
 
     let total = grid.point_count();
     let bar = progress_bar(total as u64);
@@ -215,19 +266,19 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     Ok(())
 }
 
-/// A `--re` value ([`inputs::reynolds`]).
+/// A `--re` value ([`arguments::reynolds`]).
 fn check_re(re: f64) -> Result<()> {
-    Ok(inputs::reynolds("--re", re)?)
+    Ok(arguments::reynolds("--re", re)?)
 }
 
-/// A `--mach` value ([`inputs::mach`]).
+/// A `--mach` value ([`arguments::mach`]).
 fn check_mach(mach: f64) -> Result<()> {
-    Ok(inputs::mach("--mach", mach)?)
+    Ok(arguments::mach("--mach", mach)?)
 }
 
-/// A transition location given with `--<flag>` ([`inputs::transition`]).
+/// A transition location given with `--<flag>` ([`arguments::transition`]).
 fn check_xtr(flag: &str, x: f64) -> Result<()> {
-    Ok(inputs::transition(&format!("--{flag}"), x)?)
+    Ok(arguments::transition(&format!("--{flag}"), x)?)
 }
 
 /// `polargen plot`: overlay one polar from each table.
@@ -300,15 +351,15 @@ fn convert_table(args: &ConvertArgs) -> Result<()> {
 fn plot_point(args: &PlotPointArgs) -> Result<()> {
     check_re(args.re)?;
     check_mach(args.mach)?;
-    inputs::ncrit("--ncrit", args.ncrit)?;
-    inputs::tolerance("--tolerance", args.newton.tolerance)?;
+    arguments::ncrit("--ncrit", args.ncrit)?;
+    arguments::tolerance("--tolerance", args.newton.tolerance)?;
     let xtrs = parse_list("xtr", &args.xtr)?;
     xtrs.iter().try_for_each(|&x| check_xtr("xtr", x))?;
     check_image_path(&args.out).context("--out")?;
     if let Some(path) = &args.csv {
         check_output_path(path).context("--csv")?;
     }
-    let foil = load_airfoil(Some(&args.airfoil), args.panels)?;
+    let foil = load_airfoil(Some(&args.airfoil), args.panels, &args.shape)?;
     let mut runs: Vec<(String, ViscousSolution)> = Vec::new();
     for &xtr in &xtrs {
         let params = ViscousParams {
@@ -352,8 +403,11 @@ fn check_inside(flag: &str, value: f64, axis: &[f64], path: &Path) -> Result<()>
     let slack = 1e-3 * (hi - lo).abs().max(hi.abs() * 1e-3);
     if !value.is_finite() || value < lo - slack || value > hi + slack {
         bail!(
-            "--{flag} {value}: outside the table {} ({lo} … {hi})",
-            path.display()
+            "--{flag} {}: outside the table {} ({} … {})",
+            short_number(value),
+            path.display(),
+            short_number(lo),
+            short_number(hi)
         );
     }
     Ok(())

@@ -31,7 +31,7 @@
 //!   leading blank, so that free-format (whitespace-splitting) readers work too.
 
 use super::xfoil_polar::re_label;
-use crate::output::{fixed_decimals, write_output};
+use crate::output::{fixed_decimals, write_output, OutputSet};
 use crate::section::SectionAero;
 use crate::table::{PolarTable, TableError};
 use std::io::Write;
@@ -222,12 +222,12 @@ pub fn write_c81_to(
             push_rows(&mut out, &field(a, 2, false)?, &row);
         }
     }
-    w.write_all(out.as_bytes())
-        .map_err(|e| TableError::io("<c81 writer>", e))
+    w.write_all(out.as_bytes()).map_err(TableError::Write)
 }
 
 /// Write C81 files: one per Re of the grid (`<stem>_Re<re>.c81` next to `path`, or `path`
-/// itself for a single-Re table), or only `path` at `options.re`. Returns the files written.
+/// itself for a single-Re table), all together or none ([`OutputSet`]), or only `path` at
+/// `options.re`. Returns the files written.
 pub fn write_c81(
     table: &PolarTable,
     path: &Path,
@@ -237,7 +237,9 @@ pub fn write_c81(
         if !(re.is_finite() && re > 0.0) {
             return Err(TableError::BadRe(re));
         }
-        write_output(path, |w| write_c81_to(table, re, options.outer_step_deg, w))?;
+        write_output(path, |w| {
+            write_c81_to(table, re, options.outer_step_deg, w).map_err(|e| e.in_output(path))
+        })?;
         return Ok(vec![path.to_path_buf()]);
     }
     let stem = path
@@ -248,17 +250,16 @@ pub fn write_c81(
         .extension()
         .map(|e| e.to_string_lossy().into_owned())
         .unwrap_or_else(|| "c81".to_string());
-    let mut written = Vec::new();
+    let mut set = OutputSet::new();
     for &re in table.re() {
         let file = if table.re().len() == 1 {
             path.to_path_buf()
         } else {
             path.with_file_name(format!("{stem}_Re{}.{ext}", re_label(re)))
         };
-        write_output(&file, |w| {
-            write_c81_to(table, re, options.outer_step_deg, w)
+        set.write(&file, |w| {
+            write_c81_to(table, re, options.outer_step_deg, w).map_err(|e| e.in_output(&file))
         })?;
-        written.push(file);
     }
-    Ok(written)
+    Ok(set.commit()?)
 }

@@ -42,9 +42,13 @@ pub const REQUIRED: usize = 14;
 
 /// Write `table` as long-form CSV to `w`.
 pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableError> {
-    let werr = |e: csv::Error| TableError::Csv {
-        line: e.position().map_or(0, |p| p.line()),
-        message: e.to_string(),
+    // Records of text fields fail only in the stream below.
+    let werr = |e: csv::Error| {
+        let text = e.to_string();
+        match e.into_kind() {
+            csv::ErrorKind::Io(io) => TableError::Write(io),
+            _ => TableError::Write(std::io::Error::other(text)),
+        }
     };
     let mut out = csv::Writer::from_writer(w);
     out.write_record(COLUMNS).map_err(werr)?;
@@ -82,12 +86,14 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
             .map_err(werr)?;
         }
     }
-    out.flush().map_err(|e| TableError::io("<csv writer>", e))
+    out.flush().map_err(TableError::Write)
 }
 
 /// Write `table` as CSV to `path` (atomically).
 pub fn write_csv(table: &PolarTable, path: &Path) -> Result<(), TableError> {
-    write_output(path, |w| write_csv_to(table, w))
+    write_output(path, |w| {
+        write_csv_to(table, w).map_err(|e| e.in_output(path))
+    })
 }
 
 /// Parse a long-form CSV table from `r`.

@@ -10,6 +10,7 @@ mod json;
 mod xfoil_polar;
 
 use super::{PolarTable, TableError};
+use crate::input::read_input;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
@@ -100,7 +101,7 @@ pub fn read_table(path: &Path) -> Result<PolarTable, TableError> {
     if let Ok(TableFormat::C81) = TableFormat::from_path(path) {
         return Err(TableError::NotReadable("C81"));
     }
-    let bytes = read_input_file(path)?;
+    let bytes = read_input(path).map_err(TableError::Input)?;
     // Name the file, unless the error already does.
     let in_file = |source: TableError| {
         if source.to_string().contains(&path.display().to_string()) {
@@ -151,23 +152,6 @@ pub fn read_lookup_table(path: &Path) -> Result<PolarTable, TableError> {
     Ok(table)
 }
 
-/// The bytes of the input file `path`: a regular file (a folder, a device or a FIFO is refused
-/// before it is opened).
-pub(crate) fn read_input_file(path: &Path) -> Result<Vec<u8>, TableError> {
-    let refuse = |reason: &'static str| TableError::Input {
-        path: path.to_path_buf(),
-        reason,
-    };
-    match std::fs::metadata(path) {
-        Ok(m) if m.is_dir() => return Err(refuse("is a folder")),
-        Ok(m) if !m.is_file() => return Err(refuse("is not a regular file")),
-        Ok(_) => {}
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Err(refuse("no such file")),
-        Err(e) => return Err(TableError::io(path, e)),
-    }
-    std::fs::read(path).map_err(|e| TableError::io(path, e))
-}
-
 /// How a table file is laid out, as far as reading it is concerned.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Layout {
@@ -191,8 +175,7 @@ impl Layout {
     fn detect(path: &Path, bytes: &[u8]) -> Result<Self, TableError> {
         let head = String::from_utf8_lossy(&bytes[..bytes.len().min(4096)]);
         let first = head.trim_start();
-        let columns: Vec<String> = first
-            .lines()
+        let columns: Vec<String> = crate::input::text_lines(first)
             .next()
             .unwrap_or("")
             .split(',')

@@ -4,13 +4,19 @@
 //! fields). Only converged points are written, sorted by α. The version line names this
 //! table's solver instead of XFOIL.
 
-use crate::output::write_output;
+use crate::output::OutputSet;
 use crate::section::{FlowCondition, PolarPoint};
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-/// Write one polar in XFOIL's polar-file layout to `w`.
+/// Width and decimals of the point columns `alpha CL CD CDp CM Top_Xtr Bot_Xtr` (XFOIL's
+/// F8.3, F9.4, F10.5, F10.5, F9.4, F9.4, F9.4).
+const POLAR_FIELDS: [(usize, usize); 7] =
+    [(8, 3), (9, 4), (10, 5), (10, 5), (9, 4), (9, 4), (9, 4)];
+
+/// Write one polar in XFOIL's polar-file layout to `w`; a value wider than its field is
+/// refused ([`TableError::FieldOverflow`]).
 pub fn write_polar_to(
     meta: &TableMeta,
     re: f64,
@@ -35,23 +41,33 @@ pub fn write_polar_to(
         " xtrf = {:7.3} (top)      {:7.3} (bottom)  \n",
         meta.xtr_top_set, meta.xtr_bot_set
     ));
+    let re_field = format!("{:9.3}", re / 1e6);
+    let ncrit_field = format!("{:7.3}", meta.ncrit);
+    // Re and N_crit must stay positive when read back (Re 2.5e-7 would print as 0.000 e 6).
+    for (field, value, text) in [("Re", re, &re_field), ("ncrit", meta.ncrit, &ncrit_field)] {
+        if text.trim().parse::<f64>().map_or(true, |v| v <= 0.0) {
+            return Err(TableError::HeaderResolution { field, value });
+        }
+    }
     s.push_str(&format!(
-        " Mach = {:7.3}     Re = {:9.3} e 6     Ncrit = {:7.3}\n",
-        mach,
-        re / 1e6,
-        meta.ncrit
+        " Mach = {mach:7.3}     Re = {re_field} e 6     Ncrit = {ncrit_field}\n"
     ));
     s.push_str(" \n");
     s.push_str("   alpha    CL        CD       CDp       CM     Top_Xtr  Bot_Xtr\n");
     s.push_str("  ------ -------- --------- --------- -------- -------- --------\n");
     for p in points.iter().filter(|p| p.converged) {
-        s.push_str(&format!(
-            "{:8.3}{:9.4}{:10.5}{:10.5}{:9.4}{:9.4}{:9.4}\n",
-            p.alpha, p.cl, p.cd, p.cdp, p.cm, p.xtr_top, p.xtr_bot
-        ));
+        let values = [p.alpha, p.cl, p.cd, p.cdp, p.cm, p.xtr_top, p.xtr_bot];
+        for (value, (width, decimals)) in values.into_iter().zip(POLAR_FIELDS) {
+            let field = format!("{value:width$.decimals$}");
+            // A wider value would merge with its neighbour and not read back.
+            if field.len() > width || !value.is_finite() {
+                return Err(TableError::FieldOverflow { value, width });
+            }
+            s.push_str(&field);
+        }
+        s.push('\n');
     }
-    w.write_all(s.as_bytes())
-        .map_err(|e| TableError::io("<polar writer>", e))
+    w.write_all(s.as_bytes()).map_err(TableError::Write)
 }
 
 /// File name of the polar at (Re, M) for output stem `stem`: `<stem>_Re<re>_M<mach>.pol`,
@@ -79,24 +95,47 @@ pub fn re_label(re: f64) -> String {
 
 /// Write the converged points of every polar of `table` as XFOIL polar files: `path` itself
 /// when the table has one polar, otherwise `<dir>/<stem>_Re<re>_M<mach>.pol` for each
-/// (Re, M), where `<stem>` is `path` without extension. Returns the files written.
+/// (Re, M), where `<stem>` is `path` without extension, all together or none
+/// ([`OutputSet`]). Two α that the F8.3 field would merge are refused. Returns the files
+/// written.
 pub fn write_xfoil_polars(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf>, TableError> {
     let single = table.re().len() * table.mach().len() == 1;
     let stem = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "polar".to_string());
-    let mut written = Vec::new();
+    let mut set = OutputSet::new();
     for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
+        check_alpha_resolution(re, mach, points)?;
         let file = if single {
             path.to_path_buf()
         } else {
             path.with_file_name(polar_file_name(&stem, re, mach))
         };
-        write_output(&file, |w| write_polar_to(table.meta(), re, mach, points, w))?;
-        written.push(file);
+        set.write(&file, |w| {
+            write_polar_to(table.meta(), re, mach, points, w).map_err(|e| e.in_output(&file))
+        })?;
     }
-    Ok(written)
+    Ok(set.commit()?)
+}
+
+/// The α of converged points must stay distinct in the F8.3 field, or reading the file back
+/// would merge two points into one.
+fn check_alpha_resolution(re: f64, mach: f64, points: &[PolarPoint]) -> Result<(), TableError> {
+    let mut written: Vec<String> = points
+        .iter()
+        .filter(|p| p.converged)
+        .map(|p| format!("{:8.3}", p.alpha))
+        .collect();
+    written.sort();
+    match written.windows(2).find(|w| w[0] == w[1]) {
+        Some(w) => Err(TableError::DuplicateAlpha {
+            re,
+            mach,
+            alpha: w[0].trim().parse().unwrap_or(f64::NAN),
+        }),
+        None => Ok(()),
+    }
 }
 
 /// Read an XFOIL polar file (as written by XFOIL's `PACC` or by
@@ -123,7 +162,7 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
     let mut cond = None;
     let mut columns: Option<Vec<String>> = None;
     let mut points: Vec<PolarPoint> = Vec::new();
-    for (i, raw) in text.lines().enumerate() {
+    for (i, raw) in crate::input::text_lines(text).enumerate() {
         let line = i + 1;
         let t = raw.trim();
         if let Some(cols) = columns.as_deref() {

@@ -4,20 +4,16 @@
 //!
 //! A leaf module: the flow condition, transition, Newton threshold and panel count of a
 //! solution, and lists of them. Checks of rotor quantities (speed, mass, altitude) sit with the
-//! aircraft ([`crate::rotor`]) and use the same [`InputError`].
+//! aircraft ([`crate::rotor`]) and use the same [`ArgumentError`].
 
+use crate::limits::{short_number, MAX_NEWTON_TOLERANCE, PANEL_NODES};
 use std::borrow::Cow;
-
-/// Smallest and largest panel-node counts a solution may ask for (XFOIL's default is 160;
-/// below 20 nodes the boundary layer has too few stations, above 1000 the dense panel system
-/// costs seconds per angle).
-pub const PANEL_NODE_RANGE: (usize, usize) = (20, 1000);
 
 /// A user-given value outside its range: `<name> <value>: <rule>` on one line (`<name>: <rule>`
 /// when the problem is not one value).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error("{name}{}: {rule}", if value.is_empty() { String::new() } else { format!(" {value}") })]
-pub struct InputError {
+pub struct ArgumentError {
     /// The argument as the caller names it (`--re`, `re`).
     pub name: String,
     /// The offending value as given (empty when the problem is not one value).
@@ -26,12 +22,23 @@ pub struct InputError {
     pub rule: Cow<'static, str>,
 }
 
-impl InputError {
-    /// The error of argument `name` whose `value` breaks `rule`.
-    pub fn new(name: &str, value: impl ToString, rule: impl Into<Cow<'static, str>>) -> Self {
+impl ArgumentError {
+    /// The error of argument `name` whose `value` breaks `rule`; the value is echoed in
+    /// short form ([`short_number`]: `1e300`, not 301 digits).
+    pub fn new(name: &str, value: f64, rule: impl Into<Cow<'static, str>>) -> Self {
+        Self::with_text(name, short_number(value), rule)
+    }
+
+    /// The error of argument `name` whose value, given as text (empty when the problem is not
+    /// one value), breaks `rule`.
+    pub fn with_text(
+        name: &str,
+        value: impl Into<String>,
+        rule: impl Into<Cow<'static, str>>,
+    ) -> Self {
         Self {
             name: name.to_string(),
-            value: value.to_string(),
+            value: value.into(),
             rule: rule.into(),
         }
     }
@@ -41,18 +48,18 @@ impl InputError {
 fn require(
     ok: bool,
     name: &str,
-    value: impl ToString,
+    value: f64,
     rule: impl Into<Cow<'static, str>>,
-) -> Result<(), InputError> {
+) -> Result<(), ArgumentError> {
     if ok {
         Ok(())
     } else {
-        Err(InputError::new(name, value, rule))
+        Err(ArgumentError::new(name, value, rule))
     }
 }
 
 /// A chord Reynolds number: positive and finite.
-pub fn reynolds(name: &str, re: f64) -> Result<(), InputError> {
+pub fn reynolds(name: &str, re: f64) -> Result<(), ArgumentError> {
     require(
         re.is_finite() && re > 0.0,
         name,
@@ -62,7 +69,7 @@ pub fn reynolds(name: &str, re: f64) -> Result<(), InputError> {
 }
 
 /// A free-stream Mach number: in [0, 1).
-pub fn mach(name: &str, mach: f64) -> Result<(), InputError> {
+pub fn mach(name: &str, mach: f64) -> Result<(), ArgumentError> {
     require(
         (0.0..1.0).contains(&mach),
         name,
@@ -72,7 +79,7 @@ pub fn mach(name: &str, mach: f64) -> Result<(), InputError> {
 }
 
 /// A forced transition location x/c: in [0, 1], 1 meaning free transition.
-pub fn transition(name: &str, xtr: f64) -> Result<(), InputError> {
+pub fn transition(name: &str, xtr: f64) -> Result<(), ArgumentError> {
     require(
         (0.0..=1.0).contains(&xtr),
         name,
@@ -82,7 +89,7 @@ pub fn transition(name: &str, xtr: f64) -> Result<(), InputError> {
 }
 
 /// The critical amplification ratio N of the e^n criterion: positive.
-pub fn ncrit(name: &str, ncrit: f64) -> Result<(), InputError> {
+pub fn ncrit(name: &str, ncrit: f64) -> Result<(), ArgumentError> {
     require(
         ncrit.is_finite() && ncrit > 0.0,
         name,
@@ -91,30 +98,37 @@ pub fn ncrit(name: &str, ncrit: f64) -> Result<(), InputError> {
     )
 }
 
-/// The Newton threshold of the viscous solver: in (0, 1).
-pub fn tolerance(name: &str, tolerance: f64) -> Result<(), InputError> {
+/// The Newton threshold of the viscous solver: in (0, [`MAX_NEWTON_TOLERANCE`]].
+pub fn tolerance(name: &str, tolerance: f64) -> Result<(), ArgumentError> {
     require(
-        tolerance > 0.0 && tolerance < 1.0,
+        tolerance > 0.0 && tolerance <= MAX_NEWTON_TOLERANCE,
         name,
         tolerance,
-        "must be a number in (0, 1)",
+        format!(
+            "must be above 0 and at most {MAX_NEWTON_TOLERANCE} (a looser threshold stops \
+             before the boundary layer has converged)"
+        ),
     )
 }
 
-/// A panel-node count within [`PANEL_NODE_RANGE`].
-pub fn panels(name: &str, panels: usize) -> Result<(), InputError> {
-    let (lo, hi) = PANEL_NODE_RANGE;
-    require(
-        (lo..=hi).contains(&panels),
+/// A panel-node count within [`PANEL_NODES`].
+pub fn panels(name: &str, panels: usize) -> Result<(), ArgumentError> {
+    let (lo, hi) = PANEL_NODES;
+    if (lo..=hi).contains(&panels) {
+        return Ok(());
+    }
+    Err(ArgumentError::with_text(
         name,
-        panels,
+        panels.to_string(),
         format!("must be between {lo} and {hi}"),
-    )
+    ))
 }
 
 /// A list of values for one axis (Re, Mach, α): not empty, every value finite, none twice.
-pub fn distinct(name: &str, values: &[f64]) -> Result<(), InputError> {
-    require(!values.is_empty(), name, "", "no values given")?;
+pub fn distinct(name: &str, values: &[f64]) -> Result<(), ArgumentError> {
+    if values.is_empty() {
+        return Err(ArgumentError::with_text(name, "", "no values given"));
+    }
     for (k, &v) in values.iter().enumerate() {
         require(v.is_finite(), name, v, "not a finite number")?;
         require(!values[..k].contains(&v), name, v, "given twice")?;
@@ -128,7 +142,7 @@ mod tests {
 
     #[test]
     fn messages_name_the_argument_and_the_value() {
-        let msg = |r: Result<(), InputError>| r.unwrap_err().to_string();
+        let msg = |r: Result<(), ArgumentError>| r.unwrap_err().to_string();
         assert_eq!(
             msg(reynolds("--re", -1.0)),
             "--re -1: the Reynolds number must be positive"
@@ -146,8 +160,9 @@ mod tests {
             "ncrit NaN: must be a positive number"
         );
         assert_eq!(
-            msg(tolerance("tolerance", 1.0)),
-            "tolerance 1: must be a number in (0, 1)"
+            msg(tolerance("tolerance", 0.5)),
+            "tolerance 0.5: must be above 0 and at most 0.01 (a looser threshold stops before \
+             the boundary layer has converged)"
         );
         assert_eq!(
             msg(panels("panels", 5)),

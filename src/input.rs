@@ -1,0 +1,198 @@
+//! Input files: the one reader every input goes through (coordinate files, tables of every
+//! format, aircraft presets). It reads a regular file, or standard input where a caller allows
+//! `-`, up to [`MAX_INPUT_BYTES`]; a folder, a FIFO, a device (`/dev/null`, a link to
+//! `/dev/zero`), a socket or an oversized file is refused at once with a one-line
+//! [`InputError`], before anything blocks or fills memory.
+
+use crate::limits::MAX_INPUT_BYTES;
+use std::fs::{self, File};
+use std::io::{self, Read};
+use std::path::{Path, PathBuf};
+
+/// The input path that means standard input (where a command allows it).
+pub const STDIN_PATH: &str = "-";
+
+/// Why an input file was not read.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{}: {problem}", path.display())]
+pub struct InputError {
+    /// The path as given.
+    pub path: PathBuf,
+    /// What is wrong with it.
+    pub problem: InputProblem,
+}
+
+/// What is wrong with an input path.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum InputProblem {
+    /// Nothing exists at the path (or a symbolic link leads nowhere).
+    #[error("no such file")]
+    NotFound,
+    /// The path is a folder.
+    #[error("is a folder, not a file")]
+    Folder,
+    /// The path is a FIFO, a device or a socket (`kind`), not a regular file.
+    #[error("not a regular file (a {0})")]
+    NotRegular(&'static str),
+    /// The file is larger than [`MAX_INPUT_BYTES`].
+    #[error("larger than the input limit of {limit_mib} MiB")]
+    TooLarge {
+        /// The limit in MiB.
+        limit_mib: u64,
+    },
+    /// The operating system refused (permission denied, I/O error …): its message.
+    #[error("{0}")]
+    Os(String),
+}
+
+impl InputError {
+    fn new(path: &Path, problem: InputProblem) -> Self {
+        Self {
+            path: path.to_path_buf(),
+            problem,
+        }
+    }
+
+    fn os(path: &Path, e: &io::Error) -> Self {
+        let problem = match e.kind() {
+            io::ErrorKind::NotFound => InputProblem::NotFound,
+            _ => InputProblem::Os(e.to_string()),
+        };
+        Self::new(path, problem)
+    }
+}
+
+/// The bytes of the regular file `path` (links followed), at most [`MAX_INPUT_BYTES`].
+pub fn read_input(path: &Path) -> Result<Vec<u8>, InputError> {
+    let meta = fs::metadata(path).map_err(|e| InputError::os(path, &e))?;
+    check_kind(path, &meta)?;
+    if meta.len() > MAX_INPUT_BYTES {
+        return Err(too_large(path));
+    }
+    let file = File::open(path).map_err(|e| InputError::os(path, &e))?;
+    // The path may have been replaced between the check and the open: check what was opened.
+    let opened = file.metadata().map_err(|e| InputError::os(path, &e))?;
+    check_kind(path, &opened)?;
+    read_capped(path, file)
+}
+
+/// [`read_input`], or standard input when `path` is `-` (read through the same cap).
+pub fn read_input_or_stdin(path: &Path) -> Result<Vec<u8>, InputError> {
+    if path.as_os_str() == STDIN_PATH {
+        read_capped(path, io::stdin().lock())
+    } else {
+        read_input(path)
+    }
+}
+
+/// Whether something (a file, folder, device, or a link, even a broken one) exists at `path`.
+pub fn exists(path: &Path) -> bool {
+    fs::symlink_metadata(path).is_ok()
+}
+
+/// Read all of `r`, refusing more than [`MAX_INPUT_BYTES`].
+fn read_capped(path: &Path, r: impl Read) -> Result<Vec<u8>, InputError> {
+    let mut bytes = Vec::new();
+    r.take(MAX_INPUT_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| InputError::os(path, &e))?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        return Err(too_large(path));
+    }
+    Ok(bytes)
+}
+
+fn too_large(path: &Path) -> InputError {
+    InputError::new(
+        path,
+        InputProblem::TooLarge {
+            limit_mib: MAX_INPUT_BYTES >> 20,
+        },
+    )
+}
+
+/// A regular file, else the error naming what it is.
+fn check_kind(path: &Path, meta: &fs::Metadata) -> Result<(), InputError> {
+    if meta.is_file() {
+        return Ok(());
+    }
+    let problem = if meta.is_dir() {
+        InputProblem::Folder
+    } else {
+        InputProblem::NotRegular(special_kind(meta))
+    };
+    Err(InputError::new(path, problem))
+}
+
+/// What a non-regular, non-folder file is.
+#[cfg(unix)]
+fn special_kind(meta: &fs::Metadata) -> &'static str {
+    use std::os::unix::fs::FileTypeExt;
+    let t = meta.file_type();
+    if t.is_fifo() {
+        "FIFO"
+    } else if t.is_char_device() {
+        "character device"
+    } else if t.is_block_device() {
+        "block device"
+    } else if t.is_socket() {
+        "socket"
+    } else {
+        "special file"
+    }
+}
+
+/// What a non-regular, non-folder file is.
+#[cfg(not(unix))]
+fn special_kind(_meta: &fs::Metadata) -> &'static str {
+    "special file"
+}
+
+/// The lines of a text file whatever its line ends: `\n`, `\r\n` or a lone `\r` (old Mac
+/// files), without the terminators.
+pub fn text_lines(text: &str) -> impl Iterator<Item = &str> {
+    let mut rest = Some(text).filter(|t| !t.is_empty());
+    std::iter::from_fn(move || {
+        let s = rest?;
+        match s.find(['\n', '\r']) {
+            Some(i) => {
+                let skip = if s[i..].starts_with("\r\n") { 2 } else { 1 };
+                rest = Some(&s[i + skip..]).filter(|r| !r.is_empty());
+                Some(&s[..i])
+            }
+            None => {
+                rest = None;
+                Some(s)
+            }
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_line_end_splits() {
+        let lines: Vec<&str> = text_lines("a\r\nb\rc\nd").collect();
+        assert_eq!(lines, ["a", "b", "c", "d"]);
+        assert_eq!(text_lines("a\n").collect::<Vec<_>>(), ["a"]);
+        assert_eq!(text_lines("a\n\nb").collect::<Vec<_>>(), ["a", "", "b"]);
+        assert_eq!(text_lines("").count(), 0);
+    }
+
+    #[test]
+    fn special_files_are_refused_at_once() {
+        if Path::new("/dev/null").exists() {
+            let e = read_input(Path::new("/dev/null")).unwrap_err();
+            assert_eq!(
+                e.to_string(),
+                "/dev/null: not a regular file (a character device)"
+            );
+        }
+        let e = read_input(Path::new("/")).unwrap_err();
+        assert_eq!(e.problem, InputProblem::Folder);
+        let e = read_input(Path::new("/no/such/file")).unwrap_err();
+        assert_eq!(e.problem, InputProblem::NotFound);
+    }
+}

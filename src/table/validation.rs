@@ -1,0 +1,145 @@
+//! The checks every [`PolarTable`](super::PolarTable) passes when it is made (so on every read
+//! and before every write): increasing axes, sound metadata, non-empty polars of distinct α
+//! and plausible converged points, so that whatever is written can be read back.
+
+use super::error::TableError;
+use super::grid::TableMeta;
+use crate::inviscid::MAX_SECTION_CL;
+use crate::limits::{short_number, short_text};
+use crate::section::PolarPoint;
+
+/// Non-empty and strictly increasing.
+pub(super) fn check_axis(name: &'static str, axis: &[f64]) -> Result<(), TableError> {
+    if axis.is_empty() {
+        return Err(TableError::EmptyAxis(name));
+    }
+    for w in axis.windows(2) {
+        if w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater) {
+            return Err(TableError::AxisOrder {
+                axis: name,
+                previous: w[0],
+                value: w[1],
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Largest Reynolds number of a table: 10¹⁰, beyond ships' hulls; far above it the text
+/// formats' fixed fields no longer hold the value.
+pub const MAX_RE: f64 = 1e10;
+
+/// Plausibility bounds of the coefficients of a converged point: |Cl| ≤ 4π (the Joukowski
+/// bound, [`MAX_SECTION_CL`]), Cd ≤ 4 (twice a flat plate normal to the flow, Cd ≈ 2,
+/// Hoerner 1965 §3), |Cm| ≤ 4 (ten times the flat plate's quarter-chord moment at 90°).
+/// A value beyond is not a section coefficient (`Cl 1e300` at a converged point).
+pub const COEFFICIENT_BOUNDS: [(&str, f64); 3] = [("cl", MAX_SECTION_CL), ("cd", 4.0), ("cm", 4.0)];
+
+/// Check the metadata: a finite, positive N_crit, transition settings in [0, 1], names
+/// without control characters (they head text files).
+pub(super) fn check_meta(meta: &TableMeta) -> Result<(), TableError> {
+    let bad = |field, value: f64, rule| TableError::BadMeta {
+        field,
+        value: short_number(value),
+        rule,
+    };
+    if !(meta.ncrit.is_finite() && meta.ncrit > 0.0) {
+        return Err(bad("ncrit", meta.ncrit, "a positive number"));
+    }
+    for (field, x) in [
+        ("xtr_top_set", meta.xtr_top_set),
+        ("xtr_bot_set", meta.xtr_bot_set),
+    ] {
+        if !(0.0..=1.0).contains(&x) {
+            return Err(bad(field, x, "in [0, 1]"));
+        }
+    }
+    for (field, text) in [("airfoil", &meta.airfoil), ("solver", &meta.solver)] {
+        if text.chars().any(char::is_control) {
+            return Err(TableError::BadMeta {
+                field,
+                value: format!("{:?}", short_text(text)),
+                rule: "text without control characters or line breaks",
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Sort a polar by α and check α and the converged coefficients.
+pub(super) fn check_polar(re: f64, mach: f64, polar: &mut [PolarPoint]) -> Result<(), TableError> {
+    if polar.is_empty() {
+        return Err(TableError::EmptyPolar { re, mach });
+    }
+    for p in polar.iter() {
+        if !p.alpha.is_finite() {
+            return Err(TableError::NotFinite {
+                field: "alpha",
+                value: p.alpha,
+                re,
+                mach,
+                alpha: p.alpha,
+            });
+        }
+        if p.alpha.abs() > 180.0 {
+            return Err(TableError::AlphaRange {
+                re,
+                mach,
+                alpha: p.alpha,
+            });
+        }
+        if p.converged {
+            for (field, value) in [("cl", p.cl), ("cd", p.cd), ("cm", p.cm)] {
+                if !value.is_finite() {
+                    return Err(TableError::NotFinite {
+                        field,
+                        value,
+                        re,
+                        mach,
+                        alpha: p.alpha,
+                    });
+                }
+            }
+            if p.cd < 0.0 {
+                return Err(TableError::NegativeDrag {
+                    re,
+                    mach,
+                    alpha: p.alpha,
+                    cd: p.cd,
+                });
+            }
+            for (field, value) in [("xtr_top", p.xtr_top), ("xtr_bot", p.xtr_bot)] {
+                if !(0.0..=1.0).contains(&value) {
+                    return Err(TableError::TransitionRange {
+                        field,
+                        value,
+                        re,
+                        mach,
+                        alpha: p.alpha,
+                    });
+                }
+            }
+            for ((field, bound), value) in COEFFICIENT_BOUNDS.into_iter().zip([p.cl, p.cd, p.cm]) {
+                if value.abs() > bound {
+                    return Err(TableError::Implausible {
+                        field,
+                        value,
+                        bound,
+                        re,
+                        mach,
+                        alpha: p.alpha,
+                    });
+                }
+            }
+        }
+    }
+    polar.sort_by(|a, b| a.alpha.total_cmp(&b.alpha));
+    if let Some(w) = polar.windows(2).find(|w| w[0].alpha == w[1].alpha) {
+        return Err(TableError::DuplicateAlpha {
+            re,
+            mach,
+            alpha: w[0].alpha,
+        });
+    }
+    Ok(())
+}
