@@ -9,7 +9,7 @@
 //! geometry → inviscid → boundary_layer → viscous → polar → table → rotor → report
 //!                                                              ↘ plot ↗
 //! leaf modules every layer may use: section, compressibility, input, output, limits,
-//! diagnostics
+//! diagnostics, arguments
 //! ```
 //!
 //! * [`geometry`] — airfoil shapes (NACA 4/5-digit, coordinate files, named registry), splines,
@@ -41,6 +41,8 @@
 //! * [`limits`] — every bound on input sizes and on the work a request may ask for, in one
 //!   place.
 //! * [`diagnostics`] — an error and its causes on one line, for the command-line tools.
+//! * [`arguments`] — checks of user-given values (flags, Python arguments) with one-line
+//!   errors naming the argument.
 //!
 //! # Public API
 //!
@@ -57,9 +59,14 @@
 //! | figures | [`plot::render`] with [`plot::polar_plots`], [`plot::point_plots`], [`plot::rotor_plots`] |
 //! | the paper report | [`report::write_report`] |
 //! | write any result file | [`output::write_output`] |
+//! | check user-given values | [`inputs`], [`polar::check_alphas`], [`rotor::check_speed_kt`] |
+//!
+//! The Python package (`python/`, a workspace member built with PyO3 and maturin) is a thin
+//! layer over this API: it calls the functions above and adds no computation of its own.
 
 #![warn(missing_docs)]
 
+pub mod arguments;
 pub mod boundary_layer;
 pub mod compressibility;
 pub mod diagnostics;

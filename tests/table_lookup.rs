@@ -364,3 +364,20 @@ fn non_finite_queries_do_not_panic() {
     let l = t.lookup(1e300, 0.0, 0.2);
     assert!(l.re_clamped && l.cl.is_finite());
 }
+
+/// The column lookup is the point lookup at each (α, Re, M), flags included, over the
+/// shortest column.
+#[test]
+fn lookup_many_is_the_lookup_of_each_row() {
+    let t = analytic_table();
+    let alpha = [-170.0, -9.3, 0.25, 14.9, 40.0, 400.0];
+    let re = [1e5, 0.6e6, 1e6, 1.9e6, 3e7, 1e6];
+    let mach = [0.0, 0.05, 0.2, 0.39, 0.9, 0.3];
+    let many = t.lookup_many(&alpha, &re, &mach);
+    assert_eq!(many.len(), alpha.len());
+    for (k, l) in many.iter().enumerate() {
+        assert_eq!(*l, t.lookup(alpha[k], re[k], mach[k]), "row {k}");
+    }
+    assert!(many[0].post_stall && many[4].re_clamped && many[4].mach_clamped);
+    assert_eq!(t.lookup_many(&alpha, &re[..2], &mach).len(), 2);
+}

@@ -2,7 +2,10 @@
 //! Table 5 condition, NACA 8-H-12 at Re 1.9e6, M 0.41, Cl = 0.8, free and xtr 0.07, on XFOIL's
 //! own 160 nodes. α and Cd are compared with XFOIL's polar interpolated linearly in Cl.
 
-use polargen::polar::{solve_at_cl, TargetClError, TargetClParams};
+use polargen::polar::{
+    solve_at_cl, solve_operating_point, OperatingPoint, OperatingPointError, TargetClError,
+    TargetClParams,
+};
 use polargen::viscous::{ViscousParams, ViscousSolver};
 
 const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/viscous/");
@@ -75,4 +78,28 @@ fn unreachable_lift_is_an_error() {
     );
     let err = solve_at_cl(&mut solver(1.0), f64::NAN, &TargetClParams::default()).unwrap_err();
     assert!(matches!(err, TargetClError::BadTarget(_)));
+}
+
+/// `solve_operating_point` at α is one fresh solve (the same solution as the solver's own), at
+/// Cl the target-Cl search; what does not converge or is not finite is an error.
+#[test]
+fn operating_point_at_alpha_or_cl() {
+    let params = TargetClParams::default();
+    let at_alpha = solve_operating_point(&mut solver(1.0), OperatingPoint::Alpha(4.0), &params);
+    assert_eq!(at_alpha.unwrap(), solver(1.0).solve(4.0));
+    let at_cl = solve_operating_point(&mut solver(0.07), OperatingPoint::Cl(0.8), &params);
+    assert_eq!(
+        at_cl.unwrap(),
+        solve_at_cl(&mut solver(0.07), 0.8, &params).unwrap()
+    );
+    let bad = solve_operating_point(&mut solver(1.0), OperatingPoint::Alpha(f64::NAN), &params);
+    assert_eq!(
+        bad.unwrap_err().to_string(),
+        "alpha NaN: not a finite angle"
+    );
+    let stalled = solve_operating_point(&mut solver(1.0), OperatingPoint::Alpha(60.0), &params);
+    assert_eq!(
+        stalled.unwrap_err(),
+        OperatingPointError::NotConverged(60.0)
+    );
 }

@@ -278,4 +278,17 @@ pub enum GeometryError {
     /// Paneling failed.
     #[error("paneling: {0}")]
     Paneling(String),
+    /// A step of making an airfoil ready for the solvers failed ([`Airfoil::solver_nodes`]).
+    ///
+    /// [`Airfoil::solver_nodes`]: super::Airfoil::solver_nodes
+    #[error("{step} {airfoil}")]
+    Preparing {
+        /// The step: `locating the chord of` or `paneling`.
+        step: &'static str,
+        /// Airfoil name.
+        airfoil: String,
+        /// Why the step failed.
+        #[source]
+        source: Box<GeometryError>,
+    },
 }

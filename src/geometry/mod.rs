@@ -207,4 +207,38 @@ impl Airfoil {
     pub fn repanel(&self, n: usize, params: &PanelingParams) -> Result<Airfoil, GeometryError> {
         paneling::panel(self, n, params).map(|p| p.airfoil)
     }
+
+    /// The note a user reads when [`solver_nodes`](Self::solver_nodes) normalised the contour
+    /// of the airfoil given as `given` (a name or a path).
+    pub fn normalisation_note(given: &str) -> String {
+        format!(
+            "{given}: chord is not 1 or the leading edge is not at the origin; coordinates \
+             normalised to unit chord by scaling and translation (LE at 0,0, TE at x = 1), \
+             not rotated"
+        )
+    }
+
+    /// The nodes the solvers work on: the contour [`in chord units`] repaneled to `panels`
+    /// nodes with the default [`PanelingParams`] (XFOIL `PANE`), as the command-line tools and
+    /// the Python package prepare every airfoil. The flag says whether the contour was
+    /// normalised on the way. Errors name the step and the airfoil
+    /// ([`GeometryError::Preparing`]).
+    ///
+    /// [`in chord units`]: Self::in_chord_units
+    pub fn solver_nodes(&self, panels: usize) -> Result<(Airfoil, bool), GeometryError> {
+        let step = |step: &'static str| {
+            move |source: GeometryError| GeometryError::Preparing {
+                step,
+                airfoil: self.name.clone(),
+                source: Box::new(source),
+            }
+        };
+        let (raw, normalised) = self
+            .in_chord_units()
+            .map_err(step("locating the chord of"))?;
+        let nodes = raw
+            .repanel(panels, &PanelingParams::default())
+            .map_err(step("paneling"))?;
+        Ok((nodes, normalised))
+    }
 }

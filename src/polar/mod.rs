@@ -1,12 +1,16 @@
 //! Polars: α sweeps of a point solver with warm starts and recovery of failed points.
 
 mod grid;
+mod operating_point;
 mod range;
 mod sweep;
 mod target_cl;
 mod viscous_sweep;
 
 pub use grid::{run_grid, GridPolar};
-pub use range::{march_order, parse_alpha_range, RangeError, MAX_ALPHA_DEG, MAX_ALPHA_POINTS};
+pub use operating_point::{solve_operating_point, OperatingPoint, OperatingPointError};
+pub use range::{
+    check_alphas, march_order, parse_alpha_range, RangeError, MAX_ALPHA_DEG, MAX_ALPHA_POINTS,
+};
 pub use sweep::{sweep, SweepParams, WarmStartSolver};
 pub use target_cl::{solve_at_cl, TargetClError, TargetClParams};

@@ -1,5 +1,6 @@
 //! Angle-of-attack ranges `A0:A1:DA` and the order in which a sweep visits them.
 
+use crate::arguments::{self, ArgumentError};
 use thiserror::Error;
 
 /// Why an α range was rejected.
@@ -117,6 +118,24 @@ pub fn parse_alpha_range(text: &str) -> Result<Vec<f64>, RangeError> {
     }
 }
 
+/// An α list given as values (the Python package's arrays) rather than as a range: not empty,
+/// finite, none twice ([`arguments::distinct`]), every angle within ±[`MAX_ALPHA_DEG`] and at most
+/// [`MAX_ALPHA_POINTS`] of them. `name` is the argument as the caller calls it.
+pub fn check_alphas(name: &str, alphas: &[f64]) -> Result<(), ArgumentError> {
+    if alphas.len() > MAX_ALPHA_POINTS {
+        return Err(ArgumentError::with_text(
+            name,
+            "",
+            format!("{} values (at most {MAX_ALPHA_POINTS})", alphas.len()),
+        ));
+    }
+    arguments::distinct(name, alphas)?;
+    match alphas.iter().find(|a| a.abs() > MAX_ALPHA_DEG) {
+        Some(a) => Err(ArgumentError::new(name, *a, "outside -180…180 deg")),
+        None => Ok(()),
+    }
+}
+
 /// Round to 9 decimals (removes binary noise from `A0 + i·DA`).
 fn round9(v: f64) -> f64 {
     let r = (v * 1e9).round() / 1e9;
@@ -205,6 +224,17 @@ mod tests {
                 "{bad}"
             );
         }
+    }
+
+    #[test]
+    fn alpha_lists() {
+        assert!(check_alphas("alpha", &[-180.0, 0.0, 180.0]).is_ok());
+        let msg = |a: &[f64]| check_alphas("alpha", a).unwrap_err().to_string();
+        assert_eq!(msg(&[0.0, 180.5]), "alpha 180.5: outside -180…180 deg");
+        assert_eq!(msg(&[1.0, 1.0]), "alpha 1: given twice");
+        assert_eq!(msg(&[]), "alpha: no values given");
+        let many = vec![0.0; MAX_ALPHA_POINTS + 1];
+        assert_eq!(msg(&many), "alpha: 100001 values (at most 100000)");
     }
 
     #[test]

@@ -2,6 +2,7 @@
 
 use super::atmosphere::MAX_ISA_ALTITUDE_M;
 use super::inflow::InflowModel;
+use crate::arguments::ArgumentError;
 use crate::input::{read_input, InputError};
 use serde::Deserialize;
 use std::borrow::Cow;
@@ -44,6 +45,43 @@ use crate::limits::{
     AZIMUTH_STEPS, MAX_ROTOR_CELLS, MAX_TAKEOFF_CELL_STEPS, MAX_TAKEOFF_STEPS, RADIAL_STRIPS,
 };
 pub use crate::limits::{MAX_MASS_KG, MAX_SPEED_KT};
+
+/// An airspeed argument \[kt\] (of `gyro` and the Python package): above 0 and below
+/// [`MAX_SPEED_KT`].
+pub fn check_speed_kt(name: &str, kt: f64) -> Result<(), ArgumentError> {
+    if kt.is_finite() && kt > 0.0 && kt < MAX_SPEED_KT {
+        return Ok(());
+    }
+    Err(ArgumentError::new(
+        name,
+        kt,
+        format!("must be above 0 and below {MAX_SPEED_KT} kt"),
+    ))
+}
+
+/// A mass argument that replaces the preset's \[kg\]: positive, at most [`MAX_MASS_KG`].
+pub fn check_mass_kg(name: &str, kg: f64) -> Result<(), ArgumentError> {
+    if kg.is_finite() && kg > 0.0 && kg <= MAX_MASS_KG {
+        return Ok(());
+    }
+    Err(ArgumentError::new(
+        name,
+        kg,
+        format!("must be a positive number of kg, at most {MAX_MASS_KG}"),
+    ))
+}
+
+/// An ISA altitude argument \[m\]: inside the troposphere of the atmosphere model.
+pub fn check_altitude_m(name: &str, m: f64) -> Result<(), ArgumentError> {
+    if (0.0..=MAX_ISA_ALTITUDE_M).contains(&m) {
+        return Ok(());
+    }
+    Err(ArgumentError::new(
+        name,
+        m,
+        format!("must be within the ISA troposphere, 0 to {MAX_ISA_ALTITUDE_M} m"),
+    ))
+}
 
 /// Accepted takeoff integration time steps \[s\]: below, a run takes hundreds of thousands of
 /// steps; above, the integration of the rotor speed and flapping is no longer resolved.

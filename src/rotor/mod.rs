@@ -32,7 +32,8 @@ mod takeoff;
 mod trim;
 
 pub use aircraft::{
-    Aircraft, AircraftError, PropellerParams, RotorParams, TakeoffParams, MAX_MASS_KG, MAX_SPEED_KT,
+    check_altitude_m, check_mass_kg, check_speed_kt, Aircraft, AircraftError, PropellerParams,
+    RotorParams, TakeoffParams, MAX_MASS_KG, MAX_SPEED_KT,
 };
 pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};

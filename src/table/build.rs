@@ -7,6 +7,7 @@ use crate::geometry::Airfoil;
 use crate::polar::{parse_alpha_range, run_grid, GridPolar, SweepParams};
 use crate::section::FlowCondition;
 use crate::viscous::{SharedPanels, ViscousError, ViscousParams, ViscousSolver};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
 /// Reynolds numbers of the default rotor grid: the blade sections of a light gyroplane rotor
@@ -65,6 +66,9 @@ pub enum BuildError {
     /// The solved polars do not form a table.
     #[error("building the table")]
     Table(#[source] TableError),
+    /// The caller cancelled the build ([`build_table_cancellable`]).
+    #[error("cancelled")]
+    Cancelled,
 }
 
 /// Solve the viscous polars of `foil` (already paneled with `panels` nodes) on `grid` with
@@ -79,6 +83,22 @@ pub fn build_table(
     threads: usize,
     on_points: impl Fn(usize) + Sync,
 ) -> Result<PolarTable, BuildError> {
+    let never = AtomicBool::new(false);
+    build_table_cancellable(foil, panels, grid, base, threads, on_points, &never)
+}
+
+/// [`build_table`] that stops when `cancel` is set (by another thread, or by `on_points`):
+/// polars already being solved finish, no further polar starts, and the result is
+/// [`BuildError::Cancelled`]. For callers that must stay interruptible (the Python package).
+pub fn build_table_cancellable(
+    foil: &Airfoil,
+    panels: usize,
+    grid: &GridSpec,
+    base: &ViscousParams,
+    threads: usize,
+    on_points: impl Fn(usize) + Sync,
+    cancel: &AtomicBool,
+) -> Result<PolarTable, BuildError> {
     // One panel store for the whole grid: the per-α inviscid model does not depend on Re or M.
     let store = Arc::new(SharedPanels::new(foil).map_err(BuildError::Solver)?);
     let nodes: Vec<(f64, f64)> = grid
@@ -92,6 +112,9 @@ pub fn build_table(
         threads,
         &SweepParams::default(),
         |reynolds, mach| {
+            if cancel.load(Ordering::Relaxed) {
+                return Err(BuildError::Cancelled);
+            }
             ViscousSolver::with_panels(
                 Arc::clone(&store),
                 ViscousParams {
@@ -100,10 +123,13 @@ pub fn build_table(
                     ..*base
                 },
             )
+            .map_err(BuildError::Solver)
         },
         |p: &GridPolar| on_points(p.points.len()),
-    )
-    .map_err(BuildError::Solver)?;
+    )?;
+    if cancel.load(Ordering::Relaxed) {
+        return Err(BuildError::Cancelled);
+    }
     let meta = TableMeta {
         airfoil: foil.name.clone(),
         ncrit: base.ncrit,
@@ -125,6 +151,47 @@ pub fn build_table(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::airfoil_by_name_or_path;
+
+    /// A cancelled build stops after the polars already started; uncancelled it is the plain
+    /// build.
+    #[test]
+    fn a_cancelled_build_stops() {
+        let foil = airfoil_by_name_or_path("naca0012")
+            .and_then(|f| f.solver_nodes(120))
+            .unwrap()
+            .0;
+        let grid = GridSpec {
+            reynolds: vec![1e6, 2e6, 3e6],
+            mach: vec![0.0],
+            alpha_deg: vec![0.0, 2.0],
+        };
+        let base = ViscousParams::default();
+        let build = |cancel: &AtomicBool, stop_after: usize| {
+            let done = std::sync::atomic::AtomicUsize::new(0);
+            build_table_cancellable(
+                &foil,
+                120,
+                &grid,
+                &base,
+                1,
+                |_| {
+                    if done.fetch_add(1, Ordering::Relaxed) + 1 >= stop_after {
+                        cancel.store(true, Ordering::Relaxed);
+                    }
+                },
+                cancel,
+            )
+            .map(|t| (t, done.into_inner()))
+        };
+        let plain = build_table(&foil, 120, &grid, &base, 1, |_| {}).unwrap();
+        let (whole, polars) = build(&AtomicBool::new(false), usize::MAX).unwrap();
+        assert_eq!((whole, polars), (plain, 3));
+        let stopped = build(&AtomicBool::new(false), 1);
+        assert!(matches!(stopped, Err(BuildError::Cancelled)), "{stopped:?}");
+        let before = build(&AtomicBool::new(true), usize::MAX);
+        assert!(matches!(before, Err(BuildError::Cancelled)), "{before:?}");
+    }
 
     #[test]
     fn the_default_grid_is_the_rotor_grid() {

@@ -234,6 +234,20 @@ pub(crate) fn bracket(axis: &[f64], x: f64) -> (usize, f64, bool) {
     (i, (x - axis[i]) / (axis[i + 1] - axis[i]), false)
 }
 
+impl PolarTable {
+    /// [`lookup`](SectionAero::lookup) at every (α, Re, M) of three columns, in order: the
+    /// vectorised lookup of the Python package. Columns of unequal length are read up to the
+    /// shortest.
+    pub fn lookup_many(&self, alpha_deg: &[f64], re: &[f64], mach: &[f64]) -> Vec<Lookup> {
+        alpha_deg
+            .iter()
+            .zip(re)
+            .zip(mach)
+            .map(|((&a, &r), &m)| self.lookup(a, r, m))
+            .collect()
+    }
+}
+
 impl SectionAero for PolarTable {
     /// Table lookup: PCHIP in α over converged points, 360° extension outside the computed
     /// range, bilinear in (ln Re, M) between the four neighbouring polars, clamped (and

@@ -1,6 +1,8 @@
 //! Re × Mach × α polar tables: grid, interpolating lookup with a 360° extension, file formats.
 //!
-//! The facade: [`PolarTable`] and its [`TableMeta`]; [`build_table`] on a [`GridSpec`];
+//! The facade: [`PolarTable`] and its [`TableMeta`]; [`build_table`] (and
+//! [`build_table_cancellable`]) on a [`GridSpec`]; [`PolarTable::lookup_many`] for columns of
+//! lookups;
 //! [`read_table`] / [`read_lookup_table`] / [`parse_table`] and [`write_table`] /
 //! [`write_c81`] in the [`TableFormat`]s; [`sample_polar`] and [`alpha_at_cl`] at one (Re, M);
 //! [`PostStallParams`]; [`TableError`] and [`BuildError`]. Inside (private):
@@ -70,7 +72,10 @@ mod lookup;
 mod post_stall;
 mod validation;
 
-pub use build::{build_table, BuildError, GridSpec, DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE};
+pub use build::{
+    build_table, build_table_cancellable, BuildError, GridSpec, DEFAULT_ALPHA, DEFAULT_MACH,
+    DEFAULT_RE,
+};
 pub use error::TableError;
 pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
 pub use grid::{PolarTable, TableMeta};

@@ -16,8 +16,8 @@ use polargen::output::{check_output_path, write_output, OutputError};
 use polargen::report::{check_report_paths, write_report, ReportInputs};
 use polargen::rotor::study::{paper_runs, SpeedSweep};
 use polargen::rotor::{
-    cruise_blade_alpha, simulate_takeoff, sweep_speeds, trim_aircraft, Aircraft, TrimParams,
-    MAX_ISA_ALTITUDE_M, MAX_MASS_KG, MAX_SPEED_KT,
+    check_altitude_m, check_mass_kg, check_speed_kt, cruise_blade_alpha, simulate_takeoff,
+    sweep_speeds, trim_aircraft, Aircraft, TrimParams, MAX_ISA_ALTITUDE_M,
 };
 use polargen::table::read_lookup_table;
 use std::path::{Path, PathBuf};
@@ -165,37 +165,15 @@ pub struct ReportArgs {
 fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
     let mut ac = Aircraft::from_toml_file(path)?;
     if let Some(m) = mass {
-        if !(m.is_finite() && m > 0.0 && m <= MAX_MASS_KG) {
-            bail!(
-                "--mass {}: must be a positive number of kg, at most {MAX_MASS_KG}",
-                short_number(m)
-            );
-        }
+        check_mass_kg("--mass", m)?;
         ac.mass_kg = m;
     }
     Ok(ac)
 }
 
-/// An airspeed flag: above 0 and below [`MAX_SPEED_KT`].
+/// An airspeed flag ([`check_speed_kt`]).
 fn check_speed(flag: &str, kt: f64) -> Result<()> {
-    if !(kt.is_finite() && kt > 0.0 && kt < MAX_SPEED_KT) {
-        bail!(
-            "--{flag} {}: must be above 0 and below {MAX_SPEED_KT} kt",
-            short_number(kt)
-        );
-    }
-    Ok(())
-}
-
-/// The `--altitude-m` flag: inside the ISA troposphere of the atmosphere model.
-fn check_altitude(m: f64) -> Result<()> {
-    if !(0.0..=MAX_ISA_ALTITUDE_M).contains(&m) {
-        bail!(
-            "--altitude-m {}: must be within the ISA troposphere, 0 to {MAX_ISA_ALTITUDE_M} m",
-            short_number(m)
-        );
-    }
-    Ok(())
+    Ok(check_speed_kt(&format!("--{flag}"), kt)?)
 }
 
 /// The `--radius` flag: a fraction of R on the blade, outboard of the root cut-out.
@@ -301,7 +279,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             json,
         } => {
             check_speed("speed-kt", speed_kt)?;
-            check_altitude(altitude_m)?;
+            check_altitude_m("--altitude-m", altitude_m)?;
             let ac = load_aircraft(&aircraft, mass)?;
             let section = read_lookup_table(&table)?;
             let t = trim_aircraft(

@@ -22,16 +22,15 @@ use anyhow::{bail, Context, Result};
 use args::{Cli, Command, ConvertArgs, PlotArgs, PlotPointArgs, RunArgs, Shape};
 
 use cli::Tool;
-use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams, CHORD_UNITS_TOLERANCE};
+use polargen::arguments;
+use polargen::geometry::{airfoil_by_name_or_path, Airfoil, CHORD_UNITS_TOLERANCE};
 use polargen::inviscid::PanelSystem;
-use polargen::limits::{
-    short_number, short_text, MAX_GRID_POINTS, MAX_NEWTON_TOLERANCE, PANEL_NODES,
-};
+use polargen::limits::{short_number, short_text, MAX_GRID_POINTS};
 use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError};
 use polargen::plot::point_plots::{solutions_figure, solutions_title};
 use polargen::plot::polar_plots::{compact_number, overlay_title, polar_figure, transition_label};
 use polargen::plot::{check_image_path, render};
-use polargen::polar::{parse_alpha_range, solve_at_cl, TargetClParams};
+use polargen::polar::{parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams};
 use polargen::section::{FlowCondition, PolarPoint};
 use polargen::table::{
     build_table, read_table, write_table, GridSpec, TableFormat, DEFAULT_ALPHA, DEFAULT_MACH,
@@ -103,15 +102,9 @@ fn mach_list(cli: &RunArgs, default: &[f64]) -> Result<Vec<f64>> {
 }
 
 /// Check the panel count, load the airfoil (derotated on request), bring it into chord units
-/// and repanel it; say on stderr what was changed.
+/// and repanel it ([`Airfoil::solver_nodes`]); say on stderr what was changed.
 fn load_airfoil(spec: Option<&str>, panels: usize, shape: &Shape) -> Result<Airfoil> {
-    if !(PANEL_NODES.0..=PANEL_NODES.1).contains(&panels) {
-        bail!(
-            "--panels {panels}: must be between {} and {}",
-            PANEL_NODES.0,
-            PANEL_NODES.1
-        );
-    }
+    arguments::panels("--panels", panels)?;
     let spec = spec.context("--airfoil is required")?;
     let mut given = airfoil_by_name_or_path(spec).context("--airfoil")?;
     let angle = given
@@ -131,19 +124,10 @@ fn load_airfoil(spec: Option<&str>, panels: usize, shape: &Shape) -> Result<Airf
              chord line)"
         ));
     }
-    let (raw, normalised) = given
-        .in_chord_units()
-        .with_context(|| format!("locating the chord of {}", given.name))?;
+    let (foil, normalised) = given.solver_nodes(panels)?;
     if normalised {
-        TOOL.say(format!(
-            "note: {spec}: chord is not 1 or the leading edge is not at the origin; coordinates \
-             normalised to unit chord by scaling and translation (LE at 0,0, TE at x = 1), \
-             not rotated"
-        ));
+        TOOL.say(format!("note: {}", Airfoil::normalisation_note(spec)));
     }
-    let foil = raw
-        .repanel(panels, &PanelingParams::default())
-        .with_context(|| format!("paneling {}", raw.name))?;
     Ok(foil)
 }
 
@@ -232,8 +216,8 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         );
     }
     let (xtr_top, xtr_bot) = transition(cli)?;
-    check_ncrit(cli.ncrit)?;
-    check_tolerance(cli.newton.tolerance)?;
+    arguments::ncrit("--ncrit", cli.ncrit)?;
+    arguments::tolerance("--tolerance", cli.newton.tolerance)?;
     if let Some(path) = &cli.out {
         check_out(path)?;
     }
@@ -282,57 +266,19 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     Ok(())
 }
 
-/// A `--re` value: a positive Reynolds number.
+/// A `--re` value ([`arguments::reynolds`]).
 fn check_re(re: f64) -> Result<()> {
-    if !(re.is_finite() && re > 0.0) {
-        bail!(
-            "--re {}: the Reynolds number must be positive",
-            short_number(re)
-        );
-    }
-    Ok(())
+    Ok(arguments::reynolds("--re", re)?)
 }
 
-/// A `--mach` value: in [0, 1).
+/// A `--mach` value ([`arguments::mach`]).
 fn check_mach(mach: f64) -> Result<()> {
-    if !(0.0..1.0).contains(&mach) {
-        bail!(
-            "--mach {}: the Mach number must be in [0, 1)",
-            short_number(mach)
-        );
-    }
-    Ok(())
+    Ok(arguments::mach("--mach", mach)?)
 }
 
-/// A transition location given with `--<flag>`: x/c in [0, 1].
+/// A transition location given with `--<flag>` ([`arguments::transition`]).
 fn check_xtr(flag: &str, x: f64) -> Result<()> {
-    if !(0.0..=1.0).contains(&x) {
-        bail!(
-            "--{flag} {}: the transition location must be in [0, 1] (1 = free)",
-            short_number(x)
-        );
-    }
-    Ok(())
-}
-
-/// The `--ncrit` flag: a positive number.
-fn check_ncrit(ncrit: f64) -> Result<()> {
-    if !(ncrit.is_finite() && ncrit > 0.0) {
-        bail!("--ncrit {}: must be a positive number", short_number(ncrit));
-    }
-    Ok(())
-}
-
-/// The `--tolerance` flag: a Newton threshold in (0, [`MAX_NEWTON_TOLERANCE`]].
-fn check_tolerance(tolerance: f64) -> Result<()> {
-    if !(tolerance > 0.0 && tolerance <= MAX_NEWTON_TOLERANCE) {
-        bail!(
-            "--tolerance {}: must be above 0 and at most {MAX_NEWTON_TOLERANCE} (a looser \
-             threshold stops before the boundary layer has converged)",
-            short_number(tolerance)
-        );
-    }
-    Ok(())
+    Ok(arguments::transition(&format!("--{flag}"), x)?)
 }
 
 /// `polargen plot`: overlay one polar from each table.
@@ -405,8 +351,8 @@ fn convert_table(args: &ConvertArgs) -> Result<()> {
 fn plot_point(args: &PlotPointArgs) -> Result<()> {
     check_re(args.re)?;
     check_mach(args.mach)?;
-    check_ncrit(args.ncrit)?;
-    check_tolerance(args.newton.tolerance)?;
+    arguments::ncrit("--ncrit", args.ncrit)?;
+    arguments::tolerance("--tolerance", args.newton.tolerance)?;
     let xtrs = parse_list("xtr", &args.xtr)?;
     xtrs.iter().try_for_each(|&x| check_xtr("xtr", x))?;
     check_image_path(&args.out).context("--out")?;
@@ -423,21 +369,16 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
         };
         let mut solver = ViscousSolver::new(&foil, params).context("viscous solver")?;
         let label = transition_label(xtr, xtr);
-        let solution = match (args.alpha, args.cl) {
-            (_, Some(cl)) => solve_at_cl(&mut solver, cl, &TargetClParams::default())
-                .with_context(|| label.clone())?,
-            (Some(alpha), None) => {
-                if !alpha.is_finite() {
-                    bail!("--alpha {}: not a finite angle", short_number(alpha));
-                }
-                let sol = solver.solve(alpha);
-                if !sol.point.converged {
-                    bail!("{label}: the viscous solution did not converge at alpha {alpha} deg");
-                }
-                sol
+        let at = match (args.alpha, args.cl) {
+            (_, Some(cl)) => OperatingPoint::Cl(cl),
+            (Some(alpha), None) if !alpha.is_finite() => {
+                bail!("--alpha {alpha}: not a finite angle")
             }
+            (Some(alpha), None) => OperatingPoint::Alpha(alpha),
             (None, None) => bail!("give --alpha or --cl"),
         };
+        let solution = solve_operating_point(&mut solver, at, &TargetClParams::default())
+            .with_context(|| label.clone())?;
         runs.push((label, solution));
     }
     let cases: Vec<(&str, &ViscousSolution)> = runs.iter().map(|(l, s)| (l.as_str(), s)).collect();

@@ -1,0 +1,234 @@
+"""polargen — airfoil polars, Re × Mach × α tables and a gyroplane rotor model.
+
+A thin Python layer over the polargen Rust library (an XFOIL-class viscous–inviscid solver):
+the same computations as the ``polargen`` and ``gyro`` command-line tools, bit for bit, with
+NumPy arrays in and out.
+
+>>> import polargen as pg
+>>> foil = pg.Airfoil.naca("23012")
+>>> pol = pg.polar(foil, re=1.9e6, mach=0.41, alpha="-4:12:0.5", xtr=0.07)
+>>> pol.cd[pol.converged]                                   # doctest: +SKIP
+
+* :class:`Airfoil` — ``naca``, ``named`` (what ``--airfoil`` accepts), ``from_file``,
+  ``from_coordinates``; ``coordinates``, ``x``, ``y``.
+* :func:`polar` — one polar (:class:`Polar`: NumPy columns, ``to_pandas()``).
+* :func:`point` — one operating point at α or at a target Cl with its surface and wake
+  distributions (:class:`Point`).
+* :func:`table` — a Re × M × α table (:class:`Table`) with a progress callback;
+  :meth:`Table.read`, :meth:`Table.write` in every CLI format; :meth:`Table.lookup`
+  vectorised, with the clamping/bridging/post-stall flags and the 360° extension.
+* :mod:`polargen.rotor` — the gyroplane: ``Aircraft.read``, ``trim``, ``takeoff`` with the
+  fields of ``gyro trim --json`` / ``gyro takeoff --json``.
+
+Errors are exceptions with the command-line tools' one-line messages: ``ValueError`` for bad
+input, ``OSError`` (``FileNotFoundError``, …) for files, :class:`NotConvergedError` when a
+computation finds no solution. The solver runs with the GIL released.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Callable, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _polargen
+from ._polargen import Airfoil, NotConvergedError
+from ._results import Distribution, Lookup, Point, Polar
+from ._table import Table
+
+__all__ = [
+    "Airfoil",
+    "Distribution",
+    "Lookup",
+    "NotConvergedError",
+    "Point",
+    "Polar",
+    "Table",
+    "alpha_range",
+    "point",
+    "polar",
+    "rotor",
+    "table",
+    "DEFAULT_ALPHA",
+    "DEFAULT_MACH",
+    "DEFAULT_PANELS",
+    "DEFAULT_RE",
+    "DEFAULT_TOLERANCE",
+]
+
+__version__: str = _polargen.VERSION
+
+#: Reynolds numbers of the default rotor grid (``polargen`` without ``--re``).
+DEFAULT_RE: Tuple[float, ...] = tuple(_polargen.DEFAULT_RE)
+#: Mach numbers of the default rotor grid.
+DEFAULT_MACH: Tuple[float, ...] = tuple(_polargen.DEFAULT_MACH)
+#: α range of the default rotor grid, ``A0:A1:DA`` in degrees.
+DEFAULT_ALPHA: str = _polargen.DEFAULT_ALPHA
+#: Newton threshold of the viscous solver (the CLI's ``--tolerance`` default).
+DEFAULT_TOLERANCE: float = _polargen.DEFAULT_TOLERANCE
+#: Panel nodes after repaneling (the CLI's ``--panels`` default, XFOIL's 160).
+DEFAULT_PANELS: int = _polargen.DEFAULT_PANELS
+
+AirfoilLike = Union[Airfoil, str, "os.PathLike[str]"]
+AlphaLike = Union[str, float, Sequence[float], np.ndarray]
+Transition = Union[float, Tuple[float, float]]
+Progress = Union[Callable[[int, int], object], object, None]
+
+
+def alpha_range(text: str) -> np.ndarray:
+    """The α values of ``"A0:A1:DA"`` (inclusive) or ``"A"``, as the CLI's ``--alpha``."""
+    return _polargen.alpha_range(text)
+
+
+def _airfoil(airfoil: AirfoilLike) -> Airfoil:
+    if isinstance(airfoil, Airfoil):
+        return airfoil
+    if isinstance(airfoil, (str, os.PathLike)):
+        return Airfoil.named(os.fspath(airfoil))
+    raise TypeError(
+        f"airfoil: expected an Airfoil, a name or a path, got {type(airfoil).__name__}"
+    )
+
+
+def _alphas(alpha: AlphaLike) -> list:
+    if isinstance(alpha, str):
+        return _polargen.alpha_range(alpha).tolist()
+    values = np.asarray(alpha, dtype=float)
+    if values.ndim > 1:
+        raise ValueError(f"alpha: expected a 1-D list of angles, got shape {values.shape}")
+    return values.reshape(-1).tolist()
+
+
+def _axis(name: str, values: Union[float, Sequence[float], np.ndarray]) -> list:
+    array = np.asarray(values, dtype=float)
+    if array.ndim > 1:
+        raise ValueError(f"{name}: expected a 1-D list, got shape {array.shape}")
+    return array.reshape(-1).tolist()
+
+
+def _transition(xtr: Transition) -> Tuple[float, float]:
+    if isinstance(xtr, (tuple, list)):
+        if len(xtr) != 2:
+            raise ValueError(f"xtr: expected one value or (top, bottom), got {len(xtr)} values")
+        return float(xtr[0]), float(xtr[1])
+    return float(xtr), float(xtr)
+
+
+def _progress(progress: Progress) -> Optional[Callable[[int, int], object]]:
+    """A callback ``(done, total)``, or one made for a tqdm-like object (``update(n)``)."""
+    if progress is None:
+        return None
+    update = getattr(progress, "update", None)
+    if callable(update):
+        last = [0]
+
+        def forward(done: int, total: int) -> None:
+            if getattr(progress, "total", None) != total:
+                try:
+                    progress.total = total
+                except AttributeError:
+                    pass
+            update(done - last[0])
+            last[0] = done
+
+        return forward
+    if callable(progress):
+        return progress
+    raise TypeError("progress: expected a callable (done, total) or an object with update(n)")
+
+
+def polar(
+    airfoil: AirfoilLike,
+    re: float,
+    mach: float = 0.0,
+    alpha: AlphaLike = DEFAULT_ALPHA,
+    xtr: Transition = 1.0,
+    ncrit: float = 9.0,
+    panels: int = DEFAULT_PANELS,
+    tolerance: float = DEFAULT_TOLERANCE,
+    threads: int = 0,
+) -> Polar:
+    """One viscous polar at Reynolds number ``re`` and Mach number ``mach``.
+
+    Computed exactly as ``polargen --airfoil … --re RE --mach M --alpha …`` computes it: the
+    airfoil in chord units, repaneled to ``panels`` nodes, a warm-started sweep from the α
+    nearest 0° up and down with recovery of failed points. Points that did not converge are
+    kept with ``converged == False`` (their coefficients are not results).
+
+    Parameters
+    ----------
+    airfoil : Airfoil, or a name / path as ``--airfoil`` accepts (``"naca8h12"``, ``"naca23012"``).
+    re : chord Reynolds number.
+    mach : free-stream Mach number, 0 ≤ M < 1 (Karman–Tsien).
+    alpha : angles of attack [deg]: ``"A0:A1:DA"`` or a list/array.
+    xtr : forced transition x/c on both surfaces, or ``(top, bottom)``; 1 = free (e^n).
+    ncrit : critical amplification ratio N of the e^n criterion.
+    panels : panel nodes after repaneling.
+    tolerance : Newton threshold on the RMS relative change.
+    threads : worker threads (0 = all cores); the result does not depend on it.
+    """
+    top, bot = _transition(xtr)
+    result = _polargen.table(
+        _airfoil(airfoil), [float(re)], [float(mach)], _alphas(alpha), top, bot,
+        float(ncrit), int(panels), float(tolerance), int(threads), None,
+    )
+    return Table(result).polars()[0]
+
+
+def point(
+    airfoil: AirfoilLike,
+    re: float,
+    mach: float = 0.0,
+    alpha: Optional[float] = None,
+    cl: Optional[float] = None,
+    xtr: Transition = 1.0,
+    ncrit: float = 9.0,
+    panels: int = DEFAULT_PANELS,
+    tolerance: float = DEFAULT_TOLERANCE,
+) -> Point:
+    """One operating point at angle ``alpha`` [deg] or at lift coefficient ``cl`` (give one),
+    with the distributions of both surfaces and the wake (x, y, Cp, Ue, δ*, θ, Cf, H, N or Cτ).
+
+    Solved as ``polargen plot-point`` solves it: at α one solve from a fresh start; at Cl a
+    secant search on α with warm starts (XFOIL's ``CL`` command). A point that does not
+    converge raises :class:`NotConvergedError`.
+    """
+    top, bot = _transition(xtr)
+    result = _polargen.point(
+        _airfoil(airfoil), float(re), float(mach),
+        None if alpha is None else float(alpha), None if cl is None else float(cl),
+        top, bot, float(ncrit), int(panels), float(tolerance),
+    )
+    return Point(float(re), float(mach), result)
+
+
+def table(
+    airfoil: AirfoilLike,
+    re: Union[float, Sequence[float], np.ndarray] = DEFAULT_RE,
+    mach: Union[float, Sequence[float], np.ndarray] = DEFAULT_MACH,
+    alpha: AlphaLike = DEFAULT_ALPHA,
+    xtr: Transition = 1.0,
+    ncrit: float = 9.0,
+    panels: int = DEFAULT_PANELS,
+    tolerance: float = DEFAULT_TOLERANCE,
+    threads: int = 0,
+    progress: Progress = None,
+) -> Table:
+    """A Re × M × α table (default: the rotor grid of ``polargen`` without ``--re``/``--mach``).
+
+    The polars are solved in parallel with the GIL released; other Python threads run
+    meanwhile. ``progress`` is a callable ``progress(done_points, total_points)`` or a
+    tqdm-like object (its ``update(n)`` is called), called on the calling thread as polars
+    finish. Ctrl-C (or an exception from ``progress``) stops the build once the polars under
+    way have finished.
+    """
+    top, bot = _transition(xtr)
+    result = _polargen.table(
+        _airfoil(airfoil), _axis("re", re), _axis("mach", mach), _alphas(alpha), top, bot,
+        float(ncrit), int(panels), float(tolerance), int(threads), _progress(progress),
+    )
+    return Table(result)
+
+
+from . import rotor  # noqa: E402  (the rotor module uses Table)

@@ -1,0 +1,126 @@
+"""Type stubs of the compiled core ``polargen._polargen`` (the Rust library's Python layer).
+The documented API is the package ``polargen``; ``Airfoil`` and ``NotConvergedError`` are
+re-exported there."""
+
+import os
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+ArrayLike = Union[Sequence[float], npt.NDArray[np.float64]]
+PathLike = Union[str, "os.PathLike[str]"]
+
+DEFAULT_RE: List[float]
+DEFAULT_MACH: List[float]
+DEFAULT_ALPHA: str
+DEFAULT_TOLERANCE: float
+DEFAULT_PANELS: int
+VERSION: str
+
+class NotConvergedError(RuntimeError):
+    """No converged solution: a viscous point, a target lift coefficient, a trim or a takeoff."""
+
+class Airfoil:
+    """An airfoil contour in XFOIL order: upper trailing edge → leading edge → lower trailing
+    edge."""
+
+    @staticmethod
+    def naca(designation: str) -> "Airfoil":
+        """A NACA 4- or 5-digit section from XFOIL's generator conventions: ``"2412"``,
+        ``"23012"``, ``"NACA 23012"``."""
+    @staticmethod
+    def named(name: str) -> "Airfoil":
+        """What the command line's ``--airfoil`` accepts: ``naca8h12``, ``naca23012``, any
+        NACA 4/5-digit name, or the path of a coordinate file."""
+    @staticmethod
+    def from_file(path: PathLike) -> "Airfoil":
+        """A Selig, Lednicer or plain x-y coordinate file."""
+    @staticmethod
+    def from_coordinates(x: ArrayLike, y: ArrayLike, name: str = "airfoil") -> "Airfoil":
+        """A contour from coordinate arrays in XFOIL order, checked like a file's points."""
+    @property
+    def name(self) -> str:
+        """The airfoil's name."""
+    @property
+    def x(self) -> npt.NDArray[np.float64]:
+        """x coordinates (XFOIL order)."""
+    @property
+    def y(self) -> npt.NDArray[np.float64]:
+        """y coordinates (XFOIL order)."""
+    @property
+    def coordinates(self) -> npt.NDArray[np.float64]:
+        """The points as an (n, 2) array of x, y."""
+    def paneled(self, panels: int = 160) -> "Airfoil":
+        """The nodes the solvers work on: in chord units and repaneled to ``panels`` nodes
+        (XFOIL PANE), as ``polar``, ``point`` and ``table`` prepare the airfoil."""
+    def to_selig(self) -> str:
+        """The contour as Selig-format text (name line, then x y per line)."""
+    def __len__(self) -> int: ...
+
+class PolarTable:
+    """A table of polars, one per (Re, M) node (the library's ``PolarTable``)."""
+
+    @staticmethod
+    def read(path: PathLike) -> "PolarTable": ...
+    def write(
+        self, path: PathLike, format: Optional[str] = None, c81_re: Optional[float] = None
+    ) -> List[str]: ...
+    @property
+    def re(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def mach(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def meta(self) -> Dict[str, Any]: ...
+    @property
+    def post_stall(self) -> Dict[str, float]: ...
+    def with_post_stall(
+        self, cd_max: float, cd_reverse: float, vc_min_junction_deg: float
+    ) -> "PolarTable": ...
+    def polars(self) -> List[Tuple[float, float, Dict[str, np.ndarray]]]: ...
+    def polar(
+        self, re: float, mach: float
+    ) -> Optional[Tuple[float, float, Dict[str, np.ndarray]]]: ...
+    def lookup(
+        self, alpha: ArrayLike, re: ArrayLike, mach: ArrayLike
+    ) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]: ...
+    def alpha_at_cl(
+        self, cl: float, re: float, mach: float, alpha_min: float, alpha_max: float
+    ) -> Optional[Tuple[float, Dict[str, Any]]]: ...
+    @property
+    def point_count(self) -> int: ...
+    @property
+    def converged_count(self) -> int: ...
+    @property
+    def has_lookup(self) -> bool: ...
+
+class Aircraft:
+    """A gyroplane preset (rotor, airframe, propeller, takeoff data)."""
+
+    @staticmethod
+    def read(path: PathLike) -> "Aircraft": ...
+    @staticmethod
+    def from_toml(text: str, origin: str = "<string>") -> "Aircraft": ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def mass_kg(self) -> float: ...
+    def trim(
+        self, table: PolarTable, speed_kt: float, mass_kg: Optional[float], altitude_m: float
+    ) -> Tuple[str, List[str]]: ...
+    def takeoff(
+        self, table: PolarTable, mass_kg: Optional[float]
+    ) -> Tuple[str, Dict[str, np.ndarray]]: ...
+
+def alpha_range(text: str) -> npt.NDArray[np.float64]:
+    """The α values of the range text ``A0:A1:DA`` (or one value), as the CLI's ``--alpha``."""
+
+def table(
+    airfoil: Airfoil, re: List[float], mach: List[float], alpha: List[float], xtr_top: float,
+    xtr_bot: float, ncrit: float, panels: int, tolerance: float, threads: int,
+    progress: Optional[Callable[[int, int], object]],
+) -> PolarTable: ...
+def point(
+    airfoil: Airfoil, re: float, mach: float, alpha: Optional[float], cl: Optional[float],
+    xtr_top: float, xtr_bot: float, ncrit: float, panels: int, tolerance: float,
+) -> Dict[str, Dict[str, np.ndarray]]: ...

@@ -1,0 +1,151 @@
+"""The gyroplane: the aircraft preset, level-cruise trim and takeoff, driven by a polar table.
+
+>>> import polargen as pg
+>>> ac = pg.rotor.Aircraft.read("aircraft/mtosport.toml")          # doctest: +SKIP
+>>> t = ac.trim(pg.Table.read("polars/naca8h12_free.csv"), speed_kt=60)  # doctest: +SKIP
+>>> t.rotor_rpm, t["engine_rpm"]                                       # doctest: +SKIP
+
+Results hold exactly the fields ``gyro trim --json`` and ``gyro takeoff --json`` print (a
+mapping: ``result["rotor_rpm"]``, and attributes: ``result.rotor_rpm``).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import warnings
+from typing import Any, Dict, Iterator, List, Mapping, Optional, Union
+
+import numpy as np
+
+from . import _polargen
+from ._results import _pandas
+from ._table import Table
+
+__all__ = ["Aircraft", "TakeoffResult", "TrimResult", "takeoff", "trim"]
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+class _Fields(Mapping[str, Any]):
+    """A read-only mapping of the JSON fields of a result, also readable as attributes."""
+
+    def __init__(self, fields: Dict[str, Any]) -> None:
+        self._fields = fields
+
+    def __getitem__(self, key: str) -> Any:
+        return self._fields[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._fields)
+
+    def __len__(self) -> int:
+        return len(self._fields)
+
+    def __getattr__(self, name: str) -> Any:
+        try:
+            return self.__dict__["_fields"][name]
+        except KeyError:
+            raise AttributeError(name) from None
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The fields as a plain dict (what ``gyro … --json`` prints)."""
+        return dict(self._fields)
+
+    def __repr__(self) -> str:
+        inner = ", ".join(f"{k}={v!r}" for k, v in self._fields.items())
+        return f"{type(self).__name__}({inner})"
+
+
+class TrimResult(_Fields):
+    """Trimmed level flight with the fields of ``gyro trim --json``: ``rotor_rpm``,
+    ``rotor_aoa_deg`` (tip-path plane), ``engine_rpm`` (None above the engine's maximum),
+    ``rotor_drag_n``, ``parasitic_drag_n``, ``prop_thrust_n``, ``lift_to_drag``,
+    ``hub_aoa_deg``, ``power_required_kw``, ``beta1c_deg``, ``beta1s_deg``, ``speed_kt``.
+    ``notes`` holds what ``gyro`` prints beside the result (also issued as warnings)."""
+
+    def __init__(self, fields: Dict[str, Any], notes: List[str]) -> None:
+        super().__init__(fields)
+        self.__dict__["notes"] = list(notes)
+
+
+class TakeoffResult(_Fields):
+    """A takeoff run with the fields of ``gyro takeoff --json`` (``takeoff_roll_m``,
+    ``distance_15m_m``, ``max_flapping_deg``, ``liftoff_speed_kt``, ``screen_speed_kt``,
+    ``liftoff_rotor_rpm``, ``screen_time_s``) and ``history``, the time history of
+    ``gyro takeoff --history`` as NumPy columns (t, x, h, v, rotor_rpm, alpha_r_deg,
+    beta_deg)."""
+
+    def __init__(self, fields: Dict[str, Any], history: Dict[str, np.ndarray]) -> None:
+        super().__init__(fields)
+        self.__dict__["history"] = history
+
+    def history_to_pandas(self):
+        """The time history as a ``pandas.DataFrame``."""
+        return _pandas().DataFrame(self.history)
+
+
+class Aircraft:
+    """A gyroplane preset: rotor, airframe, propeller/engine and takeoff data (TOML, every
+    value with its source; see ``aircraft/mtosport.toml``)."""
+
+    def __init__(self, core: "_polargen.Aircraft") -> None:
+        self._core = core
+
+    @classmethod
+    def read(cls, path: PathLike) -> "Aircraft":
+        """Reads and checks a TOML preset, as ``gyro --aircraft`` does."""
+        return cls(_polargen.Aircraft.read(os.fspath(path)))
+
+    @classmethod
+    def from_toml(cls, text: str, origin: str = "<string>") -> "Aircraft":
+        """Parses and checks a TOML preset held in a string."""
+        return cls(_polargen.Aircraft.from_toml(text, origin))
+
+    @property
+    def name(self) -> str:
+        """The aircraft's name."""
+        return self._core.name
+
+    @property
+    def mass_kg(self) -> float:
+        """The preset's takeoff mass [kg]."""
+        return self._core.mass_kg
+
+    def trim(self, table: Table, speed_kt: float = 60.0, mass_kg: Optional[float] = None,
+             altitude_m: float = 0.0) -> TrimResult:
+        """Level-cruise trim at ``speed_kt`` [kt], ISA ``altitude_m`` and ``mass_kg`` (the
+        preset's when None) with the blade section ``table``, as ``gyro trim``: the rotor in
+        autorotation carrying the weight, its drag, the airframe drag and the propeller."""
+        text, notes = self._core.trim(_core(table), float(speed_kt),
+                                      None if mass_kg is None else float(mass_kg),
+                                      float(altitude_m))
+        for note in notes:
+            warnings.warn(note, UserWarning, stacklevel=2)
+        return TrimResult(json.loads(text), notes)
+
+    def takeoff(self, table: Table, mass_kg: Optional[float] = None) -> TakeoffResult:
+        """The takeoff from brake release to the screen height, as ``gyro takeoff``."""
+        text, history = self._core.takeoff(_core(table),
+                                           None if mass_kg is None else float(mass_kg))
+        return TakeoffResult(json.loads(text), history)
+
+    def __repr__(self) -> str:
+        return f"Aircraft({self.name!r}, {self.mass_kg:g} kg)"
+
+
+def _core(table: Table) -> "_polargen.PolarTable":
+    if not isinstance(table, Table):
+        raise TypeError(f"table: expected a polargen.Table, got {type(table).__name__}")
+    return table._core
+
+
+def trim(aircraft: Aircraft, table: Table, speed_kt: float = 60.0,
+         mass_kg: Optional[float] = None, altitude_m: float = 0.0) -> TrimResult:
+    """:meth:`Aircraft.trim` of ``aircraft``."""
+    return aircraft.trim(table, speed_kt=speed_kt, mass_kg=mass_kg, altitude_m=altitude_m)
+
+
+def takeoff(aircraft: Aircraft, table: Table, mass_kg: Optional[float] = None) -> TakeoffResult:
+    """:meth:`Aircraft.takeoff` of ``aircraft``."""
+    return aircraft.takeoff(table, mass_kg=mass_kg)

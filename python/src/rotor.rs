@@ -1,0 +1,141 @@
+//! `Aircraft`: the gyroplane preset, its cruise trim and its takeoff, with the results in the
+//! fields `gyro trim --json` and `gyro takeoff --json` print (their serde form).
+
+use std::path::PathBuf;
+
+use numpy::IntoPyArray;
+use polargen::rotor::{
+    check_altitude_m, check_mass_kg, check_speed_kt, simulate_takeoff, trim_aircraft, Aircraft,
+    TakeoffSample, TrimParams,
+};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::errors::{raise, shielded};
+use crate::table::Table;
+
+/// A gyroplane preset (rotor, airframe, propeller, takeoff data).
+#[pyclass(module = "polargen._polargen", name = "Aircraft", frozen)]
+pub struct PyAircraft {
+    inner: Aircraft,
+}
+
+impl PyAircraft {
+    /// The preset with its mass replaced by `mass_kg` (checked as `gyro --mass`) when given.
+    fn with_mass(&self, mass_kg: Option<f64>) -> PyResult<Aircraft> {
+        let mut aircraft = self.inner.clone();
+        if let Some(m) = mass_kg {
+            check_mass_kg("mass_kg", m).map_err(|e| raise(None, e))?;
+            aircraft.mass_kg = m;
+        }
+        Ok(aircraft)
+    }
+}
+
+/// The table as a rotor section: it must allow lookups, as `gyro` requires of its `--table`.
+fn section(table: &Table) -> PyResult<&polargen::table::PolarTable> {
+    table
+        .inner
+        .require_lookup()
+        .map_err(|e| raise(Some("table"), e))?;
+    Ok(&table.inner)
+}
+
+/// The serde form of a result (what `gyro … --json` prints) as JSON text.
+fn json<T: serde::Serialize>(value: &T) -> PyResult<String> {
+    serde_json::to_string(value).map_err(|e| pyo3::exceptions::PyValueError::new_err(e.to_string()))
+}
+
+#[pymethods]
+impl PyAircraft {
+    /// Reads and checks a TOML preset (e.g. `aircraft/mtosport.toml`).
+    #[staticmethod]
+    fn read(path: PathBuf) -> PyResult<Self> {
+        Aircraft::from_toml_file(&path)
+            .map(|inner| Self { inner })
+            .map_err(|e| raise(None, e))
+    }
+
+    /// Parses and checks a TOML preset held in a string; `origin` names it in errors.
+    #[staticmethod]
+    #[pyo3(signature = (text, origin = "<string>"))]
+    fn from_toml(text: &str, origin: &str) -> PyResult<Self> {
+        Aircraft::from_toml_str(text, origin)
+            .map(|inner| Self { inner })
+            .map_err(|e| raise(None, e))
+    }
+
+    /// The aircraft's name.
+    #[getter]
+    fn name(&self) -> &str {
+        &self.inner.name
+    }
+
+    /// The preset's takeoff mass [kg].
+    #[getter]
+    fn mass_kg(&self) -> f64 {
+        self.inner.mass_kg
+    }
+
+    /// Level-cruise trim as `gyro trim --json` computes it: (JSON text, notes).
+    fn trim(
+        &self,
+        py: Python<'_>,
+        table: &Table,
+        speed_kt: f64,
+        mass_kg: Option<f64>,
+        altitude_m: f64,
+    ) -> PyResult<(String, Vec<String>)> {
+        check_speed_kt("speed_kt", speed_kt).map_err(|e| raise(None, e))?;
+        check_altitude_m("altitude_m", altitude_m).map_err(|e| raise(None, e))?;
+        let aircraft = self.with_mass(mass_kg)?;
+        let section = section(table)?;
+        let trimmed = py.detach(|| {
+            shielded(|| {
+                trim_aircraft(
+                    &aircraft,
+                    section,
+                    speed_kt,
+                    aircraft.mass_kg,
+                    altitude_m,
+                    &TrimParams::default(),
+                )
+            })
+        })?;
+        let t = trimmed.map_err(|e| raise(None, e))?;
+        Ok((json(&t)?, t.notes()))
+    }
+
+    /// The takeoff as `gyro takeoff --json` computes it: (JSON text, time history columns).
+    fn takeoff<'py>(
+        &self,
+        py: Python<'py>,
+        table: &Table,
+        mass_kg: Option<f64>,
+    ) -> PyResult<(String, Bound<'py, PyDict>)> {
+        let aircraft = self.with_mass(mass_kg)?;
+        let section = section(table)?;
+        let run = py.detach(|| shielded(|| simulate_takeoff(&aircraft, section)))?;
+        let t = run.map_err(|e| raise(None, e))?;
+        let history = PyDict::new(py);
+        let column = |f: fn(&TakeoffSample) -> f64| {
+            t.history
+                .iter()
+                .map(f)
+                .collect::<Vec<f64>>()
+                .into_pyarray(py)
+        };
+        history.set_item("t", column(|s| s.t))?;
+        history.set_item("x", column(|s| s.x))?;
+        history.set_item("h", column(|s| s.h))?;
+        history.set_item("v", column(|s| s.v))?;
+        history.set_item("rotor_rpm", column(|s| s.rotor_rpm))?;
+        history.set_item("alpha_r_deg", column(|s| s.alpha_r_deg))?;
+        history.set_item("beta_deg", column(|s| s.beta_deg))?;
+        Ok((json(&t)?, history))
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Aircraft({:?}, {} kg)", self.inner.name, self.inner.mass_kg)
+    }
+}
