@@ -21,21 +21,18 @@ fn csv_rows(file: &str) -> Vec<Vec<f64>> {
         .collect()
 }
 
-/// Angle of the Clark Y chord line (leading edge to trailing edge, the α datum of the table)
-/// above the flat lower face the report measures blade angles from [rad]: the face points
-/// (0.3, 0) and (0.9, 0) of the ordinates, seen in the table's normalised frame.
+/// Angle of the Clark Y chord line (leading-edge point of the spline to the trailing edge, the
+/// α datum of the table, made with `--derotate`) above the flat lower face the report measures
+/// blade angles from [rad]: the face is the x axis of the ordinates, so it is minus the chord
+/// line's inclination to that axis.
 fn face_to_chord_angle() -> f64 {
     let raw = read_airfoil_file(&root().join("geometry/clarky.dat")).unwrap();
-    let norm = raw.normalized().unwrap();
-    let at = |x: f64| {
-        let k = (0..raw.x.len())
-            .rev()
-            .find(|&k| (raw.x[k] - x).abs() < 1e-9 && raw.y[k] == 0.0)
-            .unwrap();
-        (norm.x[k], norm.y[k])
-    };
-    let ((x1, y1), (x2, y2)) = (at(0.3), at(0.9));
-    (y2 - y1).atan2(x2 - x1)
+    assert!(raw
+        .x
+        .iter()
+        .zip(&raw.y)
+        .any(|(&x, &y)| x >= 0.3 && y == 0.0));
+    -raw.chord_angle_deg().unwrap().to_radians()
 }
 
 /// Propeller D at blade angle `beta075_deg` (flat face) at 0.75 R.

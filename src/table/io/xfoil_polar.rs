@@ -70,7 +70,9 @@ pub fn write_polar_to(
     s.push_str("   alpha    CL        CD       CDp       CM     Top_Xtr  Bot_Xtr   Cpmin\n");
     s.push_str("  ------ -------- --------- --------- -------- -------- -------- --------\n");
     for p in points.iter().filter(|p| p.converged) {
-        let values = [p.alpha, p.cl, p.cd, p.cdp, p.cm, p.xtr_top, p.xtr_bot, p.cpmin];
+        let values = [
+            p.alpha, p.cl, p.cd, p.cdp, p.cm, p.xtr_top, p.xtr_bot, p.cpmin,
+        ];
         for (k, (value, (width, decimals))) in values.into_iter().zip(POLAR_FIELDS).enumerate() {
             let field = format!("{value:width$.decimals$}");
             // A wider value would merge with its neighbour and not read back; an unknown
