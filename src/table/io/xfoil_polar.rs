@@ -75,9 +75,9 @@ pub fn write_polar_to(
         ];
         for (k, (value, (width, decimals))) in values.into_iter().zip(POLAR_FIELDS).enumerate() {
             let field = format!("{value:width$.decimals$}");
-            // A wider value would merge with its neighbour and not read back; an unknown
-            // minimum pressure (a table read from a file without it) is written as NaN.
-            let unknown_cpmin = k == CPMIN_FIELD && value.is_nan();
+            // A wider value would merge with its neighbour and not read back; a minimum
+            // pressure that is unknown (NaN) or beyond Karman–Tsien (−∞) is written as such.
+            let unknown_cpmin = k == CPMIN_FIELD && !value.is_finite();
             if field.len() > width || !(value.is_finite() || unknown_cpmin) {
                 return Err(TableError::FieldOverflow { value, width });
             }
