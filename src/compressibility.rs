@@ -28,6 +28,19 @@ pub(crate) const GAMMA_MINUS_ONE: f64 = GAMMA - 1.0;
 #[error("free-stream Mach number {0} is outside [0, 1)")]
 pub struct MachOutOfRange(pub f64);
 
+/// The lowest Karman–Tsien pressure coefficient on a surface and the supercritical flag that
+/// follows from it (XFOIL reports the same CPMIN; its COMSET defines CPSTAR).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MinimumPressure {
+    /// Smallest corrected Cp on the surface; −∞ where the correction breaks down (its
+    /// denominator β + BFAC·Cp_i is not positive: the local speed is far beyond sonic).
+    pub cp: f64,
+    /// Cp_min < Cp*: somewhere on the surface the local Mach number exceeds 1, where an
+    /// XFOIL-class method (subsonic Karman–Tsien, no shocks) is no longer valid. Never at
+    /// M∞ = 0 (Cp* = −∞).
+    pub supercritical: bool,
+}
+
 /// Karman–Tsien correction factors for one free-stream Mach number.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct KarmanTsien {
@@ -93,6 +106,19 @@ impl KarmanTsien {
     /// otherwise be taken for this `f64 − f64`).
     fn speed_factor(&self) -> f64 {
         1.0 - self.lambda
+    }
+
+    /// The lowest surface pressure of a contour with surface speeds `speeds` (|q|/V∞,
+    /// incompressible) and whether the flow is supercritical there (see [`MinimumPressure`]).
+    /// The lowest corrected Cp sits at the highest speed, because the correction is monotone
+    /// in Cp_i wherever it is defined.
+    pub fn minimum_pressure(&self, speeds: impl IntoIterator<Item = f64>) -> MinimumPressure {
+        let q_max = speeds.into_iter().fold(0.0_f64, |m, q| m.max(q.abs()));
+        let cp = self.cp_from_speed(q_max).unwrap_or(f64::NEG_INFINITY);
+        MinimumPressure {
+            cp,
+            supercritical: self.mach > 0.0 && cp < self.cp_sonic(),
+        }
     }
 
     /// Sonic pressure coefficient Cp* for isentropic flow of air,

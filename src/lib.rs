@@ -24,8 +24,9 @@
 //! * [`table`] — Re × Mach × α tables: building ([`table::build_table`]), lookups with a 360°
 //!   extension, one reader that recognises every readable layout ([`table::read_table`]), and
 //!   the writers.
-//! * [`rotor`] — blade-element model of a teetering gyroplane rotor: trim, takeoff, cruise
-//!   sweeps, and [`rotor::study`], the paper's clean-versus-contaminated study.
+//! * [`rotor`] — blade-element model of a teetering gyroplane rotor and a blade-element–momentum
+//!   propeller with its engine: trim, takeoff, cruise sweeps, and [`rotor::study`], the paper's
+//!   clean-versus-contaminated study and its sensitivity to the preset's estimates.
 //! * [`plot`] — SVG/PNG figures of polars, point distributions and rotor results.
 //! * [`report`] — the paper report: Tables 3–5 beside the paper's values, figures, words.
 //!
@@ -56,6 +57,7 @@
 //! | build, read, write a table | [`table::build_table`], [`table::read_table`], [`table::write_table`] |
 //! | look up section coefficients | [`section::SectionAero`] on [`table::PolarTable`] |
 //! | trim, takeoff, sweeps | [`rotor::trim_aircraft`], [`rotor::simulate_takeoff`], [`rotor::study`] |
+//! | propeller and engine | [`rotor::Powerplant`], [`rotor::Propeller`] |
 //! | figures | [`plot::render`] with [`plot::polar_plots`], [`plot::point_plots`], [`plot::rotor_plots`] |
 //! | the paper report | [`report::write_report`] |
 //! | write any result file | [`output::write_output`] |

@@ -1,10 +1,11 @@
 //! Section data: the vocabulary shared by the solver that produces polars and the models
 //! that consume them.
 //!
-//! * [`PolarPoint`] — one solved operating point (α, Cl, Cd, Cm, transition, convergence).
+//! * [`PolarPoint`] — one solved operating point (α, Cl, Cd, Cm, transition, convergence,
+//!   minimum pressure and the supercritical flag).
 //! * [`FlowCondition`] — the (Re, M) pair a polar or a table node is computed at.
 //! * [`SectionAero`] and [`Lookup`] — section coefficients at any (α, Re, M) with the flags a
-//!   consumer needs to judge them (clamped, post-stall, bridged).
+//!   consumer needs to judge them (clamped, post-stall, bridged, supercritical).
 //!
 //! * [`wrap_deg`] — an angle of attack brought onto the circle the tables cover.
 //!
@@ -56,6 +57,23 @@ pub struct PolarPoint {
     pub iterations: u32,
     /// Final residual norm of the Newton system.
     pub residual: f64,
+    /// Smallest Karman–Tsien pressure coefficient on the surface, from the viscous edge
+    /// speeds (XFOIL CPMIN; [`KarmanTsien::minimum_pressure`]); −∞ where the correction
+    /// breaks down; NaN when unknown (a point that could not be solved, or a table file
+    /// written without the column).
+    ///
+    /// [`KarmanTsien::minimum_pressure`]: crate::compressibility::KarmanTsien::minimum_pressure
+    #[serde(default = "unknown_cpmin")]
+    pub cpmin: f64,
+    /// Cp_min < Cp*: the flow is locally supersonic somewhere on the surface, outside the
+    /// validity of the method (no shocks). `None` when unknown, as `cpmin`.
+    #[serde(default)]
+    pub supercritical: Option<bool>,
+}
+
+/// The `cpmin` of a point that does not say (NaN).
+fn unknown_cpmin() -> f64 {
+    f64::NAN
 }
 
 /// Section coefficients returned by a table lookup.
@@ -76,6 +94,12 @@ pub struct Lookup {
     /// The value was interpolated across a gap of unconverged (or missing) points, or a polar
     /// with too few converged points was replaced by its nearest usable neighbour.
     pub bridged: bool,
+    /// A table point the value leans on is supercritical ([`PolarPoint::supercritical`]):
+    /// the section data there are outside the method's validity.
+    pub supercritical: bool,
+    /// A table point the value leans on does not say whether it is supercritical (a table
+    /// written without the flag).
+    pub supercritical_unknown: bool,
 }
 
 impl Lookup {

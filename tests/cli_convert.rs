@@ -54,11 +54,11 @@ fn csv_to_json_round_trip_and_c81_per_re() {
         c81.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("wrote 6 files"));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("wrote 8 files"));
     let text = std::fs::read_to_string(dir.join("sub").join("t_Re2e6.c81")).unwrap();
     let first = text.lines().next().unwrap();
     assert!(first.starts_with("NACA 8-H-12"), "{first}");
-    // Five Mach columns in the header row of the CL block.
+    // Eight Mach columns in the header row of the CL block.
     let machs: Vec<f64> = text
         .lines()
         .nth(1)
@@ -66,7 +66,7 @@ fn csv_to_json_round_trip_and_c81_per_re() {
         .split_whitespace()
         .map(|v| v.parse().unwrap())
         .collect();
-    assert_eq!(machs, vec![0.0, 0.2, 0.3, 0.4, 0.5]);
+    assert_eq!(machs, vec![0.0, 0.2, 0.3, 0.4, 0.5, 0.55, 0.6, 0.65]);
     std::fs::remove_dir_all(dir).unwrap();
 }
 

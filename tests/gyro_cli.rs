@@ -44,10 +44,22 @@ fn trim_json_keys_and_values() {
         "parasitic_drag_n",
         "prop_thrust_n",
         "lift_to_drag",
+        "rotor_aoa_drag_equivalent_deg",
+        "static_thrust_n",
+        "table_clamped_fraction",
+        "table_supercritical_fraction",
     ] {
         assert!(v[key].is_number(), "{key} missing: {v}");
     }
     let f = |k: &str| v[k].as_f64().unwrap();
+    // The drag-equivalent angle is atan(D_R/L_R), L_R = weight at trim; it exceeds the
+    // tip-path-plane angle (the in-plane force of the profile drag).
+    let weight = 450.0 * 9.80665;
+    let equivalent = f("rotor_drag_n").atan2(weight).to_degrees();
+    assert!((f("rotor_aoa_drag_equivalent_deg") - equivalent).abs() < 1e-3);
+    assert!(f("rotor_aoa_drag_equivalent_deg") > f("rotor_aoa_deg"));
+    // A single-node table: nearly every lookup is clamped.
+    assert!(f("table_clamped_fraction") > 0.5 && f("static_thrust_n") > 1000.0);
     // XFOIL polars of the paper's airfoil: the paper's trim is 347 rpm, F_prop 1051 N.
     assert!((f("rotor_rpm") - 347.0).abs() < 40.0, "{}", f("rotor_rpm"));
     assert!((f("prop_thrust_n") - f("rotor_drag_n") - f("parasitic_drag_n")).abs() < 1e-6);
@@ -413,7 +425,7 @@ fn trim_notes_clamped_lookups_and_engine_limit() {
         "--table",
         &table("free"),
         "--speed-kt",
-        "250",
+        "130",
     ]);
     assert_ok(&out);
     let err = String::from_utf8_lossy(&out.stderr);

@@ -218,17 +218,28 @@ fn report_tables_match_the_single_commands() {
         .lines()
         .find(|l| l.starts_with("Table coverage: at these trims "))
         .expect("coverage line");
+    // The default grid covers the rotor up to its advancing tip: only the inboard strips near
+    // the reverse-flow circle lie below its lowest Reynolds number.
     assert!(
-        coverage.contains("fall outside the tables' range (Re 250000…2500000, M 0…0.5)")
-            && coverage.contains("the advancing tip, which reaches M 0.5"),
+        coverage.contains("fall outside the tables' range (Re 100000…3000000, M 0…0.65)")
+            && coverage.contains("the reverse-flow circle")
+            && !coverage.contains("advancing tip"),
         "{coverage}"
     );
+    // Both rotor angles, the flight test and the sensitivity table are shown.
+    for heading in [
+        "## Flight test (Table 2)",
+        "### Rotor angle of attack: two angles",
+        "## Sensitivity to the estimated values",
+    ] {
+        assert!(md.contains(heading), "{heading}");
+    }
 
     // Tables 3 and 4: "ours clean" is cell 2, "ours contaminated" cell 5, same runs as
     // `gyro trim --json` and `gyro takeoff --json` on the 8-H-12 tables.
     let trim_keys = [
         ("rotor rpm n_R", "rotor_rpm"),
-        ("rotor AoA alpha_R [deg]", "rotor_aoa_deg"),
+        ("rotor AoA alpha_R [deg]", "rotor_aoa_drag_equivalent_deg"),
         ("engine rpm", "engine_rpm"),
         ("rotor drag D_R [N]", "rotor_drag_n"),
         ("parasitic drag D_P [N]", "parasitic_drag_n"),

@@ -51,6 +51,8 @@ fn read_polar(name: &str) -> Vec<PolarPoint> {
                 converged: true,
                 iterations: 0,
                 residual: 0.0,
+                cpmin: f64::NAN,
+                supercritical: None,
             }
         })
         .collect()

@@ -1,9 +1,10 @@
-//! Aircraft preset, ISA atmosphere and propeller map.
+//! Aircraft preset, ISA atmosphere and the powerplant built from it.
 
 mod rotor_support;
 
-use polargen::rotor::{Aircraft, AircraftError, Atmosphere, PropellerMap, KT_TO_MS};
+use polargen::rotor::{Aircraft, AircraftError, Atmosphere, Powerplant, PropellerError, KT_TO_MS};
 use rotor_support::mtosport;
+use std::error::Error;
 
 #[test]
 fn preset_holds_the_paper_table_1() {
@@ -16,13 +17,21 @@ fn preset_holds_the_paper_table_1() {
     assert_eq!(ac.rotor.incidence_deg, 2.5);
     assert_eq!(ac.rotor.flap_stop_deg, 7.0);
     assert_eq!(ac.rotor.radial_strips, 10);
-    assert_eq!(ac.propeller.gear_ratio, 0.41);
-    assert_eq!(ac.propeller.static_thrust_n, 2000.0);
+    // Paper T1 rounds the Rotax gear 21/51 to 0.41.
+    assert!((ac.engine.gear_ratio - 0.41).abs() < 0.002);
+    assert_eq!(ac.propeller.calib_thrust_n, 1051.0);
     assert_eq!(ac.takeoff.prerotation_rpm, 200.0);
     assert_eq!(ac.takeoff.head_angle_max_deg, 15.0);
     // Uniform blades 0.5 … 4.2 m of 14 kg plus 3 kg m² hub: 2·14·(4.2³ − 0.5³)/(3·3.7) + 3.
     let expected = 2.0 * 14.0 * (4.2f64.powi(3) - 0.125) / 11.1 + 3.0;
     assert!((ac.rotor.polar_inertia() - expected).abs() < 1e-9);
+}
+
+fn preset_path() -> String {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("aircraft/mtosport.toml")
+        .display()
+        .to_string()
 }
 
 fn preset_text() -> String {
@@ -102,10 +111,18 @@ fn unknown_field_and_bad_values_are_rejected() {
             "takeoff.max_time_s",
         ),
         ("mass_kg = 450.0", "mass_kg = 1e300", "mass_kg"),
+        ("max_rpm = 5800.0", "max_rpm = 1000.0", "engine.max_rpm"),
         (
-            "max_engine_rpm = 5800.0",
-            "max_engine_rpm = 1000.0",
-            "propeller.max_engine_rpm",
+            "torque_rpm = [4000.0, 4500.0",
+            "torque_rpm = [4500.0, 4000.0",
+            "engine.torque_rpm",
+        ),
+        ("torque_nm = [118.0, ", "torque_nm = [", "engine.torque_nm"),
+        ("annuli = 20", "annuli = 2", "propeller.blade.annuli"),
+        (
+            "r_over_r = [0.2, ",
+            "r_over_r = [0.8, ",
+            "propeller.blade.r_over_r",
         ),
         (
             "calib_speed_kt = ",
@@ -146,8 +163,21 @@ fn unknown_field_and_bad_values_are_rejected() {
         "{err}"
     );
     let text = preset_text().replace("induced_power_factor = 1.15\n", "");
-    let ac = Aircraft::from_toml_str(&text, "t").unwrap();
+    let ac = Aircraft::from_toml_str(&text, &preset_path()).unwrap();
     assert_eq!(ac.rotor.induced_power_factor, 1.0);
+    // The propeller's section table is read relative to the preset's folder, and a missing
+    // one is named.
+    let err = Aircraft::from_toml_str(&preset_text(), "elsewhere/t.toml").unwrap_err();
+    assert!(
+        err.to_string() == "aircraft file elsewhere/t.toml: propeller.section_table"
+            && err
+                .source()
+                .unwrap()
+                .to_string()
+                .contains("clarky_free.csv"),
+        "{err}: {:?}",
+        err.source().map(|s| s.to_string())
+    );
     let err = Aircraft::from_toml_file(std::path::Path::new("/nonexistent/x.toml")).unwrap_err();
     assert!(
         err.to_string().starts_with("cannot read aircraft file"),
@@ -172,35 +202,36 @@ fn isa_values() {
 }
 
 #[test]
-fn propeller_map_reproduces_its_calibration_points() {
+fn powerplant_reproduces_its_calibration_point_and_is_consistent() {
     let ac = mtosport();
-    let map = PropellerMap::calibrate(&ac.propeller).unwrap();
-    let rho = Atmosphere::isa(0.0).density;
-    assert!((map.thrust(rho, 0.0, 5200.0) - 2000.0).abs() < 1e-6);
+    let pp = Powerplant::from_aircraft(&ac).unwrap();
+    let sl = Atmosphere::isa(0.0);
     let v = 60.0 * KT_TO_MS;
-    assert!((map.thrust(rho, v, 4400.0) - 1051.0).abs() < 1e-6);
-    let rpm = map.engine_rpm_for_thrust(rho, v, 1051.0).unwrap();
-    assert!((rpm - 4400.0).abs() < 1e-6, "{rpm}");
-    // Full throttle: the engine speeds up as the propeller unloads (static rpm standing still,
-    // capped at the maximum), and the thrust falls slowly with speed (k = 1.15 > 1).
-    assert!((map.full_throttle_engine_rpm(0.0) - 5200.0).abs() < 1e-9);
-    let rpm_45 = map.full_throttle_engine_rpm(45.0 * KT_TO_MS);
-    assert!(rpm_45 > 5400.0 && rpm_45 < 5800.0, "{rpm_45}");
-    assert_eq!(map.full_throttle_engine_rpm(100.0), 5800.0);
-    let t45 = map.full_throttle_thrust(rho, 45.0 * KT_TO_MS);
-    assert!(t45 < 2000.0 && t45 > 1850.0, "{t45}");
-    assert!(map.full_throttle_thrust(rho, 20.0) < map.full_throttle_thrust(rho, 0.0));
-    // With k = 1 (torque and thrust vanishing at the same J) the torque balance keeps the
-    // thrust exactly at its static value until the rpm limit.
-    let ideal = PropellerMap {
-        zero_torque_j: map.j0,
-        ..map
-    };
-    for v in [5.0, 15.0, 25.0] {
-        assert!(
-            (ideal.full_throttle_thrust(rho, v) - 2000.0).abs() < 1e-6,
-            "{v}"
-        );
-    }
-    assert!(map.engine_rpm_for_thrust(rho, v, 5000.0).is_err());
+    // The one calibrated value, the blade angle, gives the calibration thrust at its rpm.
+    let n = pp.engine.propeller_rev_per_s(4400.0);
+    let p = pp.propeller.operate(&sl, v, n).unwrap();
+    assert!((p.thrust - 1051.0).abs() < 1e-3, "{}", p.thrust);
+    let rpm = pp.engine_rpm_for_thrust(&sl, v, 1051.0).unwrap();
+    assert!((rpm - 4400.0).abs() < 1e-2, "{rpm}");
+    assert!(matches!(
+        pp.engine_rpm_for_thrust(&sl, v, 5000.0),
+        Err(PropellerError::Unavailable { .. })
+    ));
+    // Full throttle: the propeller absorbs the shaft torque at the equilibrium rpm; the thrust
+    // falls with speed; a start from a neighbouring equilibrium finds the same one.
+    let st = pp.full_throttle(&sl, 0.0, None).unwrap();
+    let q = pp.engine.shaft_torque(st.engine_rpm);
+    assert!(st.rpm_limited || (st.propeller.torque / q - 1.0).abs() < 1e-6);
+    let at20 = pp.full_throttle(&sl, 20.0, Some(&st)).unwrap();
+    assert!(at20.propeller.thrust < st.propeller.thrust);
+    let q20 = pp.engine.shaft_torque(at20.engine_rpm);
+    assert!((at20.propeller.torque / q20 - 1.0).abs() < 1e-6);
+    let cold = pp.full_throttle(&sl, 20.0, None).unwrap();
+    assert!((cold.engine_rpm - at20.engine_rpm).abs() < 1e-2);
+    // Power and efficiency in cruise are those of a propeller (η 0.6–0.85 at J ≈ 0.6).
+    assert!(
+        p.efficiency() > 0.6 && p.efficiency() < 0.85,
+        "{}",
+        p.efficiency()
+    );
 }

@@ -20,15 +20,20 @@ fn default_grid_shape_and_convergence() {
         "naca8h12_xtr0.07.csv",
         "naca23012_free.csv",
         "naca23012_xtr0.07.csv",
+        "clarky_free.csv",
     ] {
         let t = shipped(name);
         assert_eq!(
             t.re(),
-            &[0.25e6, 0.5e6, 1.0e6, 1.5e6, 2.0e6, 2.5e6],
+            &[1e5, 2e5, 4e5, 7e5, 1.0e6, 1.5e6, 2.0e6, 3.0e6],
             "{name}"
         );
-        assert_eq!(t.mach(), &[0.0, 0.2, 0.3, 0.4, 0.5], "{name}");
-        assert_eq!(t.point_count(), 1830, "{name}");
+        assert_eq!(
+            t.mach(),
+            &[0.0, 0.2, 0.3, 0.4, 0.5, 0.55, 0.6, 0.65],
+            "{name}"
+        );
+        assert_eq!(t.point_count(), 3904, "{name}");
         let frac = t.converged_count() as f64 / t.point_count() as f64;
         assert!(frac > 0.95, "{name}: {frac}");
         let xtr = if name.contains("xtr") { 0.07 } else { 1.0 };

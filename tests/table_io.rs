@@ -31,6 +31,13 @@ fn awkward_table() -> PolarTable {
             pts[4].converged = false;
             pts[4].cd = f64::INFINITY;
             pts[4].cm = f64::NEG_INFINITY;
+            // Minimum pressure: a supercritical point, a broken-down correction, an unknown.
+            pts[5].cpmin = -1.0 / 3.0 - 2.0;
+            pts[5].supercritical = Some(m > 0.0);
+            pts[6].cpmin = f64::NEG_INFINITY;
+            pts[6].supercritical = Some(m > 0.0);
+            pts[7].cpmin = f64::NAN;
+            pts[7].supercritical = None;
             list.push((FlowCondition::new(re, m), pts));
         }
     }
@@ -224,15 +231,16 @@ fn xfoil_polar_files_have_xfoil_layout() {
     );
     assert_eq!(
         lines[10],
-        "   alpha    CL        CD       CDp       CM     Top_Xtr  Bot_Xtr"
+        "   alpha    CL        CD       CDp       CM     Top_Xtr  Bot_Xtr   Cpmin"
     );
     for (line, p) in lines[12..].iter().zip(&conv) {
-        assert_eq!(line.len(), 8 + 9 + 10 + 10 + 9 + 9 + 9);
+        assert_eq!(line.len(), 8 + 9 + 10 + 10 + 9 + 9 + 9 + 9);
         let v: Vec<f64> = line
             .split_whitespace()
             .map(|f| f.parse().unwrap())
             .collect();
-        assert_eq!(v.len(), 7);
+        assert_eq!(v.len(), 8);
+        assert!(v[7].to_bits() == p.cpmin.to_bits() || (v[7] - p.cpmin).abs() <= 5e-5);
         assert!((v[0] - p.alpha).abs() <= 5e-4 && (v[1] - p.cl).abs() <= 5e-5);
         assert!((v[2] - p.cd).abs() <= 5e-6 && (v[4] - p.cm).abs() <= 5e-5);
     }

@@ -1,6 +1,7 @@
 //! Boundary-layer distributions (θ, δ*, Cf, H) against XFOIL 6.99 `DUMP` output at the dumped α,
 //! on XFOIL's own 160 panel nodes (dump row i = panel node i, then the wake nodes).
 
+use polargen::compressibility::KarmanTsien;
 use polargen::geometry::Airfoil;
 use polargen::viscous::{BlStation, ViscousParams, ViscousSolver};
 
@@ -76,7 +77,24 @@ fn compare(foil: &str, case: &str, re: f64, mach: f64, xtr: f64, alpha: f64) -> 
         dev.cf = dev.cf.max(excess(st.cf_inf, r[6]) / cf_scale);
         dev.compared += 1;
     }
-    eprintln!("{case} α={alpha}: {dev:?}");
+    // Minimum pressure: Karman–Tsien Cp at the dump's largest edge speed (the dump prints
+    // Ue/V∞ with 5 decimals, ±2e-5 in Cp). XFOIL dumps the compressible speed
+    // q_c = q(1 − λ)/(1 − λq²) (BLDUMP); its incompressible q solves λq_c·q² + (1 − λ)q − q_c = 0.
+    let qc = rows[..n].iter().fold(0.0_f64, |m, r| m.max(r[3].abs()));
+    let kt = KarmanTsien::new(mach).unwrap();
+    let l = kt.lambda;
+    let q = if l > 0.0 {
+        (((1.0 - l).powi(2) + 4.0 * l * qc * qc).sqrt() - (1.0 - l)) / (2.0 * l * qc)
+    } else {
+        qc
+    };
+    let cpmin = kt.cp(1.0 - q * q).unwrap();
+    eprintln!(
+        "{case} α={alpha}: {dev:?}, Cp_min {} (XFOIL dump {cpmin})",
+        sol.point.cpmin
+    );
+    assert!((sol.point.cpmin - cpmin).abs() <= 1e-4, "{case} α={alpha}");
+    assert_eq!(sol.point.supercritical, Some(cpmin < kt.cp_sonic()));
     // Same equations on the same nodes: agreement to the dump's print precision, except within
     // one interval of a forced transition point, where the transition-interval discretisation
     // (TRDIF) leaves ~1 % in δ* and Hk and ~4 % of the peak Cf.
@@ -137,4 +155,29 @@ fn naca8h12_distributions() {
         0.07,
         4.0,
     );
+}
+
+/// The supercritical flag of a viscous point switches at the critical Mach number of the
+/// panel solution (NACA 0012, α = 0: M_cr ≈ 0.725, Karman–Tsien); the boundary layer's
+/// displacement moves the viscous edge speeds a little, hence the ±0.025 margin.
+#[test]
+fn supercritical_flag_switches_at_the_critical_mach_number() {
+    let airfoil = paneled("naca0012");
+    let mcr = polargen::inviscid::PanelSystem::new(&airfoil)
+        .unwrap()
+        .critical_mach(0.0)
+        .unwrap();
+    for (mach, expected) in [(mcr - 0.025, false), (mcr + 0.025, true)] {
+        let mut solver = ViscousSolver::new(&airfoil, ViscousParams::at(1e6, mach, 1.0)).unwrap();
+        let p = solver.solve(0.0).point;
+        let cp_star = KarmanTsien::new(mach).unwrap().cp_sonic();
+        eprintln!("M {mach:.4}: Cp_min {} Cp* {cp_star}", p.cpmin);
+        assert!(p.converged, "M {mach}");
+        assert_eq!(
+            p.supercritical,
+            Some(expected),
+            "M {mach}: {} vs {cp_star}",
+            p.cpmin
+        );
+    }
 }

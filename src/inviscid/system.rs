@@ -18,7 +18,7 @@ use super::contour::{PanelGeometry, PanelParams};
 use super::error::InviscidError;
 use super::forces::{integrate_pressure, SectionForces};
 use super::influence::{airfoil_influence, FieldPoint, Influence, Probe};
-use crate::compressibility::KarmanTsien;
+use crate::compressibility::{KarmanTsien, MinimumPressure};
 use crate::geometry::Airfoil;
 use crate::numerics::simd::reset_simd_state;
 
@@ -263,8 +263,10 @@ impl PanelSystem {
             self.params.moment_ref_x,
             self.params.moment_ref_y,
         );
-        let cp_min = cp.iter().copied().fold(f64::INFINITY, f64::min);
-        let supercritical = mach > 0.0 && cp_min < kt.cp_sonic();
+        let MinimumPressure {
+            cp: cp_min,
+            supercritical,
+        } = kt.minimum_pressure(gamma.iter().copied());
         // A supercritical point is flagged instead: there the correction, not the contour,
         // inflates Cl.
         if !(cl.abs() <= MAX_SECTION_CL || supercritical && cl.is_finite()) {

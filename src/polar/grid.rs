@@ -100,6 +100,8 @@ mod tests {
                 converged: true,
                 iterations: 1,
                 residual: 0.0,
+                cpmin: -1.0,
+                supercritical: Some(false),
             }
         }
         fn reset(&mut self) {}

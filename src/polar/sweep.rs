@@ -348,6 +348,8 @@ mod tests {
                 converged: ok,
                 iterations: 1,
                 residual: 0.0,
+                cpmin: -1.0,
+                supercritical: Some(false),
             }
         }
         fn reset(&mut self) {

@@ -5,7 +5,9 @@ use super::words::{
     comparison_table, comparison_words, direction_sentence, nan_max, num, num_pct, pct, rel,
     tally_of, verdict, CLOSE_PERCENT, MATCH_PERCENT,
 };
-use super::{FoilTables, ReportInputs, RotorResults, FIG10_RADIUS, SWEEP_KT, TABLE5_ALPHA_RANGE};
+use super::{
+    fidelity, FoilTables, ReportInputs, RotorResults, FIG10_RADIUS, SWEEP_KT, TABLE5_ALPHA_RANGE,
+};
 use crate::rotor::study::paper::{
     compare, Comparison, CLEAN_TAKEOFF_TEXT, FIG10_MAX_ALPHA_DEG, FIG10_PSI_DEG, SECTION_MACH,
     TABLE3_TRIM, TABLE4_TAKEOFF, TABLE5_CL,
@@ -86,6 +88,7 @@ pub(super) fn markdown(
     );
     outln!(o);
     summary(o, foils, rotor);
+    fidelity::flight_test_section(o, ac, rotor);
 
     outln!(
         o,
@@ -114,12 +117,16 @@ pub(super) fn markdown(
         "Table coverage: at these trims {:.1} % (clean) and {:.1} % (contaminated) of the \
          blade-element lookups (strips × azimuths) fall outside the tables' range (Re {}…{}, \
          M {}…{mach_max}) and use its edge values: the inboard strips below the lowest \
-         Reynolds number{tip}.",
+         Reynolds number, where the blade meets the air at a few m/s (the reverse-flow circle \
+         and its edge){tip}. {:.1} % (clean) and {:.1} % (contaminated) lean on supercritical \
+         table points (locally supersonic flow, where the section method is not valid).",
         100.0 * clean.table_clamped_fraction,
         100.0 * dirty.table_clamped_fraction,
         table.re()[0],
         table.re()[table.re().len() - 1],
         table.mach()[0],
+        100.0 * clean.table_supercritical_fraction,
+        100.0 * dirty.table_supercritical_fraction,
     );
     outln!(o);
 
@@ -214,6 +221,7 @@ pub(super) fn markdown(
     outln!(o);
 
     power_section(o, rotor);
+    fidelity::sensitivity_section(o, &rotor.sensitivity);
 
     outln!(o, "## Figures");
     outln!(o);

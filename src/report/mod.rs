@@ -1,10 +1,11 @@
 //! The paper report: the comparison with the DLR contamination study in one folder.
 //!
 //! [`write_report`] reads the shipped polar tables, runs the cruise trim (Table 3), the takeoff
-//! (Table 4), the blade α(ψ) (Fig. 10) and the power-required sweep for the clean and the
-//! contaminated 8-H-12 rotor ([`rotor::study`](crate::rotor::study)), looks up Cd at Cl = 0.8
-//! (Table 5) for both airfoils, draws every figure (PNG and SVG) and writes `README.md` with
-//! our numbers beside the paper's and the differences in words. Everything is computed on each
+//! (Table 4), the blade α(ψ) (Fig. 10), the power-required sweep and the sensitivity to the
+//! preset's estimates for the clean and the contaminated 8-H-12 rotor
+//! ([`rotor::study`](crate::rotor::study)), looks up Cd at Cl = 0.8 (Table 5) for both
+//! airfoils, draws every figure (PNG and SVG) and writes `README.md` with our numbers beside
+//! the flight test's and the paper's and the differences in words. Everything is computed on each
 //! run; nothing in the report is typed in except the paper's own values.
 
 /// Appends one formatted line to an output `String` (writing to a `String` cannot fail).
@@ -18,6 +19,7 @@ macro_rules! outln {
     }};
 }
 
+mod fidelity;
 mod figures;
 mod markdown;
 mod words;
@@ -27,12 +29,16 @@ use crate::output::{check_output_path, OutputError, OutputSet};
 use crate::plot::rotor_plots::{power_plot, takeoff_plot};
 use crate::plot::{render_with_legend_room, Figure, PlotError};
 use crate::rotor::study::paper::{Table5Row, SECTION_MACH, SECTION_RE, TABLE5, TABLE5_CL};
+use crate::rotor::study::sensitivity::{sensitivity, Sensitivity};
 use crate::rotor::study::{
     blade_alpha_cases, paper_runs, sweep_cases, SpeedSweep, StudyError, CASE_LABELS,
     PAPER_TRIM_SPEED_KT,
 };
-use crate::rotor::{sweep_speeds, Aircraft, AircraftError, TakeoffResult, TrimResult};
+use crate::rotor::{
+    sweep_speeds, Aircraft, AircraftError, Powerplant, PropellerError, TakeoffResult, TrimResult,
+};
 use crate::table::{alpha_at_cl, read_lookup_table, LiftMatch, PolarTable, TableError};
+use fidelity::PropellerFacts;
 use std::path::{Path, PathBuf};
 
 /// Radius fraction of the blade α(ψ) curve (paper Fig. 10: ≈ 90 % R).
@@ -118,6 +124,9 @@ pub enum ReportError {
     /// A rotor computation failed.
     #[error(transparent)]
     Study(#[from] StudyError),
+    /// The propeller could not be calibrated or solved.
+    #[error(transparent)]
+    Propeller(#[from] PropellerError),
     /// A figure cannot be drawn or written.
     #[error(transparent)]
     Plot(#[from] PlotError),
@@ -151,6 +160,10 @@ struct RotorResults {
     alpha: Vec<Vec<(f64, f64)>>,
     /// The power-required sweep per case.
     sweeps: Vec<SpeedSweep>,
+    /// The calibrated propeller and its static thrust.
+    propeller: PropellerFacts,
+    /// The study again at the ends of each estimate's range.
+    sensitivity: Sensitivity,
 }
 
 /// Writes the report (see the module documentation) after [`check_report_paths`].
@@ -299,8 +312,14 @@ fn load_foil(dir: &Path, row: &'static Table5Row) -> Result<FoilTables, ReportEr
 fn rotor_results(ac: &Aircraft, tables: &[PolarTable; 2]) -> Result<RotorResults, ReportError> {
     let sections = [&tables[0], &tables[1]];
     let speeds = sweep_speeds(SWEEP_KT.0, SWEEP_KT.1, SWEEP_KT.2);
-    let (runs, (alpha, sweeps)) = rayon::join(
-        || paper_runs(ac, sections[0], sections[1]),
+    let propeller = PropellerFacts::of(&Powerplant::from_aircraft(ac)?)?;
+    let ((runs, sens), (alpha, sweeps)) = rayon::join(
+        || {
+            rayon::join(
+                || paper_runs(ac, sections[0], sections[1]),
+                || sensitivity(ac, sections[0], sections[1]),
+            )
+        },
         || {
             rayon::join(
                 || {
@@ -327,5 +346,7 @@ fn rotor_results(ac: &Aircraft, tables: &[PolarTable; 2]) -> Result<RotorResults
         takeoffs: [clean.takeoff, dirty.takeoff],
         alpha,
         sweeps,
+        propeller,
+        sensitivity: sens?,
     })
 }

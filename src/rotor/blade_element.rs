@@ -13,11 +13,11 @@
 //!
 //! Yawed (radial) flow: in forward flight the air also runs along the blade, U_R = V cos α_H cos ψ.
 //! By the independence principle lift, α, Re and M follow from the chord-normal components
-//! (U_T, U_P) alone, but skin friction acts along the whole relative wind, so the profile drag
-//! is ½ρc·c_d·W₃·(U_T, U_P, U_R) with W₃ = √(U_T² + U_P² + U_R²). This is the radial-flow
-//! contribution that raises the forward-flight profile power from (σc_d0/8)(1 + 3μ²) to about
-//! (σc_d0/8)(1 + 4.6μ²) (Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., ch. 5,
-//! profile power in forward flight; Johnson, *Helicopter Theory*, ch. 5).
+//! (U_T, U_P) alone; with the radial component set ([`StripFlow::with_radial`]) skin friction
+//! acts along the whole relative wind, so the profile drag is ½ρc·c_d·W₃·(U_T, U_P, U_R) with
+//! W₃ = √(U_T² + U_P² + U_R²). This raises the forward-flight profile power from
+//! (σc_d0/8)(1 + 3μ²) to about (σc_d0/8)(1 + 4.6μ²); the preset switches it
+//! ([`YawedFlow`](super::YawedFlow), where the sources are).
 
 use crate::section::{wrap_deg, Lookup, SectionAero};
 

@@ -11,7 +11,7 @@ use super::blade_element::{strip_load, AirState, StripFlow};
 use super::flapping::{first_harmonics, Teeter};
 use super::inflow::{
     drees_coefficients, gessow_myers_tip_loss, glauert_induced_velocity, glauert_thrust,
-    InflowModel,
+    prandtl_strip_mean, InflowModel, TipLoss, YawedFlow,
 };
 use crate::numerics::small_dense;
 use crate::section::SectionAero;
@@ -76,8 +76,10 @@ pub struct Rotor {
     pub radial_strips: usize,
     /// Number of azimuth steps per revolution.
     pub azimuth_steps: usize,
-    /// Fixed tip-loss factor B, or `None` for Gessow–Myers from the current C_T.
-    pub tip_loss_b: Option<f64>,
+    /// Tip-loss model.
+    pub tip_loss: TipLoss,
+    /// Profile drag in yawed flow.
+    pub yawed_flow: YawedFlow,
     /// Inflow model.
     pub inflow: InflowModel,
     /// Induced-power factor κ ≥ 1: the uniform induced velocity is κ times Glauert's
@@ -114,7 +116,8 @@ pub struct RotorSolution {
     pub induced_velocity: f64,
     /// Teeter flapping.
     pub teeter: Teeter,
-    /// Tip-loss factor B used.
+    /// Tip-loss factor B used: 1 − (lift-free length)/R, for Prandtl's factor the equivalent
+    /// value ∫(1 − F)dr/R averaged over the azimuth.
     pub tip_loss_b: f64,
     /// Thrust along the shaft T \[N\].
     pub thrust: f64,
@@ -140,6 +143,9 @@ pub struct RotorSolution {
     /// Fraction of the strip-azimuth samples whose Reynolds or Mach number lay outside the
     /// section table, so that the lookup used the table's edge (see [`Lookup`](crate::section::Lookup)).
     pub table_clamped_fraction: f64,
+    /// Fraction of the strip-azimuth samples whose section data lean on supercritical table
+    /// points (Cp_min < Cp*, outside the validity of the section method).
+    pub table_supercritical_fraction: f64,
     /// Newton iterations used.
     pub iterations: usize,
 }
@@ -167,6 +173,8 @@ struct Loads {
     moment_1s: f64,
     reverse_fraction: f64,
     clamped_fraction: f64,
+    supercritical_fraction: f64,
+    tip_loss_b: f64,
 }
 
 impl Rotor {
@@ -196,17 +204,23 @@ impl Rotor {
         }
     }
 
-    /// Tip-loss factor for mean induced velocity `v0` (through the thrust momentum theory
-    /// gives for it, so that B is a smooth function of the iterate).
-    fn tip_loss_for(&self, cond: &FlightCondition, v0: f64) -> f64 {
-        match self.tip_loss_b {
-            Some(b) => b,
-            None => {
+    /// The tip-loss factor B of the models that use one for the whole disc, for mean induced
+    /// velocity `v0` (Gessow–Myers through the thrust momentum theory gives for it, so that B
+    /// is a smooth function of the iterate); `None` for Prandtl's, which varies by strip.
+    fn uniform_tip_loss(&self, cond: &FlightCondition, v0: f64) -> Option<f64> {
+        match self.tip_loss {
+            TipLoss::Prandtl => None,
+            TipLoss::NoLoss => Some(1.0),
+            TipLoss::Chord => Some(1.0 - 0.5 * self.chord / self.radius),
+            TipLoss::GessowMyers => {
                 let rho = cond.atmosphere.density;
                 let v_ideal = v0 / self.induced_power_factor;
                 let t = glauert_thrust(v_ideal, rho, self.disc_area(), cond.airspeed, cond.hub_aoa);
                 let tip = cond.omega * self.radius;
-                gessow_myers_tip_loss(t / (rho * self.disc_area() * tip * tip), self.blades)
+                Some(gessow_myers_tip_loss(
+                    t / (rho * self.disc_area() * tip * tip),
+                    self.blades,
+                ))
             }
         }
     }
@@ -229,7 +243,8 @@ impl Rotor {
     /// Velocity triangle of blade 1 at radius `r`, azimuth `psi`:
     /// U_T = Ωr + V cos α_H sin ψ,
     /// U_P = V sin α_H − v_i(r, ψ) − Ωr dβ/dψ − V cos α_H β cos ψ,
-    /// U_R = V cos α_H cos ψ (radial, drag only; see [`StripFlow`](super::StripFlow))
+    /// U_R = V cos α_H cos ψ (radial, drag only, with [`YawedFlow::RadialDrag`]; see
+    /// [`StripFlow`](super::StripFlow))
     /// (small flap angles; Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §4.7,
     /// with the normal velocity counted upwards).
     pub fn strip_flow(
@@ -248,8 +263,11 @@ impl Rotor {
             - self.induced_at(cond, v0, r, psi)
             - cond.omega * r * teeter.beta_rate(psi)
             - edge * beta * psi.cos();
-        StripFlow::new(ut, up, self.pitch, self.chord, &Self::air(cond))
-            .with_radial(edge * psi.cos())
+        let flow = StripFlow::new(ut, up, self.pitch, self.chord, &Self::air(cond));
+        match self.yawed_flow {
+            YawedFlow::RadialDrag => flow.with_radial(edge * psi.cos()),
+            YawedFlow::Ignored => flow,
+        }
     }
 
     /// Blade-element sum for inflow `v0` and flapping `teeter`.
@@ -261,13 +279,15 @@ impl Rotor {
         teeter: &Teeter,
     ) -> Loads {
         let (radii, dr) = self.strips();
-        let b_tip = self.tip_loss_for(cond, v0) * self.radius;
+        let uniform = self.uniform_tip_loss(cond, v0);
         let rho = cond.atmosphere.density;
         let n = self.azimuth_steps;
         let mut moments = vec![0.0; n];
         let mut loads = Loads::default();
         let mut reversed = 0usize;
         let mut clamped = 0usize;
+        let mut supercritical = 0usize;
+        let mut lift_free = 0.0;
         for (k, moment) in moments.iter_mut().enumerate() {
             let psi = TAU * k as f64 / n as f64;
             let beta = teeter.beta(psi);
@@ -278,10 +298,25 @@ impl Rotor {
                 if flow.is_reversed() {
                     reversed += 1;
                 }
-                let lift_factor = ((b_tip - (r - 0.5 * dr)) / dr).clamp(0.0, 1.0);
+                let (x1, x2) = ((r - 0.5 * dr) / self.radius, (r + 0.5 * dr) / self.radius);
+                let lift_factor = match uniform {
+                    Some(b) => ((b - x1) / (x2 - x1)).clamp(0.0, 1.0),
+                    // The tip-vortex helix angle: up-flow against the blade's rotational
+                    // speed Ωr (TipLoss::Prandtl).
+                    None => prandtl_strip_mean(
+                        x1,
+                        x2,
+                        flow.up / flow.up.hypot(cond.omega * r),
+                        self.blades,
+                    ),
+                };
+                lift_free += (1.0 - lift_factor) * dr;
                 let coeffs = flow.coefficients(section);
                 if coeffs.re_clamped || coeffs.mach_clamped {
                     clamped += 1;
+                }
+                if coeffs.supercritical {
+                    supercritical += 1;
                 }
                 let load = strip_load(&flow, &coeffs, rho, self.chord, lift_factor);
                 ft_sum += load.tangential * dr;
@@ -312,6 +347,8 @@ impl Rotor {
         loads.moment_1s = m1s;
         loads.reverse_fraction = reversed as f64 / (n * radii.len()) as f64;
         loads.clamped_fraction = clamped as f64 / (n * radii.len()) as f64;
+        loads.supercritical_fraction = supercritical as f64 / (n * radii.len()) as f64;
+        loads.tip_loss_b = 1.0 - lift_free / (n as f64 * self.radius);
         loads
     }
 
@@ -442,7 +479,7 @@ impl Rotor {
                 beta1c: z[1],
                 beta1s: z[2],
             },
-            tip_loss_b: self.tip_loss_for(cond, v0),
+            tip_loss_b: loads.tip_loss_b,
             thrust: loads.thrust,
             h_force: loads.h_force,
             side_force: loads.side_force,
@@ -455,6 +492,7 @@ impl Rotor {
             thrust_coefficient: loads.thrust / (rho * self.disc_area() * tip * tip),
             reverse_flow_fraction: loads.reverse_fraction,
             table_clamped_fraction: loads.clamped_fraction,
+            table_supercritical_fraction: loads.supercritical_fraction,
             iterations,
         }
     }
@@ -497,7 +535,8 @@ impl Rotor {
             precone: p.precone_deg.to_radians(),
             radial_strips: p.radial_strips,
             azimuth_steps: p.azimuth_steps,
-            tip_loss_b: p.tip_loss_b,
+            tip_loss: p.tip_loss,
+            yawed_flow: p.yawed_flow,
             induced_power_factor: p.induced_power_factor,
             inflow: p.inflow,
             solver: RotorSolverParams::default(),

@@ -7,15 +7,19 @@
 //! trim, takeoff, cruise sweeps, the blade element) and [`study`]; the files inside:
 //!
 //! * `atmosphere` — ISA standard atmosphere (density, speed of sound, viscosity).
-//! * `aircraft` — the aircraft preset (rotor, airframe, propeller, takeoff data) from TOML.
+//! * `aircraft` — the aircraft preset (rotor, airframe, propeller, engine, takeoff data) from
+//!   TOML.
 //! * `blade_element` — velocity triangle and loads of one strip (reverse flow included).
-//! * `inflow` — induced velocity: Glauert momentum theory, Drees linear inflow, tip loss.
+//! * `inflow` — induced velocity: Glauert momentum theory, Drees linear inflow; the tip-loss
+//!   models and the yawed-flow switch.
 //! * `flapping` — first-harmonic teeter motion of the blade pair.
 //! * `disc_loads` — the rotor disc: azimuth-averaged forces and torque of the blade-element
 //!   sum, solved together with the induced inflow and the teeter flapping.
 //! * `trim` — autorotation rpm and level-cruise trim.
 //! * `cruise` — power-required speed sweep and blade α(ψ) in trimmed cruise.
-//! * `propeller` — propeller/engine map (Rotax 912 with reduction gear).
+//! * `engine` — full-throttle torque curve and reduction gear (Rotax 912 ULS in the preset).
+//! * `propeller` — blade-element–momentum propeller from its geometry and section table, and
+//!   the powerplant: calibrated pitch, engine rpm for a thrust, full-throttle equilibrium.
 //! * `takeoff` — time-domain takeoff simulation to 15 m.
 //! * [`study`] — the paper's clean-versus-contaminated study and its published values.
 
@@ -24,6 +28,7 @@ mod atmosphere;
 mod blade_element;
 mod cruise;
 mod disc_loads;
+mod engine;
 mod flapping;
 mod inflow;
 mod propeller;
@@ -32,16 +37,17 @@ mod takeoff;
 mod trim;
 
 pub use aircraft::{
-    check_altitude_m, check_mass_kg, check_speed_kt, Aircraft, AircraftError, PropellerParams,
-    RotorParams, TakeoffParams, MAX_MASS_KG, MAX_SPEED_KT,
+    check_altitude_m, check_mass_kg, check_speed_kt, Aircraft, AircraftError, BladeGeometry,
+    EngineParams, PropellerParams, RotorParams, TakeoffParams, MAX_MASS_KG, MAX_SPEED_KT,
 };
 pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};
 pub use cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds, SweepPoint};
 pub use disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution, RotorSolverParams};
+pub use engine::Engine;
 pub use flapping::Teeter;
-pub use inflow::InflowModel;
-pub use propeller::{PropellerError, PropellerMap};
+pub use inflow::{InflowModel, TipLoss, YawedFlow};
+pub use propeller::{FullThrottle, Powerplant, Propeller, PropellerError, PropellerPoint};
 pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
 pub use trim::{autorotation, trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
 

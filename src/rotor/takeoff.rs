@@ -23,7 +23,7 @@
 use super::aircraft::Aircraft;
 use super::atmosphere::Atmosphere;
 use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
-use super::propeller::{PropellerError, PropellerMap};
+use super::propeller::{FullThrottle, Powerplant, PropellerError};
 use super::{rad_s_to_rpm, rpm_to_rad_s, G0};
 use crate::section::SectionAero;
 use serde::Serialize;
@@ -39,7 +39,7 @@ pub enum TakeoffError {
         /// Underlying error.
         source: RotorError,
     },
-    /// The propeller model could not be calibrated.
+    /// The propeller could not be calibrated or solved.
     #[error(transparent)]
     Propeller(#[from] PropellerError),
     /// The aircraft did not reach the screen height in time.
@@ -131,7 +131,9 @@ struct Model<'a, S: SectionAero + ?Sized> {
     aircraft: &'a Aircraft,
     rotor: Rotor,
     section: &'a S,
-    prop: PropellerMap,
+    prop: Powerplant,
+    /// Last full-throttle equilibrium, the start of the next solve (local to this run).
+    warm_prop: Option<FullThrottle>,
     inertia: f64,
     /// Last rotor solution, the warm start of the next solve (local to this run).
     warm: Option<RotorSolution>,
@@ -181,7 +183,11 @@ impl<S: SectionAero + ?Sized> Model<'_, S> {
         let weight = ac.weight_n();
         let v = y[2].hypot(y[3]);
         let rho = s.condition.atmosphere.density;
-        let thrust = self.prop.full_throttle_thrust(rho, v);
+        let full = self
+            .prop
+            .full_throttle(&s.condition.atmosphere, v, self.warm_prop.as_ref())?;
+        let thrust = full.propeller.thrust;
+        self.warm_prop = Some(full);
         let drag = s.drag + 0.5 * rho * v * v * ac.parasitic_drag_area_m2;
         let omega_dot = s.torque / self.inertia;
         let mut dy = [0.0; 6];
@@ -289,7 +295,8 @@ pub fn simulate_takeoff<S: SectionAero + ?Sized>(
         aircraft,
         rotor: Rotor::from_params(&aircraft.rotor),
         section,
-        prop: PropellerMap::calibrate(&aircraft.propeller)?,
+        prop: Powerplant::from_aircraft(aircraft)?,
+        warm_prop: None,
         inertia: aircraft.rotor.polar_inertia(),
         warm: None,
         liftoff_speed: 0.0,

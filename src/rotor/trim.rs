@@ -13,7 +13,7 @@
 use super::aircraft::Aircraft;
 use super::atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
-use super::propeller::{PropellerError, PropellerMap};
+use super::propeller::{Powerplant, PropellerError};
 use super::{rad_s_to_rpm, rpm_to_rad_s, KT_TO_MS};
 use crate::numerics::roots::bracketed_root;
 use crate::section::SectionAero;
@@ -99,15 +99,23 @@ impl Default for TrimParams {
 }
 
 /// Trimmed level flight. Its serde form (what `gyro trim --json` and `gyro sweep --json`
-/// print) holds the paper's Table 3 quantities, the hub angle, the power, the flapping and the
-/// speed in knots (as `speed_kt`); the other fields are left out of it.
+/// print) holds the paper's Table 3 quantities, both rotor angles, the hub angle, the power,
+/// the flapping, the speed in knots (as `speed_kt`), the propeller's predicted static thrust and
+/// the shares of table lookups clamped or supercritical; the other fields are left out of it.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TrimResult {
     /// Rotor speed n_R \[rpm\].
     pub rotor_rpm: f64,
-    /// Tip-path-plane angle of attack α_R \[deg\].
+    /// Tip-path-plane angle of attack α_TPP = α_H − β1c \[deg\]: the disc's attitude to the
+    /// flight path, what a vane or the rotor head's attitude shows in flight.
     pub rotor_aoa_deg: f64,
-    /// Engine speed from the propeller map \[rpm\] (`None` if above the engine's maximum).
+    /// Drag-equivalent rotor angle atan(D_R/L_R) \[deg\]: the tilt of the resultant rotor force
+    /// behind the normal to the flight path. The paper's α_R is this angle (its eq. 5 takes
+    /// D_R = G·α_R, and Table 3 has atan(478/4414) = 6.2°, atan(624/4414) = 8.1°); it exceeds
+    /// the tip-path-plane angle by about H_TPP/T, the in-plane force the profile drag adds.
+    pub rotor_aoa_drag_equivalent_deg: f64,
+    /// Engine speed at which the propeller gives F_prop \[rpm\] (`None` if above the engine's
+    /// maximum).
     pub engine_rpm: Option<f64>,
     /// Rotor drag D_R \[N\].
     pub rotor_drag_n: f64,
@@ -146,8 +154,13 @@ pub struct TrimResult {
     /// Fraction of the blade-element lookups at the trim point whose Reynolds or Mach number
     /// lay outside the section table and were clamped to its edge (0 when the table covers
     /// the rotor).
-    #[serde(skip)]
     pub table_clamped_fraction: f64,
+    /// Fraction of the blade-element lookups at the trim point whose section data lean on
+    /// supercritical table points (locally supersonic flow, outside the method's validity).
+    pub table_supercritical_fraction: f64,
+    /// The propeller's full-throttle static thrust at the trim's altitude \[N\], predicted by
+    /// the calibrated blade-element propeller (the paper's Table 1 quotes ≈ 2000 N).
+    pub static_thrust_n: f64,
 }
 
 impl TrimResult {
@@ -169,6 +182,14 @@ impl TrimResult {
                  table's Reynolds/Mach range and use its edge values",
                 self.airspeed_kt,
                 100.0 * self.table_clamped_fraction
+            ));
+        }
+        if self.table_supercritical_fraction > 0.0 {
+            notes.push(format!(
+                "note: at {:.1} kt, {:.1} % of the blade-element lookups lean on supercritical \
+                 table points (locally supersonic, outside the section method's validity)",
+                self.airspeed_kt,
+                100.0 * self.table_supercritical_fraction
             ));
         }
         notes
@@ -317,20 +338,27 @@ pub fn trim_aircraft<S: SectionAero + ?Sized>(
         return Err(TrimError::Altitude);
     }
     let rotor = Rotor::from_params(&aircraft.rotor);
-    let prop = PropellerMap::calibrate(&aircraft.propeller)?;
+    let powerplant = Powerplant::from_aircraft(aircraft)?;
     let atm = Atmosphere::isa(altitude_m);
     let v = speed_kt * KT_TO_MS;
     let weight = mass_kg * super::G0;
     let s = trim_rotor(&rotor, section, v, weight, &atm, params)?;
     let d_p = atm.dynamic_pressure(v) * aircraft.parasitic_drag_area_m2;
     let f_prop = s.drag + d_p;
+    let engine_rpm = match powerplant.engine_rpm_for_thrust(&atm, v, f_prop) {
+        Ok(rpm) => Some(rpm),
+        Err(PropellerError::Unavailable { .. }) => None,
+        Err(e) => return Err(e.into()),
+    };
+    let static_thrust = powerplant.full_throttle(&atm, 0.0, None)?.propeller.thrust;
     Ok(TrimResult {
         airspeed_ms: v,
         airspeed_kt: speed_kt,
         rotor_rpm: rad_s_to_rpm(s.condition.omega),
         rotor_aoa_deg: s.disc_aoa().to_degrees(),
+        rotor_aoa_drag_equivalent_deg: s.drag.atan2(s.lift).to_degrees(),
         hub_aoa_deg: s.condition.hub_aoa.to_degrees(),
-        engine_rpm: prop.engine_rpm_for_thrust(atm.density, v, f_prop).ok(),
+        engine_rpm,
         rotor_drag_n: s.drag,
         rotor_lift_n: s.lift,
         parasitic_drag_n: d_p,
@@ -343,5 +371,7 @@ pub fn trim_aircraft<S: SectionAero + ?Sized>(
         thrust_coefficient: s.thrust_coefficient,
         torque_nm: s.torque,
         table_clamped_fraction: s.table_clamped_fraction,
+        table_supercritical_fraction: s.table_supercritical_fraction,
+        static_thrust_n: static_thrust,
     })
 }

@@ -10,8 +10,9 @@ use crate::section::{Lookup, PolarPoint, SectionAero};
 
 /// The polar of `section` at (`re`, `mach`), one point per α of `alphas` \[deg\], from lookups.
 ///
-/// Lookups give only cl, cd and cm: `cdp`, `cdf`, `xtr_top`, `xtr_bot` and `residual` are NaN
-/// and `iterations` is 0. A point is marked `converged` unless it comes from the 360°
+/// Lookups give only cl, cd and cm: `cdp`, `cdf`, `xtr_top`, `xtr_bot`, `residual` and `cpmin`
+/// are NaN and `iterations` is 0; `supercritical` says whether a table point the value leans on
+/// is supercritical (`None` if one of them does not say). A point is marked `converged` unless it comes from the 360°
 /// post-stall extension (outside the computed α range), so plots of the result show only
 /// values interpolated from solved points.
 pub fn sample_polar<S: SectionAero + ?Sized>(
@@ -36,6 +37,12 @@ pub fn sample_polar<S: SectionAero + ?Sized>(
                 converged: !l.post_stall,
                 iterations: 0,
                 residual: f64::NAN,
+                cpmin: f64::NAN,
+                supercritical: if l.supercritical {
+                    Some(true)
+                } else {
+                    (!l.supercritical_unknown).then_some(false)
+                },
             }
         })
         .collect()

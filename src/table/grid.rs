@@ -368,6 +368,17 @@ struct PointRecord {
     iterations: u32,
     #[serde(with = "nonfinite")]
     residual: f64,
+    /// Absent in files written before the field existed: unknown (NaN).
+    #[serde(with = "nonfinite", default = "unknown_cpmin")]
+    cpmin: f64,
+    /// Absent (or null): unknown.
+    #[serde(default)]
+    supercritical: Option<bool>,
+}
+
+/// The `cpmin` of a point whose record does not hold one.
+fn unknown_cpmin() -> f64 {
+    f64::NAN
 }
 
 impl From<&PolarPoint> for PointRecord {
@@ -384,6 +395,8 @@ impl From<&PolarPoint> for PointRecord {
             converged: p.converged,
             iterations: p.iterations,
             residual: p.residual,
+            cpmin: p.cpmin,
+            supercritical: p.supercritical,
         }
     }
 }
@@ -402,6 +415,8 @@ impl From<PointRecord> for PolarPoint {
             converged: p.converged,
             iterations: p.iterations,
             residual: p.residual,
+            cpmin: p.cpmin,
+            supercritical: p.supercritical,
         }
     }
 }

@@ -30,6 +30,8 @@ pub(crate) struct AlphaCurve {
     alpha: Vec<f64>,
     /// (cl, cd, cm) at each converged point.
     value: Vec<[f64; 3]>,
+    /// Supercritical flag of each converged point ([`Criticality`]).
+    criticality: Vec<Criticality>,
     /// d(cl, cd, cm)/dα (1/deg) at each converged point.
     slope: Vec<[f64; 3]>,
     /// Interval k (between converged points k and k+1) spans unconverged points.
@@ -45,6 +47,36 @@ pub(crate) struct AlphaCurve {
     bucket: Vec<u32>,
 }
 
+/// Whether a table point is supercritical, as far as its table says.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Criticality {
+    /// Subcritical everywhere on the surface.
+    Subcritical,
+    /// Locally supersonic somewhere (Cp_min < Cp*).
+    Supercritical,
+    /// The table does not say.
+    Unknown,
+}
+
+impl Criticality {
+    fn of(p: &PolarPoint) -> Self {
+        match p.supercritical {
+            Some(false) => Self::Subcritical,
+            Some(true) => Self::Supercritical,
+            None => Self::Unknown,
+        }
+    }
+
+    /// The flags of a value that leans on points of criticality `a` and `b`: (supercritical,
+    /// unknown).
+    fn flags(a: Self, b: Self) -> (bool, bool) {
+        (
+            a == Self::Supercritical || b == Self::Supercritical,
+            a == Self::Unknown || b == Self::Unknown,
+        )
+    }
+}
+
 /// Largest number of buckets of one curve's interval index.
 const MAX_BUCKETS: usize = 4096;
 
@@ -57,6 +89,11 @@ pub(crate) struct CurveValue {
     pub(crate) post_stall: bool,
     /// Inside a bridged interval, or from a substitute curve.
     pub(crate) bridged: bool,
+    /// A point it leans on (the interval's ends, or the junction of the extension) is
+    /// supercritical.
+    pub(crate) supercritical: bool,
+    /// A point it leans on does not say whether it is supercritical.
+    pub(crate) supercritical_unknown: bool,
 }
 
 impl AlphaCurve {
@@ -64,6 +101,7 @@ impl AlphaCurve {
     pub(crate) fn new(points: &[PolarPoint], params: PostStallParams) -> Option<Self> {
         let mut alpha = Vec::new();
         let mut value = Vec::new();
+        let mut criticality = Vec::new();
         let mut bridged = Vec::new();
         let mut skipped = false;
         for p in points {
@@ -77,6 +115,7 @@ impl AlphaCurve {
             skipped = false;
             alpha.push(p.alpha);
             value.push([p.cl, p.cd, p.cm]);
+            criticality.push(Criticality::of(p));
         }
         if alpha.len() < 2 {
             return None;
@@ -94,6 +133,7 @@ impl AlphaCurve {
         Some(Self {
             alpha,
             value,
+            criticality,
             slope,
             bridged,
             substitute: false,
@@ -115,10 +155,14 @@ impl AlphaCurve {
         let n = self.alpha.len();
         if !(a >= self.alpha[0] && a <= self.alpha[n - 1]) {
             let (s, c) = *trig.get_or_insert_with(|| a.to_radians().sin_cos());
+            let junction = self.criticality[if a < self.alpha[0] { 0 } else { n - 1 }];
+            let (supercritical, supercritical_unknown) = Criticality::flags(junction, junction);
             return CurveValue {
                 v: self.ext.eval_sc(a, s, c),
                 post_stall: true,
                 bridged: self.substitute,
+                supercritical,
+                supercritical_unknown,
             };
         }
         let b = (((a - self.alpha[0]) * self.bucket_scale) as usize).min(self.bucket.len() - 1);
@@ -140,10 +184,14 @@ impl AlphaCurve {
         let (y0, y1) = (&self.value[k], &self.value[k + 1]);
         let (m0, m1) = (&self.slope[k], &self.slope[k + 1]);
         let f = |i: usize| h00 * y0[i] + h * h10 * m0[i] + h01 * y1[i] + h * h11 * m1[i];
+        let (supercritical, supercritical_unknown) =
+            Criticality::flags(self.criticality[k], self.criticality[k + 1]);
         CurveValue {
             v: [f(0), f(1), f(2)],
             post_stall: false,
             bridged: self.bridged[k] || self.substitute,
+            supercritical,
+            supercritical_unknown,
         }
     }
 }
@@ -251,7 +299,8 @@ impl PolarTable {
 impl SectionAero for PolarTable {
     /// Table lookup: PCHIP in α over converged points, 360° extension outside the computed
     /// range, bilinear in (ln Re, M) between the four neighbouring polars, clamped (and
-    /// flagged) outside the Re and Mach axes. Allocation-free; O(1) per polar (interval
+    /// flagged) outside the Re and Mach axes; flagged supercritical when a point it leans on
+    /// (either end of an α interval of a polar with weight) is. Allocation-free; O(1) per polar (interval
     /// index, no binary search in α).
     fn lookup(&self, alpha_deg: f64, re: f64, mach: f64) -> Lookup {
         if !self.has_lookup() {
@@ -289,6 +338,8 @@ impl SectionAero for PolarTable {
                 out.cm += w * c.v[2];
                 out.post_stall |= c.post_stall;
                 out.bridged |= c.bridged;
+                out.supercritical |= c.supercritical;
+                out.supercritical_unknown |= c.supercritical_unknown;
             }
         }
         out

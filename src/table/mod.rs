@@ -8,6 +8,7 @@
 //! [`PostStallParams`]; [`TableError`] and [`BuildError`]. Inside (private):
 //!
 //! * `build` — solving a table: the viscous polars of one airfoil on a Re × M × α grid.
+//! * `census` — [`TableCensus`]: points, converged, supercritical.
 //! * `grid` — [`PolarTable`]: one polar per (Re, M) node, metadata, validation, accessors.
 //! * `lookup` — the α curve of one polar (monotone cubic, gaps bridged) and the
 //!   [`SectionAero`](crate::section::SectionAero) implementation (linear in ln Re and in M
@@ -46,6 +47,8 @@
 //!             converged: true,
 //!             iterations: 5,
 //!             residual: 1e-10,
+//!             cpmin: -0.9,
+//!             supercritical: Some(false),
 //!         })
 //!         .collect()
 //! };
@@ -64,6 +67,7 @@
 //! ```
 
 mod build;
+mod census;
 mod error;
 mod fixed_condition;
 mod grid;
@@ -76,6 +80,7 @@ pub use build::{
     build_table, build_table_cancellable, BuildError, GridSpec, DEFAULT_ALPHA, DEFAULT_MACH,
     DEFAULT_RE,
 };
+pub use census::TableCensus;
 pub use error::TableError;
 pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
 pub use grid::{PolarTable, TableMeta};

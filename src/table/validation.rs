@@ -29,6 +29,12 @@ pub(super) fn check_axis(name: &'static str, axis: &[f64]) -> Result<(), TableEr
 /// formats' fixed fields no longer hold the value.
 pub const MAX_RE: f64 = 1e10;
 
+/// Slack of a converged point's transition location beyond the chord, [0, 1]: the solver reports
+/// x/c of the transition point along the surface, and the corner points of a blunt trailing edge
+/// lie a little aft of the chord line's end (a Clark Y normalised on its chord line, 0.12 % c
+/// thick at the trailing edge: x/c up to 1.00002).
+pub const XTR_SLACK: f64 = 1e-3;
+
 /// Plausibility bounds of the coefficients of a converged point: |Cl| ≤ 4π (the Joukowski
 /// bound, [`MAX_SECTION_CL`]), Cd ≤ 4 (twice a flat plate normal to the flow, Cd ≈ 2,
 /// Hoerner 1965 §3), |Cm| ≤ 4 (ten times the flat plate's quarter-chord moment at 90°).
@@ -109,7 +115,7 @@ pub(super) fn check_polar(re: f64, mach: f64, polar: &mut [PolarPoint]) -> Resul
                 });
             }
             for (field, value) in [("xtr_top", p.xtr_top), ("xtr_bot", p.xtr_bot)] {
-                if !(0.0..=1.0).contains(&value) {
+                if !(-XTR_SLACK..=1.0 + XTR_SLACK).contains(&value) {
                     return Err(TableError::TransitionRange {
                         field,
                         value,

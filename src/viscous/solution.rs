@@ -1,6 +1,6 @@
 //! What a viscous solution reports: the integrated coefficients (Cl, Cm, Cd, its friction and
-//! pressure parts, transition) and the boundary-layer distributions of both surfaces and the
-//! wake.
+//! pressure parts, transition, the minimum pressure and whether it is supercritical) and the
+//! boundary-layer distributions of both surfaces and the wake.
 
 use super::forces::{friction_drag, lift_and_moment, transition_x};
 use super::panel_model::PanelModel;
@@ -94,6 +94,7 @@ pub(super) fn solution(
                 .unwrap_or_default()
         })
         .collect();
+    let minimum = kt.minimum_pressure(q.iter().copied());
     let dist = |surface: Surface| -> Vec<BlStation> {
         a.layout
             .range(surface)
@@ -161,6 +162,8 @@ pub(super) fn solution(
             converged: a.converged,
             iterations: a.iterations,
             residual: a.residual,
+            cpmin: minimum.cp,
+            supercritical: Some(minimum.supercritical),
         },
         upper,
         lower,
@@ -183,6 +186,8 @@ pub(super) fn failed_solution(alpha_deg: f64, iterations: u32) -> ViscousSolutio
             converged: false,
             iterations,
             residual: f64::NAN,
+            cpmin: f64::NAN,
+            supercritical: None,
         },
         upper: Vec::new(),
         lower: Vec::new(),

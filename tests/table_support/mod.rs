@@ -30,6 +30,8 @@ pub fn point(alpha: f64, cl: f64, cd: f64, cm: f64) -> PolarPoint {
         converged: true,
         iterations: 7,
         residual: 1e-9,
+        cpmin: -0.8,
+        supercritical: Some(false),
     }
 }
 
@@ -116,6 +118,8 @@ pub fn xfoil_reference(file: &str) -> Vec<PolarPoint> {
                 converged: true,
                 iterations: 0,
                 residual: 0.0,
+                cpmin: f64::NAN,
+                supercritical: None,
             }
         })
         .collect()
@@ -137,11 +141,14 @@ pub fn same_bits(a: &PolarTable, b: &PolarTable) -> bool {
                     let f = |p: &PolarPoint| {
                         [
                             p.alpha, p.cl, p.cd, p.cdp, p.cdf, p.cm, p.xtr_top, p.xtr_bot,
-                            p.residual,
+                            p.residual, p.cpmin,
                         ]
                         .map(f64::to_bits)
                     };
-                    f(p) == f(q) && p.converged == q.converged && p.iterations == q.iterations
+                    f(p) == f(q)
+                        && p.converged == q.converged
+                        && p.iterations == q.iterations
+                        && p.supercritical == q.supercritical
                 })
         })
 }

@@ -54,7 +54,7 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Level-cruise trim: rotor rpm, rotor AoA, drags, propeller thrust, engine rpm, L/D.
+    /// Level-cruise trim: rotor rpm, both rotor angles, drags, thrust, engine rpm, static thrust.
     Trim {
         #[command(flatten)]
         inputs: Inputs,
@@ -132,7 +132,7 @@ enum Command {
         #[command(subcommand)]
         kind: plot::PlotKind,
     },
-    /// The paper report: Tables 3, 4, 5 beside the paper's values and all figures, in one folder.
+    /// The paper report: flight test, Tables 3–5, sensitivity and all figures, in one folder.
     Report(ReportArgs),
 }
 

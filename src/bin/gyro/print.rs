@@ -21,7 +21,8 @@ pub fn trim(buf: &mut String, t: &TrimResult) {
     outln!(buf, "  rotor rpm n_R          {:8.1}", t.rotor_rpm);
     outln!(
         buf,
-        "  rotor AoA alpha_R [deg]{:8.2}   (hub {:.2})",
+        "  rotor AoA alpha_R [deg]{:8.2}   (atan D_R/L_R; tip-path plane {:.2}, hub {:.2})",
+        t.rotor_aoa_drag_equivalent_deg,
         t.rotor_aoa_deg,
         t.hub_aoa_deg
     );
@@ -35,6 +36,7 @@ pub fn trim(buf: &mut String, t: &TrimResult) {
     outln!(buf, "  prop thrust F_prop [N] {:8.1}", t.prop_thrust_n);
     outln!(buf, "  L/D                    {:8.2}", t.lift_to_drag);
     outln!(buf, "  power required [kW]    {:8.1}", t.power_required_kw);
+    outln!(buf, "  static thrust [N]      {:8.1}", t.static_thrust_n);
     outln!(
         buf,
         "  flapping b1c, b1s [deg]{:8.2} {:.2}",

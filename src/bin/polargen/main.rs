@@ -249,13 +249,12 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
-    let converged = table.converged_count();
+    let census = table.census();
     TOOL.say(format!(
-        "{converged} of {total} points converged ({:.1} %) in {:.1} s",
-        100.0 * converged as f64 / total.max(1) as f64,
+        "{census} in {:.1} s",
         start.elapsed().as_secs_f64()
     ));
-    if converged == 0 {
+    if census.converged == 0 {
         bail!("no point converged; no table written");
     }
     let path = cli.out.as_deref().unwrap_or(Path::new("-"));

@@ -47,6 +47,8 @@ pub const TABLE3_TRIM: [PaperQuantity<TrimResult>; 7] = [
         decimals: 1,
         ours: |t| t.rotor_rpm,
     },
+    // The paper's α_R is the drag-equivalent angle (eq. 5: D_R = G·α_R; Table 3:
+    // atan(478/4414) = 6.2°), so ours is atan(D_R/L_R), not the tip-path-plane angle.
     PaperQuantity {
         name: "rotor AoA alpha_R [deg]",
         paper: CaseValues {
@@ -54,7 +56,7 @@ pub const TABLE3_TRIM: [PaperQuantity<TrimResult>; 7] = [
             contaminated: 8.1,
         },
         decimals: 2,
-        ours: |t| t.rotor_aoa_deg,
+        ours: |t| t.rotor_aoa_drag_equivalent_deg,
     },
     PaperQuantity {
         name: "engine rpm",
@@ -168,6 +170,20 @@ pub fn compare<R>(table: &[PaperQuantity<R>], clean: &R, contaminated: &R) -> Ve
         })
         .collect()
 }
+
+/// Paper Table 1: maximum takeoff thrust ≈ 2000 N (what our propeller's full-throttle static
+/// thrust is compared with).
+pub const TABLE1_STATIC_THRUST_N: f64 = 2000.0;
+
+/// The flight test (paper Table 2) at 60 kt: engine rpm clean ≈ 4400, contaminated ≈ 4600 —
+/// the one measurement of the study; the rotor rpm stays ≈ 350.
+pub const TABLE2_ENGINE_RPM: CaseValues = CaseValues {
+    clean: 4400.0,
+    contaminated: 4600.0,
+};
+
+/// The flight test's rotor rpm at 60 kt, both cases (paper Table 2).
+pub const TABLE2_ROTOR_RPM: f64 = 350.0;
 
 /// The paper's text on the clean takeoff (Fig. 11): 200 rpm prerotation → ≈ 300 rpm at
 /// lift-off.

@@ -29,6 +29,9 @@
 //!   and never use unconverged points.
 //! * Fields: Mach F7.3, α F7.2, coefficients with as many decimals (≤ 4) as leave at least one
 //!   leading blank, so that free-format (whitespace-splitting) readers work too.
+//! * The format has no comment line and no field for the minimum pressure or the supercritical
+//!   flag, so a deck cannot carry them: supercritical points enter it like any other. The CSV,
+//!   JSON and XFOIL-polar forms of the same table hold them.
 
 use super::xfoil_polar::re_label;
 use crate::output::{fixed_decimals, write_output, OutputSet};

@@ -1,12 +1,16 @@
 //! CSV, long form: one row per point, the table's metadata repeated on every row.
 //!
 //! Columns: `airfoil,re,mach,ncrit,xtr_top_set,xtr_bot_set,alpha,cl,cd,cdp,cm,xtr_top,xtr_bot,
-//! converged,cdf,iterations,residual,panels,solver`. Floats are written with Rust's shortest
-//! round-trip formatting, so reading a file back gives the identical table. The reader needs
-//! the first fourteen columns (any order); `cdf` (default cd − cdp), `iterations`, `residual`,
-//! `panels` (default 0) and `solver` (default empty) are optional. A (Re, M) node without rows
-//! cannot be represented and reads back as a ragged grid.
+//! converged,cdf,iterations,residual,panels,solver,cpmin,supercritical`. Floats are written
+//! with Rust's shortest round-trip formatting (`NaN`, `-inf` where not finite), so reading a
+//! file back gives the identical table. The reader needs the first fourteen columns (any
+//! order); `cdf` (default cd − cdp), `iterations`, `residual`, `panels` (default 0), `solver`
+//! (default empty), `cpmin` and `supercritical` are optional. A file without `cpmin` reads as
+//! minimum pressure unknown (NaN); without `supercritical` the flag follows from `cpmin` and
+//! the Mach number (Cp_min < Cp*), unknown (empty field, `None`) when `cpmin` is. A (Re, M)
+//! node without rows cannot be represented and reads back as a ragged grid.
 
+use super::supercritical_from_cpmin;
 use crate::output::write_output;
 use crate::section::{FlowCondition, PolarPoint};
 use crate::table::{PolarTable, TableError, TableMeta};
@@ -15,7 +19,7 @@ use std::io::{Read, Write};
 use std::path::Path;
 
 /// Column names written, in order.
-pub const COLUMNS: [&str; 19] = [
+pub const COLUMNS: [&str; 21] = [
     "airfoil",
     "re",
     "mach",
@@ -35,6 +39,8 @@ pub const COLUMNS: [&str; 19] = [
     "residual",
     "panels",
     "solver",
+    "cpmin",
+    "supercritical",
 ];
 
 /// Columns a CSV file must have.
@@ -82,6 +88,12 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
                 &p.residual.to_string(),
                 &panels,
                 &m.solver,
+                &p.cpmin.to_string(),
+                match p.supercritical {
+                    Some(true) => "true",
+                    Some(false) => "false",
+                    None => "",
+                },
             ])
             .map_err(werr)?;
         }
@@ -161,6 +173,7 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
         let converged = row.flag(13)?;
         let cd = row.num(8)?;
         let cdp = row.num(9)?;
+        let cpmin = row.opt_num(19)?.unwrap_or(f64::NAN);
         let p = PolarPoint {
             alpha: row.num(6)?,
             cl: row.num(7)?,
@@ -173,6 +186,12 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
             converged,
             iterations: row.opt_int(15)?.unwrap_or(0) as u32,
             residual: row.opt_num(16)?.unwrap_or(0.0),
+            cpmin,
+            supercritical: match row.opt_text(20) {
+                Some("") => None,
+                Some(_) => Some(row.flag(20)?),
+                None => supercritical_from_cpmin(cpmin, mach),
+            },
         };
         if converged {
             for (name, v) in [("alpha", p.alpha), ("cl", p.cl), ("cd", p.cd), ("cm", p.cm)] {
@@ -202,7 +221,8 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
 
 /// Parse a CSV holding one polar, such as the XFOIL reference polars: columns `alpha`, `cl`,
 /// `cd` (any case, any order) and optionally `cdp` (default 0), `cm` (0), `xtr_top`,
-/// `xtr_bot` (1); every row is a converged point. The flow condition comes from the file stem
+/// `xtr_bot` (1); every row is a converged point, its minimum pressure and supercritical flag
+/// unknown. The flow condition comes from the file stem
 /// `stem`, e.g. `naca8h12_Re1.9e6_M0.41_free` (Re 10⁶ and M 0 when absent), the airfoil name
 /// from its first `_`-separated part.
 pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableError> {
@@ -243,6 +263,8 @@ pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableErr
             converged: true,
             iterations: 0,
             residual: 0.0,
+            cpmin: f64::NAN,
+            supercritical: None,
         });
     }
     let stem_number = |key: &str| {

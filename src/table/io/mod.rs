@@ -10,6 +10,7 @@ mod json;
 mod xfoil_polar;
 
 use super::{PolarTable, TableError};
+use crate::compressibility::KarmanTsien;
 use crate::input::read_input;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
@@ -70,6 +71,19 @@ impl FromStr for TableFormat {
             _ => Err(TableError::UnknownFormat(s.to_string())),
         }
     }
+}
+
+/// The supercritical flag a point's minimum pressure `cpmin` implies at free-stream Mach
+/// number `mach` (Cp_min < Cp*, see
+/// [`MinimumPressure`](crate::compressibility::MinimumPressure)); `None` when `cpmin` is
+/// unknown (NaN) or the Mach number is outside the subsonic range.
+pub(crate) fn supercritical_from_cpmin(cpmin: f64, mach: f64) -> Option<bool> {
+    if cpmin.is_nan() {
+        return None;
+    }
+    KarmanTsien::new(mach)
+        .ok()
+        .map(|kt| mach > 0.0 && cpmin < kt.cp_sonic())
 }
 
 /// Write `table` to `path` in `format` (inferred from the extension when `None`); C81 files

@@ -1,19 +1,33 @@
 //! XFOIL polar text: the layout of the file XFOIL 6.99 writes with `PACC` (a 12-line header
 //! with the airfoil name, transition settings, Mach, Re and N_crit, then the columns
 //! `alpha CL CD CDp CM Top_Xtr Bot_Xtr` in Fortran F8.3, F9.4, F10.5, F10.5, F9.4, F9.4, F9.4
-//! fields). Only converged points are written, sorted by α. The version line names this
-//! table's solver instead of XFOIL.
+//! fields, and the optional `Cpmin` column XFOIL adds with its minimum-Cp option, F9.4).
+//! Only converged points are written, sorted by α, with `Cpmin`; the supercritical flag is
+//! not a column of the format and follows from `Cpmin` and the Mach number of the header
+//! when the file is read. The version line names this table's solver instead of XFOIL.
 
+use super::supercritical_from_cpmin;
 use crate::output::OutputSet;
 use crate::section::{FlowCondition, PolarPoint};
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-/// Width and decimals of the point columns `alpha CL CD CDp CM Top_Xtr Bot_Xtr` (XFOIL's
-/// F8.3, F9.4, F10.5, F10.5, F9.4, F9.4, F9.4).
-const POLAR_FIELDS: [(usize, usize); 7] =
-    [(8, 3), (9, 4), (10, 5), (10, 5), (9, 4), (9, 4), (9, 4)];
+/// Width and decimals of the point columns `alpha CL CD CDp CM Top_Xtr Bot_Xtr Cpmin` (XFOIL's
+/// F8.3, F9.4, F10.5, F10.5, F9.4, F9.4, F9.4, F9.4).
+const POLAR_FIELDS: [(usize, usize); 8] = [
+    (8, 3),
+    (9, 4),
+    (10, 5),
+    (10, 5),
+    (9, 4),
+    (9, 4),
+    (9, 4),
+    (9, 4),
+];
+
+/// Index of the `Cpmin` field in [`POLAR_FIELDS`].
+const CPMIN_FIELD: usize = 7;
 
 /// Write one polar in XFOIL's polar-file layout to `w`; a value wider than its field is
 /// refused ([`TableError::FieldOverflow`]).
@@ -53,14 +67,18 @@ pub fn write_polar_to(
         " Mach = {mach:7.3}     Re = {re_field} e 6     Ncrit = {ncrit_field}\n"
     ));
     s.push_str(" \n");
-    s.push_str("   alpha    CL        CD       CDp       CM     Top_Xtr  Bot_Xtr\n");
-    s.push_str("  ------ -------- --------- --------- -------- -------- --------\n");
+    s.push_str("   alpha    CL        CD       CDp       CM     Top_Xtr  Bot_Xtr   Cpmin\n");
+    s.push_str("  ------ -------- --------- --------- -------- -------- -------- --------\n");
     for p in points.iter().filter(|p| p.converged) {
-        let values = [p.alpha, p.cl, p.cd, p.cdp, p.cm, p.xtr_top, p.xtr_bot];
-        for (value, (width, decimals)) in values.into_iter().zip(POLAR_FIELDS) {
+        let values = [
+            p.alpha, p.cl, p.cd, p.cdp, p.cm, p.xtr_top, p.xtr_bot, p.cpmin,
+        ];
+        for (k, (value, (width, decimals))) in values.into_iter().zip(POLAR_FIELDS).enumerate() {
             let field = format!("{value:width$.decimals$}");
-            // A wider value would merge with its neighbour and not read back.
-            if field.len() > width || !value.is_finite() {
+            // A wider value would merge with its neighbour and not read back; a minimum
+            // pressure that is unknown (NaN) or beyond Karman–Tsien (−∞) is written as such.
+            let unknown_cpmin = k == CPMIN_FIELD && !value.is_finite();
+            if field.len() > width || !(value.is_finite() || unknown_cpmin) {
                 return Err(TableError::FieldOverflow { value, width });
             }
             s.push_str(&field);
@@ -142,8 +160,9 @@ fn check_alpha_resolution(re: f64, mach: f64, points: &[PolarPoint]) -> Result<(
 /// [`write_xfoil_polars`]) as a one-polar table.
 ///
 /// The header gives the airfoil name, `xtrf` (top, bottom), Mach, Re (`1.900 e 6`) and
-/// N_crit; the column-title line locates `alpha CL CD CDp CM Top_Xtr Bot_Xtr` among any
-/// other columns (XFOIL may add `Cpmin`, `Xcpmin`, `Chinge`). Every row is a converged point
+/// N_crit; the column-title line locates `alpha CL CD CDp CM Top_Xtr Bot_Xtr` and, if
+/// present, `Cpmin` among any other columns (XFOIL may add `Xcpmin`, `Chinge`). Without
+/// `Cpmin` the minimum pressure and the supercritical flag are unknown. Every row is a converged point
 /// (XFOIL writes no others); a repeated α (XFOIL sweeps that revisit a point) keeps the first
 /// row. The panel count is unknown (0) and the solver is the file's first text line (the
 /// version line).
@@ -185,6 +204,10 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
                 num(line, v[k])
             };
             let (cd, cdp) = (get("CD")?, get("CDp")?);
+            let cpmin = match cols.iter().any(|c| c.eq_ignore_ascii_case("Cpmin")) {
+                true => get("Cpmin")?,
+                false => f64::NAN,
+            };
             let p = PolarPoint {
                 alpha: get("alpha")?,
                 cl: get("CL")?,
@@ -197,6 +220,8 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
                 converged: true,
                 iterations: 0,
                 residual: 0.0,
+                cpmin,
+                supercritical: None,
             };
             if !points.iter().any(|q| q.alpha == p.alpha) {
                 points.push(p);
@@ -228,6 +253,9 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
     let (mach, re, ncrit) = cond.ok_or_else(|| err(1, "no 'Mach = … Re = … Ncrit = …' line"))?;
     if columns.is_none() {
         return Err(err(1, "no column-title line starting with 'alpha'"));
+    }
+    for p in &mut points {
+        p.supercritical = supercritical_from_cpmin(p.cpmin, mach);
     }
     let meta = TableMeta {
         airfoil: name,

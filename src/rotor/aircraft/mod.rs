@@ -1,12 +1,23 @@
-//! Aircraft preset: rotor, airframe, propeller/engine and takeoff data, loaded from TOML.
+//! Aircraft preset: rotor, airframe, propeller, engine and takeoff data, loaded from TOML.
+//! The propeller's section table is named in the preset (relative to the preset's folder) and
+//! read with it.
 
 use super::atmosphere::MAX_ISA_ALTITUDE_M;
-use super::inflow::InflowModel;
+use super::inflow::{InflowModel, TipLoss, YawedFlow};
 use crate::arguments::ArgumentError;
 use crate::input::{read_input, InputError};
+use crate::section::SectionAero;
+use crate::table::{read_lookup_table, PolarTable, TableError};
+use checks::{in_range, non_negative, positive};
 use serde::Deserialize;
 use std::borrow::Cow;
 use std::path::Path;
+use std::sync::Arc;
+
+mod checks;
+mod powerplant;
+
+pub use powerplant::{BladeGeometry, EngineParams, PropellerParams};
 
 /// Errors while loading or checking an aircraft preset.
 #[derive(Debug, thiserror::Error)]
@@ -27,6 +38,15 @@ pub enum AircraftError {
         path: String,
         /// The parser's message, folded onto one line.
         message: String,
+    },
+    /// The propeller's section table cannot be read.
+    #[error("aircraft file {path}: propeller.section_table")]
+    PropellerSection {
+        /// The aircraft file.
+        path: String,
+        /// Why.
+        #[source]
+        source: TableError,
     },
     /// A value is outside its physical range.
     #[error("aircraft parameter {field} = {} is invalid: {reason}", short_number(*value))]
@@ -102,10 +122,15 @@ pub struct Aircraft {
     pub parasitic_drag_area_m2: f64,
     /// Rotor data.
     pub rotor: RotorParams,
-    /// Propeller and engine data.
+    /// Propeller data.
     pub propeller: PropellerParams,
+    /// Engine and reduction gear.
+    pub engine: EngineParams,
     /// Takeoff procedure data.
     pub takeoff: TakeoffParams,
+    /// The propeller's section table, read with the preset.
+    #[serde(skip)]
+    propeller_section: Option<Arc<PolarTable>>,
 }
 
 /// Rotor geometry, mass and discretisation.
@@ -134,9 +159,10 @@ pub struct RotorParams {
     pub radial_strips: usize,
     /// Number of azimuth steps per revolution (even, so both blades sit on the grid).
     pub azimuth_steps: usize,
-    /// Tip-loss factor B (lift is zero outboard of B·R); omitted → Gessow–Myers B = 1 − √(2C_T)/N_b.
-    #[serde(default)]
-    pub tip_loss_b: Option<f64>,
+    /// Tip-loss model: "prandtl", "gessow_myers", "chord" or "none" ([`TipLoss`]).
+    pub tip_loss: TipLoss,
+    /// Profile drag in yawed (radial) flow: "radial_drag" or "none" ([`YawedFlow`]).
+    pub yawed_flow: YawedFlow,
     /// Induced-inflow model: "glauert" (uniform) or "drees" (linear).
     pub inflow: InflowModel,
     /// Induced-power factor κ (induced velocity = κ × Glauert's momentum value, see
@@ -148,31 +174,6 @@ pub struct RotorParams {
 /// κ = 1: ideal momentum theory (the default when a preset omits the factor).
 fn ideal_induced_power_factor() -> f64 {
     1.0
-}
-
-/// Propeller and engine data (the map they calibrate: [`crate::rotor::PropellerMap`]).
-#[derive(Clone, Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct PropellerParams {
-    /// Propeller diameter D \[m\].
-    pub diameter_m: f64,
-    /// Propeller rpm / engine rpm (reduction gear).
-    pub gear_ratio: f64,
-    /// Static thrust at full throttle \[N\].
-    pub static_thrust_n: f64,
-    /// Engine rpm at full throttle, standing still \[rpm\].
-    pub static_engine_rpm: f64,
-    /// Calibration point: airspeed \[kt\] …
-    pub calib_speed_kt: f64,
-    /// … thrust there \[N\] …
-    pub calib_thrust_n: f64,
-    /// … and the engine rpm measured there \[rpm\].
-    pub calib_engine_rpm: f64,
-    /// Highest engine rpm allowed (full-throttle rpm never exceeds it) \[rpm\].
-    pub max_engine_rpm: f64,
-    /// Zero-torque advance ratio of the propeller as a multiple of its zero-thrust advance
-    /// ratio, k = J_Q/J0 ≥ 1 (see [`crate::rotor::PropellerMap`]).
-    pub zero_torque_j_factor: f64,
 }
 
 /// Takeoff procedure and ground data.
@@ -215,14 +216,31 @@ impl Aircraft {
         Self::from_toml_str(&text, &origin)
     }
 
-    /// Parses and checks a TOML preset held in memory; `origin` names it in errors.
+    /// Parses and checks a TOML preset held in memory and reads its propeller section table;
+    /// `origin` names it in errors, and the table's path is relative to `origin`'s folder (the
+    /// current folder when `origin` has none).
     pub fn from_toml_str(text: &str, origin: &str) -> Result<Self, AircraftError> {
-        let aircraft: Aircraft = toml::from_str(text).map_err(|e| AircraftError::Parse {
+        let mut aircraft: Aircraft = toml::from_str(text).map_err(|e| AircraftError::Parse {
             path: origin.to_string(),
             message: e.message().replace('\n', " "),
         })?;
         aircraft.validate()?;
+        let folder = Path::new(origin).parent().unwrap_or(Path::new(""));
+        let table = read_lookup_table(&folder.join(&aircraft.propeller.section_table)).map_err(
+            |source| AircraftError::PropellerSection {
+                path: origin.to_string(),
+                source,
+            },
+        )?;
+        aircraft.propeller_section = Some(Arc::new(table));
         Ok(aircraft)
+    }
+
+    /// The propeller's section, read with the preset.
+    pub fn propeller_section(&self) -> Option<Arc<dyn SectionAero + Send + Sync>> {
+        self.propeller_section
+            .clone()
+            .map(|t| t as Arc<dyn SectionAero + Send + Sync>)
     }
 
     /// Aircraft weight G = m·g0 \[N\].
@@ -232,44 +250,6 @@ impl Aircraft {
 
     /// Checks every value for its physical range.
     pub fn validate(&self) -> Result<(), AircraftError> {
-        fn positive(field: &'static str, value: f64) -> Result<(), AircraftError> {
-            if value.is_finite() && value > 0.0 {
-                Ok(())
-            } else {
-                Err(AircraftError::Invalid {
-                    field,
-                    value,
-                    reason: "must be a positive number".into(),
-                })
-            }
-        }
-        fn non_negative(field: &'static str, value: f64) -> Result<(), AircraftError> {
-            if value.is_finite() && value >= 0.0 {
-                Ok(())
-            } else {
-                Err(AircraftError::Invalid {
-                    field,
-                    value,
-                    reason: "must be zero or positive".into(),
-                })
-            }
-        }
-        fn in_range(
-            field: &'static str,
-            value: f64,
-            (lo, hi): (f64, f64),
-            reason: impl Into<Cow<'static, str>>,
-        ) -> Result<(), AircraftError> {
-            if value >= lo && value <= hi {
-                Ok(())
-            } else {
-                Err(AircraftError::Invalid {
-                    field,
-                    value,
-                    reason: reason.into(),
-                })
-            }
-        }
         let r = &self.rotor;
         in_range(
             "mass_kg",
@@ -350,15 +330,6 @@ impl Aircraft {
                 .into(),
             });
         }
-        if let Some(b) = r.tip_loss_b {
-            if !(b > 0.5 && b <= 1.0) {
-                return Err(AircraftError::Invalid {
-                    field: "rotor.tip_loss_b",
-                    value: b,
-                    reason: "must be in (0.5, 1]".into(),
-                });
-            }
-        }
         if !(r.induced_power_factor >= 1.0 && r.induced_power_factor <= 2.0) {
             return Err(AircraftError::Invalid {
                 field: "rotor.induced_power_factor",
@@ -366,34 +337,8 @@ impl Aircraft {
                 reason: "must be between 1 and 2".into(),
             });
         }
-        let p = &self.propeller;
-        positive("propeller.diameter_m", p.diameter_m)?;
-        positive("propeller.gear_ratio", p.gear_ratio)?;
-        positive("propeller.static_thrust_n", p.static_thrust_n)?;
-        positive("propeller.static_engine_rpm", p.static_engine_rpm)?;
-        in_range(
-            "propeller.calib_speed_kt",
-            p.calib_speed_kt,
-            (f64::MIN_POSITIVE, MAX_SPEED_KT),
-            "must be above 0 and at most 300 kt",
-        )?;
-        positive("propeller.calib_thrust_n", p.calib_thrust_n)?;
-        positive("propeller.calib_engine_rpm", p.calib_engine_rpm)?;
-        positive("propeller.max_engine_rpm", p.max_engine_rpm)?;
-        if p.max_engine_rpm < p.static_engine_rpm.max(p.calib_engine_rpm) {
-            return Err(AircraftError::Invalid {
-                field: "propeller.max_engine_rpm",
-                value: p.max_engine_rpm,
-                reason: "must be at least the static and the calibration engine rpm".into(),
-            });
-        }
-        if !(1.0..=2.0).contains(&p.zero_torque_j_factor) {
-            return Err(AircraftError::Invalid {
-                field: "propeller.zero_torque_j_factor",
-                value: p.zero_torque_j_factor,
-                reason: "must be between 1 and 2".into(),
-            });
-        }
+        self.propeller.validate()?;
+        self.engine.validate(self.propeller.calib_engine_rpm)?;
         let t = &self.takeoff;
         positive("takeoff.prerotation_rpm", t.prerotation_rpm)?;
         positive("takeoff.head_angle_max_deg", t.head_angle_max_deg)?;

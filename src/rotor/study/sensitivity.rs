@@ -1,0 +1,315 @@
+//! How much the study's conclusions depend on the values the aircraft preset estimates: each
+//! estimate of `aircraft/mtosport.toml` (and the trim mass, unknown for the flight test) is set
+//! to the ends of its plausible range, one at a time, and the clean rotor rpm, the engine-rpm
+//! and propeller-thrust changes of contamination at 60 kt and the clean takeoff distances are
+//! computed again. Each range is argued or cited beside the value ([`ESTIMATES`]).
+
+use super::{StudyError, PAPER_TRIM_SPEED_KT};
+use crate::rotor::takeoff::simulate_takeoff;
+use crate::rotor::trim::{trim_aircraft, TrimParams};
+use crate::rotor::{Aircraft, TipLoss, YawedFlow};
+use crate::section::SectionAero;
+use rayon::prelude::*;
+
+/// One change of the preset.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Change {
+    /// Mass of the 60 kt trims \[kg\] (the takeoff stays at the preset's mass, the paper's).
+    TrimMass(f64),
+    /// Hub-bar coning \[deg\].
+    Precone(f64),
+    /// Mass of one blade \[kg\].
+    BladeMass(f64),
+    /// Root cut-out \[m\].
+    RootCutout(f64),
+    /// Hub polar moment of inertia \[kg m²\].
+    HubInertia(f64),
+    /// Rolling-friction coefficient.
+    RollingFriction(f64),
+    /// Induced-power factor κ.
+    InducedPowerFactor(f64),
+    /// Rotor tip-loss model.
+    TipLoss(TipLoss),
+    /// Yawed-flow profile drag.
+    YawedFlow(YawedFlow),
+    /// Propeller chord scaled at every station.
+    PropellerChord(f64),
+    /// Propeller twist (blade angle relative to 0.75 R) scaled at every station.
+    PropellerTwist(f64),
+    /// Full-throttle engine torque scaled at every rpm.
+    EngineTorque(f64),
+}
+
+impl Change {
+    /// Applies the change to `aircraft`.
+    fn apply(&self, ac: &mut Aircraft) {
+        match *self {
+            Self::TrimMass(_) => {}
+            Self::Precone(v) => ac.rotor.precone_deg = v,
+            Self::BladeMass(v) => ac.rotor.blade_mass_kg = v,
+            Self::RootCutout(v) => ac.rotor.root_cutout_m = v,
+            Self::HubInertia(v) => ac.rotor.hub_inertia_kg_m2 = v,
+            Self::RollingFriction(v) => ac.takeoff.rolling_friction = v,
+            Self::InducedPowerFactor(v) => ac.rotor.induced_power_factor = v,
+            Self::TipLoss(t) => ac.rotor.tip_loss = t,
+            Self::YawedFlow(y) => ac.rotor.yawed_flow = y,
+            Self::PropellerChord(k) => ac
+                .propeller
+                .blade
+                .chord_over_diameter
+                .iter_mut()
+                .for_each(|c| *c *= k),
+            Self::PropellerTwist(k) => ac
+                .propeller
+                .blade
+                .twist_deg
+                .iter_mut()
+                .for_each(|t| *t *= k),
+            Self::EngineTorque(k) => ac.engine.torque_nm.iter_mut().for_each(|q| *q *= k),
+        }
+    }
+
+    /// The value as printed.
+    pub fn value(&self) -> String {
+        match *self {
+            Self::TrimMass(v) => format!("{v} kg"),
+            Self::Precone(v) => format!("{v}°"),
+            Self::BladeMass(v) => format!("{v} kg"),
+            Self::RootCutout(v) => format!("{v} m"),
+            Self::HubInertia(v) => format!("{v} kg m²"),
+            Self::RollingFriction(v) | Self::InducedPowerFactor(v) => format!("{v}"),
+            Self::TipLoss(t) => match t {
+                TipLoss::Prandtl => "prandtl",
+                TipLoss::GessowMyers => "gessow_myers",
+                TipLoss::Chord => "chord",
+                TipLoss::NoLoss => "none",
+            }
+            .to_string(),
+            Self::YawedFlow(y) => match y {
+                YawedFlow::RadialDrag => "radial_drag",
+                YawedFlow::Ignored => "none",
+            }
+            .to_string(),
+            Self::PropellerChord(k) | Self::PropellerTwist(k) | Self::EngineTorque(k) => {
+                format!("×{k}")
+            }
+        }
+    }
+}
+
+/// An estimated value of the preset: its name, why its range is what it is, and the two (or
+/// more) values tried.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Estimate {
+    /// The quantity, as printed.
+    pub name: &'static str,
+    /// The preset's value, as printed.
+    pub preset: &'static str,
+    /// Where the range comes from.
+    pub range: &'static str,
+    /// The values tried.
+    pub changes: &'static [Change],
+}
+
+/// The estimates of the MTOsport preset and their ranges.
+pub const ESTIMATES: [Estimate; 12] = [
+    Estimate {
+        name: "trim mass",
+        preset: "450 kg",
+        range: "flight-test mass not published: between a light crew with little fuel and MTOW",
+        changes: &[Change::TrimMass(400.0)],
+    },
+    Estimate {
+        name: "precone",
+        preset: "3°",
+        range: "equilibrium coning at 1 g (lift at 0.7 R, blades 12–16 kg, 330–380 rpm): \
+                2.5–4.5°",
+        changes: &[Change::Precone(2.5), Change::Precone(4.5)],
+    },
+    Estimate {
+        name: "blade mass",
+        preset: "14 kg",
+        range: "extruded aluminium blades of 4.2 m, 1.1 mm walls: 12–16 kg",
+        changes: &[Change::BladeMass(12.0), Change::BladeMass(16.0)],
+    },
+    Estimate {
+        name: "root cut-out",
+        preset: "0.5 m",
+        range: "10–15 % R typical (Leishman ch. 3): 0.4–0.6 m",
+        changes: &[Change::RootCutout(0.4), Change::RootCutout(0.6)],
+    },
+    Estimate {
+        name: "hub inertia",
+        preset: "3 kg m²",
+        range: "hub bar, teeter block, bolts of 5–8 kg within 0.3 m: 2–4 kg m²",
+        changes: &[Change::HubInertia(2.0), Change::HubInertia(4.0)],
+    },
+    Estimate {
+        name: "rolling friction",
+        preset: "0.04",
+        range: "small tyres on a hard runway: 0.03–0.05",
+        changes: &[Change::RollingFriction(0.03), Change::RollingFriction(0.05)],
+    },
+    Estimate {
+        name: "induced-power factor κ",
+        preset: "1.15",
+        range: "empirical κ ≈ 1.15 (Leishman ch. 2, 5): ±0.1",
+        changes: &[
+            Change::InducedPowerFactor(1.05),
+            Change::InducedPowerFactor(1.25),
+        ],
+    },
+    Estimate {
+        name: "rotor tip loss",
+        preset: "prandtl",
+        range: "the other models of the preset (Gessow–Myers hover relation, chord rule, none)",
+        changes: &[
+            Change::TipLoss(TipLoss::GessowMyers),
+            Change::TipLoss(TipLoss::Chord),
+            Change::TipLoss(TipLoss::NoLoss),
+        ],
+    },
+    Estimate {
+        name: "yawed-flow profile drag",
+        preset: "radial_drag",
+        range: "K = 4.6 (radial drag) or 3 (none) in the profile power (1 + Kμ²)",
+        changes: &[Change::YawedFlow(YawedFlow::Ignored)],
+    },
+    Estimate {
+        name: "propeller chord",
+        preset: "NACA 594 D",
+        range: "HTC blade unknown; activity factor of light-aircraft propellers ±15 %",
+        changes: &[Change::PropellerChord(0.85), Change::PropellerChord(1.15)],
+    },
+    Estimate {
+        name: "propeller twist",
+        preset: "NACA 594 D",
+        range: "HTC blade unknown; blade angle change root to tip ±20 %",
+        changes: &[Change::PropellerTwist(0.8), Change::PropellerTwist(1.2)],
+    },
+    Estimate {
+        name: "engine torque",
+        preset: "Rotax 912 ULS",
+        range: "estimated points below 5100 rpm, gear and installation losses: ±5 %",
+        changes: &[Change::EngineTorque(0.95), Change::EngineTorque(1.05)],
+    },
+];
+
+/// What the sensitivity table shows for one set of values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Outcome {
+    /// Clean rotor rpm at 60 kt.
+    pub clean_rotor_rpm: f64,
+    /// Engine rpm contaminated − clean at 60 kt (NaN if the engine cannot reach one).
+    pub delta_engine_rpm: f64,
+    /// Propeller thrust contaminated / clean − 1 at 60 kt \[%\].
+    pub delta_prop_thrust_percent: f64,
+    /// Clean takeoff roll \[m\].
+    pub takeoff_roll_m: f64,
+    /// Clean distance to 15 m \[m\].
+    pub distance_15m_m: f64,
+}
+
+/// One row: an estimate at one value, and what follows.
+#[derive(Debug)]
+pub struct SensitivityRow {
+    /// The estimate.
+    pub estimate: &'static Estimate,
+    /// The value tried.
+    pub change: Change,
+    /// The outcome, or why there is none.
+    pub outcome: Result<Outcome, StudyError>,
+}
+
+/// The preset's outcome and every row.
+#[derive(Debug)]
+pub struct Sensitivity {
+    /// With the preset's values.
+    pub baseline: Outcome,
+    /// One per value of each estimate, in the order of [`ESTIMATES`].
+    pub rows: Vec<SensitivityRow>,
+}
+
+/// The outcome of `aircraft` (trims at `trim_mass` kg) with the two sections.
+fn outcome<S: SectionAero + Sync + ?Sized>(
+    aircraft: &Aircraft,
+    trim_mass: f64,
+    clean: &S,
+    contaminated: &S,
+) -> Result<Outcome, StudyError> {
+    let trim = |section: &S, case: &str| {
+        trim_aircraft(
+            aircraft,
+            section,
+            PAPER_TRIM_SPEED_KT,
+            trim_mass,
+            0.0,
+            &TrimParams::default(),
+        )
+        .map_err(|source| StudyError::Trim {
+            case: case.to_string(),
+            source,
+        })
+    };
+    let ((c, d), takeoff) = rayon::join(
+        || {
+            rayon::join(
+                || trim(clean, "clean"),
+                || trim(contaminated, "contaminated"),
+            )
+        },
+        || {
+            simulate_takeoff(aircraft, clean).map_err(|source| StudyError::Takeoff {
+                case: "clean".to_string(),
+                source,
+            })
+        },
+    );
+    let (c, d, takeoff) = (c?, d?, takeoff?);
+    let rpm = |e: Option<f64>| e.unwrap_or(f64::NAN);
+    Ok(Outcome {
+        clean_rotor_rpm: c.rotor_rpm,
+        delta_engine_rpm: rpm(d.engine_rpm) - rpm(c.engine_rpm),
+        delta_prop_thrust_percent: 100.0 * (d.prop_thrust_n / c.prop_thrust_n - 1.0),
+        takeoff_roll_m: takeoff.takeoff_roll_m,
+        distance_15m_m: takeoff.distance_15m_m,
+    })
+}
+
+/// The sensitivity of the study to [`ESTIMATES`] for `aircraft` with the `clean` and
+/// `contaminated` blade sections (every value in parallel).
+pub fn sensitivity<S: SectionAero + Sync + ?Sized>(
+    aircraft: &Aircraft,
+    clean: &S,
+    contaminated: &S,
+) -> Result<Sensitivity, StudyError> {
+    let cases: Vec<(&'static Estimate, Change)> = ESTIMATES
+        .iter()
+        .flat_map(|e| e.changes.iter().map(move |c| (e, *c)))
+        .collect();
+    let (baseline, rows) = rayon::join(
+        || outcome(aircraft, aircraft.mass_kg, clean, contaminated),
+        || {
+            cases
+                .par_iter()
+                .map(|&(estimate, change)| {
+                    let mut ac = aircraft.clone();
+                    change.apply(&mut ac);
+                    let mass = match change {
+                        Change::TrimMass(m) => m,
+                        _ => ac.mass_kg,
+                    };
+                    SensitivityRow {
+                        estimate,
+                        change,
+                        outcome: outcome(&ac, mass, clean, contaminated),
+                    }
+                })
+                .collect()
+        },
+    );
+    Ok(Sensitivity {
+        baseline: baseline?,
+        rows,
+    })
+}
