@@ -228,6 +228,9 @@ pub enum TableError {
     /// An explicit format name is not known.
     #[error("unknown table format '{0}' (expected csv, json, xfoil or c81)")]
     UnknownFormat(String),
+    /// A format that writes several files was asked to write to standard output.
+    #[error("{0} writes one file per polar or per Re: give a file name, not standard output")]
+    NeedsFile(&'static str),
     /// The format has no reader.
     #[error("{0} files cannot be read back as tables (only CSV, JSON and XFOIL polar)")]
     NotReadable(&'static str),

@@ -17,6 +17,10 @@ pub struct Cli {
     #[command(subcommand)]
     pub command: Option<Command>,
 
+    /// No notes, progress or summary lines on stderr (errors are still printed).
+    #[arg(long, short, global = true)]
+    pub quiet: bool,
+
     #[command(flatten)]
     pub run: RunArgs,
 }
@@ -24,21 +28,28 @@ pub struct Cli {
 /// Subcommands besides the main job (computing polars and tables).
 #[derive(Subcommand, Debug)]
 pub enum Command {
-    /// Overlay polars from tables (CSV or JSON): Cl–α, Cd–Cl, Cl/Cd–α, Cm–α; SVG or PNG by
-    /// the extension of --out.
+    /// Overlay polars from tables (polargen CSV or JSON, XFOIL .pol, single-polar CSV):
+    /// Cl–α, Cd–Cl, Cl/Cd–α, Cm–α; SVG or PNG by the extension of --out.
     Plot(PlotArgs),
-    /// Convert a table (CSV, JSON or XFOIL polar) to another format: csv, json, xfoil or c81.
+    /// Convert a table (polargen CSV or JSON, XFOIL .pol, single-polar CSV) to another
+    /// format: csv, json, xfoil or c81.
     Convert(ConvertArgs),
     /// Cp(x) and boundary-layer distributions (H, Cf, N) at one α or Cl, one case per
     /// transition setting overlaid (e.g. --xtr 1,0.07: clean vs tripped).
     PlotPoint(PlotPointArgs),
+    /// Shell completion script on standard output (e.g. `polargen completions bash >
+    /// ~/.local/share/bash-completion/completions/polargen`).
+    Completions(crate::cli::CompletionsArgs),
+    /// Man page (roff) on standard output (`polargen man > polargen.1; man ./polargen.1`).
+    Man,
 }
 
 /// `polargen plot-point` options.
 #[derive(Args, Debug)]
 pub struct PlotPointArgs {
-    /// Airfoil: a name (naca8h12, nacaDDDD, nacaDDDDD) or a coordinate file.
-    #[arg(long, value_name = "NAME|PATH")]
+    /// Airfoil: a name (naca8h12, nacaDDDD, nacaDDDDD), a coordinate file (Selig, Lednicer
+    /// or plain x y) or - for standard input.
+    #[arg(long, value_name = "NAME|PATH|-")]
     pub airfoil: String,
 
     #[command(flatten)]
@@ -101,13 +112,15 @@ pub struct PlotPointArgs {
 /// `polargen convert` options.
 #[derive(Args, Debug)]
 pub struct ConvertArgs {
-    /// Table written by polargen (.csv, .json) or an XFOIL polar file (.pol).
+    /// Table: polargen CSV (.csv) or JSON (.json), XFOIL polar file (.pol), or a CSV of one
+    /// polar with columns alpha, cl, cd[, cm].
     #[arg(value_name = "TABLE")]
     pub table: PathBuf,
 
-    /// Output file; the format follows its extension unless --format is given (xfoil and
-    /// c81 may write one file per (Re, M) or per Re, named after it).
-    #[arg(long, value_name = "FILE")]
+    /// Output file, or - for standard output (csv, json); the format follows the extension
+    /// unless --format is given (xfoil and c81 may write one file per (Re, M) or per Re,
+    /// named after it).
+    #[arg(long, value_name = "FILE|-")]
     pub out: PathBuf,
 
     /// Output format: csv, json, xfoil or c81.
@@ -118,7 +131,8 @@ pub struct ConvertArgs {
 /// `polargen plot` options.
 #[derive(Args, Debug)]
 pub struct PlotArgs {
-    /// Tables written by polargen (.csv or .json).
+    /// Tables: polargen CSV (.csv) or JSON (.json), XFOIL polar files (.pol), or CSVs of one
+    /// polar with columns alpha, cl, cd[, cm].
     #[arg(required = true, value_name = "TABLE")]
     pub tables: Vec<PathBuf>,
 
@@ -142,9 +156,9 @@ pub struct PlotArgs {
 /// Options of the main job: polars and tables.
 #[derive(Args, Debug)]
 pub struct RunArgs {
-    /// Airfoil: naca8h12, naca23012, nacaDDDD, nacaDDDDD, or a coordinate file (Selig,
-    /// Lednicer or plain x y).
-    #[arg(long, value_name = "NAME|PATH", required = true)]
+    /// Airfoil: naca8h12, naca23012, nacaDDDD, nacaDDDDD, a coordinate file (Selig,
+    /// Lednicer or plain x y), or - for coordinates on standard input.
+    #[arg(long, value_name = "NAME|PATH|-", required = true)]
     pub airfoil: Option<String>,
 
     #[command(flatten)]
@@ -154,11 +168,12 @@ pub struct RunArgs {
     #[arg(long)]
     pub inviscid: bool,
 
-    /// Chord Reynolds numbers, comma-separated (default: the rotor grid 0.25e6,…,2.5e6).
+    /// Chord Reynolds numbers, comma-separated. Without --re and --mach: the rotor grid
+    /// Re 0.25e6,…,2.5e6 × M 0,0.2,0.3,0.4,0.5; --re alone runs at M 0 (as XFOIL).
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub re: Option<String>,
 
-    /// Mach numbers, comma-separated, 0 ≤ M < 1 (default: 0,0.2,0.3,0.4,0.5; inviscid: 0).
+    /// Mach numbers, comma-separated, 0 ≤ M < 1 (needs --re; inviscid: one value, default 0).
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub mach: Option<String>,
 
@@ -199,8 +214,8 @@ pub struct RunArgs {
     #[arg(long)]
     pub format: Option<String>,
 
-    /// Output file; standard output when absent (csv and json only).
-    #[arg(long, value_name = "FILE")]
+    /// Output file; standard output when absent or - (csv and json only).
+    #[arg(long, value_name = "FILE|-")]
     pub out: Option<PathBuf>,
 }
 

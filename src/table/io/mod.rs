@@ -46,6 +46,22 @@ impl TableFormat {
         }
     }
 
+    /// The format a table is written in: `format` (a command-line name) when given, else the
+    /// extension of `out`; CSV for standard output (`out` absent or `-`). XFOIL polars and
+    /// C81 write one file per polar or per Re and need a file name.
+    pub fn for_output(format: Option<&str>, out: Option<&Path>) -> Result<Self, TableError> {
+        let stdout = out.map_or(true, |p| p.as_os_str() == crate::output::STDOUT_PATH);
+        let chosen = match (format, out) {
+            (Some(f), _) => f.parse()?,
+            (None, Some(path)) if !stdout => Self::from_path(path)?,
+            (None, _) => Self::Csv,
+        };
+        if stdout && matches!(chosen, Self::XfoilPolar | Self::C81) {
+            return Err(TableError::NeedsFile(chosen.name()));
+        }
+        Ok(chosen)
+    }
+
     /// Lower-case name as used on the command line.
     pub fn name(self) -> &'static str {
         match self {
