@@ -243,7 +243,10 @@ fn errors_name_the_flag() {
         (&["--re", "1e6,,2e6"], "--re"),
         (&["--re", "1e6", "--mach", "1"], "--mach 1"),
         (&["--re", "1e6", "--mach", "0,-0.2"], "--mach -0.2"),
-        (&["--mach", "0.3"], "--mach: give the Reynolds numbers with --re too"),
+        (
+            &["--mach", "0.3"],
+            "--mach: give the Reynolds numbers with --re too",
+        ),
         (&["--xtr", "1.5"], "--xtr 1.5"),
         (&["--xtr-top", "-0.1"], "--xtr-top -0.1"),
         (&["--xtr-bot", "2"], "--xtr-bot 2"),
@@ -269,7 +272,10 @@ fn errors_name_the_flag() {
         (&["--alpha", "0:4:0"], "step is 0"),
         (&["--alpha", "4:0:1"], "empty"),
         (&["--format", "xls"], "xls"),
-        (&["--format", "c81"], "c81 writes one file per polar or per Re: give a file name"),
+        (
+            &["--format", "c81"],
+            "c81 writes one file per polar or per Re: give a file name",
+        ),
         (&["--out", "/tmp/x.unknown"], "x.unknown"),
         (&["--threads", "x"], "--threads"),
     ];

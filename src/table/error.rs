@@ -231,9 +231,14 @@ pub enum TableError {
     /// A format that writes several files was asked to write to standard output.
     #[error("{0} writes one file per polar or per Re: give a file name, not standard output")]
     NeedsFile(&'static str),
-    /// The format has no reader.
-    #[error("{0} files cannot be read back as tables (only CSV, JSON and XFOIL polar)")]
-    NotReadable(&'static str),
+    /// A C81 file does not follow the format.
+    #[error("C81 line {line}: {message}")]
+    C81 {
+        /// Line number (1-based).
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
     /// A C81 table would exceed the format's 2-digit counts.
     #[error("C81 table needs {count} {what} but the format allows at most 99")]
     C81TooLarge {

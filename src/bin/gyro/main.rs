@@ -94,10 +94,10 @@ enum Command {
         /// Aircraft preset (TOML).
         #[arg(long)]
         aircraft: PathBuf,
-        /// Table of the clean blade section.
+        /// Table of the clean blade section (any format --table reads).
         #[arg(long)]
         clean: PathBuf,
-        /// Table of the contaminated blade section.
+        /// Table of the contaminated blade section (any format --table reads).
         #[arg(long)]
         contaminated: PathBuf,
         /// Print JSON instead of text.
@@ -152,7 +152,7 @@ struct Inputs {
     /// Aircraft preset (TOML).
     #[arg(long)]
     aircraft: PathBuf,
-    /// Section polar table: polargen CSV or JSON, XFOIL .pol, or a CSV of one polar with
+    /// Section polar table: polargen CSV or JSON, XFOIL .pol, C81, or a CSV of one polar with
     /// columns alpha, cl, cd[, cm].
     #[arg(long)]
     table: PathBuf,

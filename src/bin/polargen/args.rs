@@ -28,10 +28,10 @@ pub struct Cli {
 /// Subcommands besides the main job (computing polars and tables).
 #[derive(Subcommand, Debug)]
 pub enum Command {
-    /// Overlay polars from tables (polargen CSV or JSON, XFOIL .pol, single-polar CSV):
+    /// Overlay polars from tables (polargen CSV or JSON, XFOIL .pol, C81, single-polar CSV):
     /// Cl–α, Cd–Cl, Cl/Cd–α, Cm–α; SVG or PNG by the extension of --out.
     Plot(PlotArgs),
-    /// Convert a table (polargen CSV or JSON, XFOIL .pol, single-polar CSV) to another
+    /// Convert a table (polargen CSV or JSON, XFOIL .pol, C81, single-polar CSV) to another
     /// format: csv, json, xfoil or c81.
     Convert(ConvertArgs),
     /// Cp(x) and boundary-layer distributions (H, Cf, N) at one α or Cl, one case per
@@ -112,8 +112,8 @@ pub struct PlotPointArgs {
 /// `polargen convert` options.
 #[derive(Args, Debug)]
 pub struct ConvertArgs {
-    /// Table: polargen CSV (.csv) or JSON (.json), XFOIL polar file (.pol), or a CSV of one
-    /// polar with columns alpha, cl, cd[, cm].
+    /// Table: polargen CSV (.csv) or JSON (.json), XFOIL polar file (.pol), C81 (.c81), or a
+    /// CSV of one polar with columns alpha, cl, cd[, cm].
     #[arg(value_name = "TABLE")]
     pub table: PathBuf,
 
@@ -126,13 +126,26 @@ pub struct ConvertArgs {
     /// Output format: csv, json, xfoil or c81.
     #[arg(long)]
     pub format: Option<String>,
+
+    #[command(flatten)]
+    pub extension: Extension,
+}
+
+/// The 360° extension written into C81 (and AeroDyn) files.
+#[derive(Args, Debug)]
+pub struct Extension {
+    /// Post-stall drag coefficient broadside to the flow (α = ±90°, the flat-plate normal
+    /// force) of the 360° extension (Viterna–Corrigan, then a flat plate); default 2.0
+    /// (Hoerner's 2-D plate); for a finite blade Viterna–Corrigan give 1.11 + 0.018·AR.
+    #[arg(long, value_name = "CD", allow_hyphen_values = true)]
+    pub cd_max: Option<f64>,
 }
 
 /// `polargen plot` options.
 #[derive(Args, Debug)]
 pub struct PlotArgs {
-    /// Tables: polargen CSV (.csv) or JSON (.json), XFOIL polar files (.pol), or CSVs of one
-    /// polar with columns alpha, cl, cd[, cm].
+    /// Tables: polargen CSV (.csv) or JSON (.json), XFOIL polar files (.pol), C81 (.c81), or
+    /// CSVs of one polar with columns alpha, cl, cd[, cm].
     #[arg(required = true, value_name = "TABLE")]
     pub tables: Vec<PathBuf>,
 
@@ -217,6 +230,9 @@ pub struct RunArgs {
     /// Output file; standard output when absent or - (csv and json only).
     #[arg(long, value_name = "FILE|-")]
     pub out: Option<PathBuf>,
+
+    #[command(flatten)]
+    pub extension: Extension,
 }
 
 /// The Newton threshold of the viscous solver.

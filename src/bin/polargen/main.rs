@@ -36,8 +36,8 @@ use polargen::plot::{check_image_path, render};
 use polargen::polar::{parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams};
 use polargen::section::{FlowCondition, PolarPoint};
 use polargen::table::{
-    build_table, read_table, write_table, GridSpec, TableFormat, DEFAULT_ALPHA, DEFAULT_MACH,
-    DEFAULT_RE,
+    build_table, read_table, with_cd_max, write_table, GridSpec, TableFormat, DEFAULT_ALPHA,
+    DEFAULT_MACH, DEFAULT_RE,
 };
 use polargen::viscous::distributions::write_distributions_csv;
 use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};
@@ -269,6 +269,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     if converged == 0 {
         bail!("no point converged; no table written");
     }
+    let table = with_cd_max(table, cli.extension.cd_max).context("--cd-max")?;
     let path = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
     let files = write_table(&table, path, Some(format))?;
     if files.len() > 1 {
@@ -347,7 +348,7 @@ fn convert_table(args: &ConvertArgs) -> Result<()> {
     check_out(&args.out)?;
     let format = TableFormat::for_output(args.format.as_deref(), Some(&args.out))
         .context("--format/--out")?;
-    let table = read_table(&args.table)?;
+    let table = with_cd_max(read_table(&args.table)?, args.extension.cd_max).context("--cd-max")?;
     let files = write_table(&table, &args.out, Some(format))?;
     if files.len() > 1 {
         TOOL.say(format!("wrote {} files", files.len()));

@@ -1,5 +1,6 @@
 //! Table files: CSV and JSON (written and read back exactly), XFOIL polar text (written, and
-//! read as a one-polar table), C81 (written) and single-polar CSV (read). [`read_table`] is the
+//! read as a one-polar table), C81 (written, and read as a one-Re table) and single-polar CSV
+//! (read). [`read_table`] is the
 //! one reader: it reads a file once and recognises its layout.
 //! Every writer goes through [`write_output`](crate::output::write_output), so a failure
 //! never leaves half a file and missing folders are created.
@@ -14,7 +15,7 @@ use crate::input::read_input;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
-pub use self::c81::{write_c81, C81Options};
+pub use self::c81::{parse_c81, write_c81, C81Options};
 
 /// A table file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -25,7 +26,7 @@ pub enum TableFormat {
     Json,
     /// XFOIL polar text, one file per (Re, M) (`.pol`); readable as a one-polar table.
     XfoilPolar,
-    /// C81 rotorcraft airfoil table, one file per Re (`.c81`).
+    /// C81 rotorcraft airfoil table, one file per Re (`.c81`); readable as a one-Re table.
     C81,
 }
 
@@ -109,14 +110,12 @@ pub fn write_table(
 }
 
 /// Read a table file, once, recognising its layout from its extension and first line: a polargen CSV or
-/// JSON table, an XFOIL polar file (a one-polar table), or a single-polar CSV with columns
+/// JSON table, an XFOIL polar file (a one-polar table), a C81 file (a one-Re table), or a
+/// single-polar CSV with columns
 /// `alpha, cl, cd[, cdp, cm, xtr_top, xtr_bot]` such as the XFOIL reference polars (a
 /// one-polar table at the Re and M of a file name like `…_Re1.9e6_M0.41_…`, else Re 10⁶,
 /// M 0). Every error names the file.
 pub fn read_table(path: &Path) -> Result<PolarTable, TableError> {
-    if let Ok(TableFormat::C81) = TableFormat::from_path(path) {
-        return Err(TableError::NotReadable("C81"));
-    }
     let bytes = read_input(path).map_err(TableError::Input)?;
     // Name the file, unless the error already does.
     let in_file = |source: TableError| {
@@ -134,13 +133,13 @@ pub fn read_table(path: &Path) -> Result<PolarTable, TableError> {
     parse_layout(&bytes, layout, stem).map_err(in_file)
 }
 
-/// Parse a table held in memory in `format` (CSV is polargen's long form; C81 has no reader).
+/// Parse a table held in memory in `format` (CSV is polargen's long form).
 pub fn parse_table(bytes: &[u8], format: TableFormat) -> Result<PolarTable, TableError> {
     let layout = match format {
         TableFormat::Csv => Layout::Csv,
         TableFormat::Json => Layout::Json,
         TableFormat::XfoilPolar => Layout::XfoilPolar,
-        TableFormat::C81 => return Err(TableError::NotReadable("C81")),
+        TableFormat::C81 => Layout::C81,
     };
     parse_layout(bytes, layout, "")
 }
@@ -154,6 +153,19 @@ fn parse_layout(bytes: &[u8], layout: Layout, stem: &str) -> Result<PolarTable, 
         Layout::PolarCsv => csv::parse_polar_csv(bytes, stem),
         Layout::Json => json::parse_json(text()?),
         Layout::XfoilPolar => xfoil_polar::parse_xfoil_polar(text()?),
+        Layout::C81 => c81::parse_c81(text()?, stem),
+    }
+}
+
+/// `table` with the post-stall drag coefficient `cd_max` (broadside, α = ±90°) of its 360°
+/// extension, when given (the extension C81 and AeroDyn files carry).
+pub fn with_cd_max(table: PolarTable, cd_max: Option<f64>) -> Result<PolarTable, TableError> {
+    match cd_max {
+        Some(cd_max) => {
+            let params = *table.post_stall_params();
+            table.with_post_stall(super::PostStallParams { cd_max, ..params })
+        }
+        None => Ok(table),
     }
 }
 
@@ -179,6 +191,8 @@ enum Layout {
     Json,
     /// XFOIL's polar-file text.
     XfoilPolar,
+    /// C81 text.
+    C81,
 }
 
 impl Layout {
@@ -215,7 +229,7 @@ impl Layout {
             Ok(TableFormat::Csv) => csv.map_or_else(neither, Ok),
             Ok(TableFormat::Json) => Ok(Self::Json),
             Ok(TableFormat::XfoilPolar) => Ok(Self::XfoilPolar),
-            Ok(TableFormat::C81) => Err(TableError::NotReadable("C81")),
+            Ok(TableFormat::C81) => Ok(Self::C81),
             Err(unknown) => {
                 if first.starts_with('{') {
                     Ok(Self::Json)
