@@ -274,7 +274,7 @@ fn errors_name_the_flag() {
         (&["--format", "xls"], "xls"),
         (
             &["--format", "c81"],
-            "c81 writes one file per polar or per Re: give a file name",
+            "c81 writes one file per Re: give a file name",
         ),
         (&["--out", "/tmp/x.unknown"], "x.unknown"),
         (&["--threads", "x"], "--threads"),

@@ -32,7 +32,7 @@ pub enum Command {
     /// Cl–α, Cd–Cl, Cl/Cd–α, Cm–α; SVG or PNG by the extension of --out.
     Plot(PlotArgs),
     /// Convert a table (polargen CSV or JSON, XFOIL .pol, C81, single-polar CSV) to another
-    /// format: csv, json, xfoil or c81.
+    /// format: csv, json, xfoil, c81 or aerodyn.
     Convert(ConvertArgs),
     /// Cp(x) and boundary-layer distributions (H, Cf, N) at one α or Cl, one case per
     /// transition setting overlaid (e.g. --xtr 1,0.07: clean vs tripped).
@@ -123,7 +123,10 @@ pub struct ConvertArgs {
     #[arg(long, value_name = "FILE|-")]
     pub out: PathBuf,
 
-    /// Output format: csv, json, xfoil or c81.
+    /// Output format: csv, json, xfoil, c81 or aerodyn (OpenFAST AirfoilInfo file, one
+    /// table per Re, one file per Mach number, InclUAdata False: OpenFAST then derives the
+    /// unsteady-aero parameters from the table itself; UA is switched off only by UA_Mod = 0
+    /// in the AeroDyn input file).
     #[arg(long)]
     pub format: Option<String>,
 
@@ -222,8 +225,10 @@ pub struct RunArgs {
     #[arg(long, default_value_t = 0, allow_hyphen_values = true)]
     pub threads: usize,
 
-    /// Output format: csv, json, xfoil (one .pol per Re, M) or c81 (one file per Re);
-    /// default: from --out's extension, else csv.
+    /// Output format: csv, json, xfoil (one .pol per Re, M), c81 (one file per Re) or
+    /// aerodyn (OpenFAST AirfoilInfo file, one file per Mach number, a table per Re,
+    /// InclUAdata False: OpenFAST derives the unsteady-aero parameters from the table; see
+    /// convert --help); default: from --out's extension, else csv.
     #[arg(long)]
     pub format: Option<String>,
 

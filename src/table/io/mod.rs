@@ -1,10 +1,11 @@
 //! Table files: CSV and JSON (written and read back exactly), XFOIL polar text (written, and
 //! read as a one-polar table), C81 (written, and read as a one-Re table) and single-polar CSV
-//! (read). [`read_table`] is the
+//! (read), and OpenFAST AeroDyn airfoil files (written). [`read_table`] is the
 //! one reader: it reads a file once and recognises its layout.
 //! Every writer goes through [`write_output`](crate::output::write_output), so a failure
 //! never leaves half a file and missing folders are created.
 
+mod aerodyn;
 mod c81;
 mod csv;
 mod json;
@@ -15,6 +16,7 @@ use crate::input::read_input;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
+pub use self::aerodyn::write_aerodyn;
 pub use self::c81::{parse_c81, write_c81, C81Options};
 
 /// A table file format.
@@ -28,6 +30,9 @@ pub enum TableFormat {
     XfoilPolar,
     /// C81 rotorcraft airfoil table, one file per Re (`.c81`); readable as a one-Re table.
     C81,
+    /// OpenFAST AeroDyn airfoil file, one table per Re, one file per Mach number (chosen
+    /// with `--format aerodyn`; written only).
+    AeroDyn,
 }
 
 impl TableFormat {
@@ -57,8 +62,17 @@ impl TableFormat {
             (None, Some(path)) if !stdout => Self::from_path(path)?,
             (None, _) => Self::Csv,
         };
-        if stdout && matches!(chosen, Self::XfoilPolar | Self::C81) {
-            return Err(TableError::NeedsFile(chosen.name()));
+        let per = match chosen {
+            Self::XfoilPolar => Some("polar"),
+            Self::C81 => Some("Re"),
+            Self::AeroDyn => Some("Mach number"),
+            Self::Csv | Self::Json => None,
+        };
+        if let (true, Some(per)) = (stdout, per) {
+            return Err(TableError::NeedsFile {
+                format: chosen.name(),
+                per,
+            });
         }
         Ok(chosen)
     }
@@ -70,6 +84,7 @@ impl TableFormat {
             Self::Json => "json",
             Self::XfoilPolar => "xfoil",
             Self::C81 => "c81",
+            Self::AeroDyn => "aerodyn",
         }
     }
 }
@@ -84,6 +99,7 @@ impl FromStr for TableFormat {
             "json" => Ok(Self::Json),
             "xfoil" | "pol" | "polar" => Ok(Self::XfoilPolar),
             "c81" => Ok(Self::C81),
+            "aerodyn" => Ok(Self::AeroDyn),
             _ => Err(TableError::UnknownFormat(s.to_string())),
         }
     }
@@ -106,6 +122,7 @@ pub fn write_table(
         TableFormat::Json => json::write_json(table, path).map(|()| vec![path.to_path_buf()]),
         TableFormat::XfoilPolar => xfoil_polar::write_xfoil_polars(table, path),
         TableFormat::C81 => c81::write_c81(table, path, &C81Options::default()),
+        TableFormat::AeroDyn => aerodyn::write_aerodyn(table, path),
     }
 }
 
@@ -140,6 +157,7 @@ pub fn parse_table(bytes: &[u8], format: TableFormat) -> Result<PolarTable, Tabl
         TableFormat::Json => Layout::Json,
         TableFormat::XfoilPolar => Layout::XfoilPolar,
         TableFormat::C81 => Layout::C81,
+        TableFormat::AeroDyn => return Err(TableError::NotReadable("AeroDyn")),
     };
     parse_layout(bytes, layout, "")
 }
@@ -230,6 +248,7 @@ impl Layout {
             Ok(TableFormat::Json) => Ok(Self::Json),
             Ok(TableFormat::XfoilPolar) => Ok(Self::XfoilPolar),
             Ok(TableFormat::C81) => Ok(Self::C81),
+            Ok(TableFormat::AeroDyn) => Err(TableError::NotReadable("AeroDyn")),
             Err(unknown) => {
                 if first.starts_with('{') {
                     Ok(Self::Json)
