@@ -48,7 +48,8 @@ pub struct PolarPoint {
     pub cdf: f64,
     /// Pitching-moment coefficient about the quarter chord.
     pub cm: f64,
-    /// Transition location x/c on the upper surface (1 if laminar to the TE).
+    /// Transition location x/c on the upper surface (1 if laminar to the TE; NaN when a file
+    /// read does not give it, as C81).
     pub xtr_top: f64,
     /// Transition location x/c on the lower surface.
     pub xtr_bot: f64,

@@ -108,8 +108,9 @@ pub(super) fn check_polar(re: f64, mach: f64, polar: &mut [PolarPoint]) -> Resul
                     cd: p.cd,
                 });
             }
+            // NaN: unknown (a C81 file carries no transition locations).
             for (field, value) in [("xtr_top", p.xtr_top), ("xtr_bot", p.xtr_bot)] {
-                if !(0.0..=1.0).contains(&value) {
+                if !(value.is_nan() || (0.0..=1.0).contains(&value)) {
                     return Err(TableError::TransitionRange {
                         field,
                         value,
