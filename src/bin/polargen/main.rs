@@ -27,9 +27,7 @@ use polargen::arguments;
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, CHORD_UNITS_TOLERANCE};
 use polargen::inviscid::PanelSystem;
 use polargen::limits::{short_number, short_text, MAX_GRID_POINTS};
-use polargen::output::{
-    check_output_path, fixed_decimals, write_output, OutputError, STDOUT_PATH,
-};
+use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title};
 use polargen::plot::polar_plots::{compact_number, overlay_title, polar_figure, transition_label};
 use polargen::plot::{check_image_path, render};
