@@ -41,13 +41,16 @@ pub struct PolarPoint {
     pub cl: f64,
     /// Total drag coefficient (Squire–Young at the wake end; 0 for inviscid).
     pub cd: f64,
-    /// Pressure drag coefficient, cd − cdf.
+    /// Pressure (form) drag coefficient CD − CDf: the `CDp` XFOIL prints after each viscous
+    /// solution, not the surface pressure integral in XFOIL's polar-file `CDp` column (a
+    /// table read from an XFOIL file keeps that file's value).
     pub cdp: f64,
-    /// Skin-friction drag coefficient.
+    /// Skin-friction drag coefficient (NaN when a file read does not give it).
     pub cdf: f64,
     /// Pitching-moment coefficient about the quarter chord.
     pub cm: f64,
-    /// Transition location x/c on the upper surface (1 if laminar to the TE).
+    /// Transition location x/c on the upper surface (1 if laminar to the TE; NaN when a file
+    /// read does not give it, as C81).
     pub xtr_top: f64,
     /// Transition location x/c on the lower surface.
     pub xtr_bot: f64,

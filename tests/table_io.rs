@@ -181,17 +181,13 @@ fn format_inference_and_names() {
     assert_eq!("C81".parse::<TableFormat>().unwrap(), TableFormat::C81);
     assert_eq!(
         "xls".parse::<TableFormat>().unwrap_err().to_string(),
-        "unknown table format 'xls' (expected csv, json, xfoil or c81)"
+        "unknown table format 'xls' (expected csv, json, xfoil, c81 or aerodyn)"
     );
     // An explicit format overrides the extension.
     let dir = scratch("explicit");
     let path = dir.join("table.txt");
     write_table(&analytic_table(), &path, Some(TableFormat::Json)).unwrap();
     assert!(parse_table(&std::fs::read(&path).unwrap(), TableFormat::Json).is_ok());
-    assert_eq!(
-        read_table(&dir.join("x.c81")).unwrap_err().to_string(),
-        "C81 files cannot be read back as tables (only CSV, JSON and XFOIL polar)"
-    );
     std::fs::remove_dir_all(dir).unwrap();
 }
 
@@ -498,7 +494,9 @@ fn xfoil_polar_reader_handles_extra_columns_and_repeats() {
     let alphas: Vec<f64> = p.iter().map(|p| p.alpha).collect();
     assert_eq!(alphas, vec![-2.0, 0.0, 2.0]);
     assert_eq!((p[2].cl, p[2].cm, p[2].xtr_top), (0.47, -0.051, 0.5));
-    assert!((p[2].cdf - 0.0053).abs() < 1e-15);
+    // XFOIL's CDp column is its pressure integral, not CD − CDf: CDf is unknown.
+    assert_eq!(p[2].cdp, 0.0012);
+    assert!(p[2].cdf.is_nan());
     let broken = text.replace("Ncrit =   5.000", "");
     assert_eq!(
         parse_table(broken.as_bytes(), TableFormat::XfoilPolar)
@@ -545,5 +543,32 @@ fn output_does_not_depend_on_polar_order() {
             );
         }
     }
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// polargen's `.pol` files carry XFOIL's `Version` word (so `PGET` shows the code's version)
+/// and its printed CDp = CD − CDf, so reading one back restores cdf.
+#[test]
+fn own_xfoil_polars_carry_a_version_and_cd_minus_cdf() {
+    let dir = scratch("pol-version");
+    let mut m = meta("foil");
+    m.solver = "polargen 0.1.0".to_string();
+    let alphas = alpha_range(-2.0, 4.0, 1.0);
+    let t = PolarTable::new(
+        m,
+        vec![1e6],
+        vec![0.0],
+        vec![analytic_polar(1e6, 0.0, &alphas)],
+    )
+    .unwrap();
+    let path = dir.join("p.pol");
+    write_table(&t, &path, None).unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    let version = text.lines().nth(1).unwrap();
+    assert!(version.starts_with("       polargen 0.1.0") && version.ends_with("Version 0.1"));
+    let back = read_table(&path).unwrap();
+    assert_eq!(back.meta().solver, "polargen 0.1.0");
+    let p = &back.polar(1e6, 0.0).unwrap()[0];
+    assert!((p.cdf - (p.cd - p.cdp)).abs() < 1e-12);
     std::fs::remove_dir_all(dir).unwrap();
 }

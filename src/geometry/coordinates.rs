@@ -12,7 +12,7 @@ use std::path::Path;
 use super::error::GeometryError;
 use super::validation::{signed_area, validate_contour};
 use super::Airfoil;
-use crate::input::{read_input, text_lines};
+use crate::input::{read_input_or_stdin, text_lines, STDIN_PATH};
 use crate::limits::MAX_CONTOUR_POINTS;
 
 /// Layout of a coordinate file.
@@ -84,14 +84,16 @@ fn looks_like_pair(tokens: &[&str]) -> bool {
         })
 }
 
-/// Reads and parses an airfoil coordinate file (any supported format).
+/// Reads and parses an airfoil coordinate file (any supported format), or standard input
+/// when `path` is `-` (an airfoil without a name line is then called `stdin`).
 pub fn read_airfoil_file(path: &Path) -> Result<Airfoil, GeometryError> {
     let file = path.display().to_string();
-    let bytes = read_input(path).map_err(GeometryError::Input)?;
-    let fallback = path
-        .file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_else(|| file.clone());
+    let bytes = read_input_or_stdin(path).map_err(GeometryError::Input)?;
+    let fallback = match path.file_stem() {
+        _ if path.as_os_str() == STDIN_PATH => "stdin".to_string(),
+        Some(s) => s.to_string_lossy().into_owned(),
+        None => file.clone(),
+    };
     parse_airfoil_bytes(&bytes, &file, &fallback).map(|(a, _)| a)
 }
 

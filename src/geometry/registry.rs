@@ -31,6 +31,7 @@ pub fn airfoil_key(name: &str) -> String {
 /// * `naca8h12` (also `NACA 8-H-12`, any case) → embedded 8-H-12 ordinates;
 /// * `nacaDDDD` / `nacaDDDDD` / `NACA 2412` (any case, spaces allowed) → NACA generator with
 ///   XFOIL's conventions ([`NacaOptions::default`]), e.g. `naca23012`;
+/// * `-` → coordinates read from standard input (the same capped reader);
 /// * otherwise an existing path → coordinate-file reader ([`crate::input`]: a device, FIFO or
 ///   broken link is named as such).
 ///
@@ -44,6 +45,9 @@ pub fn airfoil_by_name_or_path(s: &str) -> Result<Airfoil, GeometryError> {
         return naca8h12();
     }
     let path = Path::new(trimmed);
+    if trimmed == crate::input::STDIN_PATH {
+        return read_airfoil_file(path);
+    }
     if let Some(digits) = key.strip_prefix("naca") {
         if !digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit()) && !path.is_file() {
             return naca(digits, &NacaOptions::default()).map_err(|e| match e {

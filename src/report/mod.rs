@@ -22,7 +22,10 @@ macro_rules! outln {
 mod fidelity;
 mod figures;
 mod markdown;
+mod shipped;
 mod words;
+
+pub use shipped::{SHIPPED_AIRCRAFT, SHIPPED_POLARS};
 
 use crate::geometry::airfoil_key;
 use crate::output::{check_output_path, OutputError, OutputSet};
@@ -37,7 +40,7 @@ use crate::rotor::study::{
 use crate::rotor::{
     sweep_speeds, Aircraft, AircraftError, Powerplant, PropellerError, TakeoffResult, TrimResult,
 };
-use crate::table::{alpha_at_cl, read_lookup_table, LiftMatch, PolarTable, TableError};
+use crate::table::{alpha_at_cl, LiftMatch, PolarTable, TableError};
 use fidelity::PropellerFacts;
 use std::path::{Path, PathBuf};
 
@@ -71,10 +74,11 @@ const REPORT_README: &str = "README.md";
 /// Where the report reads from and writes to.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ReportInputs {
-    /// Aircraft preset (TOML).
+    /// Aircraft preset (TOML); the built-in copy when it is [`SHIPPED_AIRCRAFT`] and absent.
     pub aircraft: PathBuf,
     /// Folder holding `naca8h12_free.csv`, `naca8h12_xtr0.07.csv`, `naca23012_free.csv` and
-    /// `naca23012_xtr0.07.csv` (the shipped default-grid tables).
+    /// `naca23012_xtr0.07.csv` (the shipped default-grid tables); built-in copies when it is
+    /// [`SHIPPED_POLARS`] and they are absent.
     pub polars: PathBuf,
     /// Output folder (created if missing): `README.md` and the figures.
     pub out: PathBuf,
@@ -169,7 +173,7 @@ struct RotorResults {
 /// Writes the report (see the module documentation) after [`check_report_paths`].
 pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError> {
     check_report_paths(&inputs.out)?;
-    let ac = Aircraft::from_toml_file(&inputs.aircraft)?;
+    let ac = shipped::aircraft(&inputs.aircraft)?;
     let foils = TABLE5
         .iter()
         .map(|row| load_foil(&inputs.polars, row))
@@ -286,7 +290,7 @@ fn check_table_case(
 /// Reads the free and fixed-transition tables of one airfoil and looks up Table 5.
 fn load_foil(dir: &Path, row: &'static Table5Row) -> Result<FoilTables, ReportError> {
     let paths = TRANSITIONS.map(|t| dir.join(format!("{}_{t}.csv", row.stem)));
-    let [free, fixed] = [read_lookup_table(&paths[0])?, read_lookup_table(&paths[1])?];
+    let [free, fixed] = [shipped::table(&paths[0])?, shipped::table(&paths[1])?];
     for ((table, path), xtr) in [&free, &fixed].iter().zip(&paths).zip(TRANSITION_XTR) {
         check_table_case(table, path, row.stem, xtr)?;
     }

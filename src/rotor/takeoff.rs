@@ -311,6 +311,10 @@ pub fn simulate_takeoff<S: SectionAero + ?Sized>(
         rpm_to_rad_s(to.prerotation_rpm),
         to.head_angle_max_deg.to_radians(),
     ];
+    // Time as step × dt rounded to 1e-9 s (not a running sum, whose round-off would show in
+    // the history file as 15.559999999999757).
+    let time_at = |step: u32| (f64::from(step) * dt * 1e9).round() / 1e9;
+    let mut step: u32 = 0;
     let mut t = 0.0;
     let mut airborne = false;
     let mut history = Vec::new();
@@ -331,8 +335,9 @@ pub fn simulate_takeoff<S: SectionAero + ?Sized>(
             let x15 = y[0] + frac * (next[0] - y[0]);
             let t15 = t + frac * dt;
             let v15 = y[2].hypot(y[3]) + frac * (next[2].hypot(next[3]) - y[2].hypot(y[3]));
-            let s_end = model.rotor_at(t + dt, &next)?;
-            history.push(sample(t + dt, &next, &s_end));
+            let t_next = time_at(step + 1);
+            let s_end = model.rotor_at(t_next, &next)?;
+            history.push(sample(t_next, &next, &s_end));
             beta_max = beta_max.max(s_end.teeter.amplitude().to_degrees());
             let (x_to, t_to, v_to, omega_to) = liftoff.unwrap_or((x15, t15, v15, next[4]));
             return Ok(TakeoffResult {
@@ -349,7 +354,8 @@ pub fn simulate_takeoff<S: SectionAero + ?Sized>(
             });
         }
         y = next;
-        t += dt;
+        step += 1;
+        t = time_at(step);
     }
     Err(TakeoffError::NotReached {
         height_m: to.screen_height_m,

@@ -226,11 +226,27 @@ pub enum TableError {
     #[error("cannot infer table format from '{0}' (use .csv, .json, .pol or .c81)")]
     UnknownExtension(String),
     /// An explicit format name is not known.
-    #[error("unknown table format '{0}' (expected csv, json, xfoil or c81)")]
+    #[error("unknown table format '{0}' (expected csv, json, xfoil, c81 or aerodyn)")]
     UnknownFormat(String),
-    /// The format has no reader.
-    #[error("{0} files cannot be read back as tables (only CSV, JSON and XFOIL polar)")]
+    /// A format that writes several files was asked to write to standard output.
+    #[error("{format} writes one file per {per}: give a file name, not standard output")]
+    NeedsFile {
+        /// The format's command-line name.
+        format: &'static str,
+        /// What each file holds (`polar`, `Re`, `Mach number`).
+        per: &'static str,
+    },
+    /// A format that is written but not read.
+    #[error("{0} files are written only, not read back as tables")]
     NotReadable(&'static str),
+    /// A C81 file does not follow the format.
+    #[error("C81 line {line}: {message}")]
+    C81 {
+        /// Line number (1-based).
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
     /// A C81 table would exceed the format's 2-digit counts.
     #[error("C81 table needs {count} {what} but the format allows at most 99")]
     C81TooLarge {

@@ -85,7 +85,8 @@ pub use error::TableError;
 pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
 pub use grid::{PolarTable, TableMeta};
 pub use io::{
-    parse_table, read_lookup_table, read_table, write_c81, write_table, C81Options, TableFormat,
+    parse_c81, parse_table, read_lookup_table, read_table, with_cd_max, write_aerodyn, write_c81,
+    write_table, C81Options, TableFormat,
 };
 pub use post_stall::PostStallParams;
 pub use validation::{COEFFICIENT_BOUNDS, MAX_RE};

@@ -114,8 +114,9 @@ pub(super) fn check_polar(re: f64, mach: f64, polar: &mut [PolarPoint]) -> Resul
                     cd: p.cd,
                 });
             }
+            // NaN: unknown (a C81 file carries no transition locations).
             for (field, value) in [("xtr_top", p.xtr_top), ("xtr_bot", p.xtr_bot)] {
-                if !(-XTR_SLACK..=1.0 + XTR_SLACK).contains(&value) {
+                if !(value.is_nan() || (-XTR_SLACK..=1.0 + XTR_SLACK).contains(&value)) {
                     return Err(TableError::TransitionRange {
                         field,
                         value,

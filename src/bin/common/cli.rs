@@ -1,29 +1,59 @@
 //! What both command-line tools share (included by `polargen` and `gyro` with `#[path]`):
-//! clap errors and run errors as one line on stderr with the tool's prefix, exit codes (a
-//! closed standard output ends a run quietly), notes, and the Markdown command-line reference
-//! generated from the clap definitions (`docs/cli/<tool>.md`, checked by each tool's tests).
+//! one error and exit-code convention, notes, `--quiet`, shell completions and man pages, and
+//! the Markdown command-line reference generated from the clap definitions
+//! (`docs/cli/<tool>.md`, checked by each tool's tests).
+//!
+//! The convention (docs/cli/README.md): every error is one line `<tool>: error: <message>` on
+//! stderr; exit status 0 on success (also when the reader of standard output closed it early,
+//! `… | head`), 1 when a run failed, 2 for a command-line usage error (unknown flag, bad
+//! value, missing subcommand: then the help of the command is printed). Notes and progress
+//! lines are `<tool>: <text>` on stderr and `--quiet` silences them.
 
 use polargen::diagnostics::error_line;
 use std::fmt::Display;
 use std::process::ExitCode;
+use std::sync::OnceLock;
 
-/// A command-line tool: its name and the prefix of its error lines.
+/// Whether `--quiet` was given: set once, right after parsing, read by [`Tool::say`].
+static QUIET: OnceLock<bool> = OnceLock::new();
+
+/// Exit status of a command-line usage error.
+const USAGE_ERROR: u8 = 2;
+
+/// A command-line tool: its name, the prefix of every line it writes to stderr.
 pub struct Tool {
-    /// Program name, the prefix of every line it writes to stderr.
+    /// Program name.
     pub name: &'static str,
-    /// Prefix of a failed run's error line.
-    pub error_prefix: &'static str,
+}
+
+/// The shell of `completions SHELL` and the man page (shared by both tools).
+#[derive(clap::Args, Debug)]
+pub struct CompletionsArgs {
+    /// Shell to write the completion script for.
+    #[arg(value_enum)]
+    pub shell: clap_complete::Shell,
 }
 
 impl Tool {
-    /// Parses the command line. Help and version go to stdout (exit 0); any other clap error
-    /// becomes one line `<name>: <message>` on stderr without the usage block (exit 2).
-    pub fn parse<P: clap::Parser>(&self) -> Result<P, ExitCode> {
+    /// Parses the command line. Help and version go to stdout (exit 0); a missing subcommand
+    /// prints the help to stderr (exit 2); any other clap error becomes one line
+    /// `<name>: error: <message>` on stderr without the usage block (exit 2). `quiet` reads
+    /// the parsed `--quiet` flag.
+    pub fn parse<P: clap::Parser>(&self, quiet: impl Fn(&P) -> bool) -> Result<P, ExitCode> {
         match P::try_parse() {
-            Ok(p) => Ok(p),
+            Ok(p) => {
+                let _ = QUIET.set(quiet(&p));
+                Ok(p)
+            }
             Err(e) if !e.use_stderr() => {
                 let _ = e.print();
                 Err(ExitCode::SUCCESS)
+            }
+            Err(e)
+                if e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand =>
+            {
+                let _ = e.print();
+                Err(ExitCode::from(USAGE_ERROR))
             }
             Err(e) => {
                 let text = e.render().to_string();
@@ -33,12 +63,8 @@ impl Tool {
                     .map(str::trim)
                     .filter(|l| !l.is_empty())
                     .collect();
-                eprintln!(
-                    "{}: {}",
-                    self.name,
-                    message.join(" ").trim_start_matches("error: ")
-                );
-                Err(ExitCode::from(2))
+                self.error(message.join(" ").trim_start_matches("error: "));
+                Err(ExitCode::from(USAGE_ERROR))
             }
         }
     }
@@ -50,16 +76,38 @@ impl Tool {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) if closed_pipe(&e) => ExitCode::SUCCESS,
             Err(e) => {
-                eprintln!("{}{}", self.error_prefix, error_line(e.as_ref()));
+                self.error(error_line(e.as_ref()));
                 ExitCode::FAILURE
             }
         }
     }
 
-    /// A line on stderr: `<name>: <text>`.
-    pub fn say(&self, text: impl Display) {
-        eprintln!("{}: {text}", self.name);
+    /// The error line `<name>: error: <text>` on stderr.
+    fn error(&self, text: impl Display) {
+        eprintln!("{}: error: {text}", self.name);
     }
+
+    /// A line on stderr, `<name>: <text>`, unless `--quiet` was given.
+    pub fn say(&self, text: impl Display) {
+        if !QUIET.get().copied().unwrap_or(false) {
+            eprintln!("{}: {text}", self.name);
+        }
+    }
+}
+
+/// The completion script of `cmd` for `shell`.
+pub fn completions(mut cmd: clap::Command, shell: clap_complete::Shell) -> Vec<u8> {
+    let name = cmd.get_name().to_string();
+    let mut out = Vec::new();
+    clap_complete::generate(shell, &mut cmd, name, &mut out);
+    out
+}
+
+/// The man page (roff) of `cmd`, its subcommands listed.
+pub fn man_page(cmd: clap::Command) -> std::io::Result<Vec<u8>> {
+    let mut out = Vec::new();
+    clap_mangen::Man::new(cmd).render(&mut out)?;
+    Ok(out)
 }
 
 /// Whether `e` comes from writing into a pipe whose reader has gone.

@@ -9,11 +9,13 @@ mod plot;
 mod print;
 
 use anyhow::{bail, Context, Result};
-use clap::{Args, Parser, Subcommand};
+use clap::{Args, CommandFactory, Parser, Subcommand};
 use cli::Tool;
 use polargen::limits::{short_number, AZIMUTH_SAMPLES, MAX_SWEEP_CELL_SPEEDS, MAX_SWEEP_SPEEDS};
 use polargen::output::{check_output_path, write_output, OutputError};
-use polargen::report::{check_report_paths, write_report, ReportInputs};
+use polargen::report::{
+    check_report_paths, write_report, ReportInputs, SHIPPED_AIRCRAFT, SHIPPED_POLARS,
+};
 use polargen::rotor::study::{paper_runs, SpeedSweep};
 use polargen::rotor::{
     check_altitude_m, check_mass_kg, check_speed_kt, cruise_blade_alpha, simulate_takeoff,
@@ -24,10 +26,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// This tool's name and error prefix.
-const TOOL: Tool = Tool {
-    name: "gyro",
-    error_prefix: "gyro: ",
-};
+const TOOL: Tool = Tool { name: "gyro" };
 
 /// Appends one formatted line to an output `String` (writing to a `String` cannot fail).
 macro_rules! outln {
@@ -45,11 +44,16 @@ pub(crate) use outln;
 #[command(
     name = "gyro",
     version,
-    about = "Gyroplane rotor strip model driven by airfoil polar tables"
+    about = "Gyroplane rotor strip model driven by airfoil polar tables",
+    arg_required_else_help = true
 )]
 struct Cli {
     #[command(subcommand)]
     command: Command,
+
+    /// No notes on stderr (errors are still printed).
+    #[arg(long, short, global = true)]
+    quiet: bool,
 }
 
 #[derive(Subcommand)]
@@ -90,10 +94,10 @@ enum Command {
         /// Aircraft preset (TOML).
         #[arg(long)]
         aircraft: PathBuf,
-        /// Table of the clean blade section.
+        /// Table of the clean blade section (any format --table reads).
         #[arg(long)]
         clean: PathBuf,
-        /// Table of the contaminated blade section.
+        /// Table of the contaminated blade section (any format --table reads).
         #[arg(long)]
         contaminated: PathBuf,
         /// Print JSON instead of text.
@@ -128,12 +132,18 @@ enum Command {
         samples: usize,
     },
     /// Rotor figures, clean vs contaminated, to SVG or PNG: alpha, takeoff or power.
+    #[command(arg_required_else_help = true)]
     Plot {
         #[command(subcommand)]
         kind: plot::PlotKind,
     },
     /// The paper report: flight test, Tables 3–5, sensitivity and all figures, in one folder.
     Report(ReportArgs),
+    /// Shell completion script on standard output (e.g. `gyro completions bash >
+    /// ~/.local/share/bash-completion/completions/gyro`).
+    Completions(cli::CompletionsArgs),
+    /// Man page (roff) on standard output (`gyro man > gyro.1; man ./gyro.1`).
+    Man,
 }
 
 /// The aircraft and the blade section of a single-section command.
@@ -142,7 +152,8 @@ struct Inputs {
     /// Aircraft preset (TOML).
     #[arg(long)]
     aircraft: PathBuf,
-    /// Section polar table (CSV with columns alpha, cl, cd[, cm]).
+    /// Section polar table: polargen CSV or JSON, XFOIL .pol, C81, or a CSV of one polar with
+    /// columns alpha, cl, cd[, cm].
     #[arg(long)]
     table: PathBuf,
 }
@@ -150,12 +161,14 @@ struct Inputs {
 /// `gyro report` options.
 #[derive(Args)]
 pub struct ReportArgs {
-    /// Aircraft preset (TOML).
-    #[arg(long, default_value = "aircraft/mtosport.toml")]
+    /// Aircraft preset (TOML); the default is built in, used when no such file exists (so
+    /// the report runs outside the repository).
+    #[arg(long, default_value = SHIPPED_AIRCRAFT)]
     aircraft: PathBuf,
     /// Folder holding naca8h12_free.csv, naca8h12_xtr0.07.csv, naca23012_free.csv and
-    /// naca23012_xtr0.07.csv (the shipped default-grid tables).
-    #[arg(long, default_value = "polars")]
+    /// naca23012_xtr0.07.csv; the shipped default-grid tables are built in and used when
+    /// the default folder does not hold them.
+    #[arg(long, default_value = SHIPPED_POLARS)]
     polars: PathBuf,
     /// Output folder (created if missing): README.md and the figures.
     #[arg(long, default_value = "report")]
@@ -382,6 +395,11 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             }
         }
         Command::Plot { kind } => plot::run(kind)?,
+        Command::Completions(args) => {
+            let script = cli::completions(Cli::command(), args.shell);
+            buf.push_str(&String::from_utf8_lossy(&script));
+        }
+        Command::Man => buf.push_str(&String::from_utf8_lossy(&cli::man_page(Cli::command())?)),
         Command::Report(args) => {
             check_report_paths(&args.out).context("--out")?;
             let outcome = write_report(&ReportInputs {
@@ -402,7 +420,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
 
 fn main() -> ExitCode {
     polargen::output::remove_staged_files_on_signals();
-    let cli = match TOOL.parse::<Cli>() {
+    let cli = match TOOL.parse(|c: &Cli| c.quiet) {
         Ok(cli) => cli,
         Err(code) => return code,
     };
@@ -420,7 +438,7 @@ fn main() -> ExitCode {
 
 #[cfg(test)]
 mod tests {
-    use clap::CommandFactory;
+    use clap::CommandFactory as _;
 
     #[test]
     fn cli_reference_is_current() {

@@ -49,7 +49,8 @@ pub struct CaseArgs {
     /// Aircraft preset (TOML).
     #[arg(long)]
     aircraft: PathBuf,
-    /// Polar table of the clean blade section.
+    /// Polar table of the clean blade section (polargen CSV or JSON, XFOIL .pol, C81, or a
+    /// CSV of one polar).
     #[arg(long)]
     clean: PathBuf,
     /// Polar table of the contaminated blade section (optional: without it only the clean

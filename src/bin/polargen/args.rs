@@ -17,6 +17,10 @@ pub struct Cli {
     #[command(subcommand)]
     pub command: Option<Command>,
 
+    /// No notes, progress or summary lines on stderr (errors are still printed).
+    #[arg(long, short, global = true)]
+    pub quiet: bool,
+
     #[command(flatten)]
     pub run: RunArgs,
 }
@@ -24,21 +28,28 @@ pub struct Cli {
 /// Subcommands besides the main job (computing polars and tables).
 #[derive(Subcommand, Debug)]
 pub enum Command {
-    /// Overlay polars from tables (CSV or JSON): Cl–α, Cd–Cl, Cl/Cd–α, Cm–α; SVG or PNG by
-    /// the extension of --out.
+    /// Overlay polars from tables (polargen CSV or JSON, XFOIL .pol, C81, single-polar CSV):
+    /// Cl–α, Cd–Cl, Cl/Cd–α, Cm–α; SVG or PNG by the extension of --out.
     Plot(PlotArgs),
-    /// Convert a table (CSV, JSON or XFOIL polar) to another format: csv, json, xfoil or c81.
+    /// Convert a table (polargen CSV or JSON, XFOIL .pol, C81, single-polar CSV) to another
+    /// format: csv, json, xfoil, c81 or aerodyn.
     Convert(ConvertArgs),
     /// Cp(x) and boundary-layer distributions (H, Cf, N) at one α or Cl, one case per
     /// transition setting overlaid (e.g. --xtr 1,0.07: clean vs tripped).
     PlotPoint(PlotPointArgs),
+    /// Shell completion script on standard output (e.g. `polargen completions bash >
+    /// ~/.local/share/bash-completion/completions/polargen`).
+    Completions(crate::cli::CompletionsArgs),
+    /// Man page (roff) on standard output (`polargen man > polargen.1; man ./polargen.1`).
+    Man,
 }
 
 /// `polargen plot-point` options.
 #[derive(Args, Debug)]
 pub struct PlotPointArgs {
-    /// Airfoil: a name (naca8h12, nacaDDDD, nacaDDDDD) or a coordinate file.
-    #[arg(long, value_name = "NAME|PATH")]
+    /// Airfoil: a name (naca8h12, nacaDDDD, nacaDDDDD), a coordinate file (Selig, Lednicer
+    /// or plain x y) or - for standard input.
+    #[arg(long, value_name = "NAME|PATH|-")]
     pub airfoil: String,
 
     #[command(flatten)]
@@ -101,24 +112,43 @@ pub struct PlotPointArgs {
 /// `polargen convert` options.
 #[derive(Args, Debug)]
 pub struct ConvertArgs {
-    /// Table written by polargen (.csv, .json) or an XFOIL polar file (.pol).
+    /// Table: polargen CSV (.csv) or JSON (.json), XFOIL polar file (.pol), C81 (.c81), or a
+    /// CSV of one polar with columns alpha, cl, cd[, cm].
     #[arg(value_name = "TABLE")]
     pub table: PathBuf,
 
-    /// Output file; the format follows its extension unless --format is given (xfoil and
-    /// c81 may write one file per (Re, M) or per Re, named after it).
-    #[arg(long, value_name = "FILE")]
+    /// Output file, or - for standard output (csv, json); the format follows the extension
+    /// unless --format is given (xfoil and c81 may write one file per (Re, M) or per Re,
+    /// named after it).
+    #[arg(long, value_name = "FILE|-")]
     pub out: PathBuf,
 
-    /// Output format: csv, json, xfoil or c81.
+    /// Output format: csv, json, xfoil, c81 or aerodyn (OpenFAST AirfoilInfo file, one
+    /// table per Re, one file per Mach number, InclUAdata False: OpenFAST then derives the
+    /// unsteady-aero parameters from the table itself; UA is switched off only by UA_Mod = 0
+    /// in the AeroDyn input file).
     #[arg(long)]
     pub format: Option<String>,
+
+    #[command(flatten)]
+    pub extension: Extension,
+}
+
+/// The 360° extension written into C81 (and AeroDyn) files.
+#[derive(Args, Debug)]
+pub struct Extension {
+    /// Post-stall drag coefficient broadside to the flow (α = ±90°, the flat-plate normal
+    /// force) of the 360° extension (Viterna–Corrigan, then a flat plate); default 2.0
+    /// (Hoerner's 2-D plate); for a finite blade Viterna–Corrigan give 1.11 + 0.018·AR.
+    #[arg(long, value_name = "CD", allow_hyphen_values = true)]
+    pub cd_max: Option<f64>,
 }
 
 /// `polargen plot` options.
 #[derive(Args, Debug)]
 pub struct PlotArgs {
-    /// Tables written by polargen (.csv or .json).
+    /// Tables: polargen CSV (.csv) or JSON (.json), XFOIL polar files (.pol), C81 (.c81), or
+    /// CSVs of one polar with columns alpha, cl, cd[, cm].
     #[arg(required = true, value_name = "TABLE")]
     pub tables: Vec<PathBuf>,
 
@@ -142,9 +172,9 @@ pub struct PlotArgs {
 /// Options of the main job: polars and tables.
 #[derive(Args, Debug)]
 pub struct RunArgs {
-    /// Airfoil: naca8h12, naca23012, nacaDDDD, nacaDDDDD, or a coordinate file (Selig,
-    /// Lednicer or plain x y).
-    #[arg(long, value_name = "NAME|PATH", required = true)]
+    /// Airfoil: naca8h12, naca23012, nacaDDDD, nacaDDDDD, a coordinate file (Selig,
+    /// Lednicer or plain x y), or - for coordinates on standard input.
+    #[arg(long, value_name = "NAME|PATH|-", required = true)]
     pub airfoil: Option<String>,
 
     #[command(flatten)]
@@ -154,11 +184,12 @@ pub struct RunArgs {
     #[arg(long)]
     pub inviscid: bool,
 
-    /// Chord Reynolds numbers, comma-separated (default: the rotor grid 0.25e6,…,2.5e6).
+    /// Chord Reynolds numbers, comma-separated. Without --re and --mach: the rotor grid
+    /// Re 0.25e6,…,2.5e6 × M 0,0.2,0.3,0.4,0.5; --re alone runs at M 0 (as XFOIL).
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub re: Option<String>,
 
-    /// Mach numbers, comma-separated, 0 ≤ M < 1 (default: 0,0.2,0.3,0.4,0.5; inviscid: 0).
+    /// Mach numbers, comma-separated, 0 ≤ M < 1 (needs --re; inviscid: one value, default 0).
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub mach: Option<String>,
 
@@ -194,14 +225,19 @@ pub struct RunArgs {
     #[arg(long, default_value_t = 0, allow_hyphen_values = true)]
     pub threads: usize,
 
-    /// Output format: csv, json, xfoil (one .pol per Re, M) or c81 (one file per Re);
-    /// default: from --out's extension, else csv.
+    /// Output format: csv, json, xfoil (one .pol per Re, M), c81 (one file per Re) or
+    /// aerodyn (OpenFAST AirfoilInfo file, one file per Mach number, a table per Re,
+    /// InclUAdata False: OpenFAST derives the unsteady-aero parameters from the table; see
+    /// convert --help); default: from --out's extension, else csv.
     #[arg(long)]
     pub format: Option<String>,
 
-    /// Output file; standard output when absent (csv and json only).
-    #[arg(long, value_name = "FILE")]
+    /// Output file; standard output when absent or - (csv and json only).
+    #[arg(long, value_name = "FILE|-")]
     pub out: Option<PathBuf>,
+
+    #[command(flatten)]
+    pub extension: Extension,
 }
 
 /// The Newton threshold of the viscous solver.

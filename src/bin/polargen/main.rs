@@ -20,34 +20,32 @@ use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 use args::{Cli, Command, ConvertArgs, PlotArgs, PlotPointArgs, RunArgs, Shape};
+use clap::CommandFactory;
 
 use cli::Tool;
 use polargen::arguments;
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, CHORD_UNITS_TOLERANCE};
 use polargen::inviscid::PanelSystem;
 use polargen::limits::{short_number, short_text, MAX_GRID_POINTS};
-use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError};
+use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title};
 use polargen::plot::polar_plots::{compact_number, overlay_title, polar_figure, transition_label};
 use polargen::plot::{check_image_path, render};
 use polargen::polar::{parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams};
 use polargen::section::{FlowCondition, PolarPoint};
 use polargen::table::{
-    build_table, read_table, write_table, GridSpec, TableFormat, DEFAULT_ALPHA, DEFAULT_MACH,
-    DEFAULT_RE,
+    build_table, read_table, with_cd_max, write_table, GridSpec, TableFormat, DEFAULT_ALPHA,
+    DEFAULT_MACH, DEFAULT_RE,
 };
 use polargen::viscous::distributions::write_distributions_csv;
 use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};
 
 /// This tool's name and error prefix.
-const TOOL: Tool = Tool {
-    name: "polargen",
-    error_prefix: "polargen: error: ",
-};
+const TOOL: Tool = Tool { name: "polargen" };
 
 fn main() -> ExitCode {
     polargen::output::remove_staged_files_on_signals();
-    let cli = match TOOL.parse::<Cli>() {
+    let cli = match TOOL.parse(|c: &Cli| c.quiet) {
         Ok(c) => c,
         Err(code) => return code,
     };
@@ -55,9 +53,24 @@ fn main() -> ExitCode {
         Some(Command::Plot(args)) => plot_tables(args),
         Some(Command::Convert(args)) => convert_table(args),
         Some(Command::PlotPoint(args)) => plot_point(args),
+        Some(Command::Completions(args)) => {
+            to_stdout(&cli::completions(Cli::command(), args.shell))
+        }
+        Some(Command::Man) => cli::man_page(Cli::command())
+            .map_err(Into::into)
+            .and_then(|page| to_stdout(&page)),
         None if cli.run.inviscid => run_inviscid(&cli.run),
         None => run_viscous(&cli.run),
     })
+}
+
+/// Write `bytes` to standard output.
+fn to_stdout(bytes: &[u8]) -> Result<()> {
+    let path = Path::new(STDOUT_PATH);
+    write_output(path, |w| {
+        w.write_all(bytes).map_err(|e| OutputError::io(path, e))
+    })?;
+    Ok(())
 }
 
 /// Parse a comma-separated list of distinct finite numbers, naming the flag in the error.
@@ -168,7 +181,7 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
             alphas.len()
         ));
     }
-    let path = cli.out.as_deref().unwrap_or(Path::new("-"));
+    let path = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
     write_output(path, |w| {
         w.write_all(csv.as_bytes())
             .map_err(|e| OutputError::io(path, e))
@@ -194,14 +207,16 @@ fn transition(cli: &RunArgs) -> Result<(f64, f64)> {
 
 /// The viscous polar(s) or table.
 fn run_viscous(cli: &RunArgs) -> Result<()> {
-    let reynolds = match &cli.re {
-        Some(t) => parse_list("re", t)?,
-        None => DEFAULT_RE.to_vec(),
+    // The default grid only when neither axis is given; Re alone runs at M 0, as XFOIL.
+    let (reynolds, mach_default): (Vec<f64>, &[f64]) = match (&cli.re, &cli.mach) {
+        (Some(t), _) => (parse_list("re", t)?, &[0.0]),
+        (None, None) => (DEFAULT_RE.to_vec(), &DEFAULT_MACH),
+        (None, Some(_)) => bail!("--mach: give the Reynolds numbers with --re too"),
     };
     reynolds.iter().try_for_each(|&r| check_re(r))?;
     let grid = GridSpec {
         reynolds,
-        mach: mach_list(cli, &DEFAULT_MACH)?,
+        mach: mach_list(cli, mach_default)?,
         alpha_deg: parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA))
             .context("--alpha")?,
     };
@@ -221,14 +236,8 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     if let Some(path) = &cli.out {
         check_out(path)?;
     }
-    let format = match (&cli.format, &cli.out) {
-        (Some(f), _) => f.parse::<TableFormat>().context("--format")?,
-        (None, Some(path)) => TableFormat::from_path(path).context("--out")?,
-        (None, None) => TableFormat::Csv,
-    };
-    if cli.out.is_none() && matches!(format, TableFormat::XfoilPolar | TableFormat::C81) {
-        bail!("--format {}: needs --out (it writes files)", format.name());
-    }
+    let format = TableFormat::for_output(cli.format.as_deref(), cli.out.as_deref())
+        .context("--format/--out")?;
     let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels, &cli.shape)?;
 
     let total = grid.point_count();
@@ -257,7 +266,8 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     if census.converged == 0 {
         bail!("no point converged; no table written");
     }
-    let path = cli.out.as_deref().unwrap_or(Path::new("-"));
+    let table = with_cd_max(table, cli.extension.cd_max).context("--cd-max")?;
+    let path = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
     let files = write_table(&table, path, Some(format))?;
     if files.len() > 1 {
         TOOL.say(format!("wrote {} files", files.len()));
@@ -333,11 +343,9 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
 /// `polargen convert`: read a table and write it in another format.
 fn convert_table(args: &ConvertArgs) -> Result<()> {
     check_out(&args.out)?;
-    let format = match &args.format {
-        Some(f) => f.parse::<TableFormat>().context("--format")?,
-        None => TableFormat::from_path(&args.out).context("--out")?,
-    };
-    let table = read_table(&args.table)?;
+    let format = TableFormat::for_output(args.format.as_deref(), Some(&args.out))
+        .context("--format/--out")?;
+    let table = with_cd_max(read_table(&args.table)?, args.extension.cd_max).context("--cd-max")?;
     let files = write_table(&table, &args.out, Some(format))?;
     if files.len() > 1 {
         TOOL.say(format!("wrote {} files", files.len()));

@@ -220,11 +220,7 @@ impl Aircraft {
     /// `origin` names it in errors, and the table's path is relative to `origin`'s folder (the
     /// current folder when `origin` has none).
     pub fn from_toml_str(text: &str, origin: &str) -> Result<Self, AircraftError> {
-        let mut aircraft: Aircraft = toml::from_str(text).map_err(|e| AircraftError::Parse {
-            path: origin.to_string(),
-            message: e.message().replace('\n', " "),
-        })?;
-        aircraft.validate()?;
+        let aircraft = Self::parse_toml(text, origin)?;
         let folder = Path::new(origin).parent().unwrap_or(Path::new(""));
         let table = read_lookup_table(&folder.join(&aircraft.propeller.section_table)).map_err(
             |source| AircraftError::PropellerSection {
@@ -232,8 +228,24 @@ impl Aircraft {
                 source,
             },
         )?;
-        aircraft.propeller_section = Some(Arc::new(table));
+        Ok(aircraft.with_propeller_section(table))
+    }
+
+    /// Parses and checks a TOML preset held in memory without reading its propeller section
+    /// table (give it with [`Aircraft::with_propeller_section`]); `origin` names it in errors.
+    pub fn parse_toml(text: &str, origin: &str) -> Result<Self, AircraftError> {
+        let aircraft: Aircraft = toml::from_str(text).map_err(|e| AircraftError::Parse {
+            path: origin.to_string(),
+            message: e.message().replace('\n', " "),
+        })?;
+        aircraft.validate()?;
         Ok(aircraft)
+    }
+
+    /// The preset with `table` as its propeller section.
+    pub fn with_propeller_section(mut self, table: PolarTable) -> Self {
+        self.propeller_section = Some(Arc::new(table));
+        self
     }
 
     /// The propeller's section, read with the preset.

@@ -27,16 +27,29 @@
 //!   computed range, weighted towards it (the extension changes fastest after stall), while
 //!   gaps wider than 2° remain. Values come from [`SectionAero::lookup`], so they include the 360° extension
 //!   and never use unconverged points.
-//! * Fields: Mach F7.3, α F7.2, coefficients with as many decimals (≤ 4) as leave at least one
-//!   leading blank, so that free-format (whitespace-splitting) readers work too.
+//! * Fields: Mach F7.3, α F7.2; each coefficient block with one decimal count for all its
+//!   values, the largest (≤ 4) that leaves every field a leading blank, so that free-format
+//!   (whitespace-splitting) readers work too. A negative value drops the zero before the
+//!   point (`-.0100`, which Fortran F7.0, C `strtod` and Python `float` all read), so it keeps
+//!   the digits of a positive one (`0.0089`).
+//! * A one-Mach table is written as two identical Mach columns, at its Mach number M and at
+//!   M + 0.1 (or halfway to 1 when that reaches 1), because some readers (c81utils) need two
+//!   Mach values; the values do not depend on Mach. [`parse_c81`] reads such a table back as
+//!   one Mach column.
 //! * The format has no comment line and no field for the minimum pressure or the supercritical
 //!   flag, so a deck cannot carry them: supercritical points enter it like any other. The CSV,
 //!   JSON and XFOIL-polar forms of the same table hold them.
+//!
+//! The reader ([`parse_c81`]) takes the fixed 7-column fields of the format's definition
+//! (MBDyn files need not leave blanks between fields), the counts from columns 31–42 of the
+//! first line, and the Reynolds number from a `Re<number>` word of the name (as written
+//! here), else from the file name (`…_Re1e6…`), else 10⁶. CD and CM rows at other α than the
+//! CL rows are interpolated linearly onto the CL rows; every row is a converged point.
 
 use super::xfoil_polar::re_label;
 use crate::output::{fixed_decimals, write_output, OutputSet};
-use crate::section::SectionAero;
-use crate::table::{PolarTable, TableError};
+use crate::section::{PolarPoint, SectionAero};
+use crate::table::{PolarTable, TableError, TableMeta};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -135,20 +148,62 @@ pub fn c81_alphas(table: &PolarTable, i_re: usize, outer_step_deg: f64) -> Vec<f
 /// Extension rows are not split below this spacing (deg).
 const MIN_OUTER_GAP_DEG: f64 = 1.0;
 
-/// Format a value in a 7-character field with at most `max_dec` decimals, keeping at least
-/// one leading blank if `blank` is set.
-fn field(v: f64, max_dec: usize, blank: bool) -> Result<String, TableError> {
+/// `v` with `d` decimals, a negative value without the zero before the point (`-.0100`).
+fn c81_number(v: f64, d: usize) -> String {
+    let s = fixed_decimals(v, d);
+    match s.strip_prefix("-0.") {
+        Some(rest) => format!("-.{rest}"),
+        None => s,
+    }
+}
+
+/// The largest decimal count ≤ `max_dec` with which every value of `values` fits a field,
+/// keeping at least one leading blank if `blank` is set.
+fn block_decimals(values: &[f64], max_dec: usize, blank: bool) -> Result<usize, TableError> {
     let limit = if blank { FIELD - 1 } else { FIELD };
     for d in (0..=max_dec).rev() {
-        let s = fixed_decimals(v, d);
-        if s.len() <= limit {
-            return Ok(format!("{s:>FIELD$}"));
+        match values.iter().find(|&&v| c81_number(v, d).len() > limit) {
+            None => return Ok(d),
+            Some(&v) if d == 0 => {
+                return Err(TableError::FieldOverflow {
+                    value: v,
+                    width: FIELD,
+                })
+            }
+            Some(_) => {}
         }
     }
-    Err(TableError::FieldOverflow {
-        value: v,
-        width: FIELD,
-    })
+    Ok(0)
+}
+
+/// `values` in 7-character fields, one decimal count for all (see [`block_decimals`]).
+fn fields(values: &[f64], max_dec: usize, blank: bool) -> Result<Vec<String>, TableError> {
+    let d = block_decimals(values, max_dec, blank)?;
+    Ok(values
+        .iter()
+        .map(|&v| format!("{:>FIELD$}", c81_number(v, d)))
+        .collect())
+}
+
+/// A value in a 7-character field with at most `max_dec` decimals.
+fn field(v: f64, max_dec: usize, blank: bool) -> Result<String, TableError> {
+    Ok(fields(&[v], max_dec, blank)?.remove(0))
+}
+
+/// The Mach columns written for a table Mach axis `mach`: the axis, or for one Mach number M
+/// two columns, M and M + 0.1 (halfway to 1 when that reaches 1).
+fn written_mach(mach: &[f64]) -> Vec<f64> {
+    match mach {
+        [m] => vec![
+            *m,
+            if m + 0.1 < 1.0 {
+                m + 0.1
+            } else {
+                (m + 1.0) / 2.0
+            },
+        ],
+        _ => mach.to_vec(),
+    }
 }
 
 /// Append `lead` (a field or 7 blanks) and `values` as lines of at most 9 values each.
@@ -193,7 +248,8 @@ pub fn write_c81_to(
             count: mach.len(),
         });
     }
-    let (na, nm) = (alphas.len(), mach.len());
+    let columns = written_mach(mach);
+    let (na, nm) = (alphas.len(), columns.len());
     let mut name: String = format!("{} Re{}", table.meta().airfoil, re_label(re))
         .chars()
         .take(30)
@@ -204,25 +260,20 @@ pub fn write_c81_to(
     let mut out = format!("{name}{nm:2}{na:2}{nm:2}{na:2}{nm:2}{na:2}\n");
     let mut blocks = [Vec::new(), Vec::new(), Vec::new()];
     for &a in &alphas {
-        for &m in mach {
-            let l = table.lookup(a, re, m);
+        for &m in &columns {
+            // A second column of a one-Mach table repeats the first (see the module docs).
+            let l = table.lookup(a, re, m.min(mach[mach.len() - 1]));
             blocks[0].push(l.cl);
             blocks[1].push(l.cd);
             blocks[2].push(l.cm);
         }
     }
-    let mach_fields = mach
-        .iter()
-        .map(|&m| field(m, 3, true))
-        .collect::<Result<Vec<_>, _>>()?;
+    let mach_fields = fields(&columns, 3, true)?;
     for block in &blocks {
         push_rows(&mut out, &" ".repeat(FIELD), &mach_fields);
-        for (&a, row) in alphas.iter().zip(block.chunks(nm)) {
-            let row = row
-                .iter()
-                .map(|&v| field(v, 4, true))
-                .collect::<Result<Vec<_>, _>>()?;
-            push_rows(&mut out, &field(a, 2, false)?, &row);
+        let values = fields(block, 4, true)?;
+        for (&a, row) in alphas.iter().zip(values.chunks(nm)) {
+            push_rows(&mut out, &field(a, 2, false)?, row);
         }
     }
     w.write_all(out.as_bytes()).map_err(TableError::Write)
@@ -265,4 +316,241 @@ pub fn write_c81(
         })?;
     }
     Ok(set.commit()?)
+}
+
+/// The 7-character fields of a C81 data line from field `first` on: at most `count` numbers,
+/// empty fields at the end of a short line ending the list.
+fn line_fields(line: &str, first: usize, count: usize, at: usize) -> Result<Vec<f64>, TableError> {
+    let chars: Vec<char> = line.chars().collect();
+    let mut out = Vec::new();
+    for k in first..first + count {
+        let start = k * FIELD;
+        if start >= chars.len() {
+            break;
+        }
+        let text: String = chars[start..(start + FIELD).min(chars.len())]
+            .iter()
+            .collect();
+        let text = text.trim();
+        if text.is_empty() {
+            break;
+        }
+        match text.parse::<f64>() {
+            Ok(v) if v.is_finite() => out.push(v),
+            _ => {
+                return Err(TableError::C81 {
+                    line: at,
+                    message: format!("'{text}' is not a number"),
+                })
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// One coefficient block: its Mach list, α list and values (α-major).
+struct C81Block {
+    mach: Vec<f64>,
+    alpha: Vec<f64>,
+    values: Vec<f64>,
+}
+
+/// The lines of a C81 file and the next one to read.
+struct Cursor<'a> {
+    lines: Vec<&'a str>,
+    /// Index (0-based) of the next line.
+    next: usize,
+}
+
+impl Cursor<'_> {
+    /// Up to `count` fields of the next line from field `first` on.
+    fn take(&mut self, first: usize, count: usize, what: &str) -> Result<Vec<f64>, TableError> {
+        let at = self.next + 1;
+        let line = self.lines.get(self.next).ok_or_else(|| TableError::C81 {
+            line: at,
+            message: format!("the {what} block ends early"),
+        })?;
+        self.next += 1;
+        line_fields(line, first, count, at)
+    }
+
+    /// `first_line` completed to `n` values from continuation lines (7 blanks, ≤ 9 fields).
+    fn complete(
+        &mut self,
+        first_line: Vec<f64>,
+        n: usize,
+        what: &str,
+    ) -> Result<Vec<f64>, TableError> {
+        let mut v = first_line;
+        while v.len() < n {
+            let more = self.take(1, 9.min(n - v.len()), what)?;
+            if more.is_empty() {
+                break;
+            }
+            v.extend(more);
+        }
+        Ok(v)
+    }
+
+    /// The block of `nm` Mach and `na` α values that starts at the next line.
+    fn block(&mut self, nm: usize, na: usize, what: &str) -> Result<C81Block, TableError> {
+        let mach_line = self.next + 1;
+        let first = self.take(1, 9.min(nm), what)?;
+        let mach = self.complete(first, nm, what)?;
+        if mach.len() != nm || mach.windows(2).any(|w| w[1] <= w[0]) {
+            return Err(TableError::C81 {
+                line: mach_line,
+                message: format!("the {what} Mach list is not {nm} increasing numbers"),
+            });
+        }
+        let mut alpha: Vec<f64> = Vec::with_capacity(na);
+        let mut values = Vec::with_capacity(na * nm);
+        for _ in 0..na {
+            let at = self.next + 1;
+            let row = self.take(0, 1 + 9.min(nm), what)?;
+            let error = |message: String| TableError::C81 { line: at, message };
+            let Some((&a, rest)) = row.split_first() else {
+                return Err(error(format!("{what} row without an alpha")));
+            };
+            if alpha.last().is_some_and(|&last| a <= last) {
+                return Err(error(format!(
+                    "the {what} alpha list is not strictly increasing"
+                )));
+            }
+            let row = self.complete(rest.to_vec(), nm, what)?;
+            if row.len() != nm {
+                return Err(error(format!(
+                    "{what} row has {} values for {nm} Mach numbers",
+                    row.len()
+                )));
+            }
+            alpha.push(a);
+            values.extend(row);
+        }
+        Ok(C81Block {
+            mach,
+            alpha,
+            values,
+        })
+    }
+}
+
+impl C81Block {
+    /// The value at Mach column `j` and `alpha`, linear in α, held at the ends.
+    fn at(&self, j: usize, alpha: f64) -> f64 {
+        let nm = self.mach.len();
+        let a = &self.alpha;
+        let k = a
+            .partition_point(|&x| x <= alpha)
+            .clamp(1, a.len().max(2) - 1);
+        if a.len() == 1 {
+            return self.values[j];
+        }
+        let t = ((alpha - a[k - 1]) / (a[k] - a[k - 1])).clamp(0.0, 1.0);
+        (1.0 - t) * self.values[(k - 1) * nm + j] + t * self.values[k * nm + j]
+    }
+}
+
+/// Parse a C81 table (see the module docs); `stem` is the file stem the Reynolds number may
+/// come from.
+pub fn parse_c81(text: &str, stem: &str) -> Result<PolarTable, TableError> {
+    let mut cursor = Cursor {
+        lines: text.lines().collect(),
+        next: 1,
+    };
+    let header: Vec<char> = cursor
+        .lines
+        .first()
+        .copied()
+        .unwrap_or("")
+        .chars()
+        .collect();
+    let counts: Vec<usize> = (0..6)
+        .map(|k| {
+            let field: String = header.iter().skip(30 + 2 * k).take(2).collect();
+            field.trim().parse::<usize>().ok().filter(|&n| n > 0)
+        })
+        .collect::<Option<_>>()
+        .ok_or_else(|| TableError::C81 {
+            line: 1,
+            message: "columns 31-42 must hold six counts of two digits (NML NAL NMD NAD NMM NAM)"
+                .to_string(),
+        })?;
+    let name: String = header
+        .iter()
+        .take(30)
+        .collect::<String>()
+        .trim()
+        .to_string();
+    let cl = cursor.block(counts[0], counts[1], "CL")?;
+    let cd = cursor.block(counts[2], counts[3], "CD")?;
+    let cm = cursor.block(counts[4], counts[5], "CM")?;
+    if cd.mach != cl.mach || cm.mach != cl.mach {
+        return Err(TableError::C81 {
+            line: 1,
+            message: "the CL, CD and CM blocks have different Mach lists".to_string(),
+        });
+    }
+    let nm = cl.mach.len();
+    let polar = |j: usize| -> Vec<PolarPoint> {
+        cl.alpha
+            .iter()
+            .enumerate()
+            .map(|(i, &alpha)| {
+                let cd_v = cd.at(j, alpha);
+                PolarPoint {
+                    alpha,
+                    cl: cl.values[i * nm + j],
+                    cd: cd_v,
+                    cdp: f64::NAN,
+                    cdf: f64::NAN,
+                    cm: cm.at(j, alpha),
+                    xtr_top: f64::NAN,
+                    xtr_bot: f64::NAN,
+                    converged: true,
+                    iterations: 0,
+                    residual: 0.0,
+                    // C81 has no field for them: unknown.
+                    cpmin: f64::NAN,
+                    supercritical: None,
+                }
+            })
+            .collect()
+    };
+    let mut polars: Vec<Vec<PolarPoint>> = (0..nm).map(polar).collect();
+    let mut mach = cl.mach.clone();
+    // Identical columns throughout: a one-Mach table written for two-column readers.
+    let coefficients =
+        |p: &[PolarPoint]| -> Vec<[f64; 3]> { p.iter().map(|q| [q.cl, q.cd, q.cm]).collect() };
+    if nm > 1
+        && polars
+            .iter()
+            .all(|p| coefficients(p) == coefficients(&polars[0]))
+    {
+        polars.truncate(1);
+        mach.truncate(1);
+    }
+    let re_word = |s: &str| {
+        s.split(|c: char| c.is_whitespace() || c == '_')
+            .find_map(|w| w.strip_prefix("Re").and_then(|v| v.parse::<f64>().ok()))
+    };
+    let re = re_word(&name).or_else(|| re_word(stem)).unwrap_or(1e6);
+    let airfoil = name
+        .split_whitespace()
+        .filter(|w| re_word(w).is_none())
+        .collect::<Vec<_>>()
+        .join(" ");
+    let meta = TableMeta {
+        airfoil: if airfoil.is_empty() {
+            stem.to_string()
+        } else {
+            airfoil
+        },
+        ncrit: 9.0,
+        xtr_top_set: 1.0,
+        xtr_bot_set: 1.0,
+        panels: 0,
+        solver: "C81 file".to_string(),
+    };
+    PolarTable::new(meta, vec![re], mach, polars)
 }

@@ -234,6 +234,8 @@ pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableErr
     let need = |name: &str| col(name).ok_or_else(|| TableError::MissingColumn(name.to_string()));
     let (ia, il, id) = (need("alpha")?, need("cl")?, need("cd")?);
     let (icdp, icm, ixt, ixb) = (col("cdp"), col("cm"), col("xtr_top"), col("xtr_bot"));
+    // XFOIL's CDp column is its pressure integral, not CD − CDf: CDf only from its own column.
+    let icdf = col("cdf");
     let mut points = Vec::new();
     for rec in rd.records() {
         let rec = rec.map_err(|e| csv_error(&e, 0))?;
@@ -256,7 +258,7 @@ pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableErr
             cl: get(il)?,
             cd,
             cdp,
-            cdf: cd - cdp,
+            cdf: opt(icdf, f64::NAN)?,
             cm: opt(icm, 0.0)?,
             xtr_top: opt(ixt, 1.0)?,
             xtr_bot: opt(ixb, 1.0)?,

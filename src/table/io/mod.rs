@@ -1,9 +1,11 @@
 //! Table files: CSV and JSON (written and read back exactly), XFOIL polar text (written, and
-//! read as a one-polar table), C81 (written) and single-polar CSV (read). [`read_table`] is the
+//! read as a one-polar table), C81 (written, and read as a one-Re table) and single-polar CSV
+//! (read), and OpenFAST AeroDyn airfoil files (written). [`read_table`] is the
 //! one reader: it reads a file once and recognises its layout.
 //! Every writer goes through [`write_output`](crate::output::write_output), so a failure
 //! never leaves half a file and missing folders are created.
 
+mod aerodyn;
 mod c81;
 mod csv;
 mod json;
@@ -15,7 +17,8 @@ use crate::input::read_input;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
-pub use self::c81::{write_c81, C81Options};
+pub use self::aerodyn::write_aerodyn;
+pub use self::c81::{parse_c81, write_c81, C81Options};
 
 /// A table file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -26,8 +29,11 @@ pub enum TableFormat {
     Json,
     /// XFOIL polar text, one file per (Re, M) (`.pol`); readable as a one-polar table.
     XfoilPolar,
-    /// C81 rotorcraft airfoil table, one file per Re (`.c81`).
+    /// C81 rotorcraft airfoil table, one file per Re (`.c81`); readable as a one-Re table.
     C81,
+    /// OpenFAST AeroDyn airfoil file, one table per Re, one file per Mach number (chosen
+    /// with `--format aerodyn`; written only).
+    AeroDyn,
 }
 
 impl TableFormat {
@@ -47,6 +53,31 @@ impl TableFormat {
         }
     }
 
+    /// The format a table is written in: `format` (a command-line name) when given, else the
+    /// extension of `out`; CSV for standard output (`out` absent or `-`). XFOIL polars and
+    /// C81 write one file per polar or per Re and need a file name.
+    pub fn for_output(format: Option<&str>, out: Option<&Path>) -> Result<Self, TableError> {
+        let stdout = out.map_or(true, |p| p.as_os_str() == crate::output::STDOUT_PATH);
+        let chosen = match (format, out) {
+            (Some(f), _) => f.parse()?,
+            (None, Some(path)) if !stdout => Self::from_path(path)?,
+            (None, _) => Self::Csv,
+        };
+        let per = match chosen {
+            Self::XfoilPolar => Some("polar"),
+            Self::C81 => Some("Re"),
+            Self::AeroDyn => Some("Mach number"),
+            Self::Csv | Self::Json => None,
+        };
+        if let (true, Some(per)) = (stdout, per) {
+            return Err(TableError::NeedsFile {
+                format: chosen.name(),
+                per,
+            });
+        }
+        Ok(chosen)
+    }
+
     /// Lower-case name as used on the command line.
     pub fn name(self) -> &'static str {
         match self {
@@ -54,6 +85,7 @@ impl TableFormat {
             Self::Json => "json",
             Self::XfoilPolar => "xfoil",
             Self::C81 => "c81",
+            Self::AeroDyn => "aerodyn",
         }
     }
 }
@@ -68,6 +100,7 @@ impl FromStr for TableFormat {
             "json" => Ok(Self::Json),
             "xfoil" | "pol" | "polar" => Ok(Self::XfoilPolar),
             "c81" => Ok(Self::C81),
+            "aerodyn" => Ok(Self::AeroDyn),
             _ => Err(TableError::UnknownFormat(s.to_string())),
         }
     }
@@ -103,18 +136,17 @@ pub fn write_table(
         TableFormat::Json => json::write_json(table, path).map(|()| vec![path.to_path_buf()]),
         TableFormat::XfoilPolar => xfoil_polar::write_xfoil_polars(table, path),
         TableFormat::C81 => c81::write_c81(table, path, &C81Options::default()),
+        TableFormat::AeroDyn => aerodyn::write_aerodyn(table, path),
     }
 }
 
 /// Read a table file, once, recognising its layout from its extension and first line: a polargen CSV or
-/// JSON table, an XFOIL polar file (a one-polar table), or a single-polar CSV with columns
+/// JSON table, an XFOIL polar file (a one-polar table), a C81 file (a one-Re table), or a
+/// single-polar CSV with columns
 /// `alpha, cl, cd[, cdp, cm, xtr_top, xtr_bot]` such as the XFOIL reference polars (a
 /// one-polar table at the Re and M of a file name like `…_Re1.9e6_M0.41_…`, else Re 10⁶,
 /// M 0). Every error names the file.
 pub fn read_table(path: &Path) -> Result<PolarTable, TableError> {
-    if let Ok(TableFormat::C81) = TableFormat::from_path(path) {
-        return Err(TableError::NotReadable("C81"));
-    }
     let bytes = read_input(path).map_err(TableError::Input)?;
     // Name the file, unless the error already does.
     let in_file = |source: TableError| {
@@ -132,13 +164,14 @@ pub fn read_table(path: &Path) -> Result<PolarTable, TableError> {
     parse_layout(&bytes, layout, stem).map_err(in_file)
 }
 
-/// Parse a table held in memory in `format` (CSV is polargen's long form; C81 has no reader).
+/// Parse a table held in memory in `format` (CSV is polargen's long form).
 pub fn parse_table(bytes: &[u8], format: TableFormat) -> Result<PolarTable, TableError> {
     let layout = match format {
         TableFormat::Csv => Layout::Csv,
         TableFormat::Json => Layout::Json,
         TableFormat::XfoilPolar => Layout::XfoilPolar,
-        TableFormat::C81 => return Err(TableError::NotReadable("C81")),
+        TableFormat::C81 => Layout::C81,
+        TableFormat::AeroDyn => return Err(TableError::NotReadable("AeroDyn")),
     };
     parse_layout(bytes, layout, "")
 }
@@ -152,6 +185,19 @@ fn parse_layout(bytes: &[u8], layout: Layout, stem: &str) -> Result<PolarTable, 
         Layout::PolarCsv => csv::parse_polar_csv(bytes, stem),
         Layout::Json => json::parse_json(text()?),
         Layout::XfoilPolar => xfoil_polar::parse_xfoil_polar(text()?),
+        Layout::C81 => c81::parse_c81(text()?, stem),
+    }
+}
+
+/// `table` with the post-stall drag coefficient `cd_max` (broadside, α = ±90°) of its 360°
+/// extension, when given (the extension C81 and AeroDyn files carry).
+pub fn with_cd_max(table: PolarTable, cd_max: Option<f64>) -> Result<PolarTable, TableError> {
+    match cd_max {
+        Some(cd_max) => {
+            let params = *table.post_stall_params();
+            table.with_post_stall(super::PostStallParams { cd_max, ..params })
+        }
+        None => Ok(table),
     }
 }
 
@@ -177,6 +223,8 @@ enum Layout {
     Json,
     /// XFOIL's polar-file text.
     XfoilPolar,
+    /// C81 text.
+    C81,
 }
 
 impl Layout {
@@ -213,7 +261,8 @@ impl Layout {
             Ok(TableFormat::Csv) => csv.map_or_else(neither, Ok),
             Ok(TableFormat::Json) => Ok(Self::Json),
             Ok(TableFormat::XfoilPolar) => Ok(Self::XfoilPolar),
-            Ok(TableFormat::C81) => Err(TableError::NotReadable("C81")),
+            Ok(TableFormat::C81) => Ok(Self::C81),
+            Ok(TableFormat::AeroDyn) => Err(TableError::NotReadable("AeroDyn")),
             Err(unknown) => {
                 if first.starts_with('{') {
                     Ok(Self::Json)

@@ -4,7 +4,15 @@
 //! fields, and the optional `Cpmin` column XFOIL adds with its minimum-Cp option, F9.4).
 //! Only converged points are written, sorted by α, with `Cpmin`; the supercritical flag is
 //! not a column of the format and follows from `Cpmin` and the Mach number of the header
-//! when the file is read. The version line names this table's solver instead of XFOIL.
+//! when the file is read. The version line names this table's solver instead of XFOIL; for
+//! polargen's own tables it ends in `Version <major>.<minor>` as XFOIL's does, so that XFOIL's
+//! `PGET` shows the code and its version.
+//!
+//! **Which CDp.** XFOIL's polar-file column `CDp` is its surface pressure integral (`CLCALC`),
+//! not the `CDp = CD − CDf` it prints after each viscous solution. A file written by polargen
+//! carries polargen's `cdp` = CD − CDf (the printed quantity) in that column, so reading it
+//! back gives `cdf` = CD − CDp; a file from any other code (XFOIL) has no skin-friction drag
+//! column, and its points are read with `cdf` = NaN (unknown) and `cdp` as the file gives it.
 
 use super::supercritical_from_cpmin;
 use crate::output::OutputSet;
@@ -43,9 +51,19 @@ pub fn write_polar_to(
     } else {
         meta.solver.as_str()
     };
+    let version = if solver.starts_with("polargen") {
+        let mut v = env!("CARGO_PKG_VERSION").split('.');
+        format!(
+            "   Version {}.{}",
+            v.next().unwrap_or("0"),
+            v.next().unwrap_or("0")
+        )
+    } else {
+        String::new()
+    };
     let mut s = String::new();
     s.push_str(" \n");
-    s.push_str(&format!("       {solver}\n"));
+    s.push_str(&format!("       {solver}{version}\n"));
     s.push_str(" \n");
     s.push_str(&format!(" Calculated polar for: {}\n", meta.airfoil));
     s.push_str(" \n");
@@ -177,6 +195,8 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
     };
     let mut name = None;
     let mut solver = String::new();
+    // Whether polargen wrote the file: its CDp column is then CD − CDf (module docs).
+    let mut ours = false;
     let mut xtr = None;
     let mut cond = None;
     let mut columns: Option<Vec<String>> = None;
@@ -213,7 +233,7 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
                 cl: get("CL")?,
                 cd,
                 cdp,
-                cdf: cd - cdp,
+                cdf: if ours { cd - cdp } else { f64::NAN },
                 cm: get("CM")?,
                 xtr_top: get("Top_Xtr")?,
                 xtr_bot: get("Bot_Xtr")?,
@@ -230,6 +250,11 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
             name = Some(rest.trim().to_string());
         } else if solver.is_empty() && name.is_none() && !t.is_empty() {
             solver = t.split_whitespace().collect::<Vec<_>>().join(" ");
+            ours = solver.starts_with("polargen");
+            if ours {
+                // The version suffix this writer adds to its own solver name.
+                solver = solver.split(" Version").next().unwrap_or("").to_string();
+            }
         } else if t.starts_with("xtrf") {
             let v: Vec<&str> = t.split_whitespace().collect();
             match (v.get(2), v.get(4)) {
