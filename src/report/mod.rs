@@ -19,6 +19,7 @@ macro_rules! outln {
     }};
 }
 
+pub mod console;
 mod fidelity;
 mod figures;
 mod markdown;

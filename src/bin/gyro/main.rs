@@ -6,7 +6,7 @@
 #[path = "../common/cli.rs"]
 mod cli;
 mod plot;
-mod print;
+use polargen::report::console as print;
 
 use anyhow::{bail, Context, Result};
 use clap::{Args, CommandFactory, Parser, Subcommand};
@@ -38,7 +38,6 @@ macro_rules! outln {
         let _ = writeln!($buf, $($arg)*);
     }};
 }
-pub(crate) use outln;
 
 #[derive(Parser)]
 #[command(

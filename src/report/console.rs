@@ -1,13 +1,12 @@
-//! `gyro`'s text output: the trim and takeoff summaries, the speed-sweep table and the paper
-//! comparison (Tables 3 and 4, text and JSON).
+//! The command-line text of the rotor results (`gyro`'s stdout): the trim and takeoff
+//! summaries, the speed-sweep table and the paper comparison (Tables 3 and 4, text and JSON).
+//! Each function appends to a text buffer the tool prints.
 
-use crate::outln;
-use anyhow::Result;
-use polargen::rotor::study::paper::{
+use crate::rotor::study::paper::{
     change_percent as rel, compare as paired, Comparison, TABLE3_TRIM, TABLE4_TAKEOFF,
 };
-use polargen::rotor::study::PaperRun;
-use polargen::rotor::{TakeoffResult, TrimResult};
+use crate::rotor::study::PaperRun;
+use crate::rotor::{TakeoffResult, TrimResult};
 use serde::Serialize;
 
 /// Engine rpm as printed, or `above max` when the engine cannot reach the thrust.
@@ -149,7 +148,7 @@ struct Row {
 }
 
 /// Tables 3 and 4 as JSON: `{"trim": [rows], "takeoff": [rows]}`.
-pub fn compare_json(buf: &mut String, runs: &[PaperRun; 2]) -> Result<()> {
+pub fn compare_json(buf: &mut String, runs: &[PaperRun; 2]) -> Result<(), serde_json::Error> {
     let rows = |table: &[Comparison]| -> Vec<Row> {
         table
             .iter()
