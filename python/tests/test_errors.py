@@ -15,7 +15,7 @@ def cli_error(cli, tool: str, *args: str) -> str:
     assert run.returncode != 0
     line = run.stderr.strip()
     assert "\n" not in line
-    for prefix in ("polargen: error: ", "gyro: "):
+    for prefix in ("polargen: error: ", "gyro: error: "):
         if line.startswith(prefix):
             return line[len(prefix):]
     return line
@@ -135,8 +135,8 @@ def test_a_point_that_does_not_converge_is_an_error_not_a_result():
 
 
 def test_unconverged_polar_points_are_flagged_never_dropped():
-    pol = pg.polar("naca0012", re=2e5, alpha=[0.0, 2.0, 50.0, 70.0])
-    assert len(pol) == 4 and list(pol.alpha) == [0.0, 2.0, 50.0, 70.0]
+    pol = pg.polar("naca0012", re=2e5, alpha=[0.0, 2.0, 70.0])
+    assert len(pol) == 3 and list(pol.alpha) == [0.0, 2.0, 70.0]
     assert pol.converged[:2].all() and not pol.converged[2:].any()
 
 
