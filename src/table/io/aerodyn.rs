@@ -28,6 +28,7 @@
 //!   other method disagrees with it on Cd0 and Cn1 — so the one derivation is OpenFAST's own.
 
 use super::xfoil_polar::re_label;
+use super::{extension_or, stem_or};
 use crate::output::{write_output, OutputSet};
 use crate::section::SectionAero;
 use crate::table::{PolarTable, TableError};
@@ -157,14 +158,7 @@ pub fn write_aerodyn(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf>, Ta
         })?;
         return Ok(vec![path.to_path_buf()]);
     }
-    let stem = path
-        .file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "airfoil".to_string());
-    let ext = path
-        .extension()
-        .map(|e| e.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "dat".to_string());
+    let (stem, ext) = (stem_or(path, "airfoil"), extension_or(path, "dat"));
     let mut set = OutputSet::new();
     for (i_mach, &mach) in table.mach().iter().enumerate() {
         let file = path.with_file_name(format!("{stem}_M{mach}.{ext}"));

@@ -47,6 +47,7 @@
 //! CL rows are interpolated linearly onto the CL rows; every row is a converged point.
 
 use super::xfoil_polar::re_label;
+use super::{extension_or, stem_or};
 use crate::output::{fixed_decimals, write_output, OutputSet};
 use crate::section::{PolarPoint, SectionAero};
 use crate::table::{PolarTable, TableError, TableMeta};
@@ -296,14 +297,7 @@ pub fn write_c81(
         })?;
         return Ok(vec![path.to_path_buf()]);
     }
-    let stem = path
-        .file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "table".to_string());
-    let ext = path
-        .extension()
-        .map(|e| e.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "c81".to_string());
+    let (stem, ext) = (stem_or(path, "table"), extension_or(path, "c81"));
     let mut set = OutputSet::new();
     for &re in table.re() {
         let file = if table.re().len() == 1 {

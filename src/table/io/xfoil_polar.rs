@@ -14,7 +14,7 @@
 //! back gives `cdf` = CD − CDp; a file from any other code (XFOIL) has no skin-friction drag
 //! column, and its points are read with `cdf` = NaN (unknown) and `cdp` as the file gives it.
 
-use super::supercritical_from_cpmin;
+use super::{stem_or, supercritical_from_cpmin};
 use crate::output::OutputSet;
 use crate::section::{FlowCondition, PolarPoint};
 use crate::table::{PolarTable, TableError, TableMeta};
@@ -136,10 +136,7 @@ pub fn re_label(re: f64) -> String {
 /// written.
 pub fn write_xfoil_polars(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf>, TableError> {
     let single = table.re().len() * table.mach().len() == 1;
-    let stem = path
-        .file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "polar".to_string());
+    let stem = stem_or(path, "polar");
     let mut set = OutputSet::new();
     for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
         check_alpha_resolution(re, mach, points)?;
