@@ -6,7 +6,7 @@
 //! Data flows one way through the module tree; a lower layer never imports a higher one:
 //!
 //! ```text
-//! geometry → inviscid → boundary_layer → viscous → polar → table → rotor → report
+//! geometry → inviscid → boundary_layer → viscous → polar → table → rotor → studies → report
 //!                                                              ↘ plot ↗
 //! leaf modules every layer may use: section, compressibility, input, output, limits,
 //! diagnostics, arguments
@@ -27,6 +27,8 @@
 //! * [`rotor`] — blade-element model of a teetering gyroplane rotor and a blade-element–momentum
 //!   propeller with its engine: trim, takeoff, cruise sweeps, and [`rotor::study`], the paper's
 //!   clean-versus-contaminated study and its sensitivity to the preset's estimates.
+//! * [`studies`] — what-if studies on top of the rotor (contamination severity and spanwise
+//!   coverage, airfoil choice, airspeed), their section tables solved and cached.
 //! * [`plot`] — SVG/PNG figures of polars, point distributions and rotor results.
 //! * [`report`] — the paper report: Tables 3–5 beside the paper's values, figures, words.
 //!
@@ -83,5 +85,6 @@ pub mod polar;
 pub mod report;
 pub mod rotor;
 pub mod section;
+pub mod studies;
 pub mod table;
 pub mod viscous;

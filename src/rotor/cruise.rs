@@ -5,9 +5,9 @@
 use super::aircraft::Aircraft;
 use super::atmosphere::Atmosphere;
 use super::disc_loads::Rotor;
+use super::spanwise::BladeSection;
 use super::trim::{trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
 use super::KT_TO_MS;
-use crate::section::SectionAero;
 use rayon::prelude::*;
 
 /// One speed of a [`speed_sweep`]: the airspeed \[kt\] and its trim (or why there is none).
@@ -28,7 +28,7 @@ pub fn sweep_speeds(from_kt: f64, to_kt: f64, step_kt: f64) -> Vec<f64> {
 /// Power-required sweep: [`trim_aircraft`] at each airspeed of `speeds_kt` (in parallel), at
 /// `mass_kg` and ISA `altitude_m`. Each point keeps its own result, so one speed without a trim
 /// (e.g. too slow to carry the weight) does not lose the others.
-pub fn speed_sweep<S: SectionAero + Sync + ?Sized>(
+pub fn speed_sweep<S: BladeSection + Sync + ?Sized>(
     aircraft: &Aircraft,
     section: &S,
     speeds_kt: &[f64],
@@ -51,7 +51,7 @@ pub fn speed_sweep<S: SectionAero + Sync + ?Sized>(
 /// `speed_kt` (ISA `altitude_m`, the preset's mass): the rotor is trimmed with [`trim_rotor`]
 /// and its converged inflow and flapping give α at `samples` azimuths ψ_k = 360°·k/samples,
 /// ψ = 0 with the blade pointing to the rear (paper Fig. 10). Returns (ψ \[deg\], α \[deg\]) pairs.
-pub fn cruise_blade_alpha<S: SectionAero + ?Sized>(
+pub fn cruise_blade_alpha<S: BladeSection + ?Sized>(
     aircraft: &Aircraft,
     section: &S,
     speed_kt: f64,

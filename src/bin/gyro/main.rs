@@ -7,6 +7,7 @@
 mod cli;
 mod plot;
 use polargen::report::console as print;
+mod study;
 
 use anyhow::{bail, Context, Result};
 use clap::{Args, CommandFactory, Parser, Subcommand};
@@ -143,6 +144,11 @@ enum Command {
     Completions(cli::CompletionsArgs),
     /// Man page (roff) on standard output (`gyro man > gyro.1; man ./gyro.1`).
     Man,
+    /// What-if studies beyond the paper (section tables solved and cached).
+    Study {
+        #[command(subcommand)]
+        study: study::Study,
+    },
 }
 
 /// The aircraft and the blade section of a single-section command.
@@ -399,6 +405,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             buf.push_str(&String::from_utf8_lossy(&script));
         }
         Command::Man => buf.push_str(&String::from_utf8_lossy(&cli::man_page(Cli::command())?)),
+        Command::Study { study } => study::run(study, buf, &|l| TOOL.say(l))?,
         Command::Report(args) => {
             check_report_paths(&args.out).context("--out")?;
             let outcome = write_report(&ReportInputs {
