@@ -188,6 +188,7 @@ fn report_tables_match_the_single_commands() {
     let polar_dir = root().join("polars").display().to_string();
     let out = gyro(&[
         "report",
+        "--no-studies",
         "--aircraft",
         &ac,
         "--polars",
@@ -406,6 +407,7 @@ fn errors_are_one_line() {
     let report = |polars_dir: &std::path::Path| {
         gyro(&[
             "report",
+            "--no-studies",
             "--aircraft",
             &ac,
             "--polars",

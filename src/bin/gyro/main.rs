@@ -178,6 +178,12 @@ pub struct ReportArgs {
     /// Output folder (created if missing): README.md and the figures.
     #[arg(long, default_value = "report")]
     out: PathBuf,
+    /// Table cache of the section "Beyond the paper" (`gyro study`) [default: as gyro study].
+    #[arg(long)]
+    cache: Option<PathBuf>,
+    /// Leave out the section "Beyond the paper" (its tables take minutes to solve once).
+    #[arg(long)]
+    no_studies: bool,
 }
 
 fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
@@ -412,6 +418,10 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
                 aircraft: args.aircraft,
                 polars: args.polars,
                 out: args.out,
+                studies: (!args.no_studies).then(|| {
+                    args.cache
+                        .unwrap_or_else(polargen::studies::default_cache_dir)
+                }),
             })?;
             for note in &outcome.notes {
                 TOOL.say(note);
