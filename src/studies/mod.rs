@@ -193,7 +193,7 @@ impl Performance {
         Self {
             rotor_rpm: trim.rotor_rpm,
             rotor_aoa_deg: trim.rotor_aoa_deg,
-            rotor_aoa_drag_equivalent_deg: trim.rotor_drag_n.atan2(trim.rotor_lift_n).to_degrees(),
+            rotor_aoa_drag_equivalent_deg: trim.rotor_aoa_drag_equivalent_deg,
             rotor_drag_n: trim.rotor_drag_n,
             prop_thrust_n: trim.prop_thrust_n,
             engine_rpm: trim.engine_rpm,
