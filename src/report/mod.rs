@@ -32,7 +32,7 @@ pub use shipped::{SHIPPED_AIRCRAFT, SHIPPED_POLARS};
 use crate::geometry::airfoil_key;
 use crate::output::{check_output_path, OutputError, OutputSet};
 use crate::plot::rotor_plots::{power_plot, takeoff_plot};
-use crate::plot::{render_with_legend_room, Figure, PlotError};
+use crate::plot::{render_into_set, Figure, PlotError};
 use crate::rotor::study::paper::{Table5Row, SECTION_MACH, SECTION_RE, TABLE5, TABLE5_CL};
 use crate::rotor::study::sensitivity::{sensitivity, Sensitivity};
 use crate::rotor::study::{
@@ -195,15 +195,7 @@ pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError>
     let mut set = OutputSet::new();
     let mut figure = |name: &str, fig: &Figure| -> Result<(), ReportError> {
         for ext in FIGURE_FORMATS {
-            let path = inputs.out.join(format!("{name}.{ext}"));
-            let staged = set.stage(&path)?;
-            render_with_legend_room(fig, &staged).map_err(|e| match e {
-                PlotError::Output { source, .. } => PlotError::output(
-                    &path,
-                    OutputError::io(&path, std::io::Error::other(source.detail_for(&staged))),
-                ),
-                other => other,
-            })?;
+            render_into_set(fig, &inputs.out.join(format!("{name}.{ext}")), &mut set)?;
         }
         Ok(())
     };

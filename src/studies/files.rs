@@ -3,7 +3,7 @@
 
 use super::StudiesError;
 use crate::output::{check_output_path, OutputError, OutputSet};
-use crate::plot::{render_with_legend_room, Figure, Marker, Panel, PlotError};
+use crate::plot::{render_into_set, Figure, Marker, Panel};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -39,15 +39,7 @@ impl StudyFiles {
         })?;
         for (stem, fig) in &self.figures {
             for ext in FIGURE_FORMATS {
-                let path = dir.join(format!("{stem}.{ext}"));
-                let staged = set.stage(&path)?;
-                render_with_legend_room(fig, &staged).map_err(|e| match e {
-                    PlotError::Output { source, .. } => PlotError::output(
-                        &path,
-                        OutputError::io(&path, std::io::Error::other(source.detail_for(&staged))),
-                    ),
-                    other => other,
-                })?;
+                render_into_set(fig, &dir.join(format!("{stem}.{ext}")), &mut set)?;
             }
         }
         Ok(set.commit()?)
