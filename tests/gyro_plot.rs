@@ -188,7 +188,6 @@ fn report_tables_match_the_single_commands() {
     let polar_dir = root().join("polars").display().to_string();
     let out = gyro(&[
         "report",
-        "--no-studies",
         "--aircraft",
         &ac,
         "--polars",
@@ -407,7 +406,6 @@ fn errors_are_one_line() {
     let report = |polars_dir: &std::path::Path| {
         gyro(&[
             "report",
-            "--no-studies",
             "--aircraft",
             &ac,
             "--polars",

@@ -181,9 +181,9 @@ pub struct ReportArgs {
     /// Table cache of the section "Beyond the paper" (`gyro study`) [default: as gyro study].
     #[arg(long)]
     cache: Option<PathBuf>,
-    /// Leave out the section "Beyond the paper" (its tables take minutes to solve once).
+    /// Add the section "Beyond the paper" (`gyro study`; its tables take minutes to solve once).
     #[arg(long)]
-    no_studies: bool,
+    studies: bool,
 }
 
 fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
@@ -418,7 +418,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
                 aircraft: args.aircraft,
                 polars: args.polars,
                 out: args.out,
-                studies: (!args.no_studies).then(|| {
+                studies: args.studies.then(|| {
                     args.cache
                         .unwrap_or_else(polargen::studies::default_cache_dir)
                 }),
