@@ -202,7 +202,6 @@ fn settings_out_of_range_are_refused() {
     })
     .contains("ncrit"));
     assert_eq!(base.settings().unwrap().len(), 1 + 3 + 7 + 2 + 3 + 1);
-    assert!(polargen::studies::parse_list("trips", " , ").is_err());
 }
 
 #[test]
@@ -232,7 +231,7 @@ fn bad_study_input_is_one_line_before_any_work() {
         (&["--trips", "0,0.1"][..], "(0, 1]"),
         (&["--trips", "0.1,1.5"][..], "(0, 1]"),
         (&["--outboard", "1.2"][..], "[0, 1]"),
-        (&["--ncrits", ""][..], "empty list"),
+        (&["--ncrits", ""][..], "--ncrits"),
         (&["--airfoil", "nosuchfoil"][..], "nosuchfoil"),
     ] {
         let o = gyro(extra);

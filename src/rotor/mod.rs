@@ -40,12 +40,13 @@ mod takeoff;
 mod trim;
 
 pub use aircraft::{
-    check_altitude_m, check_mass_kg, check_speed_kt, Aircraft, AircraftError, BladeGeometry,
-    EngineParams, PropellerParams, RotorParams, TakeoffParams, MAX_MASS_KG, MAX_SPEED_KT,
+    check_altitude_m, check_azimuth_samples, check_blade_radius, check_mass_kg, check_speed_kt,
+    Aircraft, AircraftError, BladeGeometry, EngineParams, PropellerParams, RotorParams,
+    TakeoffParams, MAX_MASS_KG, MAX_SPEED_KT,
 };
 pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};
-pub use cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds, SweepPoint};
+pub use cruise::{checked_sweep_speeds, cruise_blade_alpha, speed_sweep, sweep_speeds, SweepPoint};
 pub use disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution, RotorSolverParams};
 pub use engine::Engine;
 pub use flapping::Teeter;

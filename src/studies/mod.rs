@@ -18,11 +18,13 @@ mod cache;
 pub mod contamination;
 mod files;
 mod progress;
+mod request;
 pub mod speed;
 
 pub use cache::{check_cache_dir, default_cache_dir, load_study_airfoil, TableCache, CACHE_FORMAT};
 pub use files::{check_study_out, StudyFiles};
 pub use progress::{sections, study_tables, Progress};
+pub use request::{records_json, StudyKind, StudyOutcome, StudyRequest};
 
 use crate::geometry::GeometryError;
 use crate::output::OutputError;
@@ -67,6 +69,9 @@ pub enum StudiesError {
     /// A table could not be written to the cache.
     #[error("table cache")]
     Cache(#[source] TableError),
+    /// The aircraft file could not be loaded.
+    #[error(transparent)]
+    Aircraft(#[from] crate::rotor::AircraftError),
     /// A rotor computation failed.
     #[error(transparent)]
     Rotor(#[from] StudyError),
@@ -237,35 +242,7 @@ pub fn command_line_cache(dir: Option<std::path::PathBuf>) -> Result<TableCache,
     })
 }
 
-/// Records as a pretty JSON array with a final newline.
-pub fn records_json<T: Serialize>(records: &[T]) -> String {
-    let mut s = serde_json::to_string_pretty(records).unwrap_or_else(|_| "[]".into());
-    s.push('\n');
-    s
-}
-
 /// A value with `decimals` decimals, or `-` for none.
 pub(crate) fn cell(v: Option<f64>, decimals: usize) -> String {
     v.map_or_else(|| "-".to_string(), |v| format!("{v:.decimals$}"))
-}
-
-/// A comma-separated list of numbers from the command line, checked: not empty, each finite.
-pub fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>, StudiesError> {
-    let items: Vec<&str> = text
-        .split(',')
-        .map(str::trim)
-        .filter(|s| !s.is_empty())
-        .collect();
-    if items.is_empty() {
-        return Err(StudiesError::BadSetting(format!("--{flag}: empty list")));
-    }
-    items
-        .iter()
-        .map(|s| match s.parse::<f64>() {
-            Ok(v) if v.is_finite() => Ok(v),
-            _ => Err(StudiesError::BadSetting(format!(
-                "--{flag} {s}: not a number"
-            ))),
-        })
-        .collect()
 }
