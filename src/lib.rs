@@ -6,10 +6,10 @@
 //! Data flows one way through the module tree; a lower layer never imports a higher one:
 //!
 //! ```text
-//! geometry → inviscid → boundary_layer → viscous → polar → table → rotor → report
+//! geometry → inviscid → boundary_layer → viscous → polar → table → rotor → studies → report
 //!                                                              ↘ plot ↗
 //! leaf modules every layer may use: section, compressibility, input, output, limits,
-//! diagnostics, arguments
+//! diagnostics, arguments, cli
 //! ```
 //!
 //! * [`geometry`] — airfoil shapes (NACA 4/5-digit, coordinate files, named registry), splines,
@@ -27,6 +27,8 @@
 //! * [`rotor`] — blade-element model of a teetering gyroplane rotor and a blade-element–momentum
 //!   propeller with its engine: trim, takeoff, cruise sweeps, and [`rotor::study`], the paper's
 //!   clean-versus-contaminated study and its sensitivity to the preset's estimates.
+//! * [`studies`] — what-if studies on top of the rotor (contamination severity and spanwise
+//!   coverage, airfoil choice, airspeed), their section tables solved and cached.
 //! * [`plot`] — SVG/PNG figures of polars, point distributions and rotor results.
 //! * [`report`] — the paper report: Tables 3–5 beside the paper's values, figures, words.
 //!
@@ -44,6 +46,8 @@
 //! * [`diagnostics`] — an error and its causes on one line, for the command-line tools.
 //! * [`arguments`] — checks of user-given values (flags, Python arguments) with one-line
 //!   errors naming the argument.
+//! * [`cli`] — the conventions both command-line tools share: the error line and exit codes,
+//!   `--quiet`, completions, man pages and the generated command-line reference.
 //!
 //! # Public API
 //!
@@ -61,7 +65,7 @@
 //! | figures | [`plot::render`] with [`plot::polar_plots`], [`plot::point_plots`], [`plot::rotor_plots`] |
 //! | the paper report | [`report::write_report`] |
 //! | write any result file | [`output::write_output`] |
-//! | check user-given values | [`inputs`], [`polar::check_alphas`], [`rotor::check_speed_kt`] |
+//! | check user-given values | [`arguments`], [`polar::check_alphas`], [`rotor::check_speed_kt`] |
 //!
 //! The Python package (`python/`, a workspace member built with PyO3 and maturin) is a thin
 //! layer over this API: it calls the functions above and adds no computation of its own.
@@ -70,6 +74,7 @@
 
 pub mod arguments;
 pub mod boundary_layer;
+pub mod cli;
 pub mod compressibility;
 pub mod diagnostics;
 pub mod geometry;
@@ -83,5 +88,6 @@ pub mod polar;
 pub mod report;
 pub mod rotor;
 pub mod section;
+pub mod studies;
 pub mod table;
 pub mod viscous;

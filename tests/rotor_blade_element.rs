@@ -68,8 +68,8 @@ fn reverse_flow_loads_mirror_forward_flow() {
         let theta = f64::to_radians(theta_deg);
         let rev = StripFlow::new(-ut, up, theta, 0.2, &AIR);
         let fwd = StripFlow::new(ut, up, -theta, 0.2, &AIR);
-        let lr = strip_load(&rev, &rev.coefficients(&section), 1.225, 0.2, 1.0);
-        let lf = strip_load(&fwd, &fwd.coefficients(&section), 1.225, 0.2, 1.0);
+        let lr = strip_load(&rev, &rev.coefficients(&section, 0.5), 1.225, 0.2, 1.0);
+        let lf = strip_load(&fwd, &fwd.coefficients(&section, 0.5), 1.225, 0.2, 1.0);
         assert!(
             (lr.normal - lf.normal).abs() < 1e-9 * (1.0 + lf.normal.abs()),
             "{lr:?} {lf:?}"
@@ -82,7 +82,7 @@ fn reverse_flow_loads_mirror_forward_flow() {
     // Air from behind on a nose-up plate hits its upper surface: the normal force is down and
     // the drag pushes the blade backwards (along the air's motion, +t here).
     let rev = StripFlow::new(-20.0, 0.0, 2.5f64.to_radians(), 0.2, &AIR);
-    let l = strip_load(&rev, &rev.coefficients(&section), 1.225, 0.2, 1.0);
+    let l = strip_load(&rev, &rev.coefficients(&section, 0.5), 1.225, 0.2, 1.0);
     assert!(l.normal < 0.0 && l.tangential > 0.0, "{l:?}");
 }
 

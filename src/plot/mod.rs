@@ -42,5 +42,6 @@ pub mod rotor_plots;
 pub use error::PlotError;
 pub use figure::{AxisRange, Figure, Line, Marker, MarkerKind, Panel, Series, Style};
 pub use render::{
-    check_image_path, render, render_svg_string, render_with, render_with_legend_room, RenderParams,
+    check_image_path, render, render_into_set, render_svg_string, render_with,
+    render_with_legend_room, RenderParams,
 };

@@ -16,7 +16,7 @@ use super::error::PlotError;
 use super::figure::{AxisRange, Figure};
 use super::font::register_shipped_font;
 use super::layout::Layout;
-use crate::output::{check_output_path, write_output_via_file, OutputError};
+use crate::output::{check_output_path, write_output_via_file, OutputError, OutputSet};
 
 /// Sizes (pixels), fonts (pixel heights) and spacing of rendered figures.
 #[derive(Clone, Debug, PartialEq)]
@@ -195,6 +195,19 @@ pub fn render_with_legend_room(figure: &Figure, path: &Path) -> Result<(), PlotE
         params.panel_width = SINGLE_PANEL_WIDTH;
     }
     render_with(figure, path, &params)
+}
+
+/// Renders `figure` as the file `path` of the output `set` ([`render_with_legend_room`] into
+/// the staged file); errors name `path`, never the staging folder.
+pub fn render_into_set(figure: &Figure, path: &Path, set: &mut OutputSet) -> Result<(), PlotError> {
+    let staged = set.stage(path).map_err(|e| PlotError::output(path, e))?;
+    render_with_legend_room(figure, &staged).map_err(|e| match e {
+        PlotError::Output { source, .. } => PlotError::output(
+            path,
+            OutputError::io(path, std::io::Error::other(source.detail_for(&staged))),
+        ),
+        other => other,
+    })
 }
 
 /// Renders `figure` to an SVG document in memory (default parameters).

@@ -19,6 +19,7 @@ macro_rules! outln {
     }};
 }
 
+mod beyond;
 pub mod console;
 mod fidelity;
 mod figures;
@@ -31,7 +32,7 @@ pub use shipped::{SHIPPED_AIRCRAFT, SHIPPED_POLARS};
 use crate::geometry::airfoil_key;
 use crate::output::{check_output_path, OutputError, OutputSet};
 use crate::plot::rotor_plots::{power_plot, takeoff_plot};
-use crate::plot::{render_with_legend_room, Figure, PlotError};
+use crate::plot::{render_into_set, Figure, PlotError};
 use crate::rotor::study::paper::{Table5Row, SECTION_MACH, SECTION_RE, TABLE5, TABLE5_CL};
 use crate::rotor::study::sensitivity::{sensitivity, Sensitivity};
 use crate::rotor::study::{
@@ -83,6 +84,9 @@ pub struct ReportInputs {
     pub polars: PathBuf,
     /// Output folder (created if missing): `README.md` and the figures.
     pub out: PathBuf,
+    /// Table cache folder of the section "Beyond the paper" ([`crate::studies`]); `None`
+    /// leaves the section out.
+    pub studies: Option<PathBuf>,
 }
 
 /// What a report run wrote, and what a user should read beside it.
@@ -135,6 +139,9 @@ pub enum ReportError {
     /// A figure cannot be drawn or written.
     #[error(transparent)]
     Plot(#[from] PlotError),
+    /// A study of the section "Beyond the paper" failed.
+    #[error("beyond the paper")]
+    Studies(#[from] crate::studies::StudiesError),
     /// The report's text cannot be written.
     #[error("cannot write {}", path.display())]
     Text {
@@ -180,19 +187,15 @@ pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError>
         .map(|row| load_foil(&inputs.polars, row))
         .collect::<Result<Vec<_>, _>>()?;
     let rotor = rotor_results(&ac, &foils[0].tables)?;
+    let beyond = match &inputs.studies {
+        Some(cache) => Some(beyond::run(&ac, cache)?),
+        None => None,
+    };
     // Every file of the report appears together with the others, or none does.
     let mut set = OutputSet::new();
     let mut figure = |name: &str, fig: &Figure| -> Result<(), ReportError> {
         for ext in FIGURE_FORMATS {
-            let path = inputs.out.join(format!("{name}.{ext}"));
-            let staged = set.stage(&path)?;
-            render_with_legend_room(fig, &staged).map_err(|e| match e {
-                PlotError::Output { source, .. } => PlotError::output(
-                    &path,
-                    OutputError::io(&path, std::io::Error::other(source.detail_for(&staged))),
-                ),
-                other => other,
-            })?;
+            render_into_set(fig, &inputs.out.join(format!("{name}.{ext}")), &mut set)?;
         }
         Ok(())
     };
@@ -221,7 +224,13 @@ pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError>
         ),
     )?;
 
-    let text = markdown::markdown(inputs, &ac, &foils, &rotor);
+    let mut text = markdown::markdown(inputs, &ac, &foils, &rotor);
+    if let Some(b) = &beyond {
+        for (name, fig) in b.figures()? {
+            figure(&name, &fig)?;
+        }
+        text.push_str(&b.markdown());
+    }
     let readme = inputs.out.join(REPORT_README);
     set.write(&readme, |w| {
         w.write_all(text.as_bytes())
@@ -254,7 +263,8 @@ pub fn check_report_paths(out: &Path) -> Result<(), OutputError> {
     let stems = TABLE5
         .iter()
         .map(polar_figure_name)
-        .chain(ROTOR_FIGURES.iter().map(|s| s.to_string()));
+        .chain(ROTOR_FIGURES.iter().map(|s| s.to_string()))
+        .chain(beyond::figure_stems().into_iter().map(String::from));
     let mut files: Vec<PathBuf> = stems
         .flat_map(|stem| FIGURE_FORMATS.map(|ext| out.join(format!("{stem}.{ext}"))))
         .collect();

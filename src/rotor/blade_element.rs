@@ -19,7 +19,8 @@
 //! (σc_d0/8)(1 + 3μ²) to about (σc_d0/8)(1 + 4.6μ²); the preset switches it
 //! ([`YawedFlow`](super::YawedFlow), where the sources are).
 
-use crate::section::{wrap_deg, Lookup, SectionAero};
+use super::spanwise::BladeSection;
+use crate::section::{wrap_deg, Lookup};
 
 /// Air state used by a strip (density, viscosity and speed of sound).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -83,9 +84,10 @@ impl StripFlow {
         self.ut < 0.0
     }
 
-    /// Section coefficients from `section` at this strip's (α, Re, M).
-    pub fn coefficients<S: SectionAero + ?Sized>(&self, section: &S) -> Lookup {
-        section.lookup(self.alpha_deg, self.reynolds, self.mach)
+    /// Section coefficients from `section` at this strip's (α, Re, M), the strip centred at
+    /// radius fraction `r_over_r`.
+    pub fn coefficients<S: BladeSection + ?Sized>(&self, section: &S, r_over_r: f64) -> Lookup {
+        section.lookup_at(r_over_r, self.alpha_deg, self.reynolds, self.mach)
     }
 }
 

@@ -5,9 +5,11 @@
 use super::aircraft::Aircraft;
 use super::atmosphere::Atmosphere;
 use super::disc_loads::Rotor;
+use super::spanwise::BladeSection;
 use super::trim::{trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
-use super::KT_TO_MS;
-use crate::section::SectionAero;
+use super::{check_speed_kt, KT_TO_MS};
+use crate::arguments::ArgumentError;
+use crate::limits::{short_number, MAX_SWEEP_CELL_SPEEDS, MAX_SWEEP_SPEEDS};
 use rayon::prelude::*;
 
 /// One speed of a [`speed_sweep`]: the airspeed \[kt\] and its trim (or why there is none).
@@ -25,10 +27,49 @@ pub fn sweep_speeds(from_kt: f64, to_kt: f64, step_kt: f64) -> Vec<f64> {
     (0..n).map(|k| from_kt + k as f64 * step_kt).collect()
 }
 
+/// The airspeeds of a sweep from the flags `--from-kt`, `--to-kt`, `--step-kt` ([`sweep_speeds`]),
+/// checked: each bound a valid airspeed, `to ≥ from`, a positive step, at most
+/// [`MAX_SWEEP_SPEEDS`] speeds and, for a rotor of `cells` strip × azimuth cells, at most
+/// [`MAX_SWEEP_CELL_SPEEDS`] speeds × cells.
+pub fn checked_sweep_speeds(
+    from_kt: f64,
+    to_kt: f64,
+    step_kt: f64,
+    cells: usize,
+) -> Result<Vec<f64>, ArgumentError> {
+    check_speed_kt("--from-kt", from_kt)?;
+    check_speed_kt("--to-kt", to_kt)?;
+    if to_kt < from_kt {
+        let rule = format!("below --from-kt {}", short_number(from_kt));
+        return Err(ArgumentError::new("--to-kt", to_kt, rule));
+    }
+    if !(step_kt.is_finite() && step_kt > 0.0) {
+        let rule = "must be a positive number of knots";
+        return Err(ArgumentError::new("--step-kt", step_kt, rule));
+    }
+    let count = ((to_kt - from_kt) / step_kt).floor() + 1.0;
+    if count > MAX_SWEEP_SPEEDS as f64 {
+        let rule = format!(
+            "gives {count:.0} speeds from {from_kt} to {to_kt} kt (at most {MAX_SWEEP_SPEEDS})"
+        );
+        return Err(ArgumentError::new("--step-kt", step_kt, rule));
+    }
+    let speeds = sweep_speeds(from_kt, to_kt, step_kt);
+    if speeds.len().saturating_mul(cells) > MAX_SWEEP_CELL_SPEEDS {
+        let rule = format!(
+            "{} speeds of a rotor with {cells} cells exceed the limit of \
+             {MAX_SWEEP_CELL_SPEEDS} speeds × cells; use a larger step",
+            speeds.len()
+        );
+        return Err(ArgumentError::new("--step-kt", step_kt, rule));
+    }
+    Ok(speeds)
+}
+
 /// Power-required sweep: [`trim_aircraft`] at each airspeed of `speeds_kt` (in parallel), at
 /// `mass_kg` and ISA `altitude_m`. Each point keeps its own result, so one speed without a trim
 /// (e.g. too slow to carry the weight) does not lose the others.
-pub fn speed_sweep<S: SectionAero + Sync + ?Sized>(
+pub fn speed_sweep<S: BladeSection + Sync + ?Sized>(
     aircraft: &Aircraft,
     section: &S,
     speeds_kt: &[f64],
@@ -51,7 +92,7 @@ pub fn speed_sweep<S: SectionAero + Sync + ?Sized>(
 /// `speed_kt` (ISA `altitude_m`, the preset's mass): the rotor is trimmed with [`trim_rotor`]
 /// and its converged inflow and flapping give α at `samples` azimuths ψ_k = 360°·k/samples,
 /// ψ = 0 with the blade pointing to the rear (paper Fig. 10). Returns (ψ \[deg\], α \[deg\]) pairs.
-pub fn cruise_blade_alpha<S: SectionAero + ?Sized>(
+pub fn cruise_blade_alpha<S: BladeSection + ?Sized>(
     aircraft: &Aircraft,
     section: &S,
     speed_kt: f64,

@@ -13,8 +13,8 @@ use super::inflow::{
     drees_coefficients, gessow_myers_tip_loss, glauert_induced_velocity, glauert_thrust,
     prandtl_strip_mean, InflowModel, TipLoss, YawedFlow,
 };
+use super::spanwise::BladeSection;
 use crate::numerics::small_dense;
-use crate::section::SectionAero;
 use std::f64::consts::TAU;
 
 /// Errors of the rotor solution.
@@ -271,7 +271,7 @@ impl Rotor {
     }
 
     /// Blade-element sum for inflow `v0` and flapping `teeter`.
-    fn evaluate<S: SectionAero + ?Sized>(
+    fn evaluate<S: BladeSection + ?Sized>(
         &self,
         section: &S,
         cond: &FlightCondition,
@@ -311,7 +311,7 @@ impl Rotor {
                     ),
                 };
                 lift_free += (1.0 - lift_factor) * dr;
-                let coeffs = flow.coefficients(section);
+                let coeffs = flow.coefficients(section, r / self.radius);
                 if coeffs.re_clamped || coeffs.mach_clamped {
                     clamped += 1;
                 }
@@ -355,7 +355,7 @@ impl Rotor {
     /// Scaled residuals of the coupled problem for unknowns z = (v0/ΩR, β1c, β1s):
     /// momentum balance (v0 − κ·v_Glauert(T))/ΩR and the first-harmonic teeter moments divided
     /// by ½ρ(ΩR)²cR².
-    fn residuals<S: SectionAero + ?Sized>(
+    fn residuals<S: BladeSection + ?Sized>(
         &self,
         section: &S,
         cond: &FlightCondition,
@@ -390,7 +390,7 @@ impl Rotor {
 
     /// Solves inflow and teeter flapping at `cond` (Newton's method with a finite-difference
     /// Jacobian on the three scaled unknowns), starting from `warm` if given.
-    pub fn solve<S: SectionAero + ?Sized>(
+    pub fn solve<S: BladeSection + ?Sized>(
         &self,
         section: &S,
         cond: &FlightCondition,

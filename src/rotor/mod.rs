@@ -1,9 +1,9 @@
 //! Blade-element (strip) model of a two-bladed teetering gyroplane rotor driven by a polar
 //! table: autorotation, cruise trim and takeoff.
 //!
-//! The rotor sees the airfoil only through [`SectionAero`](crate::section::SectionAero):
-//! every strip turns its local velocity into (α, Re, M) and asks the section for
-//! (c_l, c_d, c_m). The facade is re-exported here (the aircraft, the rotor and its solution,
+//! The rotor sees the airfoil only through [`BladeSection`]: every strip turns its local
+//! velocity into (α, Re, M) and asks the section at its radius for (c_l, c_d, c_m); every
+//! [`SectionAero`](crate::section::SectionAero) is a blade section uniform along the span. The facade is re-exported here (the aircraft, the rotor and its solution,
 //! trim, takeoff, cruise sweeps, the blade element) and [`study`]; the files inside:
 //!
 //! * `atmosphere` — ISA standard atmosphere (density, speed of sound, viscosity).
@@ -21,6 +21,8 @@
 //! * `propeller` — blade-element–momentum propeller from its geometry and section table, and
 //!   the powerplant: calibrated pitch, engine rpm for a thrust, full-throttle equilibrium.
 //! * `takeoff` — time-domain takeoff simulation to 15 m.
+//! * `spanwise` — section data along the blade: [`BladeSection`] and [`SpanwiseSection`], a
+//!   blade that reads another section over part of its span.
 //! * [`study`] — the paper's clean-versus-contaminated study and its published values.
 
 mod aircraft;
@@ -32,22 +34,25 @@ mod engine;
 mod flapping;
 mod inflow;
 mod propeller;
+mod spanwise;
 pub mod study;
 mod takeoff;
 mod trim;
 
 pub use aircraft::{
-    check_altitude_m, check_mass_kg, check_speed_kt, Aircraft, AircraftError, BladeGeometry,
-    EngineParams, PropellerParams, RotorParams, TakeoffParams, MAX_MASS_KG, MAX_SPEED_KT,
+    check_altitude_m, check_azimuth_samples, check_blade_radius, check_mass_kg, check_speed_kt,
+    Aircraft, AircraftError, BladeGeometry, EngineParams, PropellerParams, RotorParams,
+    TakeoffParams, MAX_MASS_KG, MAX_SPEED_KT,
 };
 pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};
-pub use cruise::{cruise_blade_alpha, speed_sweep, sweep_speeds, SweepPoint};
+pub use cruise::{checked_sweep_speeds, cruise_blade_alpha, speed_sweep, sweep_speeds, SweepPoint};
 pub use disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution, RotorSolverParams};
 pub use engine::Engine;
 pub use flapping::Teeter;
 pub use inflow::{InflowModel, TipLoss, YawedFlow};
 pub use propeller::{FullThrottle, Powerplant, Propeller, PropellerError, PropellerPoint};
+pub use spanwise::{BladeSection, SpanBand, SpanwiseSection};
 pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
 pub use trim::{autorotation, trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
 

@@ -24,8 +24,8 @@ use super::aircraft::Aircraft;
 use super::atmosphere::Atmosphere;
 use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::propeller::{FullThrottle, Powerplant, PropellerError};
+use super::spanwise::BladeSection;
 use super::{rad_s_to_rpm, rpm_to_rad_s, G0};
-use crate::section::SectionAero;
 use serde::Serialize;
 
 /// Errors of the takeoff simulation.
@@ -127,7 +127,7 @@ impl TakeoffResult {
 type State = [f64; 6];
 
 /// Everything the right-hand side needs.
-struct Model<'a, S: SectionAero + ?Sized> {
+struct Model<'a, S: BladeSection + ?Sized> {
     aircraft: &'a Aircraft,
     rotor: Rotor,
     section: &'a S,
@@ -141,7 +141,7 @@ struct Model<'a, S: SectionAero + ?Sized> {
     liftoff_speed: f64,
 }
 
-impl<S: SectionAero + ?Sized> Model<'_, S> {
+impl<S: BladeSection + ?Sized> Model<'_, S> {
     fn rotor_at(&mut self, t: f64, y: &State) -> Result<RotorSolution, TakeoffError> {
         let atm = Atmosphere::isa(self.aircraft.takeoff.field_altitude_m + y[1].max(0.0));
         let cond = FlightCondition {
@@ -286,7 +286,7 @@ fn sample(t: f64, y: &State, s: &RotorSolution) -> TakeoffSample {
 
 /// Simulates the takeoff of `aircraft` with rotor section `section` from brake release to the
 /// screen height (see the module documentation for the equations).
-pub fn simulate_takeoff<S: SectionAero + ?Sized>(
+pub fn simulate_takeoff<S: BladeSection + ?Sized>(
     aircraft: &Aircraft,
     section: &S,
 ) -> Result<TakeoffResult, TakeoffError> {

@@ -14,9 +14,9 @@ use super::aircraft::Aircraft;
 use super::atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::propeller::{Powerplant, PropellerError};
+use super::spanwise::BladeSection;
 use super::{rad_s_to_rpm, rpm_to_rad_s, KT_TO_MS};
 use crate::numerics::roots::bracketed_root;
-use crate::section::SectionAero;
 use serde::Serialize;
 
 /// Errors of autorotation and trim.
@@ -199,7 +199,7 @@ impl TrimResult {
 /// Autorotation: the rotor speed at which the aerodynamic torque vanishes, for airspeed `v`
 /// \[m/s\] and hub angle `hub_aoa` \[rad\]. The scan starts at the highest rpm and moves down, so
 /// the equilibrium found is the stable one (torque falls with rpm there).
-pub fn autorotation<S: SectionAero + ?Sized>(
+pub fn autorotation<S: BladeSection + ?Sized>(
     rotor: &Rotor,
     section: &S,
     v: f64,
@@ -258,7 +258,7 @@ pub fn autorotation<S: SectionAero + ?Sized>(
 
 /// Level-flight trim: hub angle and rotor speed such that the rotor autorotates and its lift
 /// equals `weight` \[N\] at airspeed `v` \[m/s\]. Returns the rotor solution.
-pub fn trim_rotor<S: SectionAero + ?Sized>(
+pub fn trim_rotor<S: BladeSection + ?Sized>(
     rotor: &Rotor,
     section: &S,
     v: f64,
@@ -323,7 +323,7 @@ pub fn trim_rotor<S: SectionAero + ?Sized>(
 
 /// Full cruise trim of `aircraft` at `speed_kt` \[kt\], `mass_kg` and ISA `altitude_m`: rotor
 /// trim, airframe drag, propeller thrust and engine rpm (paper Table 3).
-pub fn trim_aircraft<S: SectionAero + ?Sized>(
+pub fn trim_aircraft<S: BladeSection + ?Sized>(
     aircraft: &Aircraft,
     section: &S,
     speed_kt: f64,

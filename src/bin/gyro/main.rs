@@ -3,30 +3,29 @@
 //! plots ([`plot`]) and the paper report ([`polargen::report`]). Text output is formatted in
 //! [`print`](mod@print).
 
-#[path = "../common/cli.rs"]
-mod cli;
 mod plot;
 use polargen::report::console as print;
+mod study;
 
-use anyhow::{bail, Context, Result};
+use anyhow::{Context, Result};
 use clap::{Args, CommandFactory, Parser, Subcommand};
-use cli::Tool;
-use polargen::limits::{short_number, AZIMUTH_SAMPLES, MAX_SWEEP_CELL_SPEEDS, MAX_SWEEP_SPEEDS};
+use polargen::cli::{self, Tool};
 use polargen::output::{check_output_path, write_output, OutputError};
 use polargen::report::{
     check_report_paths, write_report, ReportInputs, SHIPPED_AIRCRAFT, SHIPPED_POLARS,
 };
 use polargen::rotor::study::{paper_runs, SpeedSweep};
 use polargen::rotor::{
-    check_altitude_m, check_mass_kg, check_speed_kt, cruise_blade_alpha, simulate_takeoff,
-    sweep_speeds, trim_aircraft, Aircraft, TrimParams, MAX_ISA_ALTITUDE_M,
+    check_altitude_m, check_azimuth_samples, check_blade_radius, check_mass_kg, check_speed_kt,
+    checked_sweep_speeds, cruise_blade_alpha, simulate_takeoff, trim_aircraft, Aircraft,
+    TrimParams, MAX_ISA_ALTITUDE_M,
 };
 use polargen::table::read_lookup_table;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// This tool's name and error prefix.
-const TOOL: Tool = Tool { name: "gyro" };
+static TOOL: Tool = Tool::new("gyro");
 
 /// Appends one formatted line to an output `String` (writing to a `String` cannot fail).
 macro_rules! outln {
@@ -143,6 +142,11 @@ enum Command {
     Completions(cli::CompletionsArgs),
     /// Man page (roff) on standard output (`gyro man > gyro.1; man ./gyro.1`).
     Man,
+    /// What-if studies beyond the paper (section tables solved and cached).
+    Study {
+        #[command(subcommand)]
+        study: study::Study,
+    },
 }
 
 /// The aircraft and the blade section of a single-section command.
@@ -172,6 +176,12 @@ pub struct ReportArgs {
     /// Output folder (created if missing): README.md and the figures.
     #[arg(long, default_value = "report")]
     out: PathBuf,
+    /// Table cache of the section "Beyond the paper" (`gyro study`) [default: as gyro study].
+    #[arg(long)]
+    cache: Option<PathBuf>,
+    /// Add the section "Beyond the paper" (`gyro study`; its tables take minutes to solve once).
+    #[arg(long)]
+    studies: bool,
 }
 
 fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
@@ -186,41 +196,6 @@ fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
 /// An airspeed flag ([`check_speed_kt`]).
 fn check_speed(flag: &str, kt: f64) -> Result<()> {
     Ok(check_speed_kt(&format!("--{flag}"), kt)?)
-}
-
-/// The `--radius` flag: a fraction of R on the blade, outboard of the root cut-out.
-fn check_radius(radius: f64, aircraft: &Aircraft) -> Result<()> {
-    let root = aircraft.rotor.root_cutout_m / aircraft.rotor.radius_m;
-    if !(radius > root && radius <= 1.0) {
-        bail!(
-            "--radius {}: must be a fraction of R on the blade, in ({root:.3}, 1] \
-             (outboard of the {} m root cut-out)",
-            short_number(radius),
-            aircraft.rotor.root_cutout_m
-        );
-    }
-    Ok(())
-}
-
-fn check_samples(samples: usize) -> Result<()> {
-    let (lo, hi) = AZIMUTH_SAMPLES;
-    if !(lo..=hi).contains(&samples) {
-        bail!("--samples {samples}: must be between {lo} and {hi}");
-    }
-    Ok(())
-}
-
-/// A speed sweep of `speeds` trims of `aircraft` within [`MAX_SWEEP_CELL_SPEEDS`].
-fn check_sweep_work(speeds: &[f64], aircraft: &Aircraft) -> Result<()> {
-    let cells = aircraft.rotor.cells();
-    if speeds.len().saturating_mul(cells) > MAX_SWEEP_CELL_SPEEDS {
-        bail!(
-            "--step-kt: {} speeds of a rotor with {cells} cells exceed the limit of \
-             {MAX_SWEEP_CELL_SPEEDS} speeds × cells; use a larger step",
-            speeds.len()
-        );
-    }
-    Ok(())
 }
 
 /// The notes of a speed sweep on stderr, then an error if no speed trimmed.
@@ -246,37 +221,15 @@ pub struct SpeedRange {
 }
 
 impl SpeedRange {
-    /// The speeds of the sweep \[kt\], checked.
-    fn checked(&self) -> Result<Vec<f64>> {
-        let Self {
-            from_kt,
-            to_kt,
-            step_kt,
-        } = *self;
-        check_speed("from-kt", from_kt)?;
-        check_speed("to-kt", to_kt)?;
-        if to_kt < from_kt {
-            bail!(
-                "--to-kt {}: below --from-kt {}",
-                short_number(to_kt),
-                short_number(from_kt)
-            );
-        }
-        if !(step_kt.is_finite() && step_kt > 0.0) {
-            bail!(
-                "--step-kt {}: must be a positive number of knots",
-                short_number(step_kt)
-            );
-        }
-        let count = ((to_kt - from_kt) / step_kt).floor() + 1.0;
-        if count > MAX_SWEEP_SPEEDS as f64 {
-            bail!(
-                "--step-kt {}: gives {count:.0} speeds from {from_kt} to {to_kt} kt \
-                 (at most {MAX_SWEEP_SPEEDS})",
-                short_number(step_kt)
-            );
-        }
-        Ok(sweep_speeds(from_kt, to_kt, step_kt))
+    /// The speeds of the sweep \[kt\] for `aircraft`, checked ([`checked_sweep_speeds`]).
+    fn checked(&self, aircraft: &Aircraft) -> Result<Vec<f64>> {
+        let cells = aircraft.rotor.cells();
+        Ok(checked_sweep_speeds(
+            self.from_kt,
+            self.to_kt,
+            self.step_kt,
+            cells,
+        )?)
     }
 }
 
@@ -356,9 +309,8 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             mass,
             json,
         } => {
-            let speeds = speeds.checked()?;
             let ac = load_aircraft(&aircraft, mass)?;
-            check_sweep_work(&speeds, &ac)?;
+            let speeds = speeds.checked(&ac)?;
             let section = read_lookup_table(&table)?;
             let sweep = SpeedSweep::run(&ac, &section, &speeds, None);
             report_sweep(&sweep)?;
@@ -375,9 +327,9 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             samples,
         } => {
             check_speed("speed-kt", speed_kt)?;
-            check_samples(samples)?;
+            check_azimuth_samples("--samples", samples)?;
             let ac = load_aircraft(&aircraft, None)?;
-            check_radius(radius, &ac)?;
+            check_blade_radius("--radius", radius, &ac)?;
             let section = read_lookup_table(&table)?;
             let curve = cruise_blade_alpha(
                 &ac,
@@ -399,12 +351,24 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             buf.push_str(&String::from_utf8_lossy(&script));
         }
         Command::Man => buf.push_str(&String::from_utf8_lossy(&cli::man_page(Cli::command())?)),
+        Command::Study { study } => {
+            let outcome = study::request(study).run(&polargen::studies::Progress::on_terminal())?;
+            outcome.notes.iter().for_each(|n| TOOL.say(n));
+            for p in &outcome.written {
+                TOOL.say(format!("wrote {}", p.display()));
+            }
+            buf.push_str(&outcome.stdout);
+        }
         Command::Report(args) => {
             check_report_paths(&args.out).context("--out")?;
             let outcome = write_report(&ReportInputs {
                 aircraft: args.aircraft,
                 polars: args.polars,
                 out: args.out,
+                studies: args.studies.then(|| {
+                    args.cache
+                        .unwrap_or_else(polargen::studies::default_cache_dir)
+                }),
             })?;
             for note in &outcome.notes {
                 TOOL.say(note);
@@ -441,6 +405,6 @@ mod tests {
 
     #[test]
     fn cli_reference_is_current() {
-        super::cli::check_reference(super::Cli::command());
+        polargen::cli::check_reference(super::Cli::command());
     }
 }

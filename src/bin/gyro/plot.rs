@@ -91,8 +91,8 @@ pub fn run(kind: PlotKind) -> Result<()> {
         } => {
             let (speed_kt, radius, samples) = (*speed_kt, *radius, *samples);
             crate::check_speed("speed-kt", speed_kt)?;
-            crate::check_radius(radius, &aircraft)?;
-            crate::check_samples(samples)?;
+            polargen::rotor::check_blade_radius("--radius", radius, &aircraft)?;
+            polargen::rotor::check_azimuth_samples("--samples", samples)?;
             let curves =
                 blade_alpha_cases(&aircraft, &sections, labels, speed_kt, radius, samples)?;
             let refs: Vec<(&str, &[(f64, f64)])> = labels
@@ -113,8 +113,7 @@ pub fn run(kind: PlotKind) -> Result<()> {
             takeoff_plot(&refs, &title(format!("Takeoff to 15 m — {subject}")))
         }
         PlotKind::Power { speeds, .. } => {
-            let speeds = speeds.checked()?;
-            crate::check_sweep_work(&speeds, &aircraft)?;
+            let speeds = speeds.checked(&aircraft)?;
             let sweeps = sweep_cases(&aircraft, &sections, labels, &speeds);
             for sweep in &sweeps {
                 crate::report_sweep(sweep)?;

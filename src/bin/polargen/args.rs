@@ -39,7 +39,7 @@ pub enum Command {
     PlotPoint(PlotPointArgs),
     /// Shell completion script on standard output (e.g. `polargen completions bash >
     /// ~/.local/share/bash-completion/completions/polargen`).
-    Completions(crate::cli::CompletionsArgs),
+    Completions(polargen::cli::CompletionsArgs),
     /// Man page (roff) on standard output (`polargen man > polargen.1; man ./polargen.1`).
     Man,
 }

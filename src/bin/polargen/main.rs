@@ -10,8 +10,6 @@
 //! half-written (files are written to a temporary name and renamed).
 
 mod args;
-#[path = "../common/cli.rs"]
-mod cli;
 
 use std::io::IsTerminal;
 use std::path::Path;
@@ -22,8 +20,8 @@ use anyhow::{bail, Context, Result};
 use args::{Cli, Command, ConvertArgs, PlotArgs, PlotPointArgs, RunArgs, Shape};
 use clap::CommandFactory;
 
-use cli::Tool;
 use polargen::arguments;
+use polargen::cli::{self, Tool};
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, CHORD_UNITS_TOLERANCE};
 use polargen::inviscid::PanelSystem;
 use polargen::limits::{short_number, short_text, MAX_GRID_POINTS};
@@ -41,7 +39,7 @@ use polargen::viscous::distributions::write_distributions_csv;
 use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};
 
 /// This tool's name and error prefix.
-const TOOL: Tool = Tool { name: "polargen" };
+static TOOL: Tool = Tool::new("polargen");
 
 fn main() -> ExitCode {
     polargen::output::remove_staged_files_on_signals();
@@ -440,6 +438,6 @@ mod tests {
 
     #[test]
     fn cli_reference_is_current() {
-        super::cli::check_reference(super::Cli::command());
+        polargen::cli::check_reference(super::Cli::command());
     }
 }

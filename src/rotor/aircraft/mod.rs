@@ -91,6 +91,34 @@ pub fn check_mass_kg(name: &str, kg: f64) -> Result<(), ArgumentError> {
     ))
 }
 
+/// A blade radius argument as a fraction of R: on the blade, outboard of the root cut-out.
+pub fn check_blade_radius(
+    name: &str,
+    radius: f64,
+    aircraft: &Aircraft,
+) -> Result<(), ArgumentError> {
+    let root = aircraft.rotor.root_cutout_m / aircraft.rotor.radius_m;
+    if radius > root && radius <= 1.0 {
+        return Ok(());
+    }
+    let rule = format!(
+        "must be a fraction of R on the blade, in ({root:.3}, 1] (outboard of the {} m root \
+         cut-out)",
+        aircraft.rotor.root_cutout_m
+    );
+    Err(ArgumentError::new(name, radius, rule))
+}
+
+/// An azimuth sample count per revolution, within [`AZIMUTH_SAMPLES`](crate::limits::AZIMUTH_SAMPLES).
+pub fn check_azimuth_samples(name: &str, samples: usize) -> Result<(), ArgumentError> {
+    let (lo, hi) = crate::limits::AZIMUTH_SAMPLES;
+    if (lo..=hi).contains(&samples) {
+        return Ok(());
+    }
+    let rule = format!("must be between {lo} and {hi}");
+    Err(ArgumentError::with_text(name, samples.to_string(), rule))
+}
+
 /// An ISA altitude argument \[m\]: inside the troposphere of the atmosphere model.
 pub fn check_altitude_m(name: &str, m: f64) -> Result<(), ArgumentError> {
     if (0.0..=MAX_ISA_ALTITUDE_M).contains(&m) {

@@ -19,7 +19,7 @@ use super::cruise::{cruise_blade_alpha, speed_sweep};
 use super::takeoff::{simulate_takeoff, TakeoffError, TakeoffResult};
 use super::trim::{trim_aircraft, TrimError, TrimParams, TrimResult};
 use super::Aircraft;
-use crate::section::SectionAero;
+use crate::rotor::BladeSection;
 use rayon::prelude::*;
 
 /// Airspeed of the paper's cruise trim (Table 3) \[kt\].
@@ -72,7 +72,7 @@ pub struct PaperRun {
 }
 
 /// The paper's trim and takeoff with `section`; `case` names it in errors.
-pub fn paper_run<S: SectionAero + ?Sized>(
+pub fn paper_run<S: BladeSection + ?Sized>(
     aircraft: &Aircraft,
     section: &S,
     case: &str,
@@ -97,7 +97,7 @@ pub fn paper_run<S: SectionAero + ?Sized>(
 }
 
 /// [`paper_run`] for the clean and the contaminated section, in parallel.
-pub fn paper_runs<S: SectionAero + Sync + ?Sized>(
+pub fn paper_runs<S: BladeSection + Sync + ?Sized>(
     aircraft: &Aircraft,
     clean: &S,
     contaminated: &S,
@@ -122,7 +122,7 @@ pub struct SpeedSweep {
 
 impl SpeedSweep {
     /// Sweep `speeds_kt` (in parallel) with `section`.
-    pub fn run<S: SectionAero + Sync + ?Sized>(
+    pub fn run<S: BladeSection + Sync + ?Sized>(
         aircraft: &Aircraft,
         section: &S,
         speeds_kt: &[f64],
@@ -187,7 +187,7 @@ impl SpeedSweep {
 
 /// Speed sweeps of several sections, one after the other (each sweep runs its speeds in
 /// parallel); `cases` names them.
-pub fn sweep_cases<S: SectionAero + Sync>(
+pub fn sweep_cases<S: BladeSection + Sync>(
     aircraft: &Aircraft,
     sections: &[&S],
     cases: &[&str],
@@ -202,7 +202,7 @@ pub fn sweep_cases<S: SectionAero + Sync>(
 
 /// Blade α(ψ) at radius fraction `r_over_r` in trimmed level flight at `speed_kt` (ISA sea
 /// level), `samples` azimuths, for each section in parallel; `cases` names them.
-pub fn blade_alpha_cases<S: SectionAero + Sync>(
+pub fn blade_alpha_cases<S: BladeSection + Sync>(
     aircraft: &Aircraft,
     sections: &[&S],
     cases: &[&str],
@@ -232,7 +232,7 @@ pub fn blade_alpha_cases<S: SectionAero + Sync>(
 }
 
 /// The takeoff with each section, in parallel; `cases` names them.
-pub fn takeoff_cases<S: SectionAero + Sync>(
+pub fn takeoff_cases<S: BladeSection + Sync>(
     aircraft: &Aircraft,
     sections: &[&S],
     cases: &[&str],

@@ -1,5 +1,4 @@
-//! What both command-line tools share (included by `polargen` and `gyro` with `#[path]`):
-//! one error and exit-code convention, notes, `--quiet`, shell completions and man pages, and
+//! What both command-line tools share: one error and exit-code convention, notes, `--quiet`, shell completions and man pages, and
 //! the Markdown command-line reference generated from the clap definitions
 //! (`docs/cli/<tool>.md`, checked by each tool's tests).
 //!
@@ -9,21 +8,21 @@
 //! value, missing subcommand: then the help of the command is printed). Notes and progress
 //! lines are `<tool>: <text>` on stderr and `--quiet` silences them.
 
-use polargen::diagnostics::error_line;
+use crate::diagnostics::error_line;
 use std::fmt::Display;
 use std::process::ExitCode;
 use std::sync::OnceLock;
 
-/// Whether `--quiet` was given: set once, right after parsing, read by [`Tool::say`].
-static QUIET: OnceLock<bool> = OnceLock::new();
-
 /// Exit status of a command-line usage error.
 const USAGE_ERROR: u8 = 2;
 
-/// A command-line tool: its name, the prefix of every line it writes to stderr.
+/// A command-line tool: its name, the prefix of every line it writes to stderr, and whether
+/// `--quiet` was given (set once, right after parsing, read by [`Tool::say`]).
 pub struct Tool {
     /// Program name.
     pub name: &'static str,
+    /// `--quiet`.
+    quiet: OnceLock<bool>,
 }
 
 /// The shell of `completions SHELL` and the man page (shared by both tools).
@@ -35,6 +34,14 @@ pub struct CompletionsArgs {
 }
 
 impl Tool {
+    /// The tool called `name`, before its command line is parsed.
+    pub const fn new(name: &'static str) -> Self {
+        Self {
+            name,
+            quiet: OnceLock::new(),
+        }
+    }
+
     /// Parses the command line. Help and version go to stdout (exit 0); a missing subcommand
     /// prints the help to stderr (exit 2); any other clap error becomes one line
     /// `<name>: error: <message>` on stderr without the usage block (exit 2). `quiet` reads
@@ -42,7 +49,7 @@ impl Tool {
     pub fn parse<P: clap::Parser>(&self, quiet: impl Fn(&P) -> bool) -> Result<P, ExitCode> {
         match P::try_parse() {
             Ok(p) => {
-                let _ = QUIET.set(quiet(&p));
+                let _ = self.quiet.set(quiet(&p));
                 Ok(p)
             }
             Err(e) if !e.use_stderr() => {
@@ -89,7 +96,7 @@ impl Tool {
 
     /// A line on stderr, `<name>: <text>`, unless `--quiet` was given.
     pub fn say(&self, text: impl Display) {
-        if !QUIET.get().copied().unwrap_or(false) {
+        if !self.quiet.get().copied().unwrap_or(false) {
             eprintln!("{}: {text}", self.name);
         }
     }
@@ -118,7 +125,6 @@ fn closed_pipe(e: &anyhow::Error) -> bool {
     })
 }
 
-#[cfg(test)]
 /// The command-line reference of `cmd` in Markdown: one section per command and subcommand
 /// holding its `--help` text.
 pub fn markdown_reference(mut cmd: clap::Command) -> String {
@@ -134,7 +140,6 @@ pub fn markdown_reference(mut cmd: clap::Command) -> String {
     out
 }
 
-#[cfg(test)]
 /// Appends the section of `cmd` (called `path` on the command line) and of its subcommands.
 fn push_command(out: &mut String, cmd: &mut clap::Command, path: &str) {
     let help = cmd.render_long_help().to_string();
@@ -152,8 +157,7 @@ fn push_command(out: &mut String, cmd: &mut clap::Command, path: &str) {
 }
 
 /// Checks that `docs/cli/<tool>.md` holds the current reference of `cmd`, or rewrites it when
-/// the environment variable `UPDATE_CLI_REFERENCE` is set.
-#[cfg(test)]
+/// the environment variable `UPDATE_CLI_REFERENCE` is set (each tool's test; panics when stale).
 pub fn check_reference(cmd: clap::Command) {
     let name = cmd.get_name().to_string();
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))

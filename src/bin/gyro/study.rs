@@ -1,0 +1,122 @@
+//! `gyro study …`: what-if studies of [`polargen::studies`]; parse, run, print.
+
+use clap::{Args, Subcommand};
+use polargen::studies::{contamination::ContaminationOptions, StudyKind, StudyRequest};
+use std::path::PathBuf;
+
+/// Options every study shares.
+#[derive(Args)]
+pub struct Common {
+    /// Aircraft preset (TOML).
+    #[arg(long)]
+    aircraft: PathBuf,
+    /// Print JSON records (one per setting) instead of the text table.
+    #[arg(long)]
+    json: bool,
+    /// Write the CSV table and the figures (SVG and PNG) into this folder, all or none.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Table cache folder [default: $XDG_CACHE_HOME/polargen/tables, else ~/.cache/polargen/tables].
+    #[arg(long)]
+    cache: Option<PathBuf>,
+}
+
+/// The studies (comma-separated lists).
+#[derive(Subcommand)]
+pub enum Study {
+    /// Contamination severity and extent at 60 kt: trip location, one surface, N_crit, coverage.
+    Contamination {
+        #[command(flatten)]
+        common: Common,
+        /// Airfoil name or coordinate file.
+        #[arg(long, default_value = "naca8h12")]
+        airfoil: String,
+        /// Trip locations x/c on both surfaces.
+        #[arg(
+            long,
+            value_delimiter = ',',
+            default_value = "0.02,0.05,0.07,0.1,0.2,0.3,0.5"
+        )]
+        trips: Vec<f64>,
+        /// N_crit values of free transition besides the clean 9.
+        #[arg(long, value_delimiter = ',', default_value = "6,3,1")]
+        ncrits: Vec<f64>,
+        /// Radii r/R outboard of which the blade is tripped at 7 % chord.
+        #[arg(long, value_delimiter = ',', default_value = "0.25,0.5,0.75")]
+        outboard: Vec<f64>,
+        /// Radii r/R inboard of which the blade is tripped at 7 % chord.
+        #[arg(long, value_delimiter = ',', default_value = "0.5")]
+        inboard: Vec<f64>,
+    },
+    /// The rotor with each airfoil (names or coordinate files), clean and tripped at 7 % chord.
+    Airfoil {
+        #[command(flatten)]
+        common: Common,
+        #[arg(long, value_delimiter = ',', default_value = "naca8h12,naca23012")]
+        airfoils: Vec<String>,
+    },
+    /// Contamination penalty against airspeed.
+    Speed {
+        #[command(flatten)]
+        common: Common,
+        /// Airfoil name or coordinate file.
+        #[arg(long, default_value = "naca8h12")]
+        airfoil: String,
+        /// Trip location x/c on both surfaces.
+        #[arg(long, default_value_t = 0.07)]
+        xtr: f64,
+        /// Airspeeds in knots.
+        #[arg(
+            long,
+            value_delimiter = ',',
+            default_value = "30,35,40,45,50,55,60,65,70,75,80,85,90"
+        )]
+        speeds: Vec<f64>,
+    },
+}
+
+/// The library's request for a parsed `gyro study` command line.
+pub fn request(study: Study) -> StudyRequest {
+    let (common, kind) = match study {
+        Study::Contamination {
+            common,
+            airfoil,
+            trips,
+            ncrits,
+            outboard,
+            inboard,
+        } => {
+            let options = ContaminationOptions {
+                trips,
+                ncrits,
+                outboard,
+                inboard,
+            };
+            (common, StudyKind::Contamination { airfoil, options })
+        }
+        Study::Airfoil { common, airfoils } => (common, StudyKind::Airfoil { airfoils }),
+        Study::Speed {
+            common,
+            airfoil,
+            xtr,
+            speeds,
+        } => {
+            let speeds_kt = speeds;
+            (
+                common,
+                StudyKind::Speed {
+                    airfoil,
+                    xtr,
+                    speeds_kt,
+                },
+            )
+        }
+    };
+    StudyRequest {
+        kind,
+        aircraft: common.aircraft,
+        out: common.out,
+        cache: common.cache,
+        json: common.json,
+    }
+}

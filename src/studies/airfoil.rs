@@ -1,0 +1,209 @@
+//! The same rotor with each of several airfoils, clean and with the paper's trip: the paper's
+//! section-level robustness argument (§5, NACA 23012 vs 8-H-12) carried to the aircraft —
+//! F_prop, engine rpm, takeoff, and the penalty of contamination for each airfoil.
+
+use super::files::records_csv;
+use super::{
+    cell, load_study_airfoil, Penalty, Performance, Progress, StudiesError, StudyFiles, TableCache,
+    Transition, PAPER_TRIP_XTR,
+};
+use crate::plot::{Figure, Panel, Series, Style};
+use crate::rotor::study::{paper_run, PAPER_TRIM_SPEED_KT};
+use crate::rotor::Aircraft;
+use crate::section::SectionAero;
+use rayon::prelude::*;
+use serde::Serialize;
+
+/// One airfoil in one state.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct AirfoilRecord {
+    /// Airfoil name.
+    pub airfoil: String,
+    /// Transition fixed at the paper's 7 % chord on both surfaces (else free, N_crit 9).
+    pub contaminated: bool,
+    /// Trim and takeoff.
+    #[serde(flatten)]
+    pub performance: Performance,
+    /// Against the same airfoil clean (zero for the clean record).
+    #[serde(flatten)]
+    pub penalty: Penalty,
+    /// F_prop against the first airfoil in the same state \[%\].
+    pub prop_thrust_vs_first_pct: f64,
+}
+
+/// Columns of the CSV file, in order (the JSON keys).
+pub const CSV_COLUMNS: [&str; 15] = [
+    "airfoil",
+    "contaminated",
+    "rotor_rpm",
+    "rotor_aoa_deg",
+    "rotor_aoa_drag_equivalent_deg",
+    "rotor_drag_n",
+    "prop_thrust_n",
+    "engine_rpm",
+    "delta_prop_thrust_pct",
+    "delta_engine_rpm",
+    "prop_thrust_vs_first_pct",
+    "takeoff_roll_m",
+    "distance_15m_m",
+    "max_flapping_deg",
+    "table_clamped_fraction",
+];
+
+/// Trim at the paper's speed and takeoff of each `(name, clean, contaminated)` airfoil, all
+/// runs in parallel; clean and contaminated record of each airfoil in turn.
+pub fn run_airfoils<S: SectionAero + Sync + ?Sized>(
+    aircraft: &Aircraft,
+    cases: &[(&str, &S, &S)],
+    on_done: &(dyn Fn() + Sync),
+) -> Result<Vec<AirfoilRecord>, StudiesError> {
+    let jobs: Vec<(&str, bool, &S)> = cases
+        .iter()
+        .flat_map(|&(name, clean, dirty)| [(name, false, clean), (name, true, dirty)])
+        .collect();
+    let runs: Vec<Performance> = jobs
+        .par_iter()
+        .map(|&(name, dirty, section)| {
+            let label = format!("{name} {}", if dirty { "contaminated" } else { "clean" });
+            let run = paper_run(aircraft, section, &label)?;
+            on_done();
+            Ok(Performance::new(&run.trim, &run.takeoff))
+        })
+        .collect::<Result<_, StudiesError>>()?;
+    Ok(jobs
+        .iter()
+        .enumerate()
+        .map(|(k, &(name, dirty, _))| {
+            let own_clean = &runs[k - usize::from(dirty)];
+            let first = &runs[usize::from(dirty)];
+            AirfoilRecord {
+                airfoil: name.to_string(),
+                contaminated: dirty,
+                penalty: Penalty::between(own_clean, &runs[k]),
+                prop_thrust_vs_first_pct: 100.0
+                    * (runs[k].prop_thrust_n / first.prop_thrust_n - 1.0),
+                performance: runs[k].clone(),
+            }
+        })
+        .collect())
+}
+
+/// Stem of the study's CSV file under `--out`.
+pub const CSV_STEM: &str = "airfoils";
+
+/// Stems of the study's figures under `--out`.
+pub const FIGURE_STEMS: [&str; 1] = ["airfoils"];
+
+/// A finished airfoil study.
+#[derive(Clone, Debug)]
+pub struct AirfoilStudy {
+    /// Two records per airfoil: clean, contaminated.
+    pub records: Vec<AirfoilRecord>,
+}
+
+impl AirfoilStudy {
+    /// Load each airfoil of `airfoils` (names or files; at least one), get its clean and
+    /// tripped tables from `cache` and run them.
+    pub fn run(
+        aircraft: &Aircraft,
+        airfoils: &[String],
+        cache: &TableCache,
+        progress: &Progress,
+    ) -> Result<Self, StudiesError> {
+        if airfoils.is_empty() {
+            return Err(StudiesError::BadSetting("--airfoils: empty list".into()));
+        }
+        let foils = airfoils
+            .iter()
+            .map(|a| load_study_airfoil(a, cache.panels))
+            .collect::<Result<Vec<_>, _>>()?;
+        let keys = [Transition::CLEAN, Transition::tripped(PAPER_TRIP_XTR)];
+        let missing: usize = foils.iter().map(|f| cache.missing_points(f, &keys)).sum();
+        progress.start(missing, "table points");
+        let tables = foils
+            .iter()
+            .map(|f| cache.tables(f, &keys, &|n| progress.advance(n)))
+            .collect::<Result<Vec<_>, _>>();
+        progress.finish();
+        let tables = tables?;
+        let cases: Vec<(&str, _, _)> = foils
+            .iter()
+            .zip(&tables)
+            .map(|(f, t)| (f.name.as_str(), &t[0], &t[1]))
+            .collect();
+        progress.start(2 * cases.len(), "cases");
+        let records = run_airfoils(aircraft, &cases, &|| progress.advance(1));
+        progress.finish();
+        Ok(Self { records: records? })
+    }
+
+    /// The text table.
+    pub fn text(&self) -> String {
+        let mut s = format!(
+            "Airfoil study: trim at {PAPER_TRIM_SPEED_KT} kt and takeoff, clean and with transition \
+             fixed at {} % chord\n{:<22} {:<5} {:>6} {:>7} {:>6} {:>7} {:>6} {:>7} {:>6} {:>6} {:>5}\n",
+            100.0 * PAPER_TRIP_XTR,
+            "airfoil", "trip", "n_R", "F_prop", "n_eng", "dF_%", "dn_eng", "F/1st%", "s_TO", "s_15",
+            "b_max"
+        );
+        for r in &self.records {
+            let p = &r.performance;
+            s.push_str(&format!(
+                "{:<22} {:<5} {:>6.1} {:>7.1} {:>6} {:>+7.1} {:>6} {:>+7.1} {:>6.1} {:>6.1} {:>5.2}\n",
+                r.airfoil,
+                if r.contaminated { "7 %" } else { "free" },
+                p.rotor_rpm,
+                p.prop_thrust_n,
+                cell(p.engine_rpm, 0),
+                r.penalty.delta_prop_thrust_pct,
+                cell(r.penalty.delta_engine_rpm.map(f64::round), 0),
+                r.prop_thrust_vs_first_pct,
+                p.takeoff_roll_m,
+                p.distance_15m_m,
+                p.max_flapping_deg
+            ));
+        }
+        s
+    }
+
+    /// The files under `--out`: the CSV and a bar-like figure of F_prop and engine rpm per
+    /// airfoil, clean and contaminated.
+    pub fn files(&self) -> Result<StudyFiles, StudiesError> {
+        let xs = |dirty: bool| -> Vec<(f64, &AirfoilRecord)> {
+            self.records
+                .iter()
+                .filter(|r| r.contaminated == dirty)
+                .enumerate()
+                .map(|(i, r)| (i as f64 + 1.0, r))
+                .collect()
+        };
+        let panel = |y: &str, v: &dyn Fn(&AirfoilRecord) -> Option<f64>| {
+            let mut p = Panel::new("", "airfoil (1 = first of --airfoils)", y);
+            for (c, dirty) in [false, true].into_iter().enumerate() {
+                let pts: Vec<(f64, f64)> = xs(dirty)
+                    .iter()
+                    .filter_map(|(x, r)| v(r).map(|y| (*x, y)))
+                    .collect();
+                let label = if dirty {
+                    "transition at 7 %"
+                } else {
+                    "free transition"
+                };
+                p = p.with_series(Series::from_pairs(label, pts, Style::points(c)));
+            }
+            p
+        };
+        let names: Vec<&str> = xs(false).iter().map(|(_, r)| r.airfoil.as_str()).collect();
+        let fig = Figure::new(format!(
+            "Rotor with each airfoil at 60 kt: {}",
+            names.join(", ")
+        ))
+        .with_panel(panel("F_prop [N]", &|r| Some(r.performance.prop_thrust_n)))
+        .with_panel(panel("engine rpm", &|r| r.performance.engine_rpm));
+        Ok(StudyFiles {
+            csv_stem: CSV_STEM.to_string(),
+            csv: records_csv(&CSV_COLUMNS, &self.records)?,
+            figures: vec![(FIGURE_STEMS[0].to_string(), fig)],
+        })
+    }
+}
