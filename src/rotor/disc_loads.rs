@@ -162,6 +162,46 @@ impl RotorSolution {
     }
 }
 
+/// The parts of the velocity triangle shared by every strip of one evaluation.
+struct DiscStream {
+    /// Edgewise free stream V cos α_H \[m/s\].
+    edge: f64,
+    /// Axial free stream V sin α_H (up through the disc) \[m/s\].
+    axial: f64,
+    /// Rotor speed Ω \[rad/s\].
+    omega: f64,
+    /// Mean induced velocity v0 \[m/s\].
+    v0: f64,
+    /// Drees' gradients (k_x, k_y) of the inflow; `None` for uniform inflow.
+    drees: Option<(f64, f64)>,
+    /// Air state.
+    air: AirState,
+}
+
+/// Azimuth ψ of blade 1 with the trigonometry and teeter motion its strips share.
+struct AzimuthStation {
+    /// sin ψ.
+    sin_psi: f64,
+    /// cos ψ.
+    cos_psi: f64,
+    /// Flap angle β(ψ) \[rad\].
+    beta: f64,
+    /// Flap rate dβ/dψ.
+    beta_rate: f64,
+}
+
+impl AzimuthStation {
+    fn new(teeter: &Teeter, psi: f64) -> Self {
+        let (sin_psi, cos_psi) = psi.sin_cos();
+        Self {
+            sin_psi,
+            cos_psi,
+            beta: teeter.beta_at(sin_psi, cos_psi),
+            beta_rate: teeter.beta_rate_at(sin_psi, cos_psi),
+        }
+    }
+}
+
 /// Loads of one evaluation at given inflow and flapping.
 #[derive(Clone, Copy, Debug, Default)]
 struct Loads {
@@ -225,17 +265,35 @@ impl Rotor {
         }
     }
 
-    /// Local induced velocity at (r, ψ) \[m/s\] for mean value `v0`.
-    fn induced_at(&self, cond: &FlightCondition, v0: f64, r: f64, psi: f64) -> f64 {
-        match self.inflow {
-            InflowModel::Glauert => v0,
+    /// The parts of the velocity triangle shared by all strips at inflow `v0`.
+    fn disc_stream(&self, cond: &FlightCondition, v0: f64) -> DiscStream {
+        let edge = cond.airspeed * cond.hub_aoa.cos();
+        let axial = cond.airspeed * cond.hub_aoa.sin();
+        let drees = match self.inflow {
+            InflowModel::Glauert => None,
             InflowModel::Drees => {
                 let tip = cond.omega * self.radius;
-                let mu = cond.airspeed * cond.hub_aoa.cos() / tip;
-                let lambda = (cond.airspeed * cond.hub_aoa.sin() - v0) / tip;
-                let (kx, ky) = drees_coefficients(mu, lambda);
+                Some(drees_coefficients(edge / tip, (axial - v0) / tip))
+            }
+        };
+        DiscStream {
+            edge,
+            axial,
+            omega: cond.omega,
+            v0,
+            drees,
+            air: Self::air(cond),
+        }
+    }
+
+    /// Local induced velocity at radius `r` and azimuth `at` \[m/s\]: the mean value, with
+    /// Drees' linear gradients when that model is chosen.
+    fn induced_at(&self, stream: &DiscStream, r: f64, at: &AzimuthStation) -> f64 {
+        match stream.drees {
+            None => stream.v0,
+            Some((kx, ky)) => {
                 let x = r / self.radius;
-                v0 * (1.0 + kx * x * psi.cos() + ky * x * psi.sin())
+                stream.v0 * (1.0 + kx * x * at.cos_psi + ky * x * at.sin_psi)
             }
         }
     }
@@ -255,17 +313,20 @@ impl Rotor {
         r: f64,
         psi: f64,
     ) -> StripFlow {
-        let edge = cond.airspeed * cond.hub_aoa.cos();
-        let axial = cond.airspeed * cond.hub_aoa.sin();
-        let beta = teeter.beta(psi);
-        let ut = cond.omega * r + edge * psi.sin();
-        let up = axial
-            - self.induced_at(cond, v0, r, psi)
-            - cond.omega * r * teeter.beta_rate(psi)
-            - edge * beta * psi.cos();
-        let flow = StripFlow::new(ut, up, self.pitch, self.chord, &Self::air(cond));
+        let stream = self.disc_stream(cond, v0);
+        self.flow_at(&stream, &AzimuthStation::new(teeter, psi), r)
+    }
+
+    /// [`strip_flow`](Self::strip_flow) from the shared parts of one evaluation.
+    fn flow_at(&self, stream: &DiscStream, at: &AzimuthStation, r: f64) -> StripFlow {
+        let ut = stream.omega * r + stream.edge * at.sin_psi;
+        let up = stream.axial
+            - self.induced_at(stream, r, at)
+            - stream.omega * r * at.beta_rate
+            - stream.edge * at.beta * at.cos_psi;
+        let flow = StripFlow::new(ut, up, self.pitch, self.chord, &stream.air);
         match self.yawed_flow {
-            YawedFlow::RadialDrag => flow.with_radial(edge * psi.cos()),
+            YawedFlow::RadialDrag => flow.with_radial(stream.edge * at.cos_psi),
             YawedFlow::Ignored => flow,
         }
     }
@@ -288,13 +349,13 @@ impl Rotor {
         let mut clamped = 0usize;
         let mut supercritical = 0usize;
         let mut lift_free = 0.0;
+        let stream = self.disc_stream(cond, v0);
         for (k, moment) in moments.iter_mut().enumerate() {
-            let psi = TAU * k as f64 / n as f64;
-            let beta = teeter.beta(psi);
-            let (sp, cp) = psi.sin_cos();
+            let at = AzimuthStation::new(teeter, TAU * k as f64 / n as f64);
+            let (beta, sp, cp) = (at.beta, at.sin_psi, at.cos_psi);
             let (mut ft_sum, mut fn_sum, mut fr_sum, mut q, mut m) = (0.0, 0.0, 0.0, 0.0, 0.0);
             for &r in &radii {
-                let flow = self.strip_flow(cond, v0, teeter, r, psi);
+                let flow = self.flow_at(&stream, &at, r);
                 if flow.is_reversed() {
                     reversed += 1;
                 }
