@@ -41,7 +41,8 @@ pub enum RotorError {
 pub struct RotorSolverParams {
     /// Largest number of Newton iterations.
     pub max_iterations: usize,
-    /// Convergence: scaled Newton step below this (v0 in units of ΩR, β in rad).
+    /// Convergence: scaled Newton step below this (v0 in units of ΩR, β in rad), the step
+    /// taken to the returned state or the next one from it.
     pub tolerance: f64,
     /// Finite-difference step for the Jacobian (same scaling).
     pub fd_step: f64,
@@ -198,15 +199,18 @@ impl Rotor {
             Some(j) => j,
             None => self.fd_jacobian(section, cond, z, f),
         };
+        let newton_step =
+            |jac: [[f64; 3]; 3], f: [f64; 3]| small_dense::solve(jac, [-f[0], -f[1], -f[2]]);
+        let mut dz = newton_step(jac, f);
         let mut last_step = f64::INFINITY;
         for iter in 1..=p.max_iterations {
-            let Some(dz) = small_dense::solve(jac, [-f[0], -f[1], -f[2]]) else {
+            let Some(step) = dz else {
                 return Err(RotorError::NoConvergence {
                     iterations: iter,
                     step: f64::NAN,
                 });
             };
-            let flap_step = dz[1].abs().max(dz[2].abs());
+            let flap_step = step[1].abs().max(step[2].abs());
             let damp = if flap_step > p.max_flap_step {
                 p.max_flap_step / flap_step
             } else {
@@ -214,19 +218,23 @@ impl Rotor {
             };
             let mut z_next = z;
             for i in 0..3 {
-                z_next[i] += damp * dz[i];
+                z_next[i] += damp * step[i];
             }
-            last_step = dz.iter().fold(0.0_f64, |a, d| a.max(d.abs()));
+            last_step = max_abs(step);
             if !last_step.is_finite() {
                 break;
             }
             let (f_next, loads) = self.residuals(section, cond, z_next);
             broyden_update(&mut jac, z, z_next, f, f_next);
-            if last_step < p.tolerance {
+            dz = newton_step(jac, f_next);
+            // Converged when the step taken or the next one is below the tolerance.
+            let next_step = dz.map_or(f64::INFINITY, max_abs);
+            if last_step < p.tolerance || next_step < p.tolerance {
                 return Ok(self.package(cond, z_next, loads, iter, jac));
             }
             if max_abs(f_next) > p.broyden_contraction * max_abs(f) {
                 jac = self.fd_jacobian(section, cond, z_next, f_next);
+                dz = newton_step(jac, f_next);
             }
             (z, f) = (z_next, f_next);
         }
