@@ -134,3 +134,43 @@ fn discretisation_is_converged_to_a_few_percent() {
         b.drag
     );
 }
+
+#[test]
+fn warm_start_reaches_the_cold_solution() {
+    // A warm start carries the previous solution's Broyden-updated Jacobian; near (the next
+    // takeoff stage) and far (hover from cruise: the Jacobian is refreshed) it must land on the
+    // same root as a cold solve, to the step tolerance.
+    let r = Rotor::from_params(&mtosport().rotor);
+    let section = AnalyticSection::contaminated();
+    let at = |v: f64, aoa_deg: f64, rpm: f64| FlightCondition {
+        airspeed: v,
+        hub_aoa: aoa_deg.to_radians(),
+        omega: rpm_to_rad_s(rpm),
+        atmosphere: Atmosphere::isa(0.0),
+    };
+    let start = r.solve(&section, &at(30.0, 10.0, 330.0), None).unwrap();
+    for target in [
+        at(30.2, 10.05, 331.0),
+        at(0.0, 0.0, 350.0),
+        at(40.0, 3.0, 380.0),
+    ] {
+        let warm = r.solve(&section, &target, Some(&start)).unwrap();
+        let cold = r.solve(&section, &target, None).unwrap();
+        let tip = target.omega * r.radius;
+        let dv = (warm.induced_velocity - cold.induced_velocity).abs() / tip;
+        let db = (warm.teeter.beta1c - cold.teeter.beta1c)
+            .abs()
+            .max((warm.teeter.beta1s - cold.teeter.beta1s).abs());
+        assert!(
+            dv < 1e-8 && db < 1e-8,
+            "{target:?}: Δv0/ΩR {dv:e}, Δβ {db:e}"
+        );
+        for (a, b) in [
+            (warm.thrust, cold.thrust),
+            (warm.drag, cold.drag),
+            (warm.torque, cold.torque),
+        ] {
+            assert!((a - b).abs() < 1e-6 * (1.0 + b.abs()), "{a} vs {b}");
+        }
+    }
+}

@@ -1,5 +1,6 @@
 //! Azimuth-averaged loads of the teetering rotor: the blade-element sum over radial strips and
-//! azimuth steps, solved together with the induced inflow and the teeter flapping.
+//! azimuth steps at given induced inflow and teeter flapping (solved for in
+//! [`inflow_flapping`](super::inflow_flapping)).
 //!
 //! Hub frame: x along the hub plane pointing downstream (ψ = 0, the rear), y towards the
 //! advancing side (ψ = 90°), z along the shaft, up. The disc is tilted back by the hub angle
@@ -10,52 +11,12 @@ use super::atmosphere::Atmosphere;
 use super::blade_element::{strip_load, AirState, StripFlow};
 use super::flapping::{first_harmonics, Teeter};
 use super::inflow::{
-    drees_coefficients, gessow_myers_tip_loss, glauert_induced_velocity, glauert_thrust,
-    prandtl_strip_mean, InflowModel, TipLoss, YawedFlow,
+    drees_coefficients, gessow_myers_tip_loss, glauert_thrust, prandtl_strip_mean, InflowModel,
+    TipLoss, YawedFlow,
 };
+pub(super) use super::inflow_flapping::{RotorError, RotorSolution, RotorSolverParams};
 use super::spanwise::BladeSection;
-use crate::numerics::small_dense;
 use std::f64::consts::TAU;
-
-/// Errors of the rotor solution.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum RotorError {
-    /// The operating point is not physical (non-finite values, rotor not turning, …).
-    #[error("invalid rotor operating point: {0}")]
-    InvalidCondition(&'static str),
-    /// The coupled inflow/flapping iteration did not converge.
-    #[error("rotor inflow/flapping iteration did not converge after {iterations} iterations (step {step:.3e})")]
-    NoConvergence {
-        /// Iterations used.
-        iterations: usize,
-        /// Size of the last Newton step (scaled).
-        step: f64,
-    },
-}
-
-/// Tunable numerics of the coupled inflow/flapping Newton iteration.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RotorSolverParams {
-    /// Largest number of Newton iterations.
-    pub max_iterations: usize,
-    /// Convergence: scaled Newton step below this (v0 in units of ΩR, β in rad).
-    pub tolerance: f64,
-    /// Finite-difference step for the Jacobian (same scaling).
-    pub fd_step: f64,
-    /// Largest allowed change of a flap coefficient per iteration \[rad\].
-    pub max_flap_step: f64,
-}
-
-impl Default for RotorSolverParams {
-    fn default() -> Self {
-        Self {
-            max_iterations: 40,
-            tolerance: 1e-9,
-            fd_step: 1e-6,
-            max_flap_step: 0.05,
-        }
-    }
-}
 
 /// Rotor geometry and discretisation.
 #[derive(Clone, Debug, PartialEq)]
@@ -107,74 +68,69 @@ pub struct FlightCondition {
     pub atmosphere: Atmosphere,
 }
 
-/// Converged rotor state and its azimuth-averaged loads.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RotorSolution {
-    /// Operating point solved.
-    pub condition: FlightCondition,
-    /// Mean induced velocity v0 \[m/s\] (downwards positive).
-    pub induced_velocity: f64,
-    /// Teeter flapping.
-    pub teeter: Teeter,
-    /// Tip-loss factor B used: 1 − (lift-free length)/R, for Prandtl's factor the equivalent
-    /// value ∫(1 − F)dr/R averaged over the azimuth.
-    pub tip_loss_b: f64,
-    /// Thrust along the shaft T \[N\].
-    pub thrust: f64,
-    /// In-plane force towards the rear (H-force) \[N\].
-    pub h_force: f64,
-    /// In-plane force towards the advancing side \[N\].
-    pub side_force: f64,
-    /// Rotor lift, perpendicular to the flight path \[N\].
-    pub lift: f64,
-    /// Rotor drag, along the flight path, rearwards \[N\].
-    pub drag: f64,
-    /// Aerodynamic driving torque about the shaft \[N m\]; positive accelerates the rotor,
-    /// zero in autorotation (the shaft torque needed to drive the rotor is its negative).
-    pub torque: f64,
-    /// Advance ratio μ = V cos α_H/(ΩR).
-    pub advance_ratio: f64,
-    /// Net upflow ratio λ = (V sin α_H − v0)/(ΩR).
-    pub inflow_ratio: f64,
-    /// Thrust coefficient C_T = T/(ρA(ΩR)²).
-    pub thrust_coefficient: f64,
-    /// Fraction of the strip-azimuth samples in reverse flow.
-    pub reverse_flow_fraction: f64,
-    /// Fraction of the strip-azimuth samples whose Reynolds or Mach number lay outside the
-    /// section table, so that the lookup used the table's edge (see [`Lookup`](crate::section::Lookup)).
-    pub table_clamped_fraction: f64,
-    /// Fraction of the strip-azimuth samples whose section data lean on supercritical table
-    /// points (Cp_min < Cp*, outside the validity of the section method).
-    pub table_supercritical_fraction: f64,
-    /// Newton iterations used.
-    pub iterations: usize,
+/// The parts of the velocity triangle shared by every strip of one evaluation.
+struct DiscStream {
+    /// Edgewise free stream V cos α_H \[m/s\].
+    edge: f64,
+    /// Axial free stream V sin α_H (up through the disc) \[m/s\].
+    axial: f64,
+    /// Rotor speed Ω \[rad/s\].
+    omega: f64,
+    /// Mean induced velocity v0 \[m/s\].
+    v0: f64,
+    /// Drees' gradients (k_x, k_y) of the inflow; `None` for uniform inflow.
+    drees: Option<(f64, f64)>,
+    /// Air state.
+    air: AirState,
 }
 
-impl RotorSolution {
-    /// Angle of attack of the tip-path plane α_R = α_H − β1c \[rad\] (the "rotor AoA").
-    pub fn disc_aoa(&self) -> f64 {
-        self.condition.hub_aoa + self.teeter.tilt_back()
-    }
+/// Azimuth ψ of blade 1 with the trigonometry and teeter motion its strips share.
+struct AzimuthStation {
+    /// sin ψ.
+    sin_psi: f64,
+    /// cos ψ.
+    cos_psi: f64,
+    /// Flap angle β(ψ) \[rad\].
+    beta: f64,
+    /// Flap rate dβ/dψ.
+    beta_rate: f64,
+}
 
-    /// Resultant rotor force √(L² + D²) \[N\].
-    pub fn resultant(&self) -> f64 {
-        self.lift.hypot(self.drag)
+impl AzimuthStation {
+    fn new(teeter: &Teeter, psi: f64) -> Self {
+        let (sin_psi, cos_psi) = psi.sin_cos();
+        Self {
+            sin_psi,
+            cos_psi,
+            beta: teeter.beta_at(sin_psi, cos_psi),
+            beta_rate: teeter.beta_rate_at(sin_psi, cos_psi),
+        }
     }
 }
 
 /// Loads of one evaluation at given inflow and flapping.
 #[derive(Clone, Copy, Debug, Default)]
-struct Loads {
-    thrust: f64,
-    h_force: f64,
-    side_force: f64,
-    torque: f64,
-    moment_1c: f64,
-    moment_1s: f64,
-    reverse_fraction: f64,
-    clamped_fraction: f64,
-    supercritical_fraction: f64,
-    tip_loss_b: f64,
+pub(super) struct Loads {
+    /// Thrust along the shaft \[N\].
+    pub(super) thrust: f64,
+    /// In-plane force towards the rear \[N\].
+    pub(super) h_force: f64,
+    /// In-plane force towards the advancing side \[N\].
+    pub(super) side_force: f64,
+    /// Aerodynamic driving torque \[N m\].
+    pub(super) torque: f64,
+    /// Cosine harmonic of blade 1's flap moment about the teeter bolt \[N m\].
+    pub(super) moment_1c: f64,
+    /// Sine harmonic of blade 1's flap moment about the teeter bolt \[N m\].
+    pub(super) moment_1s: f64,
+    /// Fraction of strip-azimuth samples in reverse flow.
+    pub(super) reverse_fraction: f64,
+    /// Fraction of samples clamped to the table's Re/Mach edge.
+    pub(super) clamped_fraction: f64,
+    /// Fraction of samples leaning on supercritical table points.
+    pub(super) supercritical_fraction: f64,
+    /// Equivalent tip-loss factor B.
+    pub(super) tip_loss_b: f64,
 }
 
 impl Rotor {
@@ -225,17 +181,35 @@ impl Rotor {
         }
     }
 
-    /// Local induced velocity at (r, ψ) \[m/s\] for mean value `v0`.
-    fn induced_at(&self, cond: &FlightCondition, v0: f64, r: f64, psi: f64) -> f64 {
-        match self.inflow {
-            InflowModel::Glauert => v0,
+    /// The parts of the velocity triangle shared by all strips at inflow `v0`.
+    fn disc_stream(&self, cond: &FlightCondition, v0: f64) -> DiscStream {
+        let edge = cond.airspeed * cond.hub_aoa.cos();
+        let axial = cond.airspeed * cond.hub_aoa.sin();
+        let drees = match self.inflow {
+            InflowModel::Glauert => None,
             InflowModel::Drees => {
                 let tip = cond.omega * self.radius;
-                let mu = cond.airspeed * cond.hub_aoa.cos() / tip;
-                let lambda = (cond.airspeed * cond.hub_aoa.sin() - v0) / tip;
-                let (kx, ky) = drees_coefficients(mu, lambda);
+                Some(drees_coefficients(edge / tip, (axial - v0) / tip))
+            }
+        };
+        DiscStream {
+            edge,
+            axial,
+            omega: cond.omega,
+            v0,
+            drees,
+            air: Self::air(cond),
+        }
+    }
+
+    /// Local induced velocity at radius `r` and azimuth `at` \[m/s\]: the mean value, with
+    /// Drees' linear gradients when that model is chosen.
+    fn induced_at(&self, stream: &DiscStream, r: f64, at: &AzimuthStation) -> f64 {
+        match stream.drees {
+            None => stream.v0,
+            Some((kx, ky)) => {
                 let x = r / self.radius;
-                v0 * (1.0 + kx * x * psi.cos() + ky * x * psi.sin())
+                stream.v0 * (1.0 + kx * x * at.cos_psi + ky * x * at.sin_psi)
             }
         }
     }
@@ -255,23 +229,26 @@ impl Rotor {
         r: f64,
         psi: f64,
     ) -> StripFlow {
-        let edge = cond.airspeed * cond.hub_aoa.cos();
-        let axial = cond.airspeed * cond.hub_aoa.sin();
-        let beta = teeter.beta(psi);
-        let ut = cond.omega * r + edge * psi.sin();
-        let up = axial
-            - self.induced_at(cond, v0, r, psi)
-            - cond.omega * r * teeter.beta_rate(psi)
-            - edge * beta * psi.cos();
-        let flow = StripFlow::new(ut, up, self.pitch, self.chord, &Self::air(cond));
+        let stream = self.disc_stream(cond, v0);
+        self.flow_at(&stream, &AzimuthStation::new(teeter, psi), r)
+    }
+
+    /// [`strip_flow`](Self::strip_flow) from the shared parts of one evaluation.
+    fn flow_at(&self, stream: &DiscStream, at: &AzimuthStation, r: f64) -> StripFlow {
+        let ut = stream.omega * r + stream.edge * at.sin_psi;
+        let up = stream.axial
+            - self.induced_at(stream, r, at)
+            - stream.omega * r * at.beta_rate
+            - stream.edge * at.beta * at.cos_psi;
+        let flow = StripFlow::new(ut, up, self.pitch, self.chord, &stream.air);
         match self.yawed_flow {
-            YawedFlow::RadialDrag => flow.with_radial(edge * psi.cos()),
+            YawedFlow::RadialDrag => flow.with_radial(stream.edge * at.cos_psi),
             YawedFlow::Ignored => flow,
         }
     }
 
     /// Blade-element sum for inflow `v0` and flapping `teeter`.
-    fn evaluate<S: BladeSection + ?Sized>(
+    pub(super) fn evaluate<S: BladeSection + ?Sized>(
         &self,
         section: &S,
         cond: &FlightCondition,
@@ -288,13 +265,13 @@ impl Rotor {
         let mut clamped = 0usize;
         let mut supercritical = 0usize;
         let mut lift_free = 0.0;
+        let stream = self.disc_stream(cond, v0);
         for (k, moment) in moments.iter_mut().enumerate() {
-            let psi = TAU * k as f64 / n as f64;
-            let beta = teeter.beta(psi);
-            let (sp, cp) = psi.sin_cos();
+            let at = AzimuthStation::new(teeter, TAU * k as f64 / n as f64);
+            let (beta, sp, cp) = (at.beta, at.sin_psi, at.cos_psi);
             let (mut ft_sum, mut fn_sum, mut fr_sum, mut q, mut m) = (0.0, 0.0, 0.0, 0.0, 0.0);
             for &r in &radii {
-                let flow = self.strip_flow(cond, v0, teeter, r, psi);
+                let flow = self.flow_at(&stream, &at, r);
                 if flow.is_reversed() {
                     reversed += 1;
                 }
@@ -350,151 +327,6 @@ impl Rotor {
         loads.supercritical_fraction = supercritical as f64 / (n * radii.len()) as f64;
         loads.tip_loss_b = 1.0 - lift_free / (n as f64 * self.radius);
         loads
-    }
-
-    /// Scaled residuals of the coupled problem for unknowns z = (v0/ΩR, β1c, β1s):
-    /// momentum balance (v0 − κ·v_Glauert(T))/ΩR and the first-harmonic teeter moments divided
-    /// by ½ρ(ΩR)²cR².
-    fn residuals<S: BladeSection + ?Sized>(
-        &self,
-        section: &S,
-        cond: &FlightCondition,
-        z: [f64; 3],
-    ) -> ([f64; 3], Loads) {
-        let tip = cond.omega * self.radius;
-        let rho = cond.atmosphere.density;
-        let teeter = Teeter {
-            beta0: self.precone,
-            beta1c: z[1],
-            beta1s: z[2],
-        };
-        let loads = self.evaluate(section, cond, z[0] * tip, &teeter);
-        let v_mt = self.induced_power_factor
-            * glauert_induced_velocity(
-                loads.thrust,
-                rho,
-                self.disc_area(),
-                cond.airspeed,
-                cond.hub_aoa,
-            );
-        let mscale = 0.5 * rho * tip * tip * self.chord * self.radius * self.radius;
-        (
-            [
-                z[0] - v_mt / tip,
-                loads.moment_1c / mscale,
-                loads.moment_1s / mscale,
-            ],
-            loads,
-        )
-    }
-
-    /// Solves inflow and teeter flapping at `cond` (Newton's method with a finite-difference
-    /// Jacobian on the three scaled unknowns), starting from `warm` if given.
-    pub fn solve<S: BladeSection + ?Sized>(
-        &self,
-        section: &S,
-        cond: &FlightCondition,
-        warm: Option<&RotorSolution>,
-    ) -> Result<RotorSolution, RotorError> {
-        if !(cond.airspeed.is_finite() && cond.hub_aoa.is_finite() && cond.omega.is_finite()) {
-            return Err(RotorError::InvalidCondition(
-                "non-finite airspeed, angle or rotor speed",
-            ));
-        }
-        if cond.omega <= 0.0 {
-            return Err(RotorError::InvalidCondition("rotor speed must be positive"));
-        }
-        if cond.airspeed < 0.0 {
-            return Err(RotorError::InvalidCondition(
-                "airspeed must not be negative",
-            ));
-        }
-        if cond.atmosphere.density.is_nan() || cond.atmosphere.density <= 0.0 {
-            return Err(RotorError::InvalidCondition("air density must be positive"));
-        }
-        let tip = cond.omega * self.radius;
-        let mut z = match warm {
-            Some(w) => [w.induced_velocity / tip, w.teeter.beta1c, w.teeter.beta1s],
-            None => [0.0, 0.0, 0.0],
-        };
-        let p = self.solver;
-        let mut last_step = f64::INFINITY;
-        for iter in 1..=p.max_iterations {
-            let (f, _) = self.residuals(section, cond, z);
-            let mut jac = [[0.0; 3]; 3];
-            for j in 0..3 {
-                let mut zp = z;
-                zp[j] += p.fd_step;
-                let (fp, _) = self.residuals(section, cond, zp);
-                for i in 0..3 {
-                    jac[i][j] = (fp[i] - f[i]) / p.fd_step;
-                }
-            }
-            let Some(dz) = small_dense::solve(jac, [-f[0], -f[1], -f[2]]) else {
-                return Err(RotorError::NoConvergence {
-                    iterations: iter,
-                    step: f64::NAN,
-                });
-            };
-            let flap_step = dz[1].abs().max(dz[2].abs());
-            let damp = if flap_step > p.max_flap_step {
-                p.max_flap_step / flap_step
-            } else {
-                1.0
-            };
-            for i in 0..3 {
-                z[i] += damp * dz[i];
-            }
-            last_step = dz.iter().fold(0.0_f64, |a, d| a.max(d.abs()));
-            if !last_step.is_finite() {
-                break;
-            }
-            if last_step < p.tolerance {
-                let (_, loads) = self.residuals(section, cond, z);
-                return Ok(self.package(cond, z, loads, iter));
-            }
-        }
-        Err(RotorError::NoConvergence {
-            iterations: p.max_iterations,
-            step: last_step,
-        })
-    }
-
-    fn package(
-        &self,
-        cond: &FlightCondition,
-        z: [f64; 3],
-        loads: Loads,
-        iterations: usize,
-    ) -> RotorSolution {
-        let tip = cond.omega * self.radius;
-        let rho = cond.atmosphere.density;
-        let (sa, ca) = cond.hub_aoa.sin_cos();
-        let v0 = z[0] * tip;
-        RotorSolution {
-            condition: *cond,
-            induced_velocity: v0,
-            teeter: Teeter {
-                beta0: self.precone,
-                beta1c: z[1],
-                beta1s: z[2],
-            },
-            tip_loss_b: loads.tip_loss_b,
-            thrust: loads.thrust,
-            h_force: loads.h_force,
-            side_force: loads.side_force,
-            // Wind axes: lift ⟂ flight path, drag along it (disc tilted back by α_H).
-            lift: loads.thrust * ca - loads.h_force * sa,
-            drag: loads.thrust * sa + loads.h_force * ca,
-            torque: loads.torque,
-            advance_ratio: cond.airspeed * ca / tip,
-            inflow_ratio: (cond.airspeed * sa - v0) / tip,
-            thrust_coefficient: loads.thrust / (rho * self.disc_area() * tip * tip),
-            reverse_flow_fraction: loads.reverse_fraction,
-            table_clamped_fraction: loads.clamped_fraction,
-            table_supercritical_fraction: loads.supercritical_fraction,
-            iterations,
-        }
     }
 
     /// Section angle of attack α(ψ) \[deg\] at radius fraction `r_over_r` for `samples` azimuths

@@ -24,12 +24,22 @@ pub struct Teeter {
 impl Teeter {
     /// Flap angle β(ψ) \[rad\].
     pub fn beta(&self, psi: f64) -> f64 {
-        self.beta0 + self.beta1c * psi.cos() + self.beta1s * psi.sin()
+        self.beta_at(psi.sin(), psi.cos())
     }
 
     /// Flap rate per rotor angular speed, dβ/dψ = −β1c sin ψ + β1s cos ψ.
     pub fn beta_rate(&self, psi: f64) -> f64 {
-        -self.beta1c * psi.sin() + self.beta1s * psi.cos()
+        self.beta_rate_at(psi.sin(), psi.cos())
+    }
+
+    /// [`beta`](Self::beta) from (sin ψ, cos ψ) computed once per azimuth.
+    pub(crate) fn beta_at(&self, sin_psi: f64, cos_psi: f64) -> f64 {
+        self.beta0 + self.beta1c * cos_psi + self.beta1s * sin_psi
+    }
+
+    /// [`beta_rate`](Self::beta_rate) from (sin ψ, cos ψ) computed once per azimuth.
+    pub(crate) fn beta_rate_at(&self, sin_psi: f64, cos_psi: f64) -> f64 {
+        -self.beta1c * sin_psi + self.beta1s * cos_psi
     }
 
     /// Teeter amplitude √(β1c² + β1s²) \[rad\]: the angle the hub swings to, checked against the

@@ -14,7 +14,9 @@
 //!   models and the yawed-flow switch.
 //! * `flapping` — first-harmonic teeter motion of the blade pair.
 //! * `disc_loads` — the rotor disc: azimuth-averaged forces and torque of the blade-element
-//!   sum, solved together with the induced inflow and the teeter flapping.
+//!   sum.
+//! * `inflow_flapping` — the disc's induced inflow and teeter flapping solved together with
+//!   those loads (Newton–Broyden).
 //! * `trim` — autorotation rpm and level-cruise trim.
 //! * `cruise` — power-required speed sweep and blade α(ψ) in trimmed cruise.
 //! * `engine` — full-throttle torque curve and reduction gear (Rotax 912 ULS in the preset).
@@ -33,6 +35,7 @@ mod disc_loads;
 mod engine;
 mod flapping;
 mod inflow;
+mod inflow_flapping;
 mod propeller;
 mod spanwise;
 pub mod study;
@@ -47,10 +50,11 @@ pub use aircraft::{
 pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};
 pub use cruise::{checked_sweep_speeds, cruise_blade_alpha, speed_sweep, sweep_speeds, SweepPoint};
-pub use disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution, RotorSolverParams};
+pub use disc_loads::{FlightCondition, Rotor};
 pub use engine::Engine;
 pub use flapping::Teeter;
 pub use inflow::{InflowModel, TipLoss, YawedFlow};
+pub use inflow_flapping::{RotorError, RotorSolution, RotorSolverParams};
 pub use propeller::{FullThrottle, Powerplant, Propeller, PropellerError, PropellerPoint};
 pub use spanwise::{BladeSection, SpanBand, SpanwiseSection};
 pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
