@@ -1,6 +1,7 @@
 //! Drawing with plotters: the figure title, each panel (grid, ticks, series, markers) and the
 //! shared legend, onto any plotters backend.
 
+use plotters::chart::MeshStyle;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -131,18 +132,12 @@ where
     };
     let y_fmt = |v: &f64| format_tick(sign * *v, y_dec);
     let x_desc = if strip.is_some() { "" } else { &panel.x_label };
-    chart
-        .configure_mesh()
+    let mut mesh = chart.configure_mesh();
+    mesh_style(&mut mesh, p)
         .x_desc(x_desc)
         .y_desc(panel.y_label.as_str())
-        .x_labels(p.max_ticks)
-        .y_labels(p.max_ticks)
         .x_label_formatter(&x_fmt)
         .y_label_formatter(&y_fmt)
-        .label_style((FONT_FAMILY, p.tick_font))
-        .axis_desc_style((FONT_FAMILY, p.axis_label_font))
-        .bold_line_style(RGBColor(205, 205, 205))
-        .light_line_style(RGBColor(238, 238, 238))
         .draw()
         .map_err(draw_err)?;
 
@@ -242,6 +237,19 @@ where
         draw_contour_strip(&strip, panel, xlim, p)?;
     }
     Ok(())
+}
+
+/// Tick-label count, fonts and grid-line colours of every panel's mesh (and contour strip).
+fn mesh_style<'m, 'a, 'b, DB: DrawingBackend>(
+    mesh: &'m mut MeshStyle<'a, 'b, TickedAxis, TickedAxis, DB>,
+    p: &RenderParams,
+) -> &'m mut MeshStyle<'a, 'b, TickedAxis, TickedAxis, DB> {
+    mesh.x_labels(p.max_ticks)
+        .y_labels(p.max_ticks)
+        .label_style((FONT_FAMILY, p.tick_font))
+        .axis_desc_style((FONT_FAMILY, p.axis_label_font))
+        .bold_line_style(RGBColor(205, 205, 205))
+        .light_line_style(RGBColor(238, 238, 238))
 }
 
 /// Length and half width (px) of the arrowheads that mark data outside the axes.
@@ -358,15 +366,10 @@ where
         )
         .map_err(draw_err)?;
     let x_fmt = |v: &f64| format_tick(*v, x_dec);
-    chart
-        .configure_mesh()
+    let mut mesh = chart.configure_mesh();
+    mesh_style(&mut mesh, p)
         .x_desc(panel.x_label.as_str())
-        .x_labels(p.max_ticks)
         .x_label_formatter(&x_fmt)
-        .label_style((FONT_FAMILY, p.tick_font))
-        .axis_desc_style((FONT_FAMILY, p.axis_label_font))
-        .bold_line_style(RGBColor(205, 205, 205))
-        .light_line_style(RGBColor(238, 238, 238))
         .draw()
         .map_err(draw_err)?;
     let mut closed = outline;
