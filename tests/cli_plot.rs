@@ -24,6 +24,7 @@ fn out_dir(tag: &str) -> PathBuf {
 #[test]
 fn overlay_svg_and_png() {
     let dir = out_dir("overlay");
+    let (free_table, trip_table) = (polars("naca8h12_free.csv"), polars("naca8h12_xtr0.07.csv"));
     let svg = dir.join("p.svg");
     let png = dir.join("p.png");
     for out in [&svg, &png] {
@@ -45,6 +46,8 @@ fn overlay_svg_and_png() {
     for needle in [
         "NACA 8-H-12 free",
         "NACA 8-H-12 xtr 0.07",
+        "Transition: upper solid, lower dashed",
+        "points beyond",
         "nearest to Re 1.9e6, M 0.41",
         "Re 2e6, M 0.4",
         "Drag polar",
@@ -56,6 +59,43 @@ fn overlay_svg_and_png() {
     let bytes = std::fs::read(&png).unwrap();
     assert!(bytes.len() > 50_000);
     assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    // --label names the legend entries (and the title) in the order of the tables;
+    // --cd-axis 0.03 fixes the drag polar's Cd axis, and --cd-axis all shows all drag
+    let labelled = dir.join("labelled.svg");
+    let run = |extra: &[&str]| {
+        let mut args = vec![
+            "plot",
+            &free_table,
+            &trip_table,
+            "--re",
+            "1.9e6",
+            "--mach",
+            "0.41",
+            "--out",
+            labelled.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        let o = polargen(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        std::fs::read_to_string(&labelled).unwrap()
+    };
+    let tick = |svg: &str, t: &str| svg.lines().any(|l| l.trim() == t);
+    let text = run(&[
+        "--label",
+        "clean, 2 m/s",
+        "--label",
+        "tripped",
+        "--cd-axis",
+        "0.03",
+    ]);
+    assert!(text.contains("clean, 2 m/s vs tripped — Re 2e6, M 0.4"));
+    assert!(!text.contains("NACA 8-H-12 free"));
+    assert!(tick(&text, "0.030"), "Cd axis to 0.03");
+    assert!(text.contains("points beyond 0.0300"));
+    let tick = |svg: &str, t: &str| svg.lines().any(|l| l.trim() == t);
+    let text = run(&["--cd-axis", "all"]);
+    assert!(!text.contains("points beyond"));
+    assert!(tick(&text, "0.20"), "Cd axis over all drag (to 0.24)");
     std::fs::remove_dir_all(dir).unwrap();
 }
 
@@ -281,6 +321,18 @@ fn errors_are_one_line() {
         (
             vec!["plot", &free, "--re", "-1", "--mach", "0", "--out", out],
             "--re -1",
+        ),
+        (
+            vec!["plot", &free, "--label", "a", "--label", "b", "--out", out],
+            "--label: 2 label(s) for 1 table(s): give one per table, in order",
+        ),
+        (
+            vec!["plot", &free, "--cd-axis", "wide", "--out", out],
+            "expected auto, all or a positive drag coefficient",
+        ),
+        (
+            vec!["plot", &free, "--cd-axis", "-0.1", "--out", out],
+            "--cd-axis",
         ),
     ];
     for (args, needle) in cases {

@@ -9,7 +9,11 @@
 use std::f64::consts::PI;
 use std::path::PathBuf;
 
-use polargen::plot::point_plots::{bl_figure, cp_figure, point_figure, PointCase};
+use polargen::geometry::airfoil_by_name_or_path;
+use polargen::plot::drag_axis::CdAxis;
+use polargen::plot::point_plots::{
+    bl_figure, cp_figure, point_figure, with_airfoil_contour, PointCase,
+};
 use polargen::plot::polar_plots::{
     mark_lift_coefficient, polar_figure, polar_figure_styled, PolarCurve,
 };
@@ -17,7 +21,7 @@ use polargen::plot::rotor_plots::{
     alpha_azimuth_figure, power_required_figure, takeoff_figure, AzimuthCase, PowerCase,
     TakeoffCase,
 };
-use polargen::plot::{render, Figure, Style};
+use polargen::plot::{render, AxisRange, Figure, Line, Style};
 use polargen::section::PolarPoint;
 
 const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/plot");
@@ -160,15 +164,17 @@ fn render_and_check(fig: &Figure, name: &str, texts: &[&str], colors: &[usize]) 
     let png = std::fs::read(&png_path).expect("png written");
     assert!(png.len() > 20_000, "{name}.png only {} bytes", png.len());
     let img = png_decode::decode(&png).expect("png decodes");
-    let cols = if fig.panels.len() <= 3 {
-        fig.panels.len()
+    // grid: one row up to 3 panels, 4 as 2 × 2, 5 and 6 as 2 × 3
+    let n = fig.panels.len() as u32;
+    let cols = if n <= 3 {
+        n
     } else {
-        2
-    } as u32;
+        (f64::from(n)).sqrt().ceil() as u32
+    };
     assert_eq!(img.width, 720 * cols, "{name}.png width");
-    let rows = if fig.panels.len() == 4 { 2 } else { 1 };
+    let rows = n.div_ceil(cols);
     assert!(
-        img.height > 50 + 520 * rows,
+        img.height >= 50 + 520 * rows,
         "{name}.png height {}",
         img.height
     );
@@ -217,7 +223,7 @@ fn polar_overlay_clean_vs_fixed_transition() {
         ],
         "NACA 8-H-12, Re = 1.9e6, M = 0.41 (XFOIL 6.99)",
     );
-    assert_eq!(fig.panels.len(), 4);
+    assert_eq!(fig.panels.len(), 5, "lift, drag, transition, Cl/Cd, Cm");
     let lift = &fig.panels[0];
     assert_eq!(lift.series[0].x.len(), free.len());
     assert_eq!(
@@ -226,8 +232,36 @@ fn polar_overlay_clean_vs_fixed_transition() {
         "unconverged point kept"
     );
     assert!(lift.series[1].y.iter().all(|&cl| cl < 2.0));
+    // Transition panel: x_tr/c of both surfaces against Cl, the unconverged point left out of
+    // the lines as everywhere (Cl 50 would be drawn at x_tr of fixed[0]).
+    let transition = &fig.panels[2];
+    assert_eq!(transition.series.len(), 4, "upper and lower per polar");
+    let (upper, lower) = (&transition.series[2], &transition.series[3]);
+    assert_eq!(upper.x.len(), fixed.len() - 1, "unconverged point kept");
+    assert!(upper.y.iter().chain(&lower.y).all(|&cl| cl < 2.0));
+    assert_eq!(
+        (upper.style.line, lower.style.line),
+        (Line::Solid, Line::Dashed)
+    );
+    assert_eq!(lower.label, "", "one legend entry per polar");
+    // α = 4° (free): x_tr upper 0.3989 from the reference polar, at Cl 0.7402
+    let i = transition.series[0]
+        .y
+        .iter()
+        .position(|&cl| cl == 0.7402)
+        .unwrap();
+    assert_eq!(transition.series[0].x[i], 0.3989);
+    // Drag polar: the attached-flow Cd axis cuts off the stalled tail (data to 0.116) and says so.
+    let drag = &fig.panels[1];
+    let AxisRange::Fixed { min, max } = drag.x_range else {
+        panic!("drag polar Cd axis not limited: {:?}", drag.x_range)
+    };
+    assert_eq!(min, 0.0);
+    assert!((0.012..0.03).contains(&max), "Cd axis to {max}");
+    assert!(drag.mark_clipped);
+    assert!(drag.x_label.contains("points beyond"), "{}", drag.x_label);
     // Cl/Cd at α = 4° (free): 0.7402 / 0.00597 from the reference polar.
-    let ratio = &fig.panels[2].series[0];
+    let ratio = &fig.panels[3].series[0];
     let i = ratio
         .x
         .iter()
@@ -247,6 +281,8 @@ fn polar_overlay_clean_vs_fixed_transition() {
             "Cl/Cd [-]",
             "Cm (c/4) [-]",
             "Drag polar",
+            "Transition: upper solid, lower dashed",
+            "x_tr/c [-]",
         ],
         &[0, 1],
     );
@@ -274,13 +310,14 @@ fn polar_overlay_with_reference_points_and_dashes() {
         },
     ];
     let fig = mark_lift_coefficient(
-        polar_figure_styled(&curves, "Styles: solid, dashed, points"),
+        polar_figure_styled(&curves, "Styles: solid, dashed, points", CdAxis::AllData),
         0.8,
     );
+    assert_eq!(fig.panels[1].x_range, AxisRange::Auto, "--cd-axis all");
     let marked: Vec<usize> = fig.panels.iter().map(|p| p.markers.len()).collect();
     assert_eq!(
         marked,
-        vec![1, 1, 0, 0],
+        vec![1, 1, 1, 0, 0],
         "Cl = 0.8 line only on the Cl panels"
     );
     let svg = render_and_check(
@@ -292,9 +329,87 @@ fn polar_overlay_with_reference_points_and_dashes() {
     // Points are drawn as circles: 47 per panel for the reference-point series (Cl/Cd all > 0).
     let circles = svg.matches(&format!("fill=\"{}\"", svg_color(2))).count();
     assert!(
-        circles >= 4 * free.len(),
+        circles >= 5 * free.len(),
         "only {circles} reference circles"
     );
+}
+
+/// Circles filled in palette colour `i` in an SVG document.
+fn circles(svg: &str, i: usize) -> usize {
+    svg.split("<circle")
+        .skip(1)
+        .filter(|c| c.contains(&format!("fill=\"{}\"", svg_color(i))))
+        .count()
+}
+
+#[test]
+fn sparse_polars_get_point_symbols() {
+    let free = read_polar("naca8h12_Re1.9e6_M0.41_free.csv");
+    // 0.5° steps: the Cl/Cd peak is steeper than 1/40 of the axes per step → symbols on every
+    // point of every line, 47 per panel (Cl/Cd: all Cd > 0)
+    let fig = polar_figure(&[("free", &free)], "XFOIL, 0.5° steps");
+    let svg = render_and_check(&fig, "polars_sparse", &["free"], &[0]);
+    let visible: usize = fig
+        .panels
+        .iter()
+        .flat_map(|p| p.series.iter().map(move |s| (p, s)))
+        .map(|(p, s)| match p.x_range {
+            AxisRange::Fixed { max, .. } => s.x.iter().filter(|&&x| x <= max).count(),
+            AxisRange::Auto => s.x.len(),
+        })
+        .sum();
+    // + 1: the legend sample
+    assert_eq!(
+        circles(&svg, 0),
+        visible + 1,
+        "one symbol per visible point"
+    );
+    // the same sweep interpolated to 0.1° steps is dense: no symbols at all
+    let dense: Vec<PolarPoint> = free
+        .windows(2)
+        .filter(|w| w[1].alpha - w[0].alpha == 0.5)
+        .flat_map(|w| {
+            (0..5).map(move |k| {
+                let t = f64::from(k) / 5.0;
+                let mix = |a: f64, b: f64| a + t * (b - a);
+                PolarPoint {
+                    alpha: mix(w[0].alpha, w[1].alpha),
+                    cl: mix(w[0].cl, w[1].cl),
+                    cd: mix(w[0].cd, w[1].cd),
+                    cm: mix(w[0].cm, w[1].cm),
+                    xtr_top: mix(w[0].xtr_top, w[1].xtr_top),
+                    xtr_bot: mix(w[0].xtr_bot, w[1].xtr_bot),
+                    ..w[0]
+                }
+            })
+        })
+        .collect();
+    let fig = polar_figure(&[("free", &dense)], "XFOIL, interpolated to 0.1° steps");
+    let svg = render_and_check(&fig, "polars_dense", &["free"], &[0]);
+    assert_eq!(circles(&svg, 0), 0, "no symbols on a dense polar");
+}
+
+#[test]
+fn airfoil_contour_under_the_pressure_distribution() {
+    let (x_cp, cp) = read_cp("naca8h12_free_cp_a4.txt");
+    let case = PointCase {
+        label: "free transition",
+        style: Style::solid(0),
+        cp: (&x_cp, &cp),
+        ..PointCase::default()
+    };
+    let foil = airfoil_by_name_or_path("naca8h12").unwrap();
+    let fig = with_airfoil_contour(point_figure(&[case], "NACA 8-H-12, α = 4°", None), &foil);
+    assert_eq!(fig.panels[0].contour.len(), foil.x.len(), "Cp panel");
+    assert!(fig.panels[1..].iter().all(|p| p.contour.is_empty()));
+    let svg = render_and_check(&fig, "point_contour", &["x/c [-]"], &[0]);
+    // the contour is filled light grey; the x label is drawn once per panel, still four times
+    assert!(svg.contains("#D7D7D7"), "no filled contour");
+    let x_labels = svg_texts(&svg)
+        .iter()
+        .filter(|(_, t)| t == "x/c [-]")
+        .count();
+    assert_eq!(x_labels, 4);
 }
 
 #[test]

@@ -3,8 +3,55 @@
 
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 
-use super::figure::AxisRange;
+use super::figure::{AxisRange, MarkerKind, Panel};
 use crate::output::fixed_decimals;
+
+/// Sign of the plotted y of `panel`: −1 when its y axis is inverted (plot coordinates are −y).
+pub(crate) fn y_sign(panel: &Panel) -> f64 {
+    if panel.y_inverted {
+        -1.0
+    } else {
+        1.0
+    }
+}
+
+/// Axis limits (x, y) of `panel` in plot coordinates (y negated on an inverted axis): fixed
+/// ranges as given, automatic ones from the finite series points and the markers, padded by
+/// `padding` of the span.
+pub(crate) fn panel_limits(panel: &Panel, padding: f64) -> ((f64, f64), (f64, f64)) {
+    let sign = y_sign(panel);
+    let mut xs: Vec<f64> = Vec::new();
+    let mut ys: Vec<f64> = Vec::new();
+    for s in &panel.series {
+        for (&x, &y) in s.x.iter().zip(&s.y) {
+            if x.is_finite() && y.is_finite() {
+                xs.push(x);
+                ys.push(sign * y);
+            }
+        }
+    }
+    for m in &panel.markers {
+        match m.kind {
+            MarkerKind::VLine(x) => xs.push(x),
+            MarkerKind::HLine(y) => ys.push(sign * y),
+            MarkerKind::Point(x, y) => {
+                xs.push(x);
+                ys.push(sign * y);
+            }
+        }
+    }
+    let y_range = match panel.y_range {
+        AxisRange::Fixed { min, max } if panel.y_inverted => AxisRange::Fixed {
+            min: -max,
+            max: -min,
+        },
+        r => r,
+    };
+    (
+        axis_limits(panel.x_range, &xs, padding),
+        axis_limits(y_range, &ys, padding),
+    )
+}
 
 /// Axis limits in plot coordinates for one axis: fixed, or the padded extent of `values`.
 pub(crate) fn axis_limits(range: AxisRange, values: &[f64], padding: f64) -> (f64, f64) {

@@ -23,7 +23,8 @@ pub struct Style {
     pub color: usize,
     /// Line kind.
     pub line: Line,
-    /// Draw a filled circle at every data point.
+    /// Draw a filled circle at every data point. Without it a line still gets them where its
+    /// data are sparse (the rule of [`sparse`](super::sparse)).
     pub points: bool,
 }
 
@@ -200,6 +201,12 @@ pub struct Panel {
     pub y_tick_step: Option<f64>,
     /// Draw the y axis increasing downwards (as for pressure coefficients, −Cp up).
     pub y_inverted: bool,
+    /// Mark data outside a fixed range: an arrowhead in the series colour at the edge of the
+    /// axes, pointing to where each point lies.
+    pub mark_clipped: bool,
+    /// An outline (e.g. the airfoil, x/c and y/c) drawn true to scale in a strip below the
+    /// axes, on the same x axis (which then carries its tick labels); empty for none.
+    pub contour: Vec<(f64, f64)>,
 }
 
 impl Panel {
@@ -220,6 +227,8 @@ impl Panel {
             x_tick_step: None,
             y_tick_step: None,
             y_inverted: false,
+            mark_clipped: false,
+            contour: Vec::new(),
         }
     }
 
@@ -262,6 +271,18 @@ impl Panel {
     /// Draws the y axis increasing downwards.
     pub fn with_y_inverted(mut self) -> Self {
         self.y_inverted = true;
+        self
+    }
+
+    /// Marks data outside fixed ranges by arrowheads at the edges.
+    pub fn with_clipped_marked(mut self) -> Self {
+        self.mark_clipped = true;
+        self
+    }
+
+    /// Draws the outline through `points` (closed back to the first) in a strip below the axes.
+    pub fn with_contour(mut self, points: Vec<(f64, f64)>) -> Self {
+        self.contour = points;
         self
     }
 }

@@ -7,6 +7,7 @@ use super::error::PlotError;
 use super::figure::{Figure, MarkerKind, Style};
 use super::font::FONT_FAMILY;
 use super::render::RenderParams;
+use super::sparse::{figure_is_sparse, shows_points};
 
 /// Grid shape (rows, columns) for `n` panels: one row up to 3, else a near-square grid.
 pub(crate) fn grid_shape(n: usize) -> (usize, usize) {
@@ -34,10 +35,13 @@ impl LegendEntry {
         }
     }
 
-    /// True when both entries would draw the same legend item.
+    /// True when both entries name the same item (series: label, colour and line kind; the
+    /// point symbol is merged).
     fn same_as(&self, other: &Self) -> bool {
         match (self, other) {
-            (Self::Series(a, sa), Self::Series(b, sb)) => a == b && sa == sb,
+            (Self::Series(a, sa), Self::Series(b, sb)) => {
+                a == b && sa.color == sb.color && sa.line == sb.line
+            }
             (Self::Marker(a, ka, ca), Self::Marker(b, kb, cb)) => {
                 a == b && ca == cb && std::mem::discriminant(ka) == std::mem::discriminant(kb)
             }
@@ -60,6 +64,9 @@ pub(super) struct Layout {
     pub(super) title_font: f64,
     /// Legend entries, by row.
     pub(super) legend_rows: Vec<Vec<(LegendEntry, u32)>>,
+    /// The legend sits in the grid cell after the last panel (one entry per row), not in a
+    /// strip below the grid: when the grid has a free cell and the entries fit its height.
+    pub(super) legend_in_cell: bool,
 }
 
 impl Layout {
@@ -79,23 +86,41 @@ impl Layout {
             p.legend_font,
             FontStyle::Normal,
         );
-        let mut rows: Vec<Vec<(LegendEntry, u32)>> = Vec::new();
-        let mut row_width = 0;
-        for entry in legend_entries(figure) {
+        let mut widths: Vec<(LegendEntry, u32)> = Vec::new();
+        for entry in legend_entries(figure, p) {
             let (text_w, _) = font
                 .box_size(entry.label())
                 .map_err(|e| PlotError::Draw(e.to_string()))?;
-            let w = p.legend_sample_length + 8 + text_w + p.legend_gap;
-            match rows.last_mut() {
-                Some(row) if row_width + w <= usable => row.push((entry, w)),
-                _ => {
-                    rows.push(vec![(entry, w)]);
-                    row_width = 0;
-                }
-            }
-            row_width += w;
+            widths.push((entry, p.legend_sample_length + 8 + text_w + p.legend_gap));
         }
-        let legend_height = if rows.is_empty() {
+        let free_cell = grid.0 * grid.1 > figure.panels.len();
+        let cell_fits = |rows: usize| {
+            rows as u32 * p.legend_row_height <= p.panel_height.saturating_sub(2 * p.margin)
+        };
+        let in_cell_width = p.panel_width.saturating_sub(2 * p.margin);
+        let legend_in_cell = free_cell
+            && cell_fits(widths.len())
+            && widths
+                .iter()
+                .all(|(_, w)| *w <= in_cell_width + p.legend_gap);
+        let rows: Vec<Vec<(LegendEntry, u32)>> = if legend_in_cell {
+            widths.into_iter().map(|e| vec![e]).collect()
+        } else {
+            let mut rows: Vec<Vec<(LegendEntry, u32)>> = Vec::new();
+            let mut row_width = 0;
+            for (entry, w) in widths {
+                match rows.last_mut() {
+                    Some(row) if row_width + w <= usable => row.push((entry, w)),
+                    _ => {
+                        rows.push(vec![(entry, w)]);
+                        row_width = 0;
+                    }
+                }
+                row_width += w;
+            }
+            rows
+        };
+        let legend_height = if rows.is_empty() || legend_in_cell {
             0
         } else {
             rows.len() as u32 * p.legend_row_height + p.margin
@@ -107,6 +132,7 @@ impl Layout {
             title_height,
             title_font,
             legend_rows: rows,
+            legend_in_cell,
         })
     }
 }
@@ -128,17 +154,33 @@ fn fitted_font_size(text: &str, size: f64, width: u32) -> Result<f64, PlotError>
     })
 }
 
-/// Distinct labelled series and markers of all panels, in order of first appearance.
-fn legend_entries(figure: &Figure) -> Vec<LegendEntry> {
+/// Distinct labelled series and markers of all panels, in order of first appearance. A
+/// series entry shows the point symbol when the series is drawn with symbols
+/// ([`shows_points`]).
+fn legend_entries(figure: &Figure, p: &RenderParams) -> Vec<LegendEntry> {
     let mut entries: Vec<LegendEntry> = Vec::new();
     let mut add = |e: LegendEntry| {
-        if !e.label().is_empty() && !entries.iter().any(|o| o.same_as(&e)) {
-            entries.push(e);
+        if e.label().is_empty() {
+            return;
+        }
+        match entries.iter_mut().find(|o| o.same_as(&e)) {
+            Some(LegendEntry::Series(_, style)) => {
+                if let LegendEntry::Series(_, s) = e {
+                    style.points |= s.points;
+                }
+            }
+            Some(_) => {}
+            None => entries.push(e),
         }
     };
+    let sparse = figure_is_sparse(figure, p.padding);
     for panel in &figure.panels {
         for s in &panel.series {
-            add(LegendEntry::Series(s.label.clone(), s.style));
+            let style = Style {
+                points: shows_points(s, sparse),
+                ..s.style
+            };
+            add(LegendEntry::Series(s.label.clone(), style));
         }
         for m in &panel.markers {
             add(LegendEntry::Marker(m.label.clone(), m.kind, m.color));

@@ -7,8 +7,12 @@
 //! * `render`, `layout`, `axes`, `clip`, `draw` — drawing a [`Figure`] to SVG or PNG (chosen
 //!   by the file extension): entry points, pixel layout, tick scales, clipping, plotters calls.
 //! * `font` — the embedded DejaVu Sans font used for all text.
-//! * [`polar_plots`] — Cl–α, Cd–Cl, Cl/Cd–α, Cm–α overlays of polars.
-//! * [`point_plots`] — Cp(x) and boundary-layer distributions (H, Cf, N) at one α.
+//! * `sparse` — the rule that puts a symbol on every point of a sparse series.
+//! * [`polar_plots`] — Cl–α, Cl–Cd, Cl–x_tr, Cl/Cd–α, Cm–α overlays of polars, with the drag
+//!   polar's Cd axis of [`drag_axis`].
+//! * [`table_plots`] — the polars of table files overlaid (`polargen plot`).
+//! * [`point_plots`] — Cp(x) over the airfoil contour and boundary-layer distributions (H, Cf,
+//!   N) at one α.
 //! * [`rotor_plots`] — blade α vs azimuth, takeoff time histories, power required.
 //!
 //! ```
@@ -29,6 +33,7 @@
 
 mod axes;
 mod clip;
+pub mod drag_axis;
 mod draw;
 mod error;
 mod figure;
@@ -38,6 +43,8 @@ pub mod point_plots;
 pub mod polar_plots;
 mod render;
 pub mod rotor_plots;
+mod sparse;
+pub mod table_plots;
 
 pub use error::PlotError;
 pub use figure::{AxisRange, Figure, Line, Marker, MarkerKind, Panel, Series, Style};

@@ -1,13 +1,16 @@
 //! Distributions at one operating point: pressure coefficient Cp(x/c) and boundary-layer
 //! quantities (shape factor H, skin friction Cf, amplification factor N) along a surface, with
-//! the transition location marked, for several cases overlaid (e.g. clean vs fixed transition).
+//! the transition location marked, for several cases overlaid (e.g. clean vs fixed transition);
+//! the airfoil contour drawn to scale under the Cp panel.
 
 use super::figure::{Figure, Marker, Panel, Series, Style};
+use crate::geometry::Airfoil;
 use crate::viscous::distributions::SurfaceDistributions;
 use crate::viscous::ViscousSolution;
 
-/// x/c axis limits of all point panels: the chord with a small margin, same for every panel.
-const X_LIMITS: (f64, f64) = (-0.02, 1.02);
+/// x/c axis limits of all chordwise panels (here and the polars' transition panel): the chord
+/// with a small margin.
+pub(crate) const CHORD_LIMITS: (f64, f64) = (-0.02, 1.02);
 
 /// One case (e.g. one transition setting, one surface) at one α. Each distribution is a pair
 /// of equally long slices (x/c, value); empty slices mean "not available" and draw nothing.
@@ -55,11 +58,29 @@ pub fn point_figure(cases: &[PointCase], title: &str, ncrit: Option<f64>) -> Fig
         .with_panel(n)
 }
 
+/// y-axis label of the pressure-coefficient panel.
+const CP_LABEL: &str = "Cp [-]";
+
+/// The figure with the contour of `airfoil` (in chords, as the solver saw it) drawn to scale
+/// in a strip under each Cp panel, on its x/c axis.
+pub fn with_airfoil_contour(mut figure: Figure, airfoil: &Airfoil) -> Figure {
+    let contour: Vec<(f64, f64)> = airfoil
+        .x
+        .iter()
+        .copied()
+        .zip(airfoil.y.iter().copied())
+        .collect();
+    for panel in figure.panels.iter_mut().filter(|p| p.y_label == CP_LABEL) {
+        panel.contour = contour.clone();
+    }
+    figure
+}
+
 /// The Cp panel (inverted y axis).
 fn cp_panel(cases: &[PointCase]) -> Panel {
-    let mut panel = Panel::new("Pressure distribution", "x/c [-]", "Cp [-]")
+    let mut panel = Panel::new("Pressure distribution", "x/c [-]", CP_LABEL)
         .with_y_inverted()
-        .with_x_range(X_LIMITS.0, X_LIMITS.1);
+        .with_x_range(CHORD_LIMITS.0, CHORD_LIMITS.1);
     for c in cases {
         panel
             .series
@@ -70,7 +91,7 @@ fn cp_panel(cases: &[PointCase]) -> Panel {
 
 /// The H, Cf and N panels with transition markers.
 fn bl_panels(cases: &[PointCase], ncrit: Option<f64>) -> [Panel; 3] {
-    let chord = |p: Panel| p.with_x_range(X_LIMITS.0, X_LIMITS.1);
+    let chord = |p: Panel| p.with_x_range(CHORD_LIMITS.0, CHORD_LIMITS.1);
     let mut h = chord(Panel::new("Shape factor", "x/c [-]", "H [-]"));
     let mut cf = chord(Panel::new("Skin friction", "x/c [-]", "Cf [-]"));
     let mut n = chord(Panel::new("Amplification", "x/c [-]", "N [-]"));

@@ -1,7 +1,10 @@
-//! Polar overlays: the four classic panels Cl–α, Cd–Cl (drag polar), Cl/Cd–α and Cm–α for one
-//! or more polars (e.g. clean vs fixed transition, or ours vs XFOIL).
+//! Polar overlays: Cl–α, the drag polar Cl–Cd, the transition locations Cl–x_tr, Cl/Cd–α and
+//! Cm–α for one or more polars (e.g. clean vs fixed transition, or ours vs XFOIL).
 
-use super::figure::{Figure, Marker, Panel, Series, Style};
+use super::drag_axis::CdAxis;
+use super::figure::{Figure, Line, Marker, Panel, Series, Style};
+use super::point_plots::CHORD_LIMITS;
+use crate::output::fixed_decimals;
 use crate::section::{FlowCondition, PolarPoint};
 
 /// y-axis label of the panels that plot the lift coefficient.
@@ -21,10 +24,8 @@ pub struct PolarCurve<'a> {
     pub style: Style,
 }
 
-/// Four-panel polar overlay with automatic styles: polar `i` gets palette colour `i`, solid.
-///
-/// Panels: Cl–α, Cd–Cl (Cd on x, as XFOIL draws the drag polar), Cl/Cd–α and Cm–α. Points with
-/// `converged == false` or non-finite coefficients are skipped; Cl/Cd skips Cd ≤ 0 (inviscid).
+/// Polar overlay with automatic styles (polar `i` gets palette colour `i`, solid) and the Cd
+/// axis of [`CdAxis::Attached`]; panels as [`polar_figure_styled`].
 pub fn polar_figure(polars: &[(&str, &[PolarPoint])], title: &str) -> Figure {
     let curves: Vec<PolarCurve> = polars
         .iter()
@@ -35,17 +36,31 @@ pub fn polar_figure(polars: &[(&str, &[PolarPoint])], title: &str) -> Figure {
             style: Style::solid(i),
         })
         .collect();
-    polar_figure_styled(&curves, title)
+    polar_figure_styled(&curves, title, CdAxis::Attached)
 }
 
-/// Four-panel polar overlay with the styles given per curve (see [`polar_figure`]).
-pub fn polar_figure_styled(curves: &[PolarCurve], title: &str) -> Figure {
+/// Polar overlay with the styles given per curve, the drag polar's Cd axis chosen by `cd_axis`.
+///
+/// Panels: Cl–α, the drag polar Cl–Cd and the transition locations Cl–x_tr (Cl on y in all
+/// three, as XFOIL's polar plot, so that a row reads across at one Cl), then Cl/Cd–α and Cm–α.
+/// The transition panel draws x_tr/c of the upper surface in the curve's style and of the
+/// lower surface dashed; it is left out when no polar carries transition locations (C81).
+/// Points with `converged == false` or non-finite Cl, Cd, Cm are left out of every line;
+/// Cl/Cd skips Cd ≤ 0 (inviscid). Drag beyond the Cd axis is marked by arrowheads at its right
+/// edge and counted in its label.
+pub fn polar_figure_styled(curves: &[PolarCurve], title: &str, cd_axis: CdAxis) -> Figure {
     let mut lift = Panel::new("Lift", "α [deg]", CL_LABEL);
-    let mut drag = Panel::new("Drag polar", "Cd [-]", CL_LABEL);
+    let mut drag = Panel::new("Drag polar", "Cd [-]", CL_LABEL).with_clipped_marked();
+    let mut transition = Panel::new(
+        "Transition: upper solid, lower dashed",
+        "x_tr/c [-]",
+        CL_LABEL,
+    )
+    .with_x_range(CHORD_LIMITS.0, CHORD_LIMITS.1);
     let mut ratio = Panel::new("Lift-to-drag ratio", "α [deg]", "Cl/Cd [-]");
     let mut moment = Panel::new("Pitching moment", "α [deg]", "Cm (c/4) [-]");
-    for c in curves {
-        let pts = usable_points(c.points);
+    let usable: Vec<Vec<PolarPoint>> = curves.iter().map(|c| usable_points(c.points)).collect();
+    for (c, pts) in curves.iter().zip(&usable) {
         let series = |f: &dyn Fn(&PolarPoint) -> Option<(f64, f64)>| {
             Series::from_pairs(c.label, pts.iter().filter_map(f), c.style)
         };
@@ -55,12 +70,46 @@ pub fn polar_figure_styled(curves: &[PolarCurve], title: &str) -> Figure {
             .series
             .push(series(&|p| (p.cd > 0.0).then(|| (p.alpha, p.cl / p.cd))));
         moment.series.push(series(&|p| Some((p.alpha, p.cm))));
+        transition.series.push(series(&|p| Some((p.xtr_top, p.cl))));
+        let lower = Style {
+            line: match c.style.line {
+                Line::None => Line::None,
+                _ => Line::Dashed,
+            },
+            ..c.style
+        };
+        transition.series.push(Series::from_pairs(
+            "",
+            pts.iter().map(|p| (p.xtr_bot, p.cl)),
+            lower,
+        ));
     }
-    Figure::new(title)
-        .with_panel(lift)
-        .with_panel(drag)
-        .with_panel(ratio)
-        .with_panel(moment)
+    let polars: Vec<&[PolarPoint]> = usable.iter().map(Vec::as_slice).collect();
+    if let Some(limit) = cd_axis.upper_limit(&polars) {
+        drag = drag.with_x_range(0.0, limit);
+        let beyond = polars
+            .iter()
+            .flat_map(|p| p.iter())
+            .filter(|p| p.cd > limit);
+        let (count, largest) = beyond.fold((0, 0.0_f64), |(n, m), p| (n + 1, m.max(p.cd)));
+        if count > 0 {
+            let digits = (2 - limit.log10().floor() as i32).max(0) as usize;
+            drag.x_label = format!(
+                "Cd [-]   ({count} points beyond {} up to {} →)",
+                fixed_decimals(limit, digits),
+                fixed_decimals(largest, digits)
+            );
+        }
+    }
+    let has_transition = usable
+        .iter()
+        .flatten()
+        .any(|p| p.xtr_top.is_finite() || p.xtr_bot.is_finite());
+    let mut figure = Figure::new(title).with_panel(lift).with_panel(drag);
+    if has_transition {
+        figure = figure.with_panel(transition);
+    }
+    figure.with_panel(ratio).with_panel(moment)
 }
 
 /// Adds a horizontal reference line at lift coefficient `cl` (e.g. the paper's Table 5 compares

@@ -63,6 +63,11 @@ pub struct RenderParams {
     pub max_ticks: usize,
     /// Draw thin lines at x = 0 and y = 0 when they fall inside the axes.
     pub zero_lines: bool,
+    /// Height of the strip below a panel that holds its [`Panel::contour`] and x tick labels
+    /// (px), taken from the panel's cell.
+    ///
+    /// [`Panel::contour`]: super::Panel::contour
+    pub contour_strip_height: u32,
 }
 
 impl Default for RenderParams {
@@ -89,6 +94,7 @@ impl Default for RenderParams {
             y_label_area: 86,
             max_ticks: 9,
             zero_lines: true,
+            contour_strip_height: 150,
         }
     }
 }

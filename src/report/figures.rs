@@ -4,15 +4,12 @@
 use super::{FoilTables, RotorResults, FIG10_RADIUS};
 use crate::plot::polar_plots::{mark_lift_coefficient, polar_figure};
 use crate::plot::rotor_plots::alpha_figure;
-use crate::plot::{AxisRange, Figure, Marker};
+use crate::plot::{Figure, Marker};
 use crate::rotor::study::paper::{
     FIG10_MAX_ALPHA_DEG, FIG10_PSI_DEG, SECTION_MACH, SECTION_RE, TABLE5_CL,
 };
 use crate::rotor::study::{CASE_LABELS, PAPER_TRIM_SPEED_KT};
 use crate::table::sample_polar;
-
-/// Upper Cd limit of the drag-polar panels of the polar figures.
-const DRAG_POLAR_CD_MAX: f64 = 0.04;
 
 /// Label of a table's transition setting for legends.
 fn transition_label(i: usize) -> &'static str {
@@ -47,19 +44,8 @@ pub(super) fn polar_overlay(foil: &FoilTables) -> Figure {
         "{} — Re 1.9e6, M {SECTION_MACH} (interpolated in the shipped tables)",
         foil.row.name
     );
-    let mut fig = mark_lift_coefficient(polar_figure(&curves, &title), TABLE5_CL);
-    // The drag polar panel (Cd on x) shows the drag bucket of Table 5, not the stalled tail.
-    for panel in fig
-        .panels
-        .iter_mut()
-        .filter(|p| p.x_label.starts_with("Cd"))
-    {
-        panel.x_range = AxisRange::Fixed {
-            min: 0.0,
-            max: DRAG_POLAR_CD_MAX,
-        };
-    }
-    fig
+    // The drag polar's Cd axis (attached-flow rule) shows the drag bucket of Table 5.
+    mark_lift_coefficient(polar_figure(&curves, &title), TABLE5_CL)
 }
 
 /// Blade α(ψ) at 0.9 R with the paper's maxima marked.

@@ -29,13 +29,13 @@ pub struct Cli {
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Overlay polars from tables (polargen CSV or JSON, XFOIL .pol, C81, single-polar CSV):
-    /// Cl–α, Cd–Cl, Cl/Cd–α, Cm–α; SVG or PNG by the extension of --out.
+    /// Cl–α, Cl–Cd, Cl–x_tr (transition), Cl/Cd–α, Cm–α; SVG or PNG by the extension of --out.
     Plot(PlotArgs),
     /// Convert a table (polargen CSV or JSON, XFOIL .pol, C81, single-polar CSV) to another
     /// format: csv, json, xfoil, c81 or aerodyn.
     Convert(ConvertArgs),
-    /// Cp(x) and boundary-layer distributions (H, Cf, N) at one α or Cl, one case per
-    /// transition setting overlaid (e.g. --xtr 1,0.07: clean vs tripped).
+    /// Cp(x) over the airfoil contour and boundary-layer distributions (H, Cf, N) at one α or
+    /// Cl, one case per transition setting overlaid (e.g. --xtr 1,0.07: clean vs tripped).
     PlotPoint(PlotPointArgs),
     /// Shell completion script on standard output (e.g. `polargen completions bash >
     /// ~/.local/share/bash-completion/completions/polargen`).
@@ -167,6 +167,21 @@ pub struct PlotArgs {
     /// Figure title (default: airfoils and the Re, M drawn).
     #[arg(long)]
     pub title: Option<String>,
+
+    /// Legend label of a table, once per table in their order (default: airfoil and
+    /// transition setting).
+    #[arg(long, value_name = "TEXT")]
+    pub label: Vec<String>,
+
+    /// Drag-polar Cd axis: auto (0 to 1.5 x the largest attached-flow Cd, rule in
+    /// docs/plots.md; drag beyond is marked at the edge), all (all data), or an upper limit.
+    #[arg(
+        long,
+        value_name = "auto|all|CD",
+        default_value = "auto",
+        allow_hyphen_values = true
+    )]
+    pub cd_axis: polargen::plot::drag_axis::CdAxis,
 }
 
 /// Options of the main job: polars and tables.

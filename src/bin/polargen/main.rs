@@ -24,13 +24,13 @@ use polargen::arguments;
 use polargen::cli::{self, Tool};
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, CHORD_UNITS_TOLERANCE};
 use polargen::inviscid::PanelSystem;
-use polargen::limits::{short_number, short_text, MAX_GRID_POINTS};
+use polargen::limits::{short_text, MAX_GRID_POINTS};
 use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError, STDOUT_PATH};
-use polargen::plot::point_plots::{solutions_figure, solutions_title};
-use polargen::plot::polar_plots::{compact_number, overlay_title, polar_figure, transition_label};
+use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
+use polargen::plot::polar_plots::transition_label;
+use polargen::plot::table_plots::{table_overlay_figure, TableOverlay};
 use polargen::plot::{check_image_path, render};
 use polargen::polar::{parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams};
-use polargen::section::{FlowCondition, PolarPoint};
 use polargen::table::{
     build_table, read_table, with_cd_max, write_table, GridSpec, TableFormat, DEFAULT_ALPHA,
     DEFAULT_MACH, DEFAULT_RE,
@@ -291,50 +291,15 @@ fn check_xtr(flag: &str, x: f64) -> Result<()> {
 /// `polargen plot`: overlay one polar from each table.
 fn plot_tables(args: &PlotArgs) -> Result<()> {
     check_image_path(&args.out).context("--out")?;
-    let mut curves: Vec<(String, Vec<PolarPoint>)> = Vec::new();
-    let mut conditions: Vec<FlowCondition> = Vec::new();
-    for path in &args.tables {
-        let table = read_table(path)?;
-        let grid = table.re().len() * table.mach().len() > 1;
-        if grid && (args.re.is_none() || args.mach.is_none()) {
-            bail!(
-                "{}: a grid table ({} Re x {} M): give --re and --mach",
-                path.display(),
-                table.re().len(),
-                table.mach().len()
-            );
-        }
-        let re = args.re.unwrap_or(table.re()[0]);
-        let mach = args.mach.unwrap_or(table.mach()[0]);
-        check_inside("re", re, table.re(), path)?;
-        check_inside("mach", mach, table.mach(), path)?;
-        let (at, points) = table.nearest_polar(re, mach);
-        if !points.iter().any(|p| p.converged) {
-            bail!(
-                "{}: the polar at Re {}, M {} has no converged point to draw",
-                path.display(),
-                compact_number(at.reynolds),
-                at.mach
-            );
-        }
-        let meta = table.meta();
-        let trip = transition_label(meta.xtr_top_set, meta.xtr_bot_set);
-        curves.push((format!("{} {trip}", meta.airfoil), points.to_vec()));
-        conditions.push(at);
-    }
-    let title = args.title.clone().unwrap_or_else(|| {
-        let names: Vec<&str> = curves.iter().map(|c| c.0.as_str()).collect();
-        let asked = args
-            .re
-            .zip(args.mach)
-            .map(|(r, m)| FlowCondition::new(r, m));
-        overlay_title(&names, &conditions, asked)
-    });
-    let refs: Vec<(&str, &[PolarPoint])> = curves
-        .iter()
-        .map(|(l, p)| (l.as_str(), p.as_slice()))
-        .collect();
-    render(&polar_figure(&refs, &title), &args.out)?;
+    let figure = table_overlay_figure(&TableOverlay {
+        tables: &args.tables,
+        labels: &args.label,
+        re: args.re,
+        mach: args.mach,
+        title: args.title.as_deref(),
+        cd_axis: args.cd_axis,
+    })?;
+    render(&figure, &args.out)?;
     Ok(())
 }
 
@@ -393,27 +358,12 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
     });
     // The image first: if it cannot be written, no CSV is left behind either.
     let figure = solutions_figure(&cases, args.mach, &title, Some(args.ncrit));
+    let figure = with_airfoil_contour(figure, &foil);
     render(&figure, &args.out)?;
     if let Some(path) = &args.csv {
         write_output(path, |w| {
             write_distributions_csv(&cases, args.mach, w).map_err(|e| OutputError::io(path, e))
         })?;
-    }
-    Ok(())
-}
-
-/// Error when `value` lies outside a table axis (beyond 0.1 % of the span).
-fn check_inside(flag: &str, value: f64, axis: &[f64], path: &Path) -> Result<()> {
-    let (lo, hi) = (axis[0], axis[axis.len() - 1]);
-    let slack = 1e-3 * (hi - lo).abs().max(hi.abs() * 1e-3);
-    if !value.is_finite() || value < lo - slack || value > hi + slack {
-        bail!(
-            "--{flag} {}: outside the table {} ({} … {})",
-            short_number(value),
-            path.display(),
-            short_number(lo),
-            short_number(hi)
-        );
     }
     Ok(())
 }
