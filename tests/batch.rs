@@ -134,6 +134,24 @@ fn two_shards_give_the_tables_of_the_unsharded_run() {
     assert_eq!(rows[0][1], format!("{foils}/n23012.dat"));
     assert_eq!(rows[3][..2], ["naca0012", "naca0012"]);
 
+    // A shard beyond the list: a note and an index without rows.
+    let o = batch(&[
+        "--airfoils",
+        foils,
+        "naca0012",
+        "--out",
+        sharded.to_str().unwrap(),
+        "--shard",
+        "5/5",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("no airfoil of the 4 given"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(index_rows(&sharded.join("index-5-of-5.csv")).is_empty());
+
     // The JSON index holds the same rows.
     let json: serde_json::Value =
         serde_json::from_str(&fs::read_to_string(whole.join("index.json")).unwrap()).unwrap();

@@ -32,6 +32,16 @@ impl std::fmt::Display for TableStatus {
     }
 }
 
+/// The index columns, in the order of [`IndexRow`]'s fields.
+const COLUMNS: [&str; 6] = [
+    "airfoil",
+    "file",
+    "points",
+    "converged",
+    "seconds",
+    "status",
+];
+
 /// One row of the index.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct IndexRow {
@@ -83,7 +93,10 @@ pub(crate) fn write_index(
     let json_path = dir.join(format!("{stem}.json"));
     let mut set = OutputSet::new();
     set.write(&csv_path, |w| {
-        let mut out = csv::Writer::from_writer(w);
+        // The header by hand: serde writes it only with the first row.
+        let mut out = csv::WriterBuilder::new().has_headers(false).from_writer(w);
+        out.write_record(COLUMNS)
+            .map_err(|e| csv_error(&csv_path, e))?;
         for row in rows {
             out.serialize(row).map_err(|e| csv_error(&csv_path, e))?;
         }
