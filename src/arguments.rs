@@ -6,7 +6,7 @@
 //! solution, and lists of them. Checks of rotor quantities (speed, mass, altitude) sit with the
 //! aircraft ([`crate::rotor`]) and use the same [`ArgumentError`].
 
-use crate::limits::{short_number, MAX_NEWTON_TOLERANCE, PANEL_NODES};
+use crate::limits::{short_number, short_text, MAX_NEWTON_TOLERANCE, PANEL_NODES};
 use std::borrow::Cow;
 
 /// A user-given value outside its range: `<name> <value>: <rule>` on one line (`<name>: <rule>`
@@ -134,6 +134,26 @@ pub fn distinct(name: &str, values: &[f64]) -> Result<(), ArgumentError> {
         require(!values[..k].contains(&v), name, v, "given twice")?;
     }
     Ok(())
+}
+
+/// A comma-separated list of distinct finite numbers given as `text` (a command-line list
+/// such as `--re 1e6,2e6`).
+pub fn number_list(name: &str, text: &str) -> Result<Vec<f64>, ArgumentError> {
+    let error = |item: &str, rule: &str| {
+        let value = format!("'{}'", short_text(text));
+        ArgumentError::with_text(name, value, format!("'{}' {rule}", short_text(item)))
+    };
+    let mut out: Vec<f64> = Vec::new();
+    for item in text.split(',').map(str::trim) {
+        match item.parse::<f64>() {
+            Ok(v) if v.is_finite() && out.contains(&v) => {
+                return Err(error(item, "is given twice"))
+            }
+            Ok(v) if v.is_finite() => out.push(v),
+            _ => return Err(error(item, "is not a finite number")),
+        }
+    }
+    Ok(out)
 }
 
 #[cfg(test)]

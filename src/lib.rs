@@ -59,6 +59,7 @@
 //! | load and panel an airfoil | [`geometry::airfoil_by_name_or_path`], [`geometry::Airfoil`] |
 //! | solve one viscous point or a sweep | [`viscous::ViscousSolver`] (a [`polar::WarmStartSolver`] for [`polar::sweep`]) |
 //! | build, read, write a table | [`table::build_table`], [`table::read_table`], [`table::write_table`] |
+//! | one table per airfoil of many, sharded | [`table::Batch`] |
 //! | look up section coefficients | [`section::SectionAero`] on [`table::PolarTable`] |
 //! | trim, takeoff, sweeps | [`rotor::trim_aircraft`], [`rotor::simulate_takeoff`], [`rotor::study`] |
 //! | propeller and engine | [`rotor::Powerplant`], [`rotor::Propeller`] |

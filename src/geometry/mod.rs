@@ -24,7 +24,7 @@ pub use coordinates::{
 pub use error::GeometryError;
 pub use naca::{naca, NacaOptions, NacaSection, TrailingEdge};
 pub use paneling::{PaneledAirfoil, PanelingParams, DEFAULT_PANEL_NODES};
-pub use registry::{airfoil_by_name_or_path, airfoil_key, naca8h12};
+pub use registry::{airfoil_by_name_or_path, airfoil_key, naca8h12, solver_airfoil};
 pub use spline::{ContourSpline, CubicSpline, EndCondition};
 pub use validation::{
     MAX_REVERSE_TURNING_DEG, MAX_REVERSE_TURN_DEG, MAX_TE_GAP_RATIO, MAX_TURNING_DEG,

@@ -72,3 +72,43 @@ pub fn airfoil_by_name_or_path(s: &str) -> Result<Airfoil, GeometryError> {
         name: trimmed.to_string(),
     })
 }
+
+/// The airfoil the solvers get from a user's `spec` (as [`airfoil_by_name_or_path`]):
+/// rotated so that the chord line lies along x when `derotate` is set, then in chord units
+/// and repaneled to `panels` nodes ([`Airfoil::solver_nodes`]); with the notes a user should
+/// read about what was changed (rotation, an inclined chord kept, normalisation), each
+/// starting with `spec`.
+pub fn solver_airfoil(
+    spec: &str,
+    panels: usize,
+    derotate: bool,
+) -> Result<(Airfoil, Vec<String>), GeometryError> {
+    let mut given = airfoil_by_name_or_path(spec)?;
+    let angle = given
+        .chord_angle_deg()
+        .map_err(|source| GeometryError::Preparing {
+            step: "locating the chord of",
+            airfoil: given.name.clone(),
+            source: Box::new(source),
+        })?;
+    let mut notes = Vec::new();
+    if derotate {
+        given = given.derotated()?;
+        notes.push(format!(
+            "{spec}: rotated by {:.3} deg so that the chord line lies along x; alpha is \
+             measured from the chord line",
+            -angle
+        ));
+    } else if angle.to_radians().abs() > super::CHORD_UNITS_TOLERANCE {
+        notes.push(format!(
+            "{spec}: the chord line is inclined by {angle:.3} deg to the x axis; alpha is \
+             measured from the x axis of the coordinates (--derotate measures it from the \
+             chord line)"
+        ));
+    }
+    let (foil, normalised) = given.solver_nodes(panels)?;
+    if normalised {
+        notes.push(Airfoil::normalisation_note(spec));
+    }
+    Ok((foil, notes))
+}

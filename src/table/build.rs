@@ -4,6 +4,7 @@
 
 use super::{PolarTable, TableError, TableMeta};
 use crate::geometry::Airfoil;
+use crate::limits::MAX_GRID_POINTS;
 use crate::polar::{parse_alpha_range, run_grid, GridPolar, SweepParams};
 use crate::section::FlowCondition;
 use crate::viscous::{SharedPanels, ViscousError, ViscousParams, ViscousSolver};
@@ -60,6 +61,19 @@ impl GridSpec {
     pub fn point_count(&self) -> usize {
         self.reynolds.len() * self.mach.len() * self.alpha_deg.len()
     }
+
+    /// Refuses a grid of more than [`MAX_GRID_POINTS`] points (a check before any solve).
+    pub fn check_size(&self) -> Result<(), BuildError> {
+        if self.point_count() <= MAX_GRID_POINTS {
+            return Ok(());
+        }
+        Err(BuildError::TooLarge {
+            re: self.reynolds.len(),
+            mach: self.mach.len(),
+            alpha: self.alpha_deg.len(),
+            points: self.point_count(),
+        })
+    }
 }
 
 /// Why a table could not be built.
@@ -71,6 +85,21 @@ pub enum BuildError {
     /// The solved polars do not form a table.
     #[error("building the table")]
     Table(#[source] TableError),
+    /// More points than [`MAX_GRID_POINTS`] ([`GridSpec::check_size`]).
+    #[error(
+        "{re} Re x {mach} M x {alpha} alpha = {points} points: more than the limit of \
+         {MAX_GRID_POINTS} points per run"
+    )]
+    TooLarge {
+        /// Reynolds numbers.
+        re: usize,
+        /// Mach numbers.
+        mach: usize,
+        /// Angles of attack.
+        alpha: usize,
+        /// Their product.
+        points: usize,
+    },
     /// The caller cancelled the build ([`build_table_cancellable`]).
     #[error("cancelled")]
     Cancelled,
@@ -135,22 +164,26 @@ pub fn build_table_cancellable(
     if cancel.load(Ordering::Relaxed) {
         return Err(BuildError::Cancelled);
     }
-    let meta = TableMeta {
-        airfoil: foil.name.clone(),
-        ncrit: base.ncrit,
-        xtr_top_set: base.xtr_top,
-        xtr_bot_set: base.xtr_bot,
-        panels,
-        solver: format!("polargen {}", env!("CARGO_PKG_VERSION")),
-    };
     PolarTable::from_polars(
-        meta,
+        table_meta(foil, panels, base),
         polars
             .into_iter()
             .map(|p| (FlowCondition::new(p.re, p.mach), p.points))
             .collect(),
     )
     .map_err(BuildError::Table)
+}
+
+/// The metadata of a table of `foil` (paneled with `panels` nodes) solved with `base`.
+pub(crate) fn table_meta(foil: &Airfoil, panels: usize, base: &ViscousParams) -> TableMeta {
+    TableMeta {
+        airfoil: foil.name.clone(),
+        ncrit: base.ncrit,
+        xtr_top_set: base.xtr_top,
+        xtr_bot_set: base.xtr_bot,
+        panels,
+        solver: format!("polargen {}", env!("CARGO_PKG_VERSION")),
+    }
 }
 
 #[cfg(test)]

@@ -1,12 +1,14 @@
 //! Re × Mach × α polar tables: grid, interpolating lookup with a 360° extension, file formats.
 //!
 //! The facade: [`PolarTable`] and its [`TableMeta`]; [`build_table`] (and
-//! [`build_table_cancellable`]) on a [`GridSpec`]; [`PolarTable::lookup_many`] for columns of
+//! [`build_table_cancellable`]) on a [`GridSpec`]; [`Batch`] runs of many airfoils; [`PolarTable::lookup_many`] for columns of
 //! lookups;
 //! [`read_table`] / [`read_lookup_table`] / [`parse_table`] and [`write_table`] /
 //! [`write_c81`] in the [`TableFormat`]s; [`sample_polar`] and [`alpha_at_cl`] at one (Re, M);
 //! [`PostStallParams`]; [`TableError`] and [`BuildError`]. Inside (private):
 //!
+//! * `batch` — [`Batch`]: one table per airfoil of a list of files, folders and names, with
+//!   an index; shards and resumed runs.
 //! * `build` — solving a table: the viscous polars of one airfoil on a Re × M × α grid.
 //! * `census` — [`TableCensus`]: points, converged, supercritical.
 //! * `grid` — [`PolarTable`]: one polar per (Re, M) node, metadata, validation, accessors.
@@ -66,6 +68,7 @@
 //! assert!(rev.post_stall && rev.mach_clamped && rev.cl < 0.0);
 //! ```
 
+mod batch;
 mod build;
 mod census;
 mod error;
@@ -76,6 +79,9 @@ mod lookup;
 mod post_stall;
 mod validation;
 
+pub use batch::{
+    Batch, BatchError, BatchSettings, BatchSummary, IndexRow, Shard, TableStatus, AIRFOIL_EXTENSION,
+};
 pub use build::{
     build_table, build_table_cancellable, BuildError, GridSpec, DEFAULT_ALPHA, DEFAULT_MACH,
     DEFAULT_RE,

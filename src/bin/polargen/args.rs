@@ -37,6 +37,9 @@ pub enum Command {
     /// Cp(x) over the airfoil contour and boundary-layer distributions (H, Cf, N) at one α or
     /// Cl, one case per transition setting overlaid (e.g. --xtr 1,0.07: clean vs tripped).
     PlotPoint(PlotPointArgs),
+    /// One table per airfoil of files, folders and names, with an index (CSV, JSON); --shard
+    /// K/N takes every N-th airfoil (job arrays), --resume keeps finished tables.
+    Batch(BatchArgs),
     /// Shell completion script on standard output (e.g. `polargen completions bash >
     /// ~/.local/share/bash-completion/completions/polargen`).
     Completions(polargen::cli::CompletionsArgs),
@@ -192,15 +195,70 @@ pub struct RunArgs {
     #[arg(long, value_name = "NAME|PATH|-", required = true)]
     pub airfoil: Option<String>,
 
-    #[command(flatten)]
-    pub shape: Shape,
-
     /// Inviscid panel solution only (cd = 0); output `alpha,cl,cd,cm,converged`.
     #[arg(long)]
     pub inviscid: bool,
 
-    /// Chord Reynolds numbers, comma-separated. Without --re and --mach: the rotor grid
-    /// Re 0.25e6,…,2.5e6 × M 0,0.2,0.3,0.4,0.5; --re alone runs at M 0 (as XFOIL).
+    #[command(flatten)]
+    pub grid: GridArgs,
+
+    /// Output format: csv, json, xfoil (one .pol per Re, M), c81 (one file per Re) or
+    /// aerodyn (OpenFAST AirfoilInfo file, one file per Mach number, a table per Re,
+    /// InclUAdata False: OpenFAST derives the unsteady-aero parameters from the table; see
+    /// convert --help); default: from --out's extension, else csv.
+    #[arg(long)]
+    pub format: Option<String>,
+
+    /// Output file; standard output when absent or - (csv and json only).
+    #[arg(long, value_name = "FILE|-")]
+    pub out: Option<PathBuf>,
+
+    #[command(flatten)]
+    pub extension: Extension,
+}
+
+/// `polargen batch` options (the grid flags as the main job's).
+#[derive(Args, Debug)]
+pub struct BatchArgs {
+    /// Airfoils: coordinate files, folders (their *.dat files) or names (naca2412); each
+    /// table is named after the file stem.
+    #[arg(long, value_name = "DIR|FILE|NAME", num_args = 1.., required = true)]
+    pub airfoils: Vec<String>,
+
+    /// Output folder: <name>.csv (or .json) per airfoil and index.csv + index.json
+    /// (index-K-of-N.* for a shard).
+    #[arg(long, value_name = "DIR")]
+    pub out: PathBuf,
+
+    /// Table format: csv or json.
+    #[arg(long, default_value = "csv")]
+    pub format: polargen::table::TableFormat,
+
+    /// Only every N-th airfoil of the list sorted by name, from the K-th (1 ≤ K ≤ N).
+    #[arg(long, value_name = "K/N")]
+    pub shard: Option<polargen::table::Shard>,
+
+    /// Keep tables that read back complete for the same grid and settings (what is compared:
+    /// docs/batch.md).
+    #[arg(long)]
+    pub resume: bool,
+
+    /// Airfoils solved at the same time, each on --threads workers (0 = one per core).
+    #[arg(long, default_value_t = 1)]
+    pub jobs: usize,
+
+    #[command(flatten)]
+    pub grid: GridArgs,
+}
+
+/// The grid and solver flags shared by the main job and `batch`.
+#[derive(Args, Debug)]
+pub struct GridArgs {
+    #[command(flatten)]
+    pub shape: Shape,
+
+    /// Chord Reynolds numbers, comma-separated. Without --re and --mach: the rotor grid of
+    /// 8 Re 1e5…3e6 × 8 M 0…0.65; --re alone runs at M 0 (as XFOIL).
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub re: Option<String>,
 
@@ -239,20 +297,6 @@ pub struct RunArgs {
     /// than two threads per polar are not started.
     #[arg(long, default_value_t = 0, allow_hyphen_values = true)]
     pub threads: usize,
-
-    /// Output format: csv, json, xfoil (one .pol per Re, M), c81 (one file per Re) or
-    /// aerodyn (OpenFAST AirfoilInfo file, one file per Mach number, a table per Re,
-    /// InclUAdata False: OpenFAST derives the unsteady-aero parameters from the table; see
-    /// convert --help); default: from --out's extension, else csv.
-    #[arg(long)]
-    pub format: Option<String>,
-
-    /// Output file; standard output when absent or - (csv and json only).
-    #[arg(long, value_name = "FILE|-")]
-    pub out: Option<PathBuf>,
-
-    #[command(flatten)]
-    pub extension: Extension,
 }
 
 /// The Newton threshold of the viscous solver.

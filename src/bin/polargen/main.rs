@@ -1,7 +1,7 @@
 //! `polargen` — airfoil polars and Re × Mach × α tables from the command line.
 //!
-//! * `polargen --airfoil naca8h12 --xtr 0.07` — the default rotor grid (Re 0.25…2.5·10⁶ ×
-//!   M 0…0.5 × α −10…20°) as a long-form CSV table;
+//! * `polargen --airfoil naca8h12 --xtr 0.07` — the default rotor grid (Re 10⁵…3·10⁶ ×
+//!   M 0…0.65 × α −10…20°) as a long-form CSV table;
 //! * `--re`, `--mach` (comma lists) and `--alpha A0:A1:DA` override each axis; one value each
 //!   gives a single polar;
 //! * `--inviscid` — the panel solution only (`alpha,cl,cd,cm,converged`).
@@ -17,14 +17,15 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use args::{Cli, Command, ConvertArgs, PlotArgs, PlotPointArgs, RunArgs, Shape};
+use args::{
+    BatchArgs, Cli, Command, ConvertArgs, GridArgs, PlotArgs, PlotPointArgs, RunArgs, Shape,
+};
 use clap::CommandFactory;
 
 use polargen::arguments;
 use polargen::cli::{self, Tool};
-use polargen::geometry::{airfoil_by_name_or_path, Airfoil, CHORD_UNITS_TOLERANCE};
+use polargen::geometry::{solver_airfoil, Airfoil};
 use polargen::inviscid::PanelSystem;
-use polargen::limits::{short_text, MAX_GRID_POINTS};
 use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
 use polargen::plot::polar_plots::transition_label;
@@ -32,8 +33,8 @@ use polargen::plot::table_plots::{table_overlay_figure, TableOverlay};
 use polargen::plot::{check_image_path, render};
 use polargen::polar::{parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams};
 use polargen::table::{
-    build_table, read_table, with_cd_max, write_table, GridSpec, TableFormat, DEFAULT_ALPHA,
-    DEFAULT_MACH, DEFAULT_RE,
+    build_table, read_table, with_cd_max, write_table, Batch, BatchSettings, GridSpec, TableFormat,
+    DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
 };
 use polargen::viscous::distributions::write_distributions_csv;
 use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};
@@ -51,6 +52,7 @@ fn main() -> ExitCode {
         Some(Command::Plot(args)) => plot_tables(args),
         Some(Command::Convert(args)) => convert_table(args),
         Some(Command::PlotPoint(args)) => plot_point(args),
+        Some(Command::Batch(args)) => run_batch(args),
         Some(Command::Completions(args)) => {
             to_stdout(&cli::completions(Cli::command(), args.shell))
         }
@@ -71,89 +73,39 @@ fn to_stdout(bytes: &[u8]) -> Result<()> {
     Ok(())
 }
 
-/// Parse a comma-separated list of distinct finite numbers, naming the flag in the error.
-fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>> {
-    let mut out: Vec<f64> = Vec::new();
-    for item in text.split(',').map(str::trim) {
-        match item.parse::<f64>() {
-            Ok(v) if v.is_finite() => {
-                if out.contains(&v) {
-                    bail!(
-                        "--{flag} '{}': '{}' is given twice",
-                        short_text(text),
-                        short_text(item)
-                    );
-                }
-                out.push(v)
-            }
-            _ => bail!(
-                "--{flag} '{}': '{}' is not a finite number",
-                short_text(text),
-                short_text(item)
-            ),
-        }
-    }
-    Ok(out)
-}
-
-/// Check `--out` before any computation: a file name (not a folder), below a folder.
-fn check_out(path: &Path) -> Result<()> {
-    check_output_path(path).context("--out")?;
-    Ok(())
-}
-
 /// Mach numbers from `--mach` (or `default`), each checked to lie in [0, 1).
-fn mach_list(cli: &RunArgs, default: &[f64]) -> Result<Vec<f64>> {
+fn mach_list(cli: &GridArgs, default: &[f64]) -> Result<Vec<f64>> {
     let list = match &cli.mach {
-        Some(t) => parse_list("mach", t)?,
+        Some(t) => arguments::number_list("--mach", t)?,
         None => default.to_vec(),
     };
-    list.iter().try_for_each(|&m| check_mach(m))?;
+    list.iter()
+        .try_for_each(|&m| arguments::mach("--mach", m))?;
     Ok(list)
 }
 
-/// Check the panel count, load the airfoil (derotated on request), bring it into chord units
-/// and repanel it ([`Airfoil::solver_nodes`]); say on stderr what was changed.
+/// Check the panel count, load the airfoil and prepare it for the solver
+/// ([`solver_airfoil`]); say on stderr what was changed.
 fn load_airfoil(spec: Option<&str>, panels: usize, shape: &Shape) -> Result<Airfoil> {
     arguments::panels("--panels", panels)?;
     let spec = spec.context("--airfoil is required")?;
-    let mut given = airfoil_by_name_or_path(spec).context("--airfoil")?;
-    let angle = given
-        .chord_angle_deg()
-        .with_context(|| format!("locating the chord of {}", given.name))?;
-    if shape.derotate {
-        given = given.derotated()?;
-        TOOL.say(format!(
-            "note: {spec}: rotated by {:.3} deg so that the chord line lies along x; alpha is \
-             measured from the chord line",
-            -angle
-        ));
-    } else if angle.to_radians().abs() > CHORD_UNITS_TOLERANCE {
-        TOOL.say(format!(
-            "note: {spec}: the chord line is inclined by {angle:.3} deg to the x axis; alpha is \
-             measured from the x axis of the coordinates (--derotate measures it from the \
-             chord line)"
-        ));
-    }
-    let (foil, normalised) = given.solver_nodes(panels)?;
-    if normalised {
-        TOOL.say(format!("note: {}", Airfoil::normalisation_note(spec)));
-    }
+    let (foil, notes) = solver_airfoil(spec, panels, shape.derotate).context("--airfoil")?;
+    notes.iter().for_each(|n| TOOL.say(format!("note: {n}")));
     Ok(foil)
 }
 
 /// `--inviscid`: the panel solution at one Mach number.
 fn run_inviscid(cli: &RunArgs) -> Result<()> {
-    let mach = match mach_list(cli, &[0.0])?.as_slice() {
+    let mach = match mach_list(&cli.grid, &[0.0])?.as_slice() {
         [m] => *m,
         _ => bail!("--mach: --inviscid takes one Mach number"),
     };
     let alphas =
-        parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA)).context("--alpha")?;
+        parse_alpha_range(cli.grid.alpha.as_deref().unwrap_or(DEFAULT_ALPHA)).context("--alpha")?;
     if let Some(path) = &cli.out {
-        check_out(path)?;
+        check_output_path(path).context("--out")?;
     }
-    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels, &cli.shape)?;
+    let foil = load_airfoil(cli.airfoil.as_deref(), cli.grid.panels, &cli.grid.shape)?;
     let system = PanelSystem::new(&foil).context("panel system")?;
     let mut csv = String::from("alpha,cl,cd,cm,converged\n");
     let mut supercritical: Vec<f64> = Vec::new();
@@ -188,59 +140,40 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
 }
 
 /// The transition setting of `--xtr` or `--xtr-top`/`--xtr-bot`, checked.
-fn transition(cli: &RunArgs) -> Result<(f64, f64)> {
-    let (xtr_top, xtr_bot) = match cli.xtr {
-        Some(x) => (x, x),
-        None => (cli.xtr_top.unwrap_or(1.0), cli.xtr_bot.unwrap_or(1.0)),
+fn transition(cli: &GridArgs) -> Result<(f64, f64)> {
+    let sides = match cli.xtr {
+        Some(x) => [("--xtr", x), ("--xtr", x)],
+        None => [("--xtr-top", cli.xtr_top), ("--xtr-bot", cli.xtr_bot)]
+            .map(|(flag, x)| (flag, x.unwrap_or(1.0))),
     };
-    let flags = match cli.xtr {
-        Some(_) => ["xtr", "xtr"],
-        None => ["xtr-top", "xtr-bot"],
-    };
-    for (flag, x) in flags.into_iter().zip([xtr_top, xtr_bot]) {
-        check_xtr(flag, x)?;
+    for (flag, x) in sides {
+        arguments::transition(flag, x)?;
     }
-    Ok((xtr_top, xtr_bot))
+    Ok((sides[0].1, sides[1].1))
 }
 
-/// The viscous polar(s) or table.
-fn run_viscous(cli: &RunArgs) -> Result<()> {
+/// The grid and solver settings of the grid flags, checked.
+fn grid_request(cli: &GridArgs) -> Result<(GridSpec, ViscousParams)> {
     // The default grid only when neither axis is given; Re alone runs at M 0, as XFOIL.
     let (reynolds, mach_default): (Vec<f64>, &[f64]) = match (&cli.re, &cli.mach) {
-        (Some(t), _) => (parse_list("re", t)?, &[0.0]),
+        (Some(t), _) => (arguments::number_list("--re", t)?, &[0.0]),
         (None, None) => (DEFAULT_RE.to_vec(), &DEFAULT_MACH),
         (None, Some(_)) => bail!("--mach: give the Reynolds numbers with --re too"),
     };
-    reynolds.iter().try_for_each(|&r| check_re(r))?;
+    reynolds
+        .iter()
+        .try_for_each(|&r| arguments::reynolds("--re", r))?;
     let grid = GridSpec {
         reynolds,
         mach: mach_list(cli, mach_default)?,
         alpha_deg: parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA))
             .context("--alpha")?,
     };
-    if grid.point_count() > MAX_GRID_POINTS {
-        bail!(
-            "{} Re x {} M x {} alpha = {} points: more than the limit of {MAX_GRID_POINTS} \
-             points per run",
-            grid.reynolds.len(),
-            grid.mach.len(),
-            grid.alpha_deg.len(),
-            grid.point_count()
-        );
-    }
+    grid.check_size()?;
     let (xtr_top, xtr_bot) = transition(cli)?;
     arguments::ncrit("--ncrit", cli.ncrit)?;
     arguments::tolerance("--tolerance", cli.newton.tolerance)?;
-    if let Some(path) = &cli.out {
-        check_out(path)?;
-    }
-    let format = TableFormat::for_output(cli.format.as_deref(), cli.out.as_deref())
-        .context("--format/--out")?;
-    let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels, &cli.shape)?;
-
-    let total = grid.point_count();
-    let bar = progress_bar(total as u64);
-    let start = Instant::now();
+    arguments::panels("--panels", cli.panels)?;
     let base = ViscousParams {
         ncrit: cli.ncrit,
         tolerance: cli.newton.tolerance,
@@ -248,14 +181,29 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         xtr_bot,
         ..ViscousParams::default()
     };
-    let table = build_table(&foil, cli.panels, &grid, &base, cli.threads, |n| {
-        if let Some(b) = &bar {
-            b.inc(n as u64);
-        }
-    })?;
-    if let Some(b) = &bar {
-        b.finish_and_clear();
+    Ok((grid, base))
+}
+
+/// The viscous polar(s) or table.
+fn run_viscous(cli: &RunArgs) -> Result<()> {
+    let (grid, base) = grid_request(&cli.grid)?;
+    if let Some(path) = &cli.out {
+        check_output_path(path).context("--out")?;
     }
+    let format = TableFormat::for_output(cli.format.as_deref(), cli.out.as_deref())
+        .context("--format/--out")?;
+    let foil = load_airfoil(cli.airfoil.as_deref(), cli.grid.panels, &cli.grid.shape)?;
+    let bar = progress_bar(grid.point_count() as u64);
+    let start = Instant::now();
+    let table = build_table(
+        &foil,
+        cli.grid.panels,
+        &grid,
+        &base,
+        cli.grid.threads,
+        |n| bar.iter().for_each(|b| b.inc(n as u64)),
+    )?;
+    bar.iter().for_each(|b| b.finish_and_clear());
     let census = table.census();
     TOOL.say(format!(
         "{census} in {:.1} s",
@@ -273,19 +221,33 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     Ok(())
 }
 
-/// A `--re` value ([`arguments::reynolds`]).
-fn check_re(re: f64) -> Result<()> {
-    Ok(arguments::reynolds("--re", re)?)
-}
-
-/// A `--mach` value ([`arguments::mach`]).
-fn check_mach(mach: f64) -> Result<()> {
-    Ok(arguments::mach("--mach", mach)?)
-}
-
-/// A transition location given with `--<flag>` ([`arguments::transition`]).
-fn check_xtr(flag: &str, x: f64) -> Result<()> {
-    Ok(arguments::transition(&format!("--{flag}"), x)?)
+/// `polargen batch`: one table per airfoil and the index ([`Batch`]).
+fn run_batch(args: &BatchArgs) -> Result<()> {
+    let (grid, base) = grid_request(&args.grid)?;
+    let settings = BatchSettings {
+        grid,
+        base,
+        panels: args.grid.panels,
+        derotate: args.grid.shape.derotate,
+        format: args.format,
+        shard: args.shard,
+        resume: args.resume,
+        jobs: args.jobs,
+        threads: args.grid.threads,
+    };
+    let batch = Batch::plan(&args.airfoils, &args.out, settings)?;
+    batch
+        .notes()
+        .iter()
+        .for_each(|n| TOOL.say(format!("note: {n}")));
+    let bar = progress_bar(batch.point_count() as u64);
+    let summary = batch.run(|n| bar.iter().for_each(|b| b.inc(n as u64)))?;
+    bar.iter().for_each(|b| b.finish_and_clear());
+    TOOL.say(&summary);
+    match summary.failed.as_slice() {
+        [] => Ok(()),
+        names => bail!("no table for {} (see the index)", names.join(", ")),
+    }
 }
 
 /// `polargen plot`: overlay one polar from each table.
@@ -305,7 +267,7 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
 
 /// `polargen convert`: read a table and write it in another format.
 fn convert_table(args: &ConvertArgs) -> Result<()> {
-    check_out(&args.out)?;
+    check_output_path(&args.out).context("--out")?;
     let format = TableFormat::for_output(args.format.as_deref(), Some(&args.out))
         .context("--format/--out")?;
     let table = with_cd_max(read_table(&args.table)?, args.extension.cd_max).context("--cd-max")?;
@@ -319,12 +281,13 @@ fn convert_table(args: &ConvertArgs) -> Result<()> {
 /// `polargen plot-point`: solve each transition setting at the α (or Cl) asked for and draw
 /// Cp and the boundary-layer distributions of both surfaces.
 fn plot_point(args: &PlotPointArgs) -> Result<()> {
-    check_re(args.re)?;
-    check_mach(args.mach)?;
+    arguments::reynolds("--re", args.re)?;
+    arguments::mach("--mach", args.mach)?;
     arguments::ncrit("--ncrit", args.ncrit)?;
     arguments::tolerance("--tolerance", args.newton.tolerance)?;
-    let xtrs = parse_list("xtr", &args.xtr)?;
-    xtrs.iter().try_for_each(|&x| check_xtr("xtr", x))?;
+    let xtrs = arguments::number_list("--xtr", &args.xtr)?;
+    xtrs.iter()
+        .try_for_each(|&x| arguments::transition("--xtr", x))?;
     check_image_path(&args.out).context("--out")?;
     if let Some(path) = &args.csv {
         check_output_path(path).context("--csv")?;
