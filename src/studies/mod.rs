@@ -244,6 +244,14 @@ pub fn command_line_cache(dir: Option<std::path::PathBuf>) -> Result<TableCache,
     })
 }
 
+/// Airspeeds of a study given with `flag`, checked with the rotor layer's
+/// [`check_speed_kt`](crate::rotor::check_speed_kt): each above 0 and below the maximum.
+pub(crate) fn check_speeds(flag: &str, speeds_kt: &[f64]) -> Result<(), StudiesError> {
+    speeds_kt.iter().try_for_each(|&v| {
+        crate::rotor::check_speed_kt(flag, v).map_err(|e| StudiesError::BadSetting(e.to_string()))
+    })
+}
+
 /// A value with `decimals` decimals, or `-` for none.
 pub(crate) fn cell(v: Option<f64>, decimals: usize) -> String {
     v.map_or_else(|| "-".to_string(), |v| format!("{v:.decimals$}"))

@@ -4,12 +4,12 @@
 //! the propeller thrust, power and engine rpm follow (the paper's §6 argument for a wing).
 
 use super::files::records_csv;
-use super::{cell, load_study_airfoil, sections, study_tables, Progress, StudiesError};
+use super::{
+    cell, check_speeds, load_study_airfoil, sections, study_tables, Progress, StudiesError,
+};
 use super::{StudyFiles, TableCache, Transition};
 use crate::plot::{Figure, Panel, Series, Style};
-use crate::rotor::{
-    speed_sweep, Aircraft, BladeSection, TrimError, TrimParams, TrimResult, MAX_SPEED_KT,
-};
+use crate::rotor::{speed_sweep, Aircraft, BladeSection, TrimError, TrimParams, TrimResult};
 use serde::Serialize;
 
 /// Most areas × speeds of one study: each case is one trim of about a second, so 200 cases
@@ -114,15 +114,7 @@ impl WingOptions {
                 "--areas {a}: a wing area must be in [0, {MAX_WING_AREA_M2}] m²"
             ));
         }
-        if let Some(v) = self
-            .speeds_kt
-            .iter()
-            .find(|v| !(**v > 0.0 && **v < MAX_SPEED_KT))
-        {
-            return bad(format!(
-                "--speeds {v}: must be above 0 and below {MAX_SPEED_KT} kt"
-            ));
-        }
+        check_speeds("--speeds", &self.speeds_kt)?;
         let cases = self.areas_m2.len() * self.speeds_kt.len();
         if cases > MAX_WING_CASES {
             return bad(format!(
