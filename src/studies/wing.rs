@@ -87,6 +87,7 @@ pub struct WingOptions {
     /// Airspeeds in knots.
     #[arg(
         long = "speeds",
+        value_name = "SPEEDS",
         value_delimiter = ',',
         default_value = "30,45,60,75,90"
     )]
