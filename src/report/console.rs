@@ -32,6 +32,16 @@ pub fn trim(buf: &mut String, t: &TrimResult) {
     );
     outln!(buf, "  rotor drag D_R [N]     {:8.1}", t.rotor_drag_n);
     outln!(buf, "  parasitic D_P [N]      {:8.1}", t.parasitic_drag_n);
+    if let Some(w) = &t.wing {
+        outln!(
+            buf,
+            "  wing drag D_W [N]      {:8.1}   (lift {:.1} N, C_L {:.3}; the rotor lifts {:.1} %)",
+            w.drag_n,
+            w.lift_n,
+            w.lift_coefficient,
+            100.0 * t.rotor_lift_share()
+        );
+    }
     outln!(buf, "  prop thrust F_prop [N] {:8.1}", t.prop_thrust_n);
     outln!(buf, "  L/D                    {:8.2}", t.lift_to_drag);
     outln!(buf, "  power required [kW]    {:8.1}", t.power_required_kw);

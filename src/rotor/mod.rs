@@ -7,8 +7,8 @@
 //! trim, takeoff, cruise sweeps, the blade element) and [`study`]; the files inside:
 //!
 //! * `atmosphere` — ISA standard atmosphere (density, speed of sound, viscosity).
-//! * `aircraft` — the aircraft preset (rotor, airframe, propeller, engine, takeoff data) from
-//!   TOML.
+//! * `aircraft` — the aircraft preset (rotor, airframe, propeller, engine, takeoff data and an
+//!   optional fixed wing with its lifting-line lift and drag) from TOML.
 //! * `blade_element` — velocity triangle and loads of one strip (reverse flow included).
 //! * `inflow` — induced velocity: Glauert momentum theory, Drees linear inflow; the tip-loss
 //!   models and the yawed-flow switch.
@@ -45,7 +45,7 @@ mod trim;
 pub use aircraft::{
     check_altitude_m, check_azimuth_samples, check_blade_radius, check_mass_kg, check_speed_kt,
     Aircraft, AircraftError, BladeGeometry, EngineParams, PropellerParams, RotorParams,
-    TakeoffParams, MAX_MASS_KG, MAX_SPEED_KT,
+    TakeoffParams, WingError, WingLoads, WingParams, MAX_MASS_KG, MAX_SPEED_KT,
 };
 pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};

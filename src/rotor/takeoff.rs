@@ -3,9 +3,11 @@
 //!
 //! Procedure (paper §Takeoff): rotor prerotated to 200 rpm, brake released, full throttle,
 //! stick full aft (rotor head pitch 15°, fuselage level, so the hub angle of attack is 15° on
-//! the ground roll). Ground roll: m·u̇ = F_prop − D_R − D_P − μ_r·(G − L). Lift-off when the
-//! rotor lift exceeds the weight. Airborne: forces along and normal to the flight path,
-//! m·a = (F_prop − D)·e_V + L·e_L − G·e_z. Rotor speed throughout: I_R·Ω̇ = Q_aero (the
+//! the ground roll). Ground roll: m·u̇ = F_prop − D − μ_r·(G − L). Lift-off when the lift
+//! exceeds the weight. Airborne: forces along and normal to the flight path,
+//! m·a = (F_prop − D)·e_V + L·e_L − G·e_z. L is the rotor lift plus that of a fixed wing, D the
+//! rotor, airframe and wing drag; the wing flies at its incidence (the fuselage level on the
+//! ground and along the flight path in the air, as in the trim). Rotor speed throughout: I_R·Ω̇ = Q_aero (the
 //! quasi-steady autorotative torque of the blade-element model). Thrust acts along the flight
 //! path (small angles).
 //!
@@ -20,7 +22,7 @@
 //! α̇_H = K·[(V − V_t) + τ·(V̇ − V̇_t)], clamped to the head-angle range (too slow → lower the
 //! disc to accelerate; too fast → raise it to climb).
 
-use super::aircraft::Aircraft;
+use super::aircraft::{Aircraft, WingError, WingLoads};
 use super::atmosphere::Atmosphere;
 use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::propeller::{FullThrottle, Powerplant, PropellerError};
@@ -52,6 +54,9 @@ pub enum TakeoffError {
         /// State at the end.
         reason: &'static str,
     },
+    /// The wing's loads could not be computed.
+    #[error(transparent)]
+    Wing(#[from] WingError),
     /// The rotor stopped or the state became non-finite.
     #[error("takeoff simulation diverged at t = {time_s:.2} s: {reason}")]
     Diverged {
@@ -170,6 +175,12 @@ impl<S: BladeSection + ?Sized> Model<'_, S> {
         Ok(s)
     }
 
+    /// The wing's lift and drag in state `y`.
+    fn wing_at(&self, y: &State) -> Result<WingLoads, TakeoffError> {
+        let atm = Atmosphere::isa(self.aircraft.takeoff.field_altitude_m + y[1].max(0.0));
+        Ok(self.aircraft.wing_loads(&atm, y[2].hypot(y[3]))?)
+    }
+
     /// Time derivative of the state; `airborne` selects the equations of motion.
     fn derivative(
         &mut self,
@@ -188,11 +199,13 @@ impl<S: BladeSection + ?Sized> Model<'_, S> {
             .full_throttle(&s.condition.atmosphere, v, self.warm_prop.as_ref())?;
         let thrust = full.propeller.thrust;
         self.warm_prop = Some(full);
-        let drag = s.drag + 0.5 * rho * v * v * ac.parasitic_drag_area_m2;
+        let wing = self.wing_at(y)?;
+        let drag = s.drag + 0.5 * rho * v * v * ac.parasitic_drag_area_m2 + wing.drag_n;
+        let lift = s.lift + wing.lift_n;
         let omega_dot = s.torque / self.inertia;
         let mut dy = [0.0; 6];
         if !airborne {
-            let friction = ac.takeoff.rolling_friction * (weight - s.lift).max(0.0);
+            let friction = ac.takeoff.rolling_friction * (weight - lift).max(0.0);
             let ax = (thrust - drag - friction) / m;
             dy[0] = y[2];
             // Standing still, the brakes-off aircraft cannot roll backwards.
@@ -203,8 +216,8 @@ impl<S: BladeSection + ?Sized> Model<'_, S> {
         let gamma = if v > 1e-6 { y[3].atan2(y[2]) } else { 0.0 };
         let (sg, cg) = gamma.sin_cos();
         let along = thrust - drag;
-        let ax = (along * cg - s.lift * sg) / m;
-        let az = (along * sg + s.lift * cg) / m - G0;
+        let ax = (along * cg - lift * sg) / m;
+        let az = (along * sg + lift * cg) / m - G0;
         let to = &ac.takeoff;
         // Pilot: airspeed schedule V_t(h) and the PI law of the module documentation.
         let v_climb = to.climb_speed_kt * super::KT_TO_MS;
@@ -325,7 +338,7 @@ pub fn simulate_takeoff<S: BladeSection + ?Sized>(
         let (next, s) = model.rk4_step(t, &y, dt, airborne)?;
         history.push(sample(t, &y, &s));
         beta_max = beta_max.max(s.teeter.amplitude().to_degrees());
-        if !airborne && s.lift >= weight {
+        if !airborne && s.lift + model.wing_at(&y)?.lift_n >= weight {
             airborne = true;
             liftoff = Some((y[0], t, y[2], y[4]));
             model.liftoff_speed = y[2];

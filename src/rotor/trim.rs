@@ -2,15 +2,17 @@
 //!
 //! Trim (paper eq. 5 and Table 3): at airspeed V, mass m and ISA altitude find the hub angle
 //! of attack α_H and rotor speed Ω such that the rotor is in autorotation (torque = 0) and its
-//! lift equals the weight G. Then D_R is the rotor drag, D_P = ½ρV²·S_P·C_DP the airframe
-//! drag, F_prop = D_R + D_P the propeller thrust and L/D = G/(D_R + D_P).
+//! lift equals the weight G less the lift L_W of a fixed wing, if the preset has one (the wing
+//! flies at its incidence with the fuselage level, see [`crate::rotor::WingParams`]). Then D_R
+//! is the rotor drag, D_P = ½ρV²·S_P·C_DP the airframe drag, D_W the wing's profile and
+//! induced drag, F_prop = D_R + D_P + D_W the propeller thrust and L/D = G/F_prop.
 //!
 //! Both unknowns are found by nested one-dimensional root finding with brackets: for each α_H
 //! the autorotation rpm (scan down from high rpm until the torque changes sign, then the
 //! crate's bracketed root finder, an Illinois-safeguarded secant), and α_H from the lift
 //! balance the same way. Brackets make the solve robust; the secant makes it fast.
 
-use super::aircraft::Aircraft;
+use super::aircraft::{Aircraft, WingError, WingLoads};
 use super::atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
 use super::propeller::{Powerplant, PropellerError};
@@ -39,14 +41,30 @@ pub enum TrimError {
         reason: &'static str,
     },
     /// No rotor angle of attack in the search range balances the weight.
-    #[error("no trim at V = {airspeed_ms:.1} m/s, weight {weight_n:.0} N: {reason}")]
+    #[error("no trim at V = {airspeed_ms:.1} m/s for a rotor lift of {weight_n:.0} N: {reason}")]
     NoTrim {
         /// Airspeed \[m/s\].
         airspeed_ms: f64,
-        /// Weight \[N\].
+        /// Rotor lift sought: the weight less any wing lift \[N\].
         weight_n: f64,
         /// What the scan found.
         reason: &'static str,
+    },
+    /// The wing's loads could not be computed.
+    #[error(transparent)]
+    Wing(#[from] WingError),
+    /// The wing alone lifts the weight: no rotor lift is left to trim for.
+    #[error(
+        "no trim at V = {airspeed_ms:.1} m/s: the wing lifts {wing_lift_n:.0} N, at least the \
+         weight {weight_n:.0} N (the rotor would have to push down)"
+    )]
+    WingCarriesWeight {
+        /// Airspeed \[m/s\].
+        airspeed_ms: f64,
+        /// Wing lift \[N\].
+        wing_lift_n: f64,
+        /// Weight \[N\].
+        weight_n: f64,
     },
     /// Invalid input (speed, mass).
     #[error("invalid trim input: {0}")]
@@ -121,9 +139,9 @@ pub struct TrimResult {
     pub rotor_drag_n: f64,
     /// Airframe drag D_P \[N\].
     pub parasitic_drag_n: f64,
-    /// Propeller thrust F_prop = D_R + D_P \[N\].
+    /// Propeller thrust F_prop = D_R + D_P + D_W \[N\].
     pub prop_thrust_n: f64,
-    /// Lift-to-drag ratio G/(D_R + D_P).
+    /// Lift-to-drag ratio G/F_prop.
     pub lift_to_drag: f64,
     /// Hub-plane angle of attack α_H \[deg\].
     pub hub_aoa_deg: f64,
@@ -139,9 +157,13 @@ pub struct TrimResult {
     /// Airspeed \[m/s\].
     #[serde(skip)]
     pub airspeed_ms: f64,
-    /// Rotor lift \[N\] (= weight at trim).
+    /// Rotor lift \[N\] (= weight less the wing's lift at trim).
     #[serde(skip)]
     pub rotor_lift_n: f64,
+    /// The wing's lift and drag; absent (and left out of the serde form) without a wing of
+    /// non-zero area.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wing: Option<WingLoads>,
     /// Advance ratio μ.
     #[serde(skip)]
     pub advance_ratio: f64,
@@ -164,6 +186,12 @@ pub struct TrimResult {
 }
 
 impl TrimResult {
+    /// Share of the weight the rotor carries, L_R/(L_R + L_W) (1 without a wing).
+    pub fn rotor_lift_share(&self) -> f64 {
+        let wing = self.wing.map_or(0.0, |w| w.lift_n);
+        self.rotor_lift_n / (self.rotor_lift_n + wing)
+    }
+
     /// What a user should read beside a trim that is a valid rotor solution but not one the
     /// aircraft can fly as computed: the engine cannot reach the thrust, or the table did not
     /// cover the rotor. One line each, starting `note: `.
@@ -190,6 +218,20 @@ impl TrimResult {
                  table points (locally supersonic, outside the section method's validity)",
                 self.airspeed_kt,
                 100.0 * self.table_supercritical_fraction
+            ));
+        }
+        if let Some(w) = self.wing.filter(|w| w.stalled) {
+            notes.push(format!(
+                "note: at {:.1} kt the wing works beyond its linear range (C_L {:.3}: capped at \
+                 its cl_max, or from the table's post-stall model)",
+                self.airspeed_kt, w.lift_coefficient
+            ));
+        }
+        if self.wing.is_some_and(|w| w.table_clamped) {
+            notes.push(format!(
+                "note: at {:.1} kt the wing's Reynolds or Mach number lies outside its section \
+                 table's range and uses its edge values",
+                self.airspeed_kt
             ));
         }
         notes
@@ -322,7 +364,8 @@ pub fn trim_rotor<S: BladeSection + ?Sized>(
 }
 
 /// Full cruise trim of `aircraft` at `speed_kt` \[kt\], `mass_kg` and ISA `altitude_m`: rotor
-/// trim, airframe drag, propeller thrust and engine rpm (paper Table 3).
+/// trim for the weight the wing leaves, airframe and wing drag, propeller thrust and engine rpm
+/// (paper Table 3).
 pub fn trim_aircraft<S: BladeSection + ?Sized>(
     aircraft: &Aircraft,
     section: &S,
@@ -342,9 +385,17 @@ pub fn trim_aircraft<S: BladeSection + ?Sized>(
     let atm = Atmosphere::isa(altitude_m);
     let v = speed_kt * KT_TO_MS;
     let weight = mass_kg * super::G0;
-    let s = trim_rotor(&rotor, section, v, weight, &atm, params)?;
+    let wing = aircraft.wing_loads(&atm, v)?;
+    if wing.lift_n >= weight {
+        return Err(TrimError::WingCarriesWeight {
+            airspeed_ms: v,
+            wing_lift_n: wing.lift_n,
+            weight_n: weight,
+        });
+    }
+    let s = trim_rotor(&rotor, section, v, weight - wing.lift_n, &atm, params)?;
     let d_p = atm.dynamic_pressure(v) * aircraft.parasitic_drag_area_m2;
-    let f_prop = s.drag + d_p;
+    let f_prop = s.drag + d_p + wing.drag_n;
     let engine_rpm = match powerplant.engine_rpm_for_thrust(&atm, v, f_prop) {
         Ok(rpm) => Some(rpm),
         Err(PropellerError::Unavailable { .. }) => None,
@@ -361,6 +412,7 @@ pub fn trim_aircraft<S: BladeSection + ?Sized>(
         engine_rpm,
         rotor_drag_n: s.drag,
         rotor_lift_n: s.lift,
+        wing: aircraft.has_wing().then_some(wing),
         parasitic_drag_n: d_p,
         prop_thrust_n: f_prop,
         lift_to_drag: weight / f_prop,

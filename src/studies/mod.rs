@@ -6,6 +6,7 @@
 //!   the 60 kt trim and the takeoff of each setting against the clean rotor;
 //! * [`airfoil`] — the same rotor with each of several airfoils, clean and tripped;
 //! * [`speed`] — the contamination penalty over the airspeed range;
+//! * [`wing`] — a fixed wing of several areas over the airspeed range: the rotor unloads;
 //! * `cache` — the section tables each study needs, built with polargen's own solver
 //!   ([`build_table`](crate::table::build_table)) and kept in a cache folder ([`TableCache`]);
 //! * `files` — the CSV and figures of a study, written as one set.
@@ -20,6 +21,7 @@ mod files;
 mod progress;
 mod request;
 pub mod speed;
+pub mod wing;
 
 pub use cache::{check_cache_dir, default_cache_dir, load_study_airfoil, TableCache, CACHE_FORMAT};
 pub use files::{check_study_out, StudyFiles};
@@ -239,6 +241,14 @@ pub fn command_line_cache(dir: Option<std::path::PathBuf>) -> Result<TableCache,
         grid: crate::table::GridSpec::default(),
         panels: crate::geometry::DEFAULT_PANEL_NODES,
         threads: 0,
+    })
+}
+
+/// Airspeeds of a study given with `flag`, checked with the rotor layer's
+/// [`check_speed_kt`](crate::rotor::check_speed_kt): each above 0 and below the maximum.
+pub(crate) fn check_speeds(flag: &str, speeds_kt: &[f64]) -> Result<(), StudiesError> {
+    speeds_kt.iter().try_for_each(|&v| {
+        crate::rotor::check_speed_kt(flag, v).map_err(|e| StudiesError::BadSetting(e.to_string()))
     })
 }
 

@@ -2,7 +2,7 @@
 //! folder, load the aircraft, solve or read the tables, run, write the files, and hand back the
 //! text table or the JSON records to print.
 
-use super::{airfoil, contamination, speed};
+use super::{airfoil, contamination, speed, wing};
 use super::{check_study_out, command_line_cache, Progress, StudiesError, StudyFiles};
 use crate::rotor::Aircraft;
 use serde::Serialize;
@@ -32,6 +32,8 @@ pub enum StudyKind {
         /// Airspeeds \[kt\].
         speeds_kt: Vec<f64>,
     },
+    /// The aircraft's wing scaled to several areas, trimmed at several airspeeds.
+    Wing(wing::WingOptions),
 }
 
 /// A study run: what, on which aircraft, where the files and the table cache go.
@@ -83,6 +85,10 @@ impl StudyRequest {
                 (airfoil::CSV_STEM, &airfoil::FIGURE_STEMS)
             }
             StudyKind::Speed { .. } => (speed::CSV_STEM, &speed::FIGURE_STEMS),
+            StudyKind::Wing(options) => {
+                options.checked()?;
+                (wing::CSV_STEM, &wing::FIGURE_STEMS)
+            }
         };
         if let Some(dir) = &self.out {
             check_study_out(dir, csv_stem, figures)?;
@@ -116,6 +122,14 @@ impl StudyRequest {
             } => {
                 let s = speed::SpeedStudy::run(&ac, airfoil, *xtr, speeds_kt, &cache, progress)?;
                 outcome.notes = s.notes.clone();
+                (
+                    records_json(&s.records),
+                    s.text(),
+                    self.files(|| s.files())?,
+                )
+            }
+            StudyKind::Wing(options) => {
+                let s = wing::WingStudy::run(&ac, options, &cache, progress)?;
                 (
                     records_json(&s.records),
                     s.text(),

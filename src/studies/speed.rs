@@ -3,8 +3,8 @@
 
 use super::files::{band_markers, records_csv};
 use super::{
-    cell, load_study_airfoil, sections, study_tables, Progress, StudiesError, StudyFiles,
-    TableCache, Transition,
+    cell, check_speeds, load_study_airfoil, sections, study_tables, Progress, StudiesError,
+    StudyFiles, TableCache, Transition,
 };
 use crate::plot::{Figure, Panel, Series, Style};
 use crate::rotor::{speed_sweep, Aircraft, TrimParams, TrimResult};
@@ -125,15 +125,7 @@ impl SpeedStudy {
         progress: &Progress,
     ) -> Result<Self, StudiesError> {
         let trip = Transition::tripped(xtr).checked()?;
-        if let Some(v) = speeds_kt
-            .iter()
-            .find(|v| !(**v > 0.0 && **v < crate::rotor::MAX_SPEED_KT))
-        {
-            return Err(StudiesError::BadSetting(format!(
-                "speed {v} kt: must be above 0 and below {} kt",
-                crate::rotor::MAX_SPEED_KT
-            )));
-        }
+        check_speeds("--speeds", speeds_kt)?;
         let foil = load_study_airfoil(airfoil, cache.panels)?;
         let keys = [Transition::CLEAN, trip];
         let tables = study_tables(cache, &foil, &keys, progress)?;

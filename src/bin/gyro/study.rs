@@ -1,7 +1,8 @@
 //! `gyro study …`: what-if studies of [`polargen::studies`]; parse, run, print.
 
 use clap::{Args, Subcommand};
-use polargen::studies::{contamination::ContaminationOptions, StudyKind, StudyRequest};
+use polargen::studies::{contamination::ContaminationOptions, wing::WingOptions};
+use polargen::studies::{StudyKind, StudyRequest};
 use std::path::PathBuf;
 
 /// Options every study shares.
@@ -73,6 +74,13 @@ pub enum Study {
         )]
         speeds: Vec<f64>,
     },
+    /// What a fixed wing buys: the aircraft's [wing] scaled to each area, trimmed at each speed.
+    Wing {
+        #[command(flatten)]
+        common: Common,
+        #[command(flatten)]
+        options: WingOptions,
+    },
 }
 
 /// The library's request for a parsed `gyro study` command line.
@@ -95,6 +103,7 @@ pub fn request(study: Study) -> StudyRequest {
             (common, StudyKind::Contamination { airfoil, options })
         }
         Study::Airfoil { common, airfoils } => (common, StudyKind::Airfoil { airfoils }),
+        Study::Wing { common, options } => (common, StudyKind::Wing(options)),
         Study::Speed {
             common,
             airfoil,

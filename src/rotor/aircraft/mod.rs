@@ -2,7 +2,7 @@
 //! The propeller's section table is named in the preset (relative to the preset's folder) and
 //! read with it.
 
-use super::atmosphere::MAX_ISA_ALTITUDE_M;
+use super::atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 use super::inflow::{InflowModel, TipLoss, YawedFlow};
 use crate::arguments::ArgumentError;
 use crate::input::{read_input, InputError};
@@ -16,8 +16,10 @@ use std::sync::Arc;
 
 mod checks;
 mod powerplant;
+mod wing;
 
 pub use powerplant::{BladeGeometry, EngineParams, PropellerParams};
+pub use wing::{WingError, WingLoads, WingParams};
 
 /// Errors while loading or checking an aircraft preset.
 #[derive(Debug, thiserror::Error)]
@@ -48,6 +50,18 @@ pub enum AircraftError {
         #[source]
         source: TableError,
     },
+    /// The wing's section table cannot be read.
+    #[error("aircraft file {path}: wing.section_table")]
+    WingSection {
+        /// The aircraft file.
+        path: String,
+        /// Why.
+        #[source]
+        source: TableError,
+    },
+    /// The `[wing]` table does not describe one section model.
+    #[error("aircraft [wing]: {0}")]
+    WingModel(&'static str),
     /// A value is outside its physical range.
     #[error("aircraft parameter {field} = {} is invalid: {reason}", short_number(*value))]
     Invalid {
@@ -156,9 +170,15 @@ pub struct Aircraft {
     pub engine: EngineParams,
     /// Takeoff procedure data.
     pub takeoff: TakeoffParams,
+    /// Fixed wing (none, or zero area, = a pure gyroplane).
+    #[serde(default)]
+    pub wing: Option<WingParams>,
     /// The propeller's section table, read with the preset.
     #[serde(skip)]
     propeller_section: Option<Arc<PolarTable>>,
+    /// The wing's section table, read with the preset when its `[wing]` names one.
+    #[serde(skip)]
+    wing_section: Option<Arc<PolarTable>>,
 }
 
 /// Rotor geometry, mass and discretisation.
@@ -244,11 +264,11 @@ impl Aircraft {
         Self::from_toml_str(&text, &origin)
     }
 
-    /// Parses and checks a TOML preset held in memory and reads its propeller section table;
-    /// `origin` names it in errors, and the table's path is relative to `origin`'s folder (the
-    /// current folder when `origin` has none).
+    /// Parses and checks a TOML preset held in memory and reads its propeller (and wing)
+    /// section table; `origin` names it in errors, and the tables' paths are relative to
+    /// `origin`'s folder (the current folder when `origin` has none).
     pub fn from_toml_str(text: &str, origin: &str) -> Result<Self, AircraftError> {
-        let aircraft = Self::parse_toml(text, origin)?;
+        let mut aircraft = Self::parse_toml(text, origin)?;
         let folder = Path::new(origin).parent().unwrap_or(Path::new(""));
         let table = read_lookup_table(&folder.join(&aircraft.propeller.section_table)).map_err(
             |source| AircraftError::PropellerSection {
@@ -256,6 +276,19 @@ impl Aircraft {
                 source,
             },
         )?;
+        if let Some(path) = aircraft
+            .wing
+            .as_ref()
+            .and_then(|w| w.section_table.as_ref())
+        {
+            let wing = read_lookup_table(&folder.join(path)).map_err(|source| {
+                AircraftError::WingSection {
+                    path: origin.to_string(),
+                    source,
+                }
+            })?;
+            aircraft.wing_section = Some(Arc::new(wing));
+        }
         Ok(aircraft.with_propeller_section(table))
     }
 
@@ -281,6 +314,38 @@ impl Aircraft {
         self.propeller_section
             .clone()
             .map(|t| t as Arc<dyn SectionAero + Send + Sync>)
+    }
+
+    /// The preset with its wing's area set to `area_m2` at the same span, incidence and
+    /// section (the chord scales); fails without a `[wing]` or for a negative area.
+    pub fn with_wing_area(&self, area_m2: f64) -> Result<Self, AircraftError> {
+        let mut aircraft = self.clone();
+        let wing = aircraft.wing.as_mut().ok_or(AircraftError::WingModel(
+            "the aircraft file has no [wing] to scale",
+        ))?;
+        wing.area_m2 = area_m2;
+        wing.validate()?;
+        Ok(aircraft)
+    }
+
+    /// Lift and drag of the wing at airspeed `v` \[m/s\] in `atmosphere`
+    /// ([`WingLoads::NONE`] without a wing or with zero area).
+    pub fn wing_loads(&self, atmosphere: &Atmosphere, v: f64) -> Result<WingLoads, WingError> {
+        match &self.wing {
+            None => Ok(WingLoads::NONE),
+            Some(w) => w.loads(
+                self.wing_section
+                    .as_deref()
+                    .map(|t| t as &(dyn SectionAero + Send + Sync)),
+                atmosphere,
+                v,
+            ),
+        }
+    }
+
+    /// Whether the aircraft has a wing of non-zero area.
+    pub fn has_wing(&self) -> bool {
+        self.wing.as_ref().is_some_and(|w| w.area_m2 > 0.0)
     }
 
     /// Aircraft weight G = m·g0 \[N\].
@@ -378,6 +443,9 @@ impl Aircraft {
             });
         }
         self.propeller.validate()?;
+        if let Some(w) = &self.wing {
+            w.validate()?;
+        }
         self.engine.validate(self.propeller.calib_engine_rpm)?;
         let t = &self.takeoff;
         positive("takeoff.prerotation_rpm", t.prerotation_rpm)?;
