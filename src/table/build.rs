@@ -137,7 +137,8 @@ pub fn build_table_cancellable(
     }
     let meta = TableMeta {
         airfoil: foil.name.clone(),
-        ncrit: base.ncrit,
+        ncrit_top: base.ncrit_top,
+        ncrit_bot: base.ncrit_bot,
         xtr_top_set: base.xtr_top,
         xtr_bot_set: base.xtr_bot,
         panels,

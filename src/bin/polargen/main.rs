@@ -17,14 +17,15 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use args::{Cli, Command, ConvertArgs, PlotArgs, PlotPointArgs, RunArgs, Shape};
+use args::{Cli, Command, ConvertArgs, Ncrit, PlotArgs, PlotPointArgs, PointCase};
+use args::{RunArgs, Shape};
 use clap::CommandFactory;
 
 use polargen::arguments;
 use polargen::cli::{self, Tool};
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, CHORD_UNITS_TOLERANCE};
 use polargen::inviscid::PanelSystem;
-use polargen::limits::{short_number, short_text, MAX_GRID_POINTS};
+use polargen::limits::{short_number, MAX_GRID_POINTS};
 use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title};
 use polargen::plot::polar_plots::{compact_number, overlay_title, polar_figure, transition_label};
@@ -35,7 +36,7 @@ use polargen::table::{
     build_table, read_table, with_cd_max, write_table, GridSpec, TableFormat, DEFAULT_ALPHA,
     DEFAULT_MACH, DEFAULT_RE,
 };
-use polargen::viscous::distributions::write_distributions_csv;
+use polargen::viscous::distributions::write_distributions_file;
 use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};
 
 /// This tool's name and error prefix.
@@ -51,6 +52,7 @@ fn main() -> ExitCode {
         Some(Command::Plot(args)) => plot_tables(args),
         Some(Command::Convert(args)) => convert_table(args),
         Some(Command::PlotPoint(args)) => plot_point(args),
+        Some(Command::Point { case, csv }) => point(case, csv),
         Some(Command::Completions(args)) => {
             to_stdout(&cli::completions(Cli::command(), args.shell))
         }
@@ -71,44 +73,14 @@ fn to_stdout(bytes: &[u8]) -> Result<()> {
     Ok(())
 }
 
-/// Parse a comma-separated list of distinct finite numbers, naming the flag in the error.
-fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>> {
-    let mut out: Vec<f64> = Vec::new();
-    for item in text.split(',').map(str::trim) {
-        match item.parse::<f64>() {
-            Ok(v) if v.is_finite() => {
-                if out.contains(&v) {
-                    bail!(
-                        "--{flag} '{}': '{}' is given twice",
-                        short_text(text),
-                        short_text(item)
-                    );
-                }
-                out.push(v)
-            }
-            _ => bail!(
-                "--{flag} '{}': '{}' is not a finite number",
-                short_text(text),
-                short_text(item)
-            ),
-        }
-    }
-    Ok(out)
-}
-
-/// Check `--out` before any computation: a file name (not a folder), below a folder.
-fn check_out(path: &Path) -> Result<()> {
-    check_output_path(path).context("--out")?;
-    Ok(())
-}
-
 /// Mach numbers from `--mach` (or `default`), each checked to lie in [0, 1).
 fn mach_list(cli: &RunArgs, default: &[f64]) -> Result<Vec<f64>> {
     let list = match &cli.mach {
-        Some(t) => parse_list("mach", t)?,
+        Some(t) => arguments::number_list("--mach", t)?,
         None => default.to_vec(),
     };
-    list.iter().try_for_each(|&m| check_mach(m))?;
+    list.iter()
+        .try_for_each(|&m| arguments::mach("--mach", m))?;
     Ok(list)
 }
 
@@ -151,7 +123,7 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
     let alphas =
         parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA)).context("--alpha")?;
     if let Some(path) = &cli.out {
-        check_out(path)?;
+        check_output_path(path).context("--out")?;
     }
     let foil = load_airfoil(cli.airfoil.as_deref(), cli.panels, &cli.shape)?;
     let system = PanelSystem::new(&foil).context("panel system")?;
@@ -198,7 +170,7 @@ fn transition(cli: &RunArgs) -> Result<(f64, f64)> {
         None => ["xtr-top", "xtr-bot"],
     };
     for (flag, x) in flags.into_iter().zip([xtr_top, xtr_bot]) {
-        check_xtr(flag, x)?;
+        arguments::transition(&format!("--{flag}"), x)?;
     }
     Ok((xtr_top, xtr_bot))
 }
@@ -207,11 +179,13 @@ fn transition(cli: &RunArgs) -> Result<(f64, f64)> {
 fn run_viscous(cli: &RunArgs) -> Result<()> {
     // The default grid only when neither axis is given; Re alone runs at M 0, as XFOIL.
     let (reynolds, mach_default): (Vec<f64>, &[f64]) = match (&cli.re, &cli.mach) {
-        (Some(t), _) => (parse_list("re", t)?, &[0.0]),
+        (Some(t), _) => (arguments::number_list("--re", t)?, &[0.0]),
         (None, None) => (DEFAULT_RE.to_vec(), &DEFAULT_MACH),
         (None, Some(_)) => bail!("--mach: give the Reynolds numbers with --re too"),
     };
-    reynolds.iter().try_for_each(|&r| check_re(r))?;
+    reynolds
+        .iter()
+        .try_for_each(|&r| arguments::reynolds("--re", r))?;
     let grid = GridSpec {
         reynolds,
         mach: mach_list(cli, mach_default)?,
@@ -229,10 +203,10 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         );
     }
     let (xtr_top, xtr_bot) = transition(cli)?;
-    arguments::ncrit("--ncrit", cli.ncrit)?;
+    let (ncrit_top, ncrit_bot) = ncrit_sides(&cli.ncrit)?;
     arguments::tolerance("--tolerance", cli.newton.tolerance)?;
     if let Some(path) = &cli.out {
-        check_out(path)?;
+        check_output_path(path).context("--out")?;
     }
     let format = TableFormat::for_output(cli.format.as_deref(), cli.out.as_deref())
         .context("--format/--out")?;
@@ -242,7 +216,8 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     let bar = progress_bar(total as u64);
     let start = Instant::now();
     let base = ViscousParams {
-        ncrit: cli.ncrit,
+        ncrit_top,
+        ncrit_bot,
         tolerance: cli.newton.tolerance,
         xtr_top,
         xtr_bot,
@@ -273,19 +248,15 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     Ok(())
 }
 
-/// A `--re` value ([`arguments::reynolds`]).
-fn check_re(re: f64) -> Result<()> {
-    Ok(arguments::reynolds("--re", re)?)
-}
-
-/// A `--mach` value ([`arguments::mach`]).
-fn check_mach(mach: f64) -> Result<()> {
-    Ok(arguments::mach("--mach", mach)?)
-}
-
-/// A transition location given with `--<flag>` ([`arguments::transition`]).
-fn check_xtr(flag: &str, x: f64) -> Result<()> {
-    Ok(arguments::transition(&format!("--{flag}"), x)?)
+/// `--ncrit`, `--ncrit-top`, `--ncrit-bot` ([`arguments::ncrit_sides`]).
+fn ncrit_sides(n: &Ncrit) -> Result<(f64, f64)> {
+    let flags = ["--ncrit", "--ncrit-top", "--ncrit-bot"];
+    Ok(arguments::ncrit_sides(
+        flags,
+        n.ncrit,
+        n.ncrit_top,
+        n.ncrit_bot,
+    )?)
 }
 
 /// `polargen plot`: overlay one polar from each table.
@@ -340,7 +311,7 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
 
 /// `polargen convert`: read a table and write it in another format.
 fn convert_table(args: &ConvertArgs) -> Result<()> {
-    check_out(&args.out)?;
+    check_output_path(&args.out).context("--out")?;
     let format = TableFormat::for_output(args.format.as_deref(), Some(&args.out))
         .context("--format/--out")?;
     let table = with_cd_max(read_table(&args.table)?, args.extension.cd_max).context("--cd-max")?;
@@ -351,55 +322,66 @@ fn convert_table(args: &ConvertArgs) -> Result<()> {
     Ok(())
 }
 
-/// `polargen plot-point`: solve each transition setting at the α (or Cl) asked for and draw
-/// Cp and the boundary-layer distributions of both surfaces.
+/// `polargen plot-point`: Cp and the boundary-layer distributions of both surfaces.
 fn plot_point(args: &PlotPointArgs) -> Result<()> {
-    check_re(args.re)?;
-    check_mach(args.mach)?;
-    arguments::ncrit("--ncrit", args.ncrit)?;
-    arguments::tolerance("--tolerance", args.newton.tolerance)?;
-    let xtrs = parse_list("xtr", &args.xtr)?;
-    xtrs.iter().try_for_each(|&x| check_xtr("xtr", x))?;
     check_image_path(&args.out).context("--out")?;
     if let Some(path) = &args.csv {
         check_output_path(path).context("--csv")?;
     }
+    let (name, runs) = solve_cases(&args.case)?;
+    let cases: Vec<(&str, &ViscousSolution)> = runs.iter().map(|(l, s)| (l.as_str(), s)).collect();
+    let c = &args.case;
+    let title = args.title.clone().unwrap_or_else(|| {
+        solutions_title(&name, c.re, c.mach, c.alpha.unwrap_or(0.0), c.cl, &cases)
+    });
+    // The Ncrit line of the N panel when both surfaces have the same Ncrit.
+    let ncrit = Some(ncrit_sides(&c.ncrit)?).and_then(|(t, b)| (t == b).then_some(t));
+    // The image first: if it cannot be written, no CSV is left behind either.
+    render(&solutions_figure(&cases, c.mach, &title, ncrit), &args.out)?;
+    if let Some(path) = &args.csv {
+        write_distributions_file(&cases, c.mach, path)?;
+    }
+    Ok(())
+}
+
+/// `polargen point`: the distributions as CSV to `csv`, without an image.
+fn point(case: &PointCase, csv: &Path) -> Result<()> {
+    check_output_path(csv).context("--csv")?;
+    let (_, runs) = solve_cases(case)?;
+    let cases: Vec<(&str, &ViscousSolution)> = runs.iter().map(|(l, s)| (l.as_str(), s)).collect();
+    Ok(write_distributions_file(&cases, case.mach, csv)?)
+}
+
+/// Solve each transition setting at the α (or Cl) asked for: the airfoil name and one labelled
+/// solution per setting.
+fn solve_cases(args: &PointCase) -> Result<(String, Vec<(String, ViscousSolution)>)> {
+    arguments::reynolds("--re", args.re)?;
+    arguments::mach("--mach", args.mach)?;
+    let (ncrit_top, ncrit_bot) = ncrit_sides(&args.ncrit)?;
+    arguments::tolerance("--tolerance", args.newton.tolerance)?;
+    let xtrs = arguments::number_list("--xtr", &args.xtr)?;
+    xtrs.iter()
+        .try_for_each(|&x| arguments::transition("--xtr", x))?;
     let foil = load_airfoil(Some(&args.airfoil), args.panels, &args.shape)?;
     let mut runs: Vec<(String, ViscousSolution)> = Vec::new();
     for &xtr in &xtrs {
         let params = ViscousParams {
-            ncrit: args.ncrit,
+            ncrit_top,
+            ncrit_bot,
             tolerance: args.newton.tolerance,
             ..ViscousParams::at(args.re, args.mach, xtr)
         };
         let mut solver = ViscousSolver::new(&foil, params).context("viscous solver")?;
         let label = transition_label(xtr, xtr);
-        let at = match (args.alpha, args.cl) {
-            (_, Some(cl)) => OperatingPoint::Cl(cl),
-            (Some(alpha), None) if !alpha.is_finite() => {
-                bail!("--alpha {alpha}: not a finite angle")
-            }
-            (Some(alpha), None) => OperatingPoint::Alpha(alpha),
-            (None, None) => bail!("give --alpha or --cl"),
-        };
+        let at = args.cl.map_or(
+            OperatingPoint::Alpha(args.alpha.unwrap_or(f64::NAN)),
+            OperatingPoint::Cl,
+        );
         let solution = solve_operating_point(&mut solver, at, &TargetClParams::default())
             .with_context(|| label.clone())?;
         runs.push((label, solution));
     }
-    let cases: Vec<(&str, &ViscousSolution)> = runs.iter().map(|(l, s)| (l.as_str(), s)).collect();
-    let title = args.title.clone().unwrap_or_else(|| {
-        let alpha = args.alpha.unwrap_or(0.0);
-        solutions_title(&foil.name, args.re, args.mach, alpha, args.cl, &cases)
-    });
-    // The image first: if it cannot be written, no CSV is left behind either.
-    let figure = solutions_figure(&cases, args.mach, &title, Some(args.ncrit));
-    render(&figure, &args.out)?;
-    if let Some(path) = &args.csv {
-        write_output(path, |w| {
-            write_distributions_csv(&cases, args.mach, w).map_err(|e| OutputError::io(path, e))
-        })?;
-    }
-    Ok(())
+    Ok((foil.name, runs))
 }
 
 /// Error when `value` lies outside a table axis (beyond 0.1 % of the span).
