@@ -258,12 +258,7 @@ pub struct RunArgs {
 #[derive(Args, Debug)]
 pub struct Ncrit {
     /// Critical amplification ratio N of the e^n transition criterion, both surfaces.
-    #[arg(
-        long,
-        value_name = "N",
-        default_value_t = 9.0,
-        allow_hyphen_values = true
-    )]
+    #[arg(long, default_value_t = 9.0, allow_hyphen_values = true)]
     pub ncrit: f64,
     /// N_crit on the upper surface (default: --ncrit).
     #[arg(long, value_name = "N", allow_hyphen_values = true)]

@@ -17,8 +17,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use args::{Cli, Command, ConvertArgs, Ncrit, PlotArgs, PlotPointArgs, PointCase};
-use args::{RunArgs, Shape};
+use args::{Cli, Command, ConvertArgs, Ncrit, PlotArgs, PlotPointArgs, PointCase, RunArgs, Shape};
 use clap::CommandFactory;
 
 use polargen::arguments;
