@@ -98,6 +98,23 @@ pub fn ncrit(name: &str, ncrit: f64) -> Result<(), ArgumentError> {
     )
 }
 
+/// N_crit of the upper and the lower surface from one value for both (`ncrit`, XFOIL VPAR
+/// `N`) and the optional per-side values (`top`, `bottom`: XFOIL `NT`, `NB`); a side not
+/// given takes `ncrit`. `names` are the three arguments as the caller names them.
+pub fn ncrit_sides(
+    names: [&str; 3],
+    ncrit_both: f64,
+    top: Option<f64>,
+    bottom: Option<f64>,
+) -> Result<(f64, f64), ArgumentError> {
+    ncrit(names[0], ncrit_both)?;
+    let side = |name, n: Option<f64>| {
+        let n = n.unwrap_or(ncrit_both);
+        ncrit(name, n).map(|()| n)
+    };
+    Ok((side(names[1], top)?, side(names[2], bottom)?))
+}
+
 /// The Newton threshold of the viscous solver: in (0, [`MAX_NEWTON_TOLERANCE`]].
 pub fn tolerance(name: &str, tolerance: f64) -> Result<(), ArgumentError> {
     require(
@@ -206,6 +223,19 @@ mod tests {
         assert!(transition("x", 0.0).is_ok() && transition("x", 1.0).is_ok());
         assert!(transition("x", -1e-9).is_err() && transition("x", f64::NAN).is_err());
         assert!(ncrit("n", 0.5).is_ok() && ncrit("n", f64::INFINITY).is_err());
+        let names = ["n", "top", "bot"];
+        assert_eq!(ncrit_sides(names, 9.0, None, Some(3.0)), Ok((9.0, 3.0)));
+        assert_eq!(ncrit_sides(names, 9.0, Some(3.0), None), Ok((3.0, 9.0)));
+        assert_eq!(
+            ncrit_sides(names, 9.0, None, Some(0.0)).unwrap_err().name,
+            "bot"
+        );
+        assert_eq!(number_list("l", "1, 2e6").unwrap(), [1.0, 2e6]);
+        assert_eq!(
+            number_list("--re", "1,x").unwrap_err().to_string(),
+            "--re '1,x': 'x' is not a finite number"
+        );
+        assert!(number_list("l", "1,1").is_err() && number_list("l", "").is_err());
         assert!(tolerance("t", 1e-4).is_ok() && tolerance("t", 0.0).is_err());
         assert!(panels("p", 20).is_ok() && panels("p", 1000).is_ok() && panels("p", 1001).is_err());
         assert!(distinct("a", &[-1.0, 0.0, 1.0]).is_ok());

@@ -38,7 +38,7 @@ fn default_grid_shape_and_convergence() {
         assert!(frac > 0.95, "{name}: {frac}");
         let xtr = if name.contains("xtr") { 0.07 } else { 1.0 };
         assert_eq!(t.meta().xtr_top_set, xtr);
-        assert_eq!(t.meta().ncrit, 9.0);
+        assert_eq!(t.meta().common_ncrit(), Some(9.0));
     }
 }
 

@@ -459,7 +459,10 @@ fn xfoil_polar_reads_back_to_field_precision() {
     let back = read_table(&path).unwrap();
     assert_eq!(back.meta().airfoil, "NACA 8-H-12");
     assert_eq!(back.meta().solver, "polargen 0.1.0");
-    assert_eq!((back.meta().ncrit, back.meta().xtr_top_set), (9.0, 0.07));
+    assert_eq!(
+        (back.meta().common_ncrit(), back.meta().xtr_top_set),
+        (Some(9.0), 0.07)
+    );
     assert_eq!((back.re(), back.mach()), (&[1.9e6][..], &[0.41][..]));
     let q = back.polar(1.9e6, 0.41).unwrap();
     assert_eq!(q.len(), pts.len());
@@ -488,7 +491,10 @@ fn xfoil_polar_reader_handles_extra_columns_and_repeats() {
   -2.000   0.0300   0.00640   0.00110  -0.0490  -1.0000   0.0300  -0.0100   0.7000   0.0700\n";
     let t = parse_table(text.as_bytes(), TableFormat::XfoilPolar).unwrap();
     assert_eq!(t.meta().solver, "XFOIL Version 6.99");
-    assert_eq!((t.meta().ncrit, t.meta().xtr_bot_set), (5.0, 0.07));
+    assert_eq!(
+        (t.meta().common_ncrit(), t.meta().xtr_bot_set),
+        (Some(5.0), 0.07)
+    );
     assert_eq!((t.re()[0], t.mach()[0]), (3e6, 0.2));
     let p = t.polar(3e6, 0.2).unwrap();
     let alphas: Vec<f64> = p.iter().map(|p| p.alpha).collect();
@@ -571,4 +577,37 @@ fn own_xfoil_polars_carry_a_version_and_cd_minus_cdf() {
     let p = &back.polar(1e6, 0.0).unwrap()[0];
     assert!((p.cdf - (p.cd - p.cdp)).abs() < 1e-12);
     std::fs::remove_dir_all(dir).unwrap();
+}
+
+/// Per-side N_crit: the `ncrit_top,ncrit_bot` columns of CSV, the two fields of JSON and
+/// XFOIL 6.99's two-value `Ncrit` header of a .pol all read back to the same metadata; a CSV
+/// with only one of the per-side columns is refused.
+#[test]
+fn unequal_ncrit_round_trips() {
+    let mut m = meta("foil");
+    (m.ncrit_top, m.ncrit_bot) = (9.0, 3.5);
+    let polar = analytic_polar(1e6, 0.0, &alpha_range(-4.0, 8.0, 1.0));
+    let t = PolarTable::from_polars(m, vec![(FlowCondition::new(1e6, 0.0), polar)]).unwrap();
+    let dir = scratch("ncrit_sides");
+    for (name, written) in [
+        ("t.csv", "airfoil,re,mach,ncrit_top,ncrit_bot,xtr_top_set"),
+        ("t.json", "\"ncrit_bot\": 3.5"),
+        ("t.pol", " Ncrit =   9.000  3.500\n"),
+    ] {
+        let files = write_table(&t, &dir.join(name), None).unwrap();
+        let text = std::fs::read_to_string(&files[0]).unwrap();
+        assert!(text.contains(written), "{name}: {text}");
+        let back = read_table(&files[0]).unwrap();
+        let m = back.meta();
+        assert_eq!(
+            (m.ncrit_top, m.ncrit_bot, m.common_ncrit()),
+            (9.0, 3.5, None)
+        );
+    }
+    std::fs::remove_dir_all(dir).unwrap();
+    let head = "airfoil,re,mach,ncrit_top,xtr_top_set,xtr_bot_set,alpha,cl,cd,cdp,cm,xtr_top,xtr_bot,converged\n";
+    assert_eq!(
+        csv_err(&format!("{head}f,1e6,0,9,1,1,0,0,0.01,0,0,1,1,true\n")),
+        "CSV header lacks column 'ncrit'"
+    );
 }

@@ -46,7 +46,11 @@ fn invalid_inputs_are_errors_not_panics() {
             ..ViscousParams::default()
         },
         ViscousParams {
-            ncrit: f64::NAN,
+            ncrit_top: f64::NAN,
+            ..ViscousParams::default()
+        },
+        ViscousParams {
+            ncrit_bot: 0.0,
             ..ViscousParams::default()
         },
     ] {

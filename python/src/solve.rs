@@ -26,13 +26,17 @@ use crate::table::Table;
 struct Settings {
     xtr_top: f64,
     xtr_bot: f64,
-    ncrit: f64,
+    /// N_crit of the upper and the lower surface.
+    ncrit: (f64, f64),
     tolerance: f64,
 }
 
+/// The arguments `ncrit`, `ncrit_top`, `ncrit_bot` (a side not given takes `ncrit`).
+type NcritArgs = (f64, Option<f64>, Option<f64>);
+
 impl Settings {
     /// Checks each setting as the CLI checks its flag.
-    fn checked(xtr_top: f64, xtr_bot: f64, ncrit: f64, tolerance: f64) -> PyResult<Self> {
+    fn checked(xtr_top: f64, xtr_bot: f64, ncrit: NcritArgs, tolerance: f64) -> PyResult<Self> {
         let input = |r: Result<(), arguments::ArgumentError>| r.map_err(|e| raise(None, e));
         // One value for both surfaces is the argument `xtr` (the CLI's `--xtr`).
         let names = if xtr_top == xtr_bot {
@@ -42,7 +46,9 @@ impl Settings {
         };
         input(arguments::transition(names[0], xtr_top))?;
         input(arguments::transition(names[1], xtr_bot))?;
-        input(arguments::ncrit("ncrit", ncrit))?;
+        let names = ["ncrit", "ncrit_top", "ncrit_bot"];
+        let ncrit =
+            arguments::ncrit_sides(names, ncrit.0, ncrit.1, ncrit.2).map_err(|e| raise(None, e))?;
         input(arguments::tolerance("tolerance", tolerance))?;
         Ok(Self {
             xtr_top,
@@ -57,7 +63,8 @@ impl Settings {
         ViscousParams {
             reynolds,
             mach,
-            ncrit: self.ncrit,
+            ncrit_top: self.ncrit.0,
+            ncrit_bot: self.ncrit.1,
             tolerance: self.tolerance,
             xtr_top: self.xtr_top,
             xtr_bot: self.xtr_bot,
@@ -244,7 +251,7 @@ pub fn table(
     alpha: Vec<f64>,
     xtr_top: f64,
     xtr_bot: f64,
-    ncrit: f64,
+    ncrit: NcritArgs,
     panels: usize,
     tolerance: f64,
     threads: usize,
@@ -275,7 +282,7 @@ pub fn point<'py>(
     cl: Option<f64>,
     xtr_top: f64,
     xtr_bot: f64,
-    ncrit: f64,
+    ncrit: NcritArgs,
     panels: usize,
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyDict>> {

@@ -96,13 +96,16 @@ impl Table {
         self.inner.mach().to_vec().into_pyarray(py)
     }
 
-    /// How the table was made: airfoil, ncrit, xtr_top_set, xtr_bot_set, panels, solver.
+    /// How the table was made: airfoil, ncrit (None when the surfaces differ), ncrit_top,
+    /// ncrit_bot, xtr_top_set, xtr_bot_set, panels, solver.
     #[getter]
     fn meta<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let m = self.inner.meta();
         let d = PyDict::new(py);
         d.set_item("airfoil", &m.airfoil)?;
-        d.set_item("ncrit", m.ncrit)?;
+        d.set_item("ncrit", m.common_ncrit())?;
+        d.set_item("ncrit_top", m.ncrit_top)?;
+        d.set_item("ncrit_bot", m.ncrit_bot)?;
         d.set_item("xtr_top_set", m.xtr_top_set)?;
         d.set_item("xtr_bot_set", m.xtr_bot_set)?;
         d.set_item("panels", m.panels)?;

@@ -90,7 +90,8 @@ impl TableCache {
     /// The solver parameters of a table with `transition`.
     fn params(transition: &Transition) -> ViscousParams {
         ViscousParams {
-            ncrit: transition.ncrit,
+            ncrit_top: transition.ncrit,
+            ncrit_bot: transition.ncrit,
             xtr_top: transition.xtr_top,
             xtr_bot: transition.xtr_bot,
             ..ViscousParams::default()
@@ -131,7 +132,7 @@ impl TableCache {
         let table = parse_table(&bytes, TableFormat::Json).ok()?;
         let m = table.meta();
         let matches = m.airfoil == foil.name
-            && m.ncrit == transition.ncrit
+            && m.common_ncrit() == Some(transition.ncrit)
             && m.xtr_top_set == transition.xtr_top
             && m.xtr_bot_set == transition.xtr_bot
             && m.panels == self.panels

@@ -261,7 +261,7 @@ pub enum TableError {
         short_number(*value)
     )]
     HeaderResolution {
-        /// `Re` or `ncrit`.
+        /// `Re`, `ncrit`, `ncrit_top` or `ncrit_bot`.
         field: &'static str,
         /// The value.
         value: f64,

@@ -2,27 +2,11 @@
 
 use super::error::TableError;
 use super::lookup::{bracket, AlphaCurve};
+use super::meta::TableMeta;
 use super::post_stall::PostStallParams;
 use super::validation::{check_axis, check_meta, check_polar, MAX_RE};
 use crate::section::{FlowCondition, PolarPoint};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
-
-/// How a table was made: the airfoil and the solver settings shared by all its polars.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct TableMeta {
-    /// Airfoil display name.
-    pub airfoil: String,
-    /// e^n transition criterion N_crit.
-    pub ncrit: f64,
-    /// Forced transition x/c on the upper surface (1 = free transition).
-    pub xtr_top_set: f64,
-    /// Forced transition x/c on the lower surface (1 = free transition).
-    pub xtr_bot_set: f64,
-    /// Number of panel nodes on the airfoil.
-    pub panels: usize,
-    /// Solver name and version that produced the polars.
-    pub solver: String,
-}
 
 /// A Re × Mach × α table of section coefficients: one polar (list of solved points, converged
 /// or not) per (Re, M) node.

@@ -29,7 +29,8 @@
 //!
 //! let meta = TableMeta {
 //!     airfoil: "flat".into(),
-//!     ncrit: 9.0,
+//!     ncrit_top: 9.0,
+//!     ncrit_bot: 9.0,
 //!     xtr_top_set: 1.0,
 //!     xtr_bot_set: 1.0,
 //!     panels: 160,
@@ -76,6 +77,7 @@ mod fixed_condition;
 mod grid;
 mod io;
 mod lookup;
+mod meta;
 mod post_stall;
 mod validation;
 
@@ -89,10 +91,11 @@ pub use build::{
 pub use census::TableCensus;
 pub use error::TableError;
 pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
-pub use grid::{PolarTable, TableMeta};
+pub use grid::PolarTable;
 pub use io::{
     parse_c81, parse_table, read_lookup_table, read_table, with_cd_max, write_aerodyn, write_c81,
     write_table, C81Options, TableFormat,
 };
+pub use meta::TableMeta;
 pub use post_stall::PostStallParams;
 pub use validation::{COEFFICIENT_BOUNDS, MAX_RE};

@@ -3,7 +3,7 @@
 //! and plausible converged points, so that whatever is written can be read back.
 
 use super::error::TableError;
-use super::grid::TableMeta;
+use super::meta::TableMeta;
 use crate::inviscid::MAX_SECTION_CL;
 use crate::limits::{short_number, short_text};
 use crate::section::PolarPoint;
@@ -49,8 +49,14 @@ pub(super) fn check_meta(meta: &TableMeta) -> Result<(), TableError> {
         value: short_number(value),
         rule,
     };
-    if !(meta.ncrit.is_finite() && meta.ncrit > 0.0) {
-        return Err(bad("ncrit", meta.ncrit, "a positive number"));
+    let ncrit = match meta.common_ncrit() {
+        Some(n) => vec![("ncrit", n)],
+        None => vec![("ncrit_top", meta.ncrit_top), ("ncrit_bot", meta.ncrit_bot)],
+    };
+    for (field, n) in ncrit {
+        if !(n.is_finite() && n > 0.0) {
+            return Err(bad(field, n, "a positive number"));
+        }
     }
     for (field, x) in [
         ("xtr_top_set", meta.xtr_top_set),

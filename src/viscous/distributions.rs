@@ -5,7 +5,9 @@
 
 use super::solution::{BlStation, ViscousSolution};
 use crate::compressibility::KarmanTsien;
+use crate::output::{write_output, OutputError};
 use std::io::{self, Write};
+use std::path::Path;
 
 /// Pressure coefficient at a station of edge speed `ue` (in units of V∞) and free-stream Mach
 /// number `mach`: the incompressible Cp = 1 − ue² corrected by Karman–Tsien.
@@ -89,4 +91,16 @@ pub fn write_distributions_csv(
         }
     }
     Ok(())
+}
+
+/// [`write_distributions_csv`] to the file `path`, written atomically, or to standard output
+/// when `path` is `-` ([`write_output`]).
+pub fn write_distributions_file(
+    cases: &[(&str, &ViscousSolution)],
+    mach: f64,
+    path: &Path,
+) -> Result<(), OutputError> {
+    write_output(path, |w| {
+        write_distributions_csv(cases, mach, w).map_err(|e| OutputError::io(path, e))
+    })
 }

@@ -4,6 +4,7 @@
 //! Drela 1989 §4.2) — and the controls of both marches ([`MarchParams`]).
 
 use super::local_newton::{equation_rows, iterate, Evaluation, LocalProblem, Next};
+use super::params::SideModels;
 use super::state::BlState;
 use super::stations::{Station, StationKind, StationLayout, Surface};
 use crate::boundary_layer::{BlModel, IntervalEquations, Regime, StationVars};
@@ -64,7 +65,7 @@ impl Default for MarchParams {
 /// trailing-edge junction. Never fails: a station whose local Newton does not converge keeps its
 /// last iterate (the global Newton corrects it).
 pub fn march(
-    model: &BlModel,
+    models: &SideModels,
     layout: &StationLayout,
     ue_inv: &[f64],
     xi_forced: [Option<f64>; 2],
@@ -83,6 +84,7 @@ pub fn march(
             Surface::Upper => 0,
             _ => 1,
         };
+        let model = &models[side];
         let u0 = ue_inv[k].max(1e-6);
         state.ue[k] = u0;
         // Initial guess for this station.

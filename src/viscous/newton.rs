@@ -16,10 +16,11 @@
 
 use super::block_solver::BlockSystem;
 use super::error::ViscousError;
+use super::params::SideModels;
 use super::state::BlState;
 use super::stations::{StationKind, StationLayout, Surface};
 use crate::boundary_layer::{
-    BlError, BlModel, IntervalEquations, Regime, StationVars, TeJunction, TransitionKind,
+    BlError, IntervalEquations, Regime, StationVars, TeJunction, TransitionKind,
 };
 use crate::numerics::dense::mat_vec;
 
@@ -302,7 +303,7 @@ impl Assembler<'_, '_> {
 /// the transition check of each laminar interval (XFOIL SETBL with TRCHEK); a station whose regime
 /// changes gets its `s` variable re-initialised.
 pub fn assemble<'a>(
-    model: &BlModel,
+    models: &SideModels,
     coupling: &Coupling<'a>,
     state: &mut BlState,
 ) -> Result<Assembly<'a>, ViscousError> {
@@ -324,6 +325,7 @@ pub fn assemble<'a>(
     let cached = |k: usize| coupling.cached.and_then(|c| c[k].as_ref());
 
     for (side, surface) in [Surface::Upper, Surface::Lower].into_iter().enumerate() {
+        let model = &models[side];
         let range = layout.range(surface);
         // Shear-stress value to give stations that switch from laminar to turbulent.
         let s_turb_ref = range
@@ -406,7 +408,8 @@ pub fn assemble<'a>(
         }
     }
 
-    // Wake: junction of both trailing-edge layers, then wake intervals.
+    // Wake: junction of both trailing-edge layers, then wake intervals (side 2 in XFOIL).
+    let model = &models[1];
     for k in layout.range(Surface::Wake) {
         state.turbulent[k] = true;
         match cached(k) {

@@ -6,6 +6,11 @@ use super::march::MarchParams;
 use super::update::UpdateLimits;
 use crate::boundary_layer::{BlConditions, BlModel, BlParams};
 
+/// The boundary-layer models of the two sides, which differ in N_crit only: index 0 = upper
+/// surface, 1 = lower surface and wake (XFOIL sets AMCRIT = ACRIT(IS) before it marches or
+/// assembles side IS, and the wake is part of side 2).
+pub(crate) type SideModels = [BlModel; 2];
+
 /// Parameters of a viscous solution.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ViscousParams {
@@ -13,8 +18,12 @@ pub struct ViscousParams {
     pub reynolds: f64,
     /// Free-stream Mach number (Karman–Tsien compressibility).
     pub mach: f64,
-    /// Critical amplification ratio of the e^n method (XFOIL default 9).
-    pub ncrit: f64,
+    /// Critical amplification ratio of the e^n method on the upper surface (XFOIL ACRIT(1),
+    /// VPAR `NT`; default 9).
+    pub ncrit_top: f64,
+    /// Critical amplification ratio on the lower surface; the wake, which XFOIL marches as
+    /// part of side 2, uses it too (XFOIL ACRIT(2), VPAR `NB`; default 9).
+    pub ncrit_bot: f64,
     /// Forced transition x/c on the upper surface (≥ 1 = free transition).
     pub xtr_top: f64,
     /// Forced transition x/c on the lower surface (≥ 1 = free transition).
@@ -65,7 +74,8 @@ impl Default for ViscousParams {
         Self {
             reynolds: 1.0e6,
             mach: 0.0,
-            ncrit: 9.0,
+            ncrit_top: 9.0,
+            ncrit_bot: 9.0,
             xtr_top: 1.0,
             xtr_bot: 1.0,
             max_iterations: 100,
@@ -101,7 +111,8 @@ impl ViscousParams {
         for (name, value, ok) in [
             ("reynolds", params.reynolds, params.reynolds > 0.0),
             ("mach", params.mach, (0.0..1.0).contains(&params.mach)),
-            ("ncrit", params.ncrit, params.ncrit > 0.0),
+            ("ncrit_top", params.ncrit_top, params.ncrit_top > 0.0),
+            ("ncrit_bot", params.ncrit_bot, params.ncrit_bot > 0.0),
             ("xtr_top", params.xtr_top, params.xtr_top >= 0.0),
             ("xtr_bot", params.xtr_bot, params.xtr_bot >= 0.0),
             ("tolerance", params.tolerance, params.tolerance > 0.0),
@@ -113,13 +124,17 @@ impl ViscousParams {
         Ok(())
     }
 
-    /// The boundary-layer model of the flow condition, with XFOIL's closure constants.
-    pub(crate) fn boundary_layer(&self) -> Result<BlModel, ViscousError> {
-        let conditions = BlConditions {
-            reynolds: self.reynolds,
-            mach: self.mach,
-            ncrit: self.ncrit,
+    /// The boundary-layer models of the flow condition, with XFOIL's closure constants, one per
+    /// side ([`SideModels`]).
+    pub(crate) fn boundary_layer(&self) -> Result<SideModels, ViscousError> {
+        let model = |ncrit: f64| {
+            let conditions = BlConditions {
+                reynolds: self.reynolds,
+                mach: self.mach,
+                ncrit,
+            };
+            BlModel::new(&conditions, BlParams::default()).map_err(ViscousError::FlowConditions)
         };
-        BlModel::new(&conditions, BlParams::default()).map_err(ViscousError::FlowConditions)
+        Ok([model(self.ncrit_top)?, model(self.ncrit_bot)?])
     }
 }

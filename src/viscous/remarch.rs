@@ -10,6 +10,7 @@ use local::{KeptEquations, OscillationDamping};
 use super::local_newton::iterate;
 use super::march::MarchParams;
 use super::newton::CachedEquations;
+use super::params::SideModels;
 use super::state::BlState;
 use super::stations::{Station, StationKind, StationLayout, Surface};
 use super::update::UpdateLimits;
@@ -52,7 +53,7 @@ use crate::boundary_layer::{BlModel, Regime, StationVars, UpstreamStation};
 /// ([`super::ViscousParams::carry_corrections_below`]).
 #[allow(clippy::too_many_arguments)]
 pub fn remarch_mixed(
-    model: &BlModel,
+    models: &SideModels,
     layout: &StationLayout,
     state: &mut BlState,
     xi_forced: [Option<f64>; 2],
@@ -78,7 +79,7 @@ pub fn remarch_mixed(
     for k in order {
         let side = usize::from(layout.stations[k].surface != Surface::Upper);
         let march = Remarch {
-            model,
+            model: &models[side],
             layout,
             xi_forced: xi_forced[side],
             turbulent_fraction: turbulent_fraction[side],

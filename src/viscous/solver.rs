@@ -12,7 +12,7 @@ use super::error::ViscousError;
 use super::march::march;
 use super::newton::{assemble, Coupling};
 use super::panel_model::{PanelModel, SharedPanels};
-use super::params::ViscousParams;
+use super::params::{SideModels, ViscousParams};
 use super::remarch::remarch_mixed;
 use super::solution::{failed_solution, solution, Attempt, ViscousSolution};
 use super::state::BlState;
@@ -60,7 +60,8 @@ pub struct ViscousSolver {
     panels: Arc<PanelModel>,
     /// α of `panels` for an airfoil source.
     panels_alpha: Option<f64>,
-    bl: BlModel,
+    /// Boundary-layer models of the two sides.
+    bl: SideModels,
     warm: Option<WarmState>,
     /// α of the last fresh-start attempt that failed. A fresh start depends on α alone, so
     /// it is not repeated at that α (sweep recoveries revisit a failed α several times).
@@ -154,6 +155,12 @@ impl ViscousSolver {
         self.warm = None;
     }
 
+    /// The boundary-layer closures and compressibility constants, which both sides share (the
+    /// side models differ in N_crit only, which enters the amplification equation alone).
+    fn closures(&self) -> &BlModel {
+        &self.bl[0]
+    }
+
     /// ξ of forced transition on each surface: the trip x/c converted to ξ along that surface
     /// (XFOIL XIFSET), at most the TE ξ (XFOIL forces transition at the TE at the latest).
     fn forced_xi(&self, layout: &StationLayout) -> [Option<f64>; 2] {
@@ -239,7 +246,7 @@ impl ViscousSolver {
         }
         match result {
             Ok(a) => {
-                let sol = solution(&self.panels, &self.bl, alpha_deg, &a);
+                let sol = solution(&self.panels, self.closures(), alpha_deg, &a);
                 let physical = sol.point.cd - sol.point.cdf >= self.params.min_pressure_drag;
                 if a.converged && sol.point.cl.is_finite() && sol.point.cd.is_finite() && physical {
                     self.warm = Some(WarmState {
@@ -271,7 +278,7 @@ impl ViscousSolver {
         let mut state = warm.state.clone();
         let limits = &self.params.limits;
         let step = tangent
-            .predict(&self.bl, &warm.layout, &mut state, alpha_deg, limits)
+            .predict(self.closures(), &warm.layout, &mut state, alpha_deg, limits)
             .ok()?;
         Some(WarmState {
             layout: warm.layout.clone(),
@@ -377,7 +384,7 @@ impl ViscousSolver {
                 .map(|t| t.map(|t| t.turbulent_fraction(&layout)));
             let (system, w) = asm.system.factor_and_solve(&mut schur)?;
             let upd = apply_update(
-                &self.bl,
+                self.closures(),
                 &coupling,
                 &mut state,
                 &w,

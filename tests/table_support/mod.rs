@@ -8,7 +8,8 @@ use polargen::table::{PolarTable, TableMeta};
 pub fn meta(name: &str) -> TableMeta {
     TableMeta {
         airfoil: name.to_string(),
-        ncrit: 9.0,
+        ncrit_top: 9.0,
+        ncrit_bot: 9.0,
         xtr_top_set: 1.0,
         xtr_bot_set: 1.0,
         panels: 160,

@@ -138,6 +138,11 @@ def _progress(progress: Progress) -> Optional[Callable[[int, int], object]]:
     raise TypeError("progress: expected a callable (done, total) or an object with update(n)")
 
 
+def _ncrit(ncrit: float, top: Optional[float], bot: Optional[float]):
+    """The (ncrit, ncrit_top, ncrit_bot) argument of the extension."""
+    return (float(ncrit), None if top is None else float(top), None if bot is None else float(bot))
+
+
 def polar(
     airfoil: AirfoilLike,
     re: float,
@@ -145,6 +150,8 @@ def polar(
     alpha: AlphaLike = DEFAULT_ALPHA,
     xtr: Transition = 1.0,
     ncrit: float = 9.0,
+    ncrit_top: Optional[float] = None,
+    ncrit_bot: Optional[float] = None,
     panels: int = DEFAULT_PANELS,
     tolerance: float = DEFAULT_TOLERANCE,
     threads: int = 0,
@@ -163,7 +170,9 @@ def polar(
     mach : free-stream Mach number, 0 ≤ M < 1 (Karman–Tsien).
     alpha : angles of attack [deg]: ``"A0:A1:DA"`` or a list/array.
     xtr : forced transition x/c on both surfaces, or ``(top, bottom)``; 1 = free (e^n).
-    ncrit : critical amplification ratio N of the e^n criterion.
+    ncrit : critical amplification ratio N of the e^n criterion, both surfaces.
+    ncrit_top, ncrit_bot : N_crit of the upper / lower surface (XFOIL ``NT``, ``NB``) if it
+        differs from ``ncrit``, as ``--ncrit-top``, ``--ncrit-bot``.
     panels : panel nodes after repaneling.
     tolerance : Newton threshold on the RMS relative change.
     threads : worker threads (0 = all cores); the result does not depend on it.
@@ -171,7 +180,7 @@ def polar(
     top, bot = _transition(xtr)
     result = _polargen.table(
         _airfoil(airfoil), [float(re)], [float(mach)], _alphas(alpha), top, bot,
-        float(ncrit), int(panels), float(tolerance), int(threads), None,
+        _ncrit(ncrit, ncrit_top, ncrit_bot), int(panels), float(tolerance), int(threads), None,
     )
     return Table(result).polars()[0]
 
@@ -184,6 +193,8 @@ def point(
     cl: Optional[float] = None,
     xtr: Transition = 1.0,
     ncrit: float = 9.0,
+    ncrit_top: Optional[float] = None,
+    ncrit_bot: Optional[float] = None,
     panels: int = DEFAULT_PANELS,
     tolerance: float = DEFAULT_TOLERANCE,
 ) -> Point:
@@ -198,7 +209,7 @@ def point(
     result = _polargen.point(
         _airfoil(airfoil), float(re), float(mach),
         None if alpha is None else float(alpha), None if cl is None else float(cl),
-        top, bot, float(ncrit), int(panels), float(tolerance),
+        top, bot, _ncrit(ncrit, ncrit_top, ncrit_bot), int(panels), float(tolerance),
     )
     return Point(float(re), float(mach), result)
 
@@ -210,6 +221,8 @@ def table(
     alpha: AlphaLike = DEFAULT_ALPHA,
     xtr: Transition = 1.0,
     ncrit: float = 9.0,
+    ncrit_top: Optional[float] = None,
+    ncrit_bot: Optional[float] = None,
     panels: int = DEFAULT_PANELS,
     tolerance: float = DEFAULT_TOLERANCE,
     threads: int = 0,
@@ -226,7 +239,8 @@ def table(
     top, bot = _transition(xtr)
     result = _polargen.table(
         _airfoil(airfoil), _axis("re", re), _axis("mach", mach), _alphas(alpha), top, bot,
-        float(ncrit), int(panels), float(tolerance), int(threads), _progress(progress),
+        _ncrit(ncrit, ncrit_top, ncrit_bot), int(panels), float(tolerance), int(threads),
+        _progress(progress),
     )
     return Table(result)
 

@@ -117,10 +117,10 @@ def alpha_range(text: str) -> npt.NDArray[np.float64]:
 
 def table(
     airfoil: Airfoil, re: List[float], mach: List[float], alpha: List[float], xtr_top: float,
-    xtr_bot: float, ncrit: float, panels: int, tolerance: float, threads: int,
+    xtr_bot: float, ncrit: Tuple[float, Optional[float], Optional[float]], panels: int, tolerance: float, threads: int,
     progress: Optional[Callable[[int, int], object]],
 ) -> PolarTable: ...
 def point(
     airfoil: Airfoil, re: float, mach: float, alpha: Optional[float], cl: Optional[float],
-    xtr_top: float, xtr_bot: float, ncrit: float, panels: int, tolerance: float,
+    xtr_top: float, xtr_bot: float, ncrit: Tuple[float, Optional[float], Optional[float]], panels: int, tolerance: float,
 ) -> Dict[str, Dict[str, np.ndarray]]: ...

@@ -33,7 +33,8 @@ class Polar:
     Columns: ``alpha`` [deg], ``cl``, ``cd`` (Squire–Young), ``cdp`` (= cd − cdf), ``cdf``
     (skin friction), ``cm`` (c/4), ``xtr_top``, ``xtr_bot`` (transition x/c), ``converged``
     (bool), ``iterations``, ``residual``. Coefficients of points with ``converged == False``
-    are not results. ``meta`` holds the table metadata (airfoil, ncrit, trips, panels, solver).
+    are not results. ``meta`` holds the table metadata (airfoil, ncrit — None when
+    ncrit_top and ncrit_bot differ —, trips, panels, solver).
     """
 
     alpha: np.ndarray

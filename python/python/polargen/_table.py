@@ -53,7 +53,8 @@ class Table:
 
     @property
     def meta(self) -> Dict[str, Any]:
-        """How the table was made: airfoil, ncrit, xtr_top_set, xtr_bot_set, panels, solver."""
+        """How the table was made: airfoil, ncrit (None when the
+        surfaces differ), ncrit_top, ncrit_bot, xtr_top_set, xtr_bot_set, panels, solver."""
         return self._core.meta
 
     @property

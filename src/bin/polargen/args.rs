@@ -40,6 +40,14 @@ pub enum Command {
     /// One table per airfoil of files, folders and names, with an index (CSV, JSON); --shard
     /// K/N takes every N-th airfoil (job arrays), --resume keeps finished tables.
     Batch(BatchArgs),
+    /// The surface and wake distributions of plot-point as CSV, without an image.
+    Point {
+        #[command(flatten)]
+        case: PointCase,
+        /// The distributions (one row per station, surfaces and wake), or - for standard output.
+        #[arg(long, value_name = "FILE|-")]
+        csv: PathBuf,
+    },
     /// Shell completion script on standard output (e.g. `polargen completions bash >
     /// ~/.local/share/bash-completion/completions/polargen`).
     Completions(polargen::cli::CompletionsArgs),
@@ -50,6 +58,25 @@ pub enum Command {
 /// `polargen plot-point` options.
 #[derive(Args, Debug)]
 pub struct PlotPointArgs {
+    #[command(flatten)]
+    pub case: PointCase,
+
+    /// Output image: FILE.svg or FILE.png.
+    #[arg(long, value_name = "FILE")]
+    pub out: PathBuf,
+
+    /// Also write the distributions as CSV (one row per station, surfaces and wake).
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+
+    /// Figure title (default: airfoil, Re, M, α or Cl).
+    #[arg(long)]
+    pub title: Option<String>,
+}
+
+/// The operating point of `point` and `plot-point`, one case per transition setting.
+#[derive(Args, Debug)]
+pub struct PointCase {
     /// Airfoil: a name (naca8h12, nacaDDDD, nacaDDDDD), a coordinate file (Selig, Lednicer
     /// or plain x y) or - for standard input.
     #[arg(long, value_name = "NAME|PATH|-")]
@@ -79,7 +106,8 @@ pub struct PlotPointArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub cl: Option<f64>,
 
-    /// Transition settings to overlay, comma-separated x/c on both surfaces (1 = free).
+    /// Transition settings, one case each (overlaid by plot-point): comma-separated x/c on
+    /// both surfaces (1 = free).
     #[arg(
         long,
         value_name = "LIST",
@@ -88,9 +116,8 @@ pub struct PlotPointArgs {
     )]
     pub xtr: String,
 
-    /// Critical amplification ratio N of the e^n criterion.
-    #[arg(long, default_value_t = 9.0, allow_hyphen_values = true)]
-    pub ncrit: f64,
+    #[command(flatten)]
+    pub ncrit: Ncrit,
 
     /// Number of panel nodes.
     #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES, allow_hyphen_values = true)]
@@ -98,18 +125,6 @@ pub struct PlotPointArgs {
 
     #[command(flatten)]
     pub newton: Newton,
-
-    /// Output image: FILE.svg or FILE.png.
-    #[arg(long, value_name = "FILE")]
-    pub out: PathBuf,
-
-    /// Also write the distributions as CSV (one row per station, surfaces and wake).
-    #[arg(long, value_name = "FILE")]
-    pub csv: Option<PathBuf>,
-
-    /// Figure title (default: airfoil, Re, M, α or Cl).
-    #[arg(long)]
-    pub title: Option<String>,
 }
 
 /// `polargen convert` options.
@@ -282,9 +297,8 @@ pub struct GridArgs {
     #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub xtr_bot: Option<f64>,
 
-    /// Critical amplification ratio N of the e^n transition criterion.
-    #[arg(long, default_value_t = 9.0, allow_hyphen_values = true)]
-    pub ncrit: f64,
+    #[command(flatten)]
+    pub ncrit: Ncrit,
 
     /// Number of panel nodes after curvature-based repaneling (XFOIL PANE).
     #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES, allow_hyphen_values = true)]
@@ -297,6 +311,20 @@ pub struct GridArgs {
     /// than two threads per polar are not started.
     #[arg(long, default_value_t = 0, allow_hyphen_values = true)]
     pub threads: usize,
+}
+
+/// N_crit of the e^n transition criterion (XFOIL VPAR N, NT, NB).
+#[derive(Args, Debug)]
+pub struct Ncrit {
+    /// Critical amplification ratio N of the e^n transition criterion, both surfaces.
+    #[arg(long, default_value_t = 9.0, allow_hyphen_values = true)]
+    pub ncrit: f64,
+    /// N_crit on the upper surface (default: --ncrit).
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
+    pub ncrit_top: Option<f64>,
+    /// N_crit on the lower surface and the wake (default: --ncrit).
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
+    pub ncrit_bot: Option<f64>,
 }
 
 /// The Newton threshold of the viscous solver.

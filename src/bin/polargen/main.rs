@@ -18,7 +18,8 @@ use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 use args::{
-    BatchArgs, Cli, Command, ConvertArgs, GridArgs, PlotArgs, PlotPointArgs, RunArgs, Shape,
+    BatchArgs, Cli, Command, ConvertArgs, GridArgs, Ncrit, PlotArgs, PlotPointArgs, PointCase,
+    RunArgs, Shape,
 };
 use clap::CommandFactory;
 
@@ -36,7 +37,7 @@ use polargen::table::{
     build_table, read_table, with_cd_max, write_table, Batch, BatchSettings, GridSpec, TableFormat,
     DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
 };
-use polargen::viscous::distributions::write_distributions_csv;
+use polargen::viscous::distributions::write_distributions_file;
 use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};
 
 /// This tool's name and error prefix.
@@ -53,6 +54,7 @@ fn main() -> ExitCode {
         Some(Command::Convert(args)) => convert_table(args),
         Some(Command::PlotPoint(args)) => plot_point(args),
         Some(Command::Batch(args)) => run_batch(args),
+        Some(Command::Point { case, csv }) => point(case, csv),
         Some(Command::Completions(args)) => {
             to_stdout(&cli::completions(Cli::command(), args.shell))
         }
@@ -171,11 +173,12 @@ fn grid_request(cli: &GridArgs) -> Result<(GridSpec, ViscousParams)> {
     };
     grid.check_size()?;
     let (xtr_top, xtr_bot) = transition(cli)?;
-    arguments::ncrit("--ncrit", cli.ncrit)?;
+    let (ncrit_top, ncrit_bot) = ncrit_sides(&cli.ncrit)?;
     arguments::tolerance("--tolerance", cli.newton.tolerance)?;
     arguments::panels("--panels", cli.panels)?;
     let base = ViscousParams {
-        ncrit: cli.ncrit,
+        ncrit_top,
+        ncrit_bot,
         tolerance: cli.newton.tolerance,
         xtr_top,
         xtr_bot,
@@ -250,6 +253,17 @@ fn run_batch(args: &BatchArgs) -> Result<()> {
     }
 }
 
+/// `--ncrit`, `--ncrit-top`, `--ncrit-bot` ([`arguments::ncrit_sides`]).
+fn ncrit_sides(n: &Ncrit) -> Result<(f64, f64)> {
+    let flags = ["--ncrit", "--ncrit-top", "--ncrit-bot"];
+    Ok(arguments::ncrit_sides(
+        flags,
+        n.ncrit,
+        n.ncrit_top,
+        n.ncrit_bot,
+    )?)
+}
+
 /// `polargen plot`: overlay one polar from each table.
 fn plot_tables(args: &PlotArgs) -> Result<()> {
     check_image_path(&args.out).context("--out")?;
@@ -278,57 +292,68 @@ fn convert_table(args: &ConvertArgs) -> Result<()> {
     Ok(())
 }
 
-/// `polargen plot-point`: solve each transition setting at the α (or Cl) asked for and draw
-/// Cp and the boundary-layer distributions of both surfaces.
+/// `polargen plot-point`: Cp and the boundary-layer distributions of both surfaces.
 fn plot_point(args: &PlotPointArgs) -> Result<()> {
-    arguments::reynolds("--re", args.re)?;
-    arguments::mach("--mach", args.mach)?;
-    arguments::ncrit("--ncrit", args.ncrit)?;
-    arguments::tolerance("--tolerance", args.newton.tolerance)?;
-    let xtrs = arguments::number_list("--xtr", &args.xtr)?;
-    xtrs.iter()
-        .try_for_each(|&x| arguments::transition("--xtr", x))?;
     check_image_path(&args.out).context("--out")?;
     if let Some(path) = &args.csv {
         check_output_path(path).context("--csv")?;
     }
+    let (foil, runs) = solve_cases(&args.case)?;
+    let cases: Vec<(&str, &ViscousSolution)> = runs.iter().map(|(l, s)| (l.as_str(), s)).collect();
+    let c = &args.case;
+    let title = args.title.clone().unwrap_or_else(|| {
+        let alpha = c.alpha.unwrap_or(0.0);
+        solutions_title(&foil.name, c.re, c.mach, alpha, c.cl, &cases)
+    });
+    // The Ncrit line of the N panel when both surfaces have the same Ncrit.
+    let ncrit = Some(ncrit_sides(&c.ncrit)?).and_then(|(t, b)| (t == b).then_some(t));
+    // The image first: if it cannot be written, no CSV is left behind either.
+    let figure = solutions_figure(&cases, c.mach, &title, ncrit);
+    render(&with_airfoil_contour(figure, &foil), &args.out)?;
+    if let Some(path) = &args.csv {
+        write_distributions_file(&cases, c.mach, path)?;
+    }
+    Ok(())
+}
+
+/// `polargen point`: the distributions as CSV to `csv`, without an image.
+fn point(case: &PointCase, csv: &Path) -> Result<()> {
+    check_output_path(csv).context("--csv")?;
+    let (_, runs) = solve_cases(case)?;
+    let cases: Vec<(&str, &ViscousSolution)> = runs.iter().map(|(l, s)| (l.as_str(), s)).collect();
+    Ok(write_distributions_file(&cases, case.mach, csv)?)
+}
+
+/// Solve each transition setting at the α (or Cl) asked for: the airfoil and one labelled
+/// solution per setting.
+fn solve_cases(args: &PointCase) -> Result<(Airfoil, Vec<(String, ViscousSolution)>)> {
+    arguments::reynolds("--re", args.re)?;
+    arguments::mach("--mach", args.mach)?;
+    let (ncrit_top, ncrit_bot) = ncrit_sides(&args.ncrit)?;
+    arguments::tolerance("--tolerance", args.newton.tolerance)?;
+    let xtrs = arguments::number_list("--xtr", &args.xtr)?;
+    xtrs.iter()
+        .try_for_each(|&x| arguments::transition("--xtr", x))?;
     let foil = load_airfoil(Some(&args.airfoil), args.panels, &args.shape)?;
     let mut runs: Vec<(String, ViscousSolution)> = Vec::new();
     for &xtr in &xtrs {
         let params = ViscousParams {
-            ncrit: args.ncrit,
+            ncrit_top,
+            ncrit_bot,
             tolerance: args.newton.tolerance,
             ..ViscousParams::at(args.re, args.mach, xtr)
         };
         let mut solver = ViscousSolver::new(&foil, params).context("viscous solver")?;
         let label = transition_label(xtr, xtr);
-        let at = match (args.alpha, args.cl) {
-            (_, Some(cl)) => OperatingPoint::Cl(cl),
-            (Some(alpha), None) if !alpha.is_finite() => {
-                bail!("--alpha {alpha}: not a finite angle")
-            }
-            (Some(alpha), None) => OperatingPoint::Alpha(alpha),
-            (None, None) => bail!("give --alpha or --cl"),
-        };
+        let at = args.cl.map_or(
+            OperatingPoint::Alpha(args.alpha.unwrap_or(f64::NAN)),
+            OperatingPoint::Cl,
+        );
         let solution = solve_operating_point(&mut solver, at, &TargetClParams::default())
             .with_context(|| label.clone())?;
         runs.push((label, solution));
     }
-    let cases: Vec<(&str, &ViscousSolution)> = runs.iter().map(|(l, s)| (l.as_str(), s)).collect();
-    let title = args.title.clone().unwrap_or_else(|| {
-        let alpha = args.alpha.unwrap_or(0.0);
-        solutions_title(&foil.name, args.re, args.mach, alpha, args.cl, &cases)
-    });
-    // The image first: if it cannot be written, no CSV is left behind either.
-    let figure = solutions_figure(&cases, args.mach, &title, Some(args.ncrit));
-    let figure = with_airfoil_contour(figure, &foil);
-    render(&figure, &args.out)?;
-    if let Some(path) = &args.csv {
-        write_output(path, |w| {
-            write_distributions_csv(&cases, args.mach, w).map_err(|e| OutputError::io(path, e))
-        })?;
-    }
-    Ok(())
+    Ok((foil, runs))
 }
 
 /// A progress bar on stderr when stderr is a terminal; nothing otherwise.

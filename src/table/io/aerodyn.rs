@@ -100,7 +100,7 @@ pub fn write_aerodyn_to(
             &meta.solver
         },
         meta.airfoil.replace(['\n', '\r'], " "),
-        meta.ncrit,
+        meta.ncrit_text(),
         meta.xtr_top_set,
         meta.xtr_bot_set
     );

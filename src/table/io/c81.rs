@@ -540,7 +540,8 @@ pub fn parse_c81(text: &str, stem: &str) -> Result<PolarTable, TableError> {
         } else {
             airfoil
         },
-        ncrit: 9.0,
+        ncrit_top: 9.0,
+        ncrit_bot: 9.0,
         xtr_top_set: 1.0,
         xtr_bot_set: 1.0,
         panels: 0,

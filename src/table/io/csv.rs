@@ -1,10 +1,11 @@
 //! CSV, long form: one row per point, the table's metadata repeated on every row.
 //!
 //! Columns: `airfoil,re,mach,ncrit,xtr_top_set,xtr_bot_set,alpha,cl,cd,cdp,cm,xtr_top,xtr_bot,
-//! converged,cdf,iterations,residual,panels,solver,cpmin,supercritical`. Floats are written
-//! with Rust's shortest round-trip formatting (`NaN`, `-inf` where not finite), so reading a
-//! file back gives the identical table. The reader needs the first fourteen columns (any
-//! order); `cdf` (default cd − cdp), `iterations`, `residual`, `panels` (default 0), `solver`
+//! converged,cdf,iterations,residual,panels,solver,cpmin,supercritical`; a table whose
+//! surfaces have different N_crit has the two columns `ncrit_top,ncrit_bot` in place of
+//! `ncrit`. Floats are written with Rust's shortest round-trip formatting (`NaN`, `-inf`
+//! where not finite), so reading a file back gives the identical table. The reader needs the
+//! first fourteen columns (any order; `ncrit` or both `ncrit_top` and `ncrit_bot`); `cdf` (default cd − cdp), `iterations`, `residual`, `panels` (default 0), `solver`
 //! (default empty), `cpmin` and `supercritical` are optional. A file without `cpmin` reads as
 //! minimum pressure unknown (NaN); without `supercritical` the flag follows from `cpmin` and
 //! the Mach number (Cp_min < Cp*), unknown (empty field, `None`) when `cpmin` is. A (Re, M)
@@ -46,6 +47,17 @@ pub const COLUMNS: [&str; 21] = [
 /// Columns a CSV file must have.
 pub const REQUIRED: usize = 14;
 
+/// Index of `ncrit` in [`COLUMNS`], and the per-side columns that replace it.
+const NCRIT: usize = 3;
+const NCRIT_SIDES: [&str; 2] = ["ncrit_top", "ncrit_bot"];
+
+/// `fields` in [`COLUMNS`] order with the N_crit field replaced by `ncrit` (one or two fields).
+fn with_ncrit<'a>(fields: [&'a str; COLUMNS.len()], ncrit: &'a [String]) -> Vec<&'a str> {
+    let mut out = fields.to_vec();
+    out.splice(NCRIT..=NCRIT, ncrit.iter().map(String::as_str));
+    out
+}
+
 /// Write `table` as long-form CSV to `w`.
 pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableError> {
     // Records of text fields fail only in the stream below.
@@ -56,23 +68,27 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
             _ => TableError::Write(std::io::Error::other(text)),
         }
     };
-    let mut out = csv::Writer::from_writer(w);
-    out.write_record(COLUMNS).map_err(werr)?;
     let m = table.meta();
+    let (ncrit, ncrit_names) = match m.common_ncrit() {
+        Some(n) => (vec![n.to_string()], vec![COLUMNS[NCRIT].to_string()]),
+        None => (
+            vec![m.ncrit_top.to_string(), m.ncrit_bot.to_string()],
+            NCRIT_SIDES.map(str::to_string).to_vec(),
+        ),
+    };
+    let mut out = csv::Writer::from_writer(w);
+    out.write_record(with_ncrit(COLUMNS, &ncrit_names))
+        .map_err(werr)?;
     let panels = m.panels.to_string();
-    let (ncrit, xt, xb) = (
-        m.ncrit.to_string(),
-        m.xtr_top_set.to_string(),
-        m.xtr_bot_set.to_string(),
-    );
+    let (xt, xb) = (m.xtr_top_set.to_string(), m.xtr_bot_set.to_string());
     for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
         let (re, mach) = (re.to_string(), mach.to_string());
         for p in points {
-            out.write_record([
+            let fields = [
                 m.airfoil.as_str(),
                 &re,
                 &mach,
-                &ncrit,
+                "",
                 &xt,
                 &xb,
                 &p.alpha.to_string(),
@@ -94,8 +110,8 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
                     Some(false) => "false",
                     None => "",
                 },
-            ])
-            .map_err(werr)?;
+            ];
+            out.write_record(with_ncrit(fields, &ncrit)).map_err(werr)?;
         }
     }
     out.flush().map_err(TableError::Write)
@@ -129,10 +145,18 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
     for (k, name) in COLUMNS.iter().enumerate() {
         match header.iter().position(|h| h == name) {
             Some(i) => col[k] = i,
-            None if k < REQUIRED => return Err(TableError::MissingColumn(name.to_string())),
+            None if k < REQUIRED && k != NCRIT => {
+                return Err(TableError::MissingColumn(name.to_string()))
+            }
             None => {}
         }
     }
+    // Without `ncrit`, the per-side columns.
+    let ncrit_sides = match NCRIT_SIDES.map(|name| header.iter().position(|h| h == name)) {
+        _ if col[NCRIT] != usize::MAX => None,
+        [Some(top), Some(bot)] => Some([top, bot]),
+        _ => return Err(TableError::MissingColumn(COLUMNS[NCRIT].to_string())),
+    };
     let mut meta: Option<(TableMeta, u64)> = None;
     let mut index: HashMap<(u64, u64), usize> = HashMap::new();
     let mut polars: Vec<(FlowCondition, Vec<PolarPoint>)> = Vec::new();
@@ -144,9 +168,17 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
             col: &col,
             line,
         };
+        let [ncrit_top, ncrit_bot] = match ncrit_sides {
+            None => [row.num(NCRIT)?; 2],
+            Some([top, bot]) => [
+                row.num_at(top, NCRIT_SIDES[0])?,
+                row.num_at(bot, NCRIT_SIDES[1])?,
+            ],
+        };
         let this = TableMeta {
             airfoil: row.text(0)?.to_string(),
-            ncrit: row.num(3)?,
+            ncrit_top,
+            ncrit_bot,
             xtr_top_set: row.num(4)?,
             xtr_bot_set: row.num(5)?,
             panels: row.opt_int(17)?.unwrap_or(0) as usize,
@@ -275,7 +307,8 @@ pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableErr
     };
     let meta = TableMeta {
         airfoil: stem.split('_').next().unwrap_or("polar").to_string(),
-        ncrit: 9.0,
+        ncrit_top: 9.0,
+        ncrit_bot: 9.0,
         xtr_top_set: 1.0,
         xtr_bot_set: 1.0,
         panels: 0,
@@ -293,8 +326,10 @@ pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableErr
 fn meta_difference(a: &TableMeta, b: &TableMeta) -> Option<&'static str> {
     if a.airfoil != b.airfoil {
         Some("airfoil")
-    } else if a.ncrit.to_bits() != b.ncrit.to_bits() {
-        Some("ncrit")
+    } else if a.ncrit_top.to_bits() != b.ncrit_top.to_bits() {
+        Some("ncrit_top")
+    } else if a.ncrit_bot.to_bits() != b.ncrit_bot.to_bits() {
+        Some("ncrit_bot")
     } else if a.xtr_top_set.to_bits() != b.xtr_top_set.to_bits() {
         Some("xtr_top_set")
     } else if a.xtr_bot_set.to_bits() != b.xtr_bot_set.to_bits() {
@@ -339,15 +374,25 @@ impl Row<'_> {
     }
 
     fn bad(&self, k: usize, s: &str, what: &str) -> TableError {
+        self.bad_named(COLUMNS[k], s, what)
+    }
+
+    fn bad_named(&self, name: &str, s: &str, what: &str) -> TableError {
         TableError::Csv {
             line: self.line,
-            message: format!("{} '{s}' is not {what}", COLUMNS[k]),
+            message: format!("{name} '{s}' is not {what}"),
         }
     }
 
     fn num(&self, k: usize) -> Result<f64, TableError> {
         let s = self.text(k)?;
         s.parse().map_err(|_| self.bad(k, s, "a number"))
+    }
+
+    /// The number in field `i` of the record (a column outside [`COLUMNS`], named `name`).
+    fn num_at(&self, i: usize, name: &str) -> Result<f64, TableError> {
+        let s = self.rec.get(i).unwrap_or("");
+        s.parse().map_err(|_| self.bad_named(name, s, "a number"))
     }
 
     fn opt_num(&self, k: usize) -> Result<Option<f64>, TableError> {

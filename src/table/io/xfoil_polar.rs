@@ -1,5 +1,6 @@
 //! XFOIL polar text: the layout of the file XFOIL 6.99 writes with `PACC` (a 12-line header
-//! with the airfoil name, transition settings, Mach, Re and N_crit, then the columns
+//! with the airfoil name, transition settings, Mach, Re and N_crit — one value, or top and
+//! bottom side by side as XFOIL 6.99 writes unequal `NT` and `NB` — then the columns
 //! `alpha CL CD CDp CM Top_Xtr Bot_Xtr` in Fortran F8.3, F9.4, F10.5, F10.5, F9.4, F9.4, F9.4
 //! fields, and the optional `Cpmin` column XFOIL adds with its minimum-Cp option, F9.4).
 //! Only converged points are written, sorted by α, with `Cpmin`; the supercritical flag is
@@ -74,13 +75,30 @@ pub fn write_polar_to(
         meta.xtr_top_set, meta.xtr_bot_set
     ));
     let re_field = format!("{:9.3}", re / 1e6);
-    let ncrit_field = format!("{:7.3}", meta.ncrit);
-    // Re and N_crit must stay positive when read back (Re 2.5e-7 would print as 0.000 e 6).
-    for (field, value, text) in [("Re", re, &re_field), ("ncrit", meta.ncrit, &ncrit_field)] {
+    // One N_crit, or top and bottom side by side as XFOIL 6.99 writes unequal NT and NB.
+    let ncrit = match meta.common_ncrit() {
+        Some(n) => vec![("ncrit", n)],
+        None => vec![("ncrit_top", meta.ncrit_top), ("ncrit_bot", meta.ncrit_bot)],
+    };
+    let mut fields = vec![("Re", re, re_field.clone())];
+    fields.extend(ncrit.iter().map(|&(f, n)| (f, n, format!("{n:7.3}"))));
+    // Re and N_crit must stay positive when read back (Re 2.5e-7 would print as 0.000 e 6);
+    // two N_crit fields need a blank between them.
+    for (field, value, text) in &fields {
         if text.trim().parse::<f64>().map_or(true, |v| v <= 0.0) {
-            return Err(TableError::HeaderResolution { field, value });
+            return Err(TableError::HeaderResolution {
+                field,
+                value: *value,
+            });
+        }
+        if ncrit.len() == 2 && !text.starts_with(' ') {
+            return Err(TableError::FieldOverflow {
+                value: *value,
+                width: 6,
+            });
         }
     }
+    let ncrit_field: String = fields[1..].iter().map(|f| f.2.as_str()).collect();
     s.push_str(&format!(
         " Mach = {mach:7.3}     Re = {re_field} e 6     Ncrit = {ncrit_field}\n"
     ));
@@ -259,20 +277,23 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
                 _ => return Err(err(line, "xtrf line lacks the top and bottom values")),
             }
         } else if t.starts_with("Mach") {
-            // "Mach = 0.410 Re = 1.900 e 6 Ncrit = 9.000"
+            // "Mach = 0.410 Re = 1.900 e 6 Ncrit = 9.000", or "… Ncrit = 9.000 3.000" (top, bottom)
             let v: Vec<&str> = t.split_whitespace().collect();
             if v.len() < 11 {
                 return Err(err(line, "Mach/Re/Ncrit line is incomplete"));
             }
             let re = num(line, v[5])? * 10f64.powf(num(line, v[7])?);
-            cond = Some((num(line, v[2])?, re, num(line, v[10])?));
+            let top = num(line, v[10])?;
+            let bot = v.get(11).map_or(Ok(top), |b| num(line, b))?;
+            cond = Some((num(line, v[2])?, re, (top, bot)));
         } else if t.starts_with("alpha") {
             columns = Some(t.split_whitespace().map(str::to_string).collect());
         }
     }
     let name = name.ok_or_else(|| err(1, "no 'Calculated polar for:' line"))?;
     let (xt, xb) = xtr.ok_or_else(|| err(1, "no 'xtrf =' line"))?;
-    let (mach, re, ncrit) = cond.ok_or_else(|| err(1, "no 'Mach = … Re = … Ncrit = …' line"))?;
+    let (mach, re, (ncrit_top, ncrit_bot)) =
+        cond.ok_or_else(|| err(1, "no 'Mach = … Re = … Ncrit = …' line"))?;
     if columns.is_none() {
         return Err(err(1, "no column-title line starting with 'alpha'"));
     }
@@ -281,7 +302,8 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
     }
     let meta = TableMeta {
         airfoil: name,
-        ncrit,
+        ncrit_top,
+        ncrit_bot,
         xtr_top_set: xt,
         xtr_bot_set: xb,
         panels: 0,

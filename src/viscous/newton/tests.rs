@@ -5,10 +5,10 @@
 //! next to the stagnation point are only right with the ξ sensitivities (XFOIL XI_ULE1/2).
 
 use super::{assemble, Coupling};
-use crate::boundary_layer::{BlConditions, BlModel, BlParams};
 use crate::geometry::Airfoil;
 use crate::inviscid::PanelSystem;
 use crate::viscous::march::march;
+use crate::viscous::params::SideModels;
 use crate::viscous::state::BlState;
 use crate::viscous::stations::{StationLayout, Surface};
 use crate::viscous::{PanelModel, ViscousParams, ViscousSolver};
@@ -28,7 +28,7 @@ fn paneled() -> Airfoil {
 struct Setup {
     model: PanelModel,
     q_inv: Vec<f64>,
-    bl: BlModel,
+    bl: SideModels,
     ante: f64,
 }
 
@@ -42,14 +42,14 @@ impl Setup {
         Self {
             model,
             q_inv,
-            bl: BlModel::new(
-                &BlConditions {
-                    reynolds: RE,
-                    mach: 0.0,
-                    ncrit: 9.0,
-                },
-                BlParams::default(),
-            )
+            // Different N_crit on the two sides, so that each side's equations are pinged
+            // with its own.
+            bl: ViscousParams {
+                ncrit_top: 9.0,
+                ncrit_bot: 7.0,
+                ..ViscousParams::at(RE, 0.0, 1.0)
+            }
+            .boundary_layer()
             .unwrap(),
             ante,
         }

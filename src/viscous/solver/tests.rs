@@ -58,7 +58,7 @@ fn tangent_predicts_the_next_converged_state() {
         let alpha1 = alpha0 + step;
         let mut predicted = converged.state.clone();
         let limits = UpdateLimits::default();
-        let bl = &s.bl;
+        let bl = s.closures();
         tangent
             .predict(bl, &converged.layout, &mut predicted, alpha1, &limits)
             .unwrap();
