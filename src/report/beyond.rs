@@ -1,4 +1,4 @@
-//! The report's section "Beyond the paper": the contamination, airfoil and speed studies of
+//! The report's section "Beyond the paper": the contamination, airfoil, speed and wing studies of
 //! [`studies`](crate::studies) on the 8-H-12 rotor, their figures, and the findings in numbers
 //! with what each depends on. Every number is read from the study records.
 
@@ -10,7 +10,8 @@ use crate::studies::contamination::{
     FLIGHT_TEST_DELTA_ENGINE_RPM,
 };
 use crate::studies::speed::{self, default_speeds, SpeedStudy};
-use crate::studies::{command_line_cache, Progress, StudiesError, PAPER_TRIP_XTR};
+use crate::studies::wing::{self, WingOptions, WingRecord, WingStudy};
+use crate::studies::{command_line_cache, Progress, StudiesError, TableCache, PAPER_TRIP_XTR};
 use std::path::Path;
 
 /// Rotor rpm change still read as "unchanged" \[rpm\]: an assumed reading resolution of the
@@ -25,8 +26,16 @@ pub(super) fn figure_stems() -> Vec<&'static str> {
     let mut v = contamination::FIGURE_STEMS.to_vec();
     v.extend(speed::FIGURE_STEMS);
     v.extend(airfoil::FIGURE_STEMS);
+    v.extend(wing::FIGURE_STEMS);
     v
 }
+
+/// The wing areas of the report's wing study \[m²\]: none, and about 0.6, 1 and 1.5 times the
+/// 1.7 m² wing of the paper's §6 (as `gyro study wing`).
+const WING_AREAS_M2: [f64; 4] = [0.0, 1.0, 1.7, 2.5];
+
+/// The airspeeds of the report's wing study \[kt\].
+const WING_SPEEDS_KT: [f64; 5] = [30.0, 45.0, 60.0, 75.0, 90.0];
 
 /// A signed whole number of rpm, or `-`.
 fn signed(v: Option<f64>) -> String {
@@ -38,11 +47,18 @@ pub(super) struct Beyond {
     contamination: ContaminationStudy,
     airfoils: AirfoilStudy,
     speed: SpeedStudy,
+    /// The wing study of the clean rotor; `None` when the aircraft file has no `[wing]`.
+    wing: Option<WingStudy>,
 }
 
 /// Run the studies with tables from the cache folder `cache`.
 pub(super) fn run(ac: &Aircraft, cache: &Path) -> Result<Beyond, StudiesError> {
-    let cache = command_line_cache(Some(cache.to_path_buf()))?;
+    run_with(ac, &command_line_cache(Some(cache.to_path_buf()))?)
+}
+
+/// Run the studies with tables from `cache`.
+fn run_with(ac: &Aircraft, cache: &TableCache) -> Result<Beyond, StudiesError> {
+    let cache = cache.clone();
     let progress = Progress::on_terminal();
     let options = ContaminationOptions::default();
     let contamination = ContaminationStudy::run(ac, AIRFOILS[0], &options, &cache, &progress)?;
@@ -56,10 +72,23 @@ pub(super) fn run(ac: &Aircraft, cache: &Path) -> Result<Beyond, StudiesError> {
         &cache,
         &progress,
     )?;
+    let wing = match ac.wing {
+        Some(_) => {
+            let options = WingOptions {
+                airfoil: AIRFOILS[0].to_string(),
+                areas_m2: WING_AREAS_M2.to_vec(),
+                speeds_kt: WING_SPEEDS_KT.to_vec(),
+                xtr: None,
+            };
+            Some(WingStudy::run(ac, &options, &cache, &progress)?)
+        }
+        None => None,
+    };
     Ok(Beyond {
         contamination,
         airfoils,
         speed,
+        wing,
     })
 }
 
@@ -69,6 +98,9 @@ impl Beyond {
         let mut v = contamination::figures(&self.contamination.records);
         v.push((speed::FIGURE_STEMS[0].to_string(), self.speed.figure()));
         v.extend(self.airfoils.files()?.figures);
+        if let Some(w) = &self.wing {
+            v.push((wing::FIGURE_STEMS[0].to_string(), w.figure()));
+        }
         Ok(v)
     }
 
@@ -181,8 +213,14 @@ impl Beyond {
              contaminated rotor needs more than the engine's maximum rpm.",
             speeds.join(", ")
         );
+        if let Some(w) = &self.wing {
+            wing_findings(&mut o, w);
+        }
         outln!(o, "\n![Penalty vs airspeed](contamination_speed.png)");
         outln!(o, "![Airfoils](airfoils.png)");
+        if self.wing.is_some() {
+            outln!(o, "![Fixed wing](wing.png)");
+        }
         outln!(o);
         outln!(
             o,
@@ -192,8 +230,10 @@ impl Beyond {
              and turbulence; spanwise coverage is resolved by the rotor's strips (a strip \
              belongs to the band holding its centre); the section data are 2-D (no rotational \
              or yawed-flow effects on the boundary layer); at 60 kt {:.0} % of the clean trim's \
-             blade-element lookups lie outside the table's Re/M range and use its edge. A fixed \
-             wing (the paper's §6) is not modelled here.",
+             blade-element lookups lie outside the table's Re/M range and use its edge. The \
+             wing is a lifting line on its section table with the fuselage level at every \
+             speed (the wing at its incidence), no rotor downwash on it and no fitting drag; \
+             its span, incidence and section are the aircraft file's assumptions.",
             100.0
                 * recs
                     .first()
@@ -201,5 +241,118 @@ impl Beyond {
         );
         outln!(o);
         o
+    }
+}
+
+/// The wing bullet: F_prop change and the rotor's share of the lift for each wing area at 60
+/// and 90 kt, and the paper's §6 claim beside them.
+fn wing_findings(o: &mut String, w: &WingStudy) {
+    let at = |area: f64, v: f64| -> Option<&WingRecord> {
+        w.records
+            .iter()
+            .find(|r| r.wing_area_m2 == area && r.speed_kt == v && r.converged)
+    };
+    let cells: Vec<String> = WING_AREAS_M2[1..]
+        .iter()
+        .map(|&area| {
+            let one = |v: f64| {
+                at(area, v).map_or("no trim".to_string(), |r| {
+                    format!(
+                        "{v} kt {:+.1} % (rotor lift share {:.2})",
+                        r.delta_prop_thrust_pct.unwrap_or(f64::NAN),
+                        r.rotor_lift_share.unwrap_or(f64::NAN)
+                    )
+                })
+            };
+            format!("{area} m²: {}, {}", one(60.0), one(90.0))
+        })
+        .collect();
+    let best = w
+        .records
+        .iter()
+        .filter(|r| r.wing_area_m2 == 1.7)
+        .filter_map(|r| r.delta_prop_thrust_pct.map(|d| (r.speed_kt, d)))
+        .min_by(|a, b| a.1.total_cmp(&b.1));
+    outln!(
+        o,
+        "- **Fixed wing** (clean rotor, the aircraft file's `[wing]` scaled in area). ΔF_prop \
+         (= total drag in level flight) against no wing: {}. The 1.7 m² wing gains most at {}; \
+         the paper's §6 cites about −12 % total drag at cruise for 1.7 m², which this model \
+         reaches only with a much higher wing C_L or more rotor drag shed per newton of lift \
+         ([docs/studies.md](../docs/studies.md)).",
+        cells.join("; "),
+        best.map_or("no speed".to_string(), |(v, d)| format!(
+            "{v} kt ({d:+.1} %)"
+        ))
+    );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::table::GridSpec;
+
+    /// The section on small tables (2 Re × 2 M × α −6…14°, solved into a temporary cache):
+    /// every study present, the bullets read from their records, the wing's figure listed.
+    #[test]
+    fn section_states_each_study_from_its_records() {
+        let dir = tempfile::tempdir().unwrap();
+        let cache = TableCache {
+            dir: dir.path().to_path_buf(),
+            grid: GridSpec {
+                reynolds: vec![0.7e6, 1.5e6],
+                mach: vec![0.2, 0.4],
+                alpha_deg: (-6..=14).map(f64::from).collect(),
+            },
+            panels: crate::geometry::DEFAULT_PANEL_NODES,
+            threads: 0,
+        };
+        let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let ac = Aircraft::from_toml_file(&root.join("aircraft/mtosport.toml")).unwrap();
+        let b = run_with(&ac, &cache).unwrap();
+        let text = b.markdown();
+        assert!(text.starts_with("## Beyond the paper"));
+        // One entry per trip location, each with the Δ engine rpm of its record.
+        let trip_line = text
+            .lines()
+            .find(|l| l.contains("**Trip location.**"))
+            .unwrap();
+        for r in b
+            .contamination
+            .records
+            .iter()
+            .filter(|r| r.group == Group::Trip)
+        {
+            let entry = format!(
+                "{:.0} % {}",
+                100.0 * r.xtr_top,
+                signed(r.penalty.delta_engine_rpm)
+            );
+            assert!(trip_line.contains(&entry), "{entry} missing: {trip_line}");
+        }
+        // The airfoil bullet carries both airfoils' penalties.
+        let a = &b.airfoils.records;
+        assert_eq!(a.len(), 4);
+        let airfoil_line = text.lines().find(|l| l.contains("**Airfoil.**")).unwrap();
+        let pct = format!("{:+.1} %", a[3].penalty.delta_prop_thrust_pct);
+        assert!(airfoil_line.contains(&pct), "{pct}: {airfoil_line}");
+        // The wing: the shipped aircraft has a [wing] of area 0, scaled to each area.
+        let w = b.wing.as_ref().expect("the shipped aircraft has a [wing]");
+        assert_eq!(w.records.len(), WING_AREAS_M2.len() * WING_SPEEDS_KT.len());
+        let wing_line = text.lines().find(|l| l.contains("**Fixed wing**")).unwrap();
+        let r = w
+            .records
+            .iter()
+            .find(|r| r.wing_area_m2 == 1.7 && r.speed_kt == 60.0)
+            .unwrap();
+        let entry = format!("60 kt {:+.1} %", r.delta_prop_thrust_pct.unwrap());
+        assert!(wing_line.contains(&entry), "{entry}: {wing_line}");
+        assert!(
+            r.delta_prop_thrust_pct.unwrap() < 0.0,
+            "a lifting wing unloads the rotor"
+        );
+        assert!(text.contains("![Fixed wing](wing.png)"));
+        let stems: Vec<String> = b.figures().unwrap().into_iter().map(|f| f.0).collect();
+        assert_eq!(stems.len(), figure_stems().len());
     }
 }
