@@ -74,6 +74,28 @@ pub struct PolarPoint {
     pub supercritical: Option<bool>,
 }
 
+impl PolarPoint {
+    /// A converged point known only by its coefficients (a C81 row, a table lookup): the
+    /// drag split, transition, iteration count, `cpmin` and the supercritical flag unknown.
+    pub fn from_coefficients(alpha: f64, cl: f64, cd: f64, cm: f64) -> Self {
+        Self {
+            alpha,
+            cl,
+            cd,
+            cdp: f64::NAN,
+            cdf: f64::NAN,
+            cm,
+            xtr_top: f64::NAN,
+            xtr_bot: f64::NAN,
+            converged: true,
+            iterations: 0,
+            residual: 0.0,
+            cpmin: f64::NAN,
+            supercritical: None,
+        }
+    }
+}
+
 /// The `cpmin` of a point that does not say (NaN).
 fn unknown_cpmin() -> f64 {
     f64::NAN

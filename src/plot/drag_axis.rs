@@ -97,21 +97,7 @@ mod tests {
 
     /// A polar point with the given α, Cl, Cd.
     fn point(alpha: f64, cl: f64, cd: f64) -> PolarPoint {
-        PolarPoint {
-            alpha,
-            cl,
-            cd,
-            cdp: f64::NAN,
-            cdf: f64::NAN,
-            cm: 0.0,
-            xtr_top: f64::NAN,
-            xtr_bot: f64::NAN,
-            converged: true,
-            iterations: 0,
-            residual: 0.0,
-            cpmin: f64::NAN,
-            supercritical: None,
-        }
+        PolarPoint::from_coefficients(alpha, cl, cd, 0.0)
     }
 
     /// A laminar-bucket polar, α −6…14° in 0.25° steps: Cl 0.11 + 0.11 α up to its

@@ -58,18 +58,17 @@ pub(super) fn run(ac: &Aircraft, cache: &Path) -> Result<Beyond, StudiesError> {
 
 /// Run the studies with tables from `cache`.
 fn run_with(ac: &Aircraft, cache: &TableCache) -> Result<Beyond, StudiesError> {
-    let cache = cache.clone();
     let progress = Progress::on_terminal();
     let options = ContaminationOptions::default();
-    let contamination = ContaminationStudy::run(ac, AIRFOILS[0], &options, &cache, &progress)?;
+    let contamination = ContaminationStudy::run(ac, AIRFOILS[0], &options, cache, &progress)?;
     let names: Vec<String> = AIRFOILS.iter().map(|s| s.to_string()).collect();
-    let airfoils = AirfoilStudy::run(ac, &names, &cache, &progress)?;
+    let airfoils = AirfoilStudy::run(ac, &names, cache, &progress)?;
     let speed = SpeedStudy::run(
         ac,
         AIRFOILS[0],
         PAPER_TRIP_XTR,
         &default_speeds(),
-        &cache,
+        cache,
         &progress,
     )?;
     let wing = match ac.wing {
@@ -80,7 +79,7 @@ fn run_with(ac: &Aircraft, cache: &TableCache) -> Result<Beyond, StudiesError> {
                 speeds_kt: WING_SPEEDS_KT.to_vec(),
                 xtr: None,
             };
-            Some(WingStudy::run(ac, &options, &cache, &progress)?)
+            Some(WingStudy::run(ac, &options, cache, &progress)?)
         }
         None => None,
     };

@@ -11,7 +11,7 @@
 //! replaced. Entries are written atomically ([`write_output`](crate::output::write_output)).
 
 use super::{StudiesError, Transition};
-use crate::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
+use crate::geometry::{airfoil_by_name_or_path, Airfoil};
 use crate::polar::SweepParams;
 use crate::table::{build_table, parse_table, write_table, GridSpec, PolarTable, TableFormat};
 use crate::viscous::ViscousParams;
@@ -45,8 +45,10 @@ pub fn load_study_airfoil(spec: &str, panels: usize) -> Result<Airfoil, StudiesE
         source,
     };
     let given = airfoil_by_name_or_path(spec).map_err(err)?;
-    let (raw, _) = given.in_chord_units().map_err(err)?;
-    raw.repanel(panels, &PanelingParams::default()).map_err(err)
+    given
+        .solver_nodes(panels)
+        .map(|(foil, _)| foil)
+        .map_err(err)
 }
 
 /// 64-bit FNV-1a (Fowler–Noll–Vo; offset basis and prime of the 64-bit variant).

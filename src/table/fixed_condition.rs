@@ -26,23 +26,14 @@ pub fn sample_polar<S: SectionAero + ?Sized>(
         .map(|&alpha| {
             let l = section.lookup(alpha, re, mach);
             PolarPoint {
-                alpha,
-                cl: l.cl,
-                cd: l.cd,
-                cdp: f64::NAN,
-                cdf: f64::NAN,
-                cm: l.cm,
-                xtr_top: f64::NAN,
-                xtr_bot: f64::NAN,
                 converged: !l.post_stall,
-                iterations: 0,
                 residual: f64::NAN,
-                cpmin: f64::NAN,
                 supercritical: if l.supercritical {
                     Some(true)
                 } else {
                     (!l.supercritical_unknown).then_some(false)
                 },
+                ..PolarPoint::from_coefficients(alpha, l.cl, l.cd, l.cm)
             }
         })
         .collect()

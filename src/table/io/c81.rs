@@ -491,23 +491,13 @@ pub fn parse_c81(text: &str, stem: &str) -> Result<PolarTable, TableError> {
             .iter()
             .enumerate()
             .map(|(i, &alpha)| {
-                let cd_v = cd.at(j, alpha);
-                PolarPoint {
+                // C81 has no drag split, transition or cpmin: unknown.
+                PolarPoint::from_coefficients(
                     alpha,
-                    cl: cl.values[i * nm + j],
-                    cd: cd_v,
-                    cdp: f64::NAN,
-                    cdf: f64::NAN,
-                    cm: cm.at(j, alpha),
-                    xtr_top: f64::NAN,
-                    xtr_bot: f64::NAN,
-                    converged: true,
-                    iterations: 0,
-                    residual: 0.0,
-                    // C81 has no field for them: unknown.
-                    cpmin: f64::NAN,
-                    supercritical: None,
-                }
+                    cl.values[i * nm + j],
+                    cd.at(j, alpha),
+                    cm.at(j, alpha),
+                )
             })
             .collect()
     };
