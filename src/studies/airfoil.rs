@@ -141,7 +141,7 @@ impl AirfoilStudy {
     pub fn text(&self) -> String {
         let mut s = format!(
             "Airfoil study: trim at {PAPER_TRIM_SPEED_KT} kt and takeoff, clean and with transition \
-             fixed at {} % chord\n{:<22} {:<5} {:>6} {:>7} {:>6} {:>7} {:>6} {:>7} {:>6} {:>6} {:>5}\n",
+             fixed at {:.0} % chord\n{:<22} {:<5} {:>6} {:>7} {:>6} {:>7} {:>6} {:>7} {:>6} {:>6} {:>5}\n",
             100.0 * PAPER_TRIP_XTR,
             "airfoil", "trip", "n_R", "F_prop", "n_eng", "dF_%", "dn_eng", "F/1st%", "s_TO", "s_15",
             "b_max"
