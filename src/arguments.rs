@@ -2,11 +2,12 @@
 //! arguments — made before any computation, with one-line errors that name the argument as the
 //! caller calls it (`--re` on the command line, `re` in Python).
 //!
-//! A leaf module: the flow condition, transition, Newton threshold and panel count of a
+//! A leaf module: the flow condition, transition setting, Newton threshold and panel count of a
 //! solution, and lists of them. Checks of rotor quantities (speed, mass, altitude) sit with the
 //! aircraft ([`crate::rotor`]) and use the same [`ArgumentError`].
 
-use crate::limits::{short_number, short_text, MAX_NEWTON_TOLERANCE, PANEL_NODES};
+use crate::limits::{short_number, short_text, MAX_NEWTON_TOLERANCE, MAX_RE, PANEL_NODES};
+use crate::section::{Transition, TransitionField};
 use std::borrow::Cow;
 
 /// A user-given value outside its range: `<name> <value>: <rule>` on one line (`<name>: <rule>`
@@ -58,13 +59,16 @@ fn require(
     }
 }
 
-/// A chord Reynolds number: positive and finite.
+/// A chord Reynolds number: positive, at most [`MAX_RE`].
 pub fn reynolds(name: &str, re: f64) -> Result<(), ArgumentError> {
     require(
-        re.is_finite() && re > 0.0,
+        re > 0.0 && re <= MAX_RE,
         name,
         re,
-        "the Reynolds number must be positive",
+        format!(
+            "the Reynolds number must be positive and at most {}",
+            short_number(MAX_RE)
+        ),
     )
 }
 
@@ -78,41 +82,45 @@ pub fn mach(name: &str, mach: f64) -> Result<(), ArgumentError> {
     )
 }
 
-/// A forced transition location x/c: in [0, 1], 1 meaning free transition.
-pub fn transition(name: &str, xtr: f64) -> Result<(), ArgumentError> {
-    require(
-        (0.0..=1.0).contains(&xtr),
-        name,
-        xtr,
-        "the transition location must be in [0, 1] (1 = free)",
-    )
+/// The transition values a user gives ([`Transition`]), each with its name as the caller
+/// names it: N_crit for both surfaces (XFOIL VPAR `N`) and optionally per surface (`NT`,
+/// `NB`; a surface not given takes the common value), and the trip x/c of each surface.
+#[derive(Clone, Copy, Debug)]
+pub struct TransitionArgs<'a> {
+    /// N_crit of both surfaces (`--ncrit`).
+    pub ncrit: (&'a str, f64),
+    /// N_crit of the upper surface if given (`--ncrit-top`).
+    pub ncrit_top: (&'a str, Option<f64>),
+    /// N_crit of the lower surface if given (`--ncrit-bot`).
+    pub ncrit_bot: (&'a str, Option<f64>),
+    /// Trip x/c of the upper surface (`--xtr` or `--xtr-top`).
+    pub xtr_top: (&'a str, f64),
+    /// Trip x/c of the lower surface (`--xtr` or `--xtr-bot`).
+    pub xtr_bot: (&'a str, f64),
 }
 
-/// The critical amplification ratio N of the e^n criterion: positive.
-pub fn ncrit(name: &str, ncrit: f64) -> Result<(), ArgumentError> {
-    require(
-        ncrit.is_finite() && ncrit > 0.0,
-        name,
-        ncrit,
-        "must be a positive number",
-    )
-}
-
-/// N_crit of the upper and the lower surface from one value for both (`ncrit`, XFOIL VPAR
-/// `N`) and the optional per-side values (`top`, `bottom`: XFOIL `NT`, `NB`); a side not
-/// given takes `ncrit`. `names` are the three arguments as the caller names them.
-pub fn ncrit_sides(
-    names: [&str; 3],
-    ncrit_both: f64,
-    top: Option<f64>,
-    bottom: Option<f64>,
-) -> Result<(f64, f64), ArgumentError> {
-    ncrit(names[0], ncrit_both)?;
-    let side = |name, n: Option<f64>| {
-        let n = n.unwrap_or(ncrit_both);
-        ncrit(name, n).map(|()| n)
+/// The transition setting of `args`, every value checked by the setting's own rule
+/// ([`Transition::check`]), the common N_crit first even where both surfaces override it; an
+/// error names the value as the caller does.
+pub fn transition<'a>(args: &TransitionArgs<'a>) -> Result<Transition, ArgumentError> {
+    let field = TransitionField::NcritTop;
+    let (name, ncrit) = args.ncrit;
+    require(field.accepts(ncrit), name, ncrit, field.rule())?;
+    let side = |given: (&'a str, Option<f64>)| match given.1 {
+        Some(v) => (given.0, v),
+        None => (name, ncrit),
     };
-    Ok((side(names[1], top)?, side(names[2], bottom)?))
+    let (top, bot) = (side(args.ncrit_top), side(args.ncrit_bot));
+    let setting = Transition::sides(top.1, bot.1, args.xtr_top.1, args.xtr_bot.1);
+    setting.check().map(|()| setting).map_err(|e| {
+        let name = match e.field {
+            TransitionField::NcritTop => top.0,
+            TransitionField::NcritBot => bot.0,
+            TransitionField::XtrTop => args.xtr_top.0,
+            TransitionField::XtrBot => args.xtr_bot.0,
+        };
+        ArgumentError::new(name, e.value, e.field.rule())
+    })
 }
 
 /// The Newton threshold of the viscous solver: in (0, [`MAX_NEWTON_TOLERANCE`]].
@@ -182,19 +190,29 @@ mod tests {
         let msg = |r: Result<(), ArgumentError>| r.unwrap_err().to_string();
         assert_eq!(
             msg(reynolds("--re", -1.0)),
-            "--re -1: the Reynolds number must be positive"
+            "--re -1: the Reynolds number must be positive and at most 1e10"
         );
         assert_eq!(
             msg(mach("mach", 1.0)),
             "mach 1: the Mach number must be in [0, 1)"
         );
+        let trip = |xtr_top: f64, ncrit: f64| {
+            transition(&TransitionArgs {
+                ncrit: ("ncrit", ncrit),
+                ncrit_top: ("ncrit_top", None),
+                ncrit_bot: ("ncrit_bot", None),
+                xtr_top: ("xtr_top", xtr_top),
+                xtr_bot: ("xtr_bot", 1.0),
+            })
+            .map(|_| ())
+        };
         assert_eq!(
-            msg(transition("xtr_top", 1.5)),
-            "xtr_top 1.5: the transition location must be in [0, 1] (1 = free)"
+            msg(trip(1.5, 9.0)),
+            "xtr_top 1.5: the transition location must be in [0, 1] (0 = leading edge, 1 = free)"
         );
         assert_eq!(
-            msg(ncrit("ncrit", f64::NAN)),
-            "ncrit NaN: must be a positive number"
+            msg(trip(0.5, f64::NAN)),
+            "ncrit NaN: N_crit must be a positive number"
         );
         assert_eq!(
             msg(tolerance("tolerance", 0.5)),
@@ -219,16 +237,39 @@ mod tests {
     #[test]
     fn values_in_range_pass() {
         assert!(reynolds("re", 1e-3).is_ok() && reynolds("re", 0.0).is_err());
+        assert!(reynolds("re", 1e10).is_ok() && reynolds("re", 1.0001e10).is_err());
         assert!(mach("m", 0.0).is_ok() && mach("m", -0.0).is_ok() && mach("m", f64::NAN).is_err());
-        assert!(transition("x", 0.0).is_ok() && transition("x", 1.0).is_ok());
-        assert!(transition("x", -1e-9).is_err() && transition("x", f64::NAN).is_err());
-        assert!(ncrit("n", 0.5).is_ok() && ncrit("n", f64::INFINITY).is_err());
-        let names = ["n", "top", "bot"];
-        assert_eq!(ncrit_sides(names, 9.0, None, Some(3.0)), Ok((9.0, 3.0)));
-        assert_eq!(ncrit_sides(names, 9.0, Some(3.0), None), Ok((3.0, 9.0)));
+        let setting = |ncrit: f64, top: Option<f64>, bot: Option<f64>, xtr: f64| {
+            transition(&TransitionArgs {
+                ncrit: ("n", ncrit),
+                ncrit_top: ("top", top),
+                ncrit_bot: ("bot", bot),
+                xtr_top: ("x", xtr),
+                xtr_bot: ("x", xtr),
+            })
+        };
+        assert!(setting(9.0, None, None, 0.0).is_ok() && setting(9.0, None, None, 1.0).is_ok());
+        for bad in [-1e-9, 1.0 + 1e-9, f64::NAN, f64::INFINITY] {
+            assert_eq!(setting(9.0, None, None, bad).unwrap_err().name, "x");
+        }
+        assert!(setting(0.5, None, None, 1.0).is_ok());
         assert_eq!(
-            ncrit_sides(names, 9.0, None, Some(0.0)).unwrap_err().name,
-            "bot"
+            setting(f64::INFINITY, None, None, 1.0).unwrap_err().name,
+            "n"
+        );
+        assert_eq!(
+            setting(9.0, None, Some(3.0), 1.0),
+            Ok(Transition::sides(9.0, 3.0, 1.0, 1.0))
+        );
+        assert_eq!(
+            setting(9.0, Some(3.0), None, 0.07),
+            Ok(Transition::sides(3.0, 9.0, 0.07, 0.07))
+        );
+        assert_eq!(setting(9.0, None, Some(0.0), 1.0).unwrap_err().name, "bot");
+        // The common value is checked even where both surfaces override it.
+        assert_eq!(
+            setting(0.0, Some(3.0), Some(3.0), 1.0).unwrap_err().name,
+            "n"
         );
         assert_eq!(number_list("l", "1, 2e6").unwrap(), [1.0, 2e6]);
         assert_eq!(

@@ -27,6 +27,10 @@ pub const MAX_COORDINATE: f64 = 1e9;
 /// the contour.
 pub const MIN_CONTOUR_EXTENT: f64 = 1e-9;
 
+/// Largest Reynolds number of a polar or a table: 10¹⁰, beyond ships' hulls; far above it the
+/// text formats' fixed fields no longer hold the value.
+pub const MAX_RE: f64 = 1e10;
+
 /// Panel nodes accepted by `--panels` (XFOIL's default is 160; above 1000 the dense influence
 /// matrix alone takes seconds per polar with no gain in accuracy).
 pub const PANEL_NODES: (usize, usize) = (20, 1000);

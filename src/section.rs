@@ -4,6 +4,8 @@
 //! * [`PolarPoint`] — one solved operating point (α, Cl, Cd, Cm, transition, convergence,
 //!   minimum pressure and the supercritical flag).
 //! * [`FlowCondition`] — the (Re, M) pair a polar or a table node is computed at.
+//! * [`Transition`] — the transition setting a polar is computed with (N_crit and trip x/c per
+//!   surface), with the one rule for its values ([`Transition::check`]).
 //! * [`SectionAero`] and [`Lookup`] — section coefficients at any (α, Re, M) with the flags a
 //!   consumer needs to judge them (clamped, post-stall, bridged, supercritical).
 //!
@@ -11,6 +13,7 @@
 //!
 //! A leaf module: it imports nothing from the solver layers, so every layer may use it.
 
+use crate::limits::short_number;
 use serde::{Deserialize, Serialize};
 
 /// The flow condition of a polar: chord Reynolds number and free-stream Mach number.
@@ -27,6 +30,199 @@ impl FlowCondition {
     pub fn new(reynolds: f64, mach: f64) -> Self {
         Self { reynolds, mach }
     }
+}
+
+/// The N_crit of the e^n method for a low-turbulence free stream: XFOIL's default (Drela,
+/// *XFOIL 6.9 User Primer*, VPAR `N`).
+pub const DEFAULT_NCRIT: f64 = 9.0;
+
+/// The trip location x/c that means free transition (XFOIL VPAR `XTR` 1, its default).
+pub const FREE_XTR: f64 = 1.0;
+
+/// Where the boundary layer of a section turns turbulent (XFOIL VPAR): the critical
+/// amplification ratio N_crit of the e^n method and the forced-transition (trip) location of
+/// each surface. The setting a solver runs with, a table records and a study looks its tables
+/// up by; [`check`](Self::check) is the one rule for its values, wherever they come from.
+///
+/// A trip location is x/c along the chord line from the leading edge (the point of the
+/// contour farthest from the trailing edge), on that surface: 0 trips at the leading edge,
+/// 1 leaves transition free. Where the stagnation point lies downstream of the trip on a
+/// surface, the flow on that surface never passes the trip and transition there is free
+/// (XFOIL XIFSET).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Transition {
+    /// N_crit on the upper surface (XFOIL ACRIT(1), VPAR `NT`).
+    pub ncrit_top: f64,
+    /// N_crit on the lower surface; the wake, which XFOIL marches as part of the lower side,
+    /// uses it too (XFOIL ACRIT(2), VPAR `NB`).
+    pub ncrit_bot: f64,
+    /// Trip x/c on the upper surface (XFOIL XSTRIP(1), VPAR `XT`); [`FREE_XTR`] = free.
+    pub xtr_top: f64,
+    /// Trip x/c on the lower surface (XFOIL XSTRIP(2), VPAR `XB`).
+    pub xtr_bot: f64,
+}
+
+impl Default for Transition {
+    /// Free transition on both surfaces with [`DEFAULT_NCRIT`] (XFOIL's defaults).
+    fn default() -> Self {
+        Self::free(DEFAULT_NCRIT)
+    }
+}
+
+impl Transition {
+    /// Free transition on both surfaces with N_crit `ncrit`.
+    pub const fn free(ncrit: f64) -> Self {
+        Self {
+            ncrit_top: ncrit,
+            ncrit_bot: ncrit,
+            xtr_top: FREE_XTR,
+            xtr_bot: FREE_XTR,
+        }
+    }
+
+    /// Transition forced at `xtr` on both surfaces, N_crit [`DEFAULT_NCRIT`] ahead of the trip.
+    pub const fn tripped(xtr: f64) -> Self {
+        Self::sides(DEFAULT_NCRIT, DEFAULT_NCRIT, xtr, xtr)
+    }
+
+    /// The setting of each surface: N_crit and trip x/c of the upper, then the lower surface.
+    pub const fn sides(ncrit_top: f64, ncrit_bot: f64, xtr_top: f64, xtr_bot: f64) -> Self {
+        Self {
+            ncrit_top,
+            ncrit_bot,
+            xtr_top,
+            xtr_bot,
+        }
+    }
+
+    /// Checks every value against its rule ([`TransitionField::rule`]); the first that breaks
+    /// it is the error.
+    pub fn check(&self) -> Result<(), TransitionError> {
+        for (field, value) in [
+            (TransitionField::NcritTop, self.ncrit_top),
+            (TransitionField::NcritBot, self.ncrit_bot),
+            (TransitionField::XtrTop, self.xtr_top),
+            (TransitionField::XtrBot, self.xtr_bot),
+        ] {
+            if !field.accepts(value) {
+                return Err(TransitionError { field, value });
+            }
+        }
+        Ok(())
+    }
+
+    /// Free transition on both surfaces (both trips at [`FREE_XTR`] or beyond).
+    pub fn is_free(&self) -> bool {
+        self.xtr_top >= FREE_XTR && self.xtr_bot >= FREE_XTR
+    }
+
+    /// The N_crit of both surfaces when they are equal (bit for bit), as the table files write
+    /// it: one `ncrit` value, else one per side.
+    pub fn common_ncrit(&self) -> Option<f64> {
+        (self.ncrit_top.to_bits() == self.ncrit_bot.to_bits()).then_some(self.ncrit_top)
+    }
+
+    /// N_crit for a comment line: `9`, or `9 (top) 3 (bottom)` when the surfaces differ.
+    pub fn ncrit_text(&self) -> String {
+        match self.common_ncrit() {
+            Some(n) => n.to_string(),
+            None => format!("{} (top) {} (bottom)", self.ncrit_top, self.ncrit_bot),
+        }
+    }
+
+    /// The trips in a few words: `free`, `xtr 0.07`, or `xtr 0.05/0.1` (upper/lower).
+    pub fn trip_label(&self) -> String {
+        if self.is_free() {
+            "free".to_string()
+        } else if self.xtr_top == self.xtr_bot {
+            format!("xtr {}", self.xtr_top)
+        } else {
+            format!("xtr {}/{}", self.xtr_top, self.xtr_bot)
+        }
+    }
+
+    /// The setting in a few words: `free Ncrit 9` (N_crit per side when they differ), or the
+    /// [`trip_label`](Self::trip_label) of a tripped setting.
+    pub fn label(&self) -> String {
+        if self.is_free() {
+            match self.common_ncrit() {
+                Some(n) => format!("free Ncrit {n}"),
+                None => format!("free Ncrit {}/{}", self.ncrit_top, self.ncrit_bot),
+            }
+        } else {
+            self.trip_label()
+        }
+    }
+}
+
+/// One value of a [`Transition`] setting.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TransitionField {
+    /// [`Transition::ncrit_top`].
+    NcritTop,
+    /// [`Transition::ncrit_bot`].
+    NcritBot,
+    /// [`Transition::xtr_top`].
+    XtrTop,
+    /// [`Transition::xtr_bot`].
+    XtrBot,
+}
+
+impl TransitionField {
+    /// The field's name in the library (`ncrit_top`, `xtr_bot`, …); callers name it as their
+    /// users know it (`--xtr`, `xtr_top_set`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::NcritTop => "ncrit_top",
+            Self::NcritBot => "ncrit_bot",
+            Self::XtrTop => "xtr_top",
+            Self::XtrBot => "xtr_bot",
+        }
+    }
+
+    /// Whether the field is an N_crit (else a trip location).
+    pub fn is_ncrit(self) -> bool {
+        matches!(self, Self::NcritTop | Self::NcritBot)
+    }
+
+    /// What a value of the field must be, as a sentence: N_crit a positive number, a trip
+    /// location a chord fraction in [0, 1].
+    pub fn rule(self) -> &'static str {
+        if self.is_ncrit() {
+            "N_crit must be a positive number"
+        } else {
+            "the transition location must be in [0, 1] (0 = leading edge, 1 = free)"
+        }
+    }
+
+    /// The [`rule`](Self::rule) as the words after "must be": `a positive number`,
+    /// `in [0, 1] (…)`.
+    pub fn range(self) -> &'static str {
+        if self.is_ncrit() {
+            "a positive number"
+        } else {
+            "in [0, 1] (0 = leading edge, 1 = free)"
+        }
+    }
+
+    /// Whether `value` obeys the [`rule`](Self::rule).
+    pub fn accepts(self, value: f64) -> bool {
+        if self.is_ncrit() {
+            value.is_finite() && value > 0.0
+        } else {
+            (0.0..=FREE_XTR).contains(&value)
+        }
+    }
+}
+
+/// A [`Transition`] value that breaks its rule: `<field> <value>: <rule>`.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+#[error("{} {}: {}", field.name(), short_number(*value), field.rule())]
+pub struct TransitionError {
+    /// The field.
+    pub field: TransitionField,
+    /// Its value.
+    pub value: f64,
 }
 
 /// One operating point of a polar: the result of the solver at one (Re, M, α).

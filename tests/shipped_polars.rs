@@ -37,8 +37,8 @@ fn default_grid_shape_and_convergence() {
         let frac = t.converged_count() as f64 / t.point_count() as f64;
         assert!(frac > 0.95, "{name}: {frac}");
         let xtr = if name.contains("xtr") { 0.07 } else { 1.0 };
-        assert_eq!(t.meta().xtr_top_set, xtr);
-        assert_eq!(t.meta().common_ncrit(), Some(9.0));
+        assert_eq!(t.meta().transition.xtr_top, xtr);
+        assert_eq!(t.meta().transition.common_ncrit(), Some(9.0));
     }
 }
 

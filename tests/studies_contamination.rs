@@ -5,10 +5,11 @@
 use polargen::geometry::DEFAULT_PANEL_NODES;
 use polargen::rotor::study::paper_runs;
 use polargen::rotor::Aircraft;
+use polargen::section::Transition;
 use polargen::studies::contamination::{
     run_contamination, transitions, ContaminationOptions, Group, Setting,
 };
-use polargen::studies::{load_study_airfoil, sections, Sections, TableCache, Transition};
+use polargen::studies::{load_study_airfoil, sections, Sections, TableCache, CLEAN};
 use polargen::table::{read_lookup_table, GridSpec, PolarTable};
 use std::path::Path;
 
@@ -42,13 +43,13 @@ fn paper_setting_reproduces_compare_coverage_reaches_both_ends_and_keys_hold() {
         outer: 1.0,
     };
     let settings = [
-        whole(Group::Clean, Transition::CLEAN),
+        whole(Group::Clean, CLEAN),
         whole(Group::Trip, trip),
         outboard(1.0), // nothing tripped
         outboard(0.0), // the whole blade tripped
     ];
     let sections = Sections {
-        entries: vec![(Transition::CLEAN, &clean), (trip, &dirty)],
+        entries: vec![(CLEAN, &clean), (trip, &dirty)],
     };
     let records = run_contamination(&ac, &settings, &sections, &|| {}).unwrap();
     let compare = paper_runs(&ac, &clean, &dirty).unwrap();
@@ -181,16 +182,23 @@ fn penalty_falls_as_the_trip_moves_aft_and_the_cache_is_reused() {
 fn settings_out_of_range_are_refused() {
     let bad = |o: ContaminationOptions| o.settings().unwrap_err().to_string();
     let base = ContaminationOptions::default();
+    // The rule of every transition setting: a trip at 0 (the leading edge) is one.
     assert!(bad(ContaminationOptions {
-        trips: vec![0.0],
+        trips: vec![-0.1],
         ..base.clone()
     })
-    .contains("(0, 1]"));
+    .contains("xtr_top -0.1: the transition location must be in [0, 1]"));
     assert!(bad(ContaminationOptions {
         trips: vec![1.2],
         ..base.clone()
     })
-    .contains("(0, 1]"));
+    .contains("[0, 1]"));
+    assert!(ContaminationOptions {
+        trips: vec![0.0],
+        ..base.clone()
+    }
+    .settings()
+    .is_ok());
     assert!(bad(ContaminationOptions {
         outboard: vec![-0.1],
         ..base.clone()
@@ -228,8 +236,8 @@ fn bad_study_input_is_one_line_before_any_work() {
             .unwrap()
     };
     for (extra, says) in [
-        (&["--trips", "0,0.1"][..], "(0, 1]"),
-        (&["--trips", "0.1,1.5"][..], "(0, 1]"),
+        (&["--trips=-0.1,0.1"][..], "[0, 1]"),
+        (&["--trips", "0.1,1.5"][..], "[0, 1]"),
         (&["--outboard", "1.2"][..], "[0, 1]"),
         (&["--ncrits", ""][..], "--ncrits"),
         (&["--airfoil", "nosuchfoil"][..], "nosuchfoil"),

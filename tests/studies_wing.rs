@@ -5,7 +5,7 @@
 use polargen::rotor::{trim_aircraft, Aircraft, TrimParams};
 use polargen::studies::records_json;
 use polargen::studies::wing::{run_wing, WingOptions, WingStudy, CSV_COLUMNS};
-use polargen::studies::Transition;
+use polargen::studies::CLEAN;
 use polargen::table::read_lookup_table;
 use std::path::Path;
 
@@ -70,7 +70,7 @@ fn wing_records_are_the_trims_of_the_scaled_aircraft() {
     }
     let study = WingStudy {
         airfoil: "NACA 8-H-12".into(),
-        rotor: Transition::CLEAN,
+        rotor: CLEAN,
         records,
     };
     let files = study.files().unwrap();
@@ -98,7 +98,7 @@ fn bad_settings_are_one_line_errors() {
         (vec![-1.0], vec![60.0], None, "--areas -1"),
         (vec![f64::NAN], vec![60.0], None, "--areas NaN"),
         (vec![1.0], vec![0.0], None, "--speeds 0"),
-        (vec![1.0], vec![60.0], Some(0.0), "xtr"),
+        (vec![1.0], vec![60.0], Some(1.5), "xtr_top 1.5"),
         (vec![1.0; 20], vec![60.0; 20], None, "at most"),
     ] {
         let o = WingOptions {

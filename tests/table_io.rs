@@ -42,8 +42,8 @@ fn awkward_table() -> PolarTable {
         }
     }
     let mut m = meta("NACA 8-H-12, \"reflexed\"");
-    m.xtr_top_set = 0.07;
-    m.xtr_bot_set = 0.07;
+    m.transition.xtr_top = 0.07;
+    m.transition.xtr_bot = 0.07;
     PolarTable::from_polars(m, list).unwrap()
 }
 
@@ -450,8 +450,8 @@ fn failed_table_writes_leave_nothing_behind() {
 fn xfoil_polar_reads_back_to_field_precision() {
     let pts = xfoil_reference("naca8h12_Re1.9e6_M0.41_xtr0.07.csv");
     let mut m = meta("NACA 8-H-12");
-    m.xtr_top_set = 0.07;
-    m.xtr_bot_set = 0.07;
+    m.transition.xtr_top = 0.07;
+    m.transition.xtr_bot = 0.07;
     let t = PolarTable::new(m, vec![1.9e6], vec![0.41], vec![pts.clone()]).unwrap();
     let dir = scratch("polread");
     let path = dir.join("p.pol");
@@ -460,7 +460,10 @@ fn xfoil_polar_reads_back_to_field_precision() {
     assert_eq!(back.meta().airfoil, "NACA 8-H-12");
     assert_eq!(back.meta().solver, "polargen 0.1.0");
     assert_eq!(
-        (back.meta().common_ncrit(), back.meta().xtr_top_set),
+        (
+            back.meta().transition.common_ncrit(),
+            back.meta().transition.xtr_top
+        ),
         (Some(9.0), 0.07)
     );
     assert_eq!((back.re(), back.mach()), (&[1.9e6][..], &[0.41][..]));
@@ -492,7 +495,10 @@ fn xfoil_polar_reader_handles_extra_columns_and_repeats() {
     let t = parse_table(text.as_bytes(), TableFormat::XfoilPolar).unwrap();
     assert_eq!(t.meta().solver, "XFOIL Version 6.99");
     assert_eq!(
-        (t.meta().common_ncrit(), t.meta().xtr_bot_set),
+        (
+            t.meta().transition.common_ncrit(),
+            t.meta().transition.xtr_bot
+        ),
         (Some(5.0), 0.07)
     );
     assert_eq!((t.re()[0], t.mach()[0]), (3e6, 0.2));
@@ -585,7 +591,7 @@ fn own_xfoil_polars_carry_a_version_and_cd_minus_cdf() {
 #[test]
 fn unequal_ncrit_round_trips() {
     let mut m = meta("foil");
-    (m.ncrit_top, m.ncrit_bot) = (9.0, 3.5);
+    (m.transition.ncrit_top, m.transition.ncrit_bot) = (9.0, 3.5);
     let polar = analytic_polar(1e6, 0.0, &alpha_range(-4.0, 8.0, 1.0));
     let t = PolarTable::from_polars(m, vec![(FlowCondition::new(1e6, 0.0), polar)]).unwrap();
     let dir = scratch("ncrit_sides");
@@ -600,7 +606,11 @@ fn unequal_ncrit_round_trips() {
         let back = read_table(&files[0]).unwrap();
         let m = back.meta();
         assert_eq!(
-            (m.ncrit_top, m.ncrit_bot, m.common_ncrit()),
+            (
+                m.transition.ncrit_top,
+                m.transition.ncrit_bot,
+                m.transition.common_ncrit()
+            ),
             (9.0, 3.5, None)
         );
     }

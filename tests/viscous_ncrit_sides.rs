@@ -4,6 +4,7 @@
 //! tests/data/viscous/README.md). Each sweep runs as XFOIL's: α = 0…6° upward, warm-started.
 
 use polargen::geometry::{read_airfoil_file, Airfoil};
+use polargen::section::Transition;
 use polargen::viscous::{ViscousParams, ViscousSolver};
 use std::path::Path;
 
@@ -37,8 +38,7 @@ fn reference(file: &str) -> Vec<[f64; 7]> {
 fn compare(foil: &str, ncrit_top: f64, ncrit_bot: f64) -> [f64; 4] {
     let file = format!("{foil}_Re1e6_M0_nt{ncrit_top}_nb{ncrit_bot}.csv");
     let params = ViscousParams {
-        ncrit_top,
-        ncrit_bot,
+        transition: Transition::sides(ncrit_top, ncrit_bot, 1.0, 1.0),
         ..ViscousParams::at(1e6, 0.0, 1.0)
     };
     let mut solver = ViscousSolver::new(&paneled(foil), params).unwrap();
@@ -100,8 +100,7 @@ fn naca8h12_top3_bot9() {
 fn naca0012_swapped_sides_mirror_at_zero_alpha() {
     let solve = |top: f64, bot: f64| {
         let params = ViscousParams {
-            ncrit_top: top,
-            ncrit_bot: bot,
+            transition: Transition::sides(top, bot, 1.0, 1.0),
             ..ViscousParams::at(1e6, 0.0, 1.0)
         };
         ViscousSolver::new(&paneled("naca0012"), params)

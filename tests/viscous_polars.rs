@@ -4,6 +4,7 @@
 //! Compared over −4° ≤ α ≤ 8° where XFOIL converged.
 
 use polargen::geometry::Airfoil;
+use polargen::section::Transition;
 use polargen::viscous::{ViscousParams, ViscousSolver};
 
 const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/viscous/");
@@ -64,8 +65,7 @@ fn run_case_trip(foil: &str, file: &str, re: f64, mach: f64, xtr_top: f64, xtr_b
     let params = ViscousParams {
         reynolds: re,
         mach,
-        xtr_top,
-        xtr_bot,
+        transition: Transition::sides(9.0, 9.0, xtr_top, xtr_bot),
         ..ViscousParams::default()
     };
     let mut solver = ViscousSolver::new(&airfoil, params).unwrap();

@@ -2,6 +2,7 @@
 //! unconverged points, never panics.
 
 use polargen::geometry::Airfoil;
+use polargen::section::Transition;
 use polargen::viscous::{ViscousError, ViscousParams, ViscousSolver};
 
 #[test]
@@ -46,11 +47,15 @@ fn invalid_inputs_are_errors_not_panics() {
             ..ViscousParams::default()
         },
         ViscousParams {
-            ncrit_top: f64::NAN,
+            transition: Transition::sides(f64::NAN, 9.0, 1.0, 1.0),
             ..ViscousParams::default()
         },
         ViscousParams {
-            ncrit_bot: 0.0,
+            transition: Transition::sides(9.0, 0.0, 1.0, 1.0),
+            ..ViscousParams::default()
+        },
+        ViscousParams {
+            transition: Transition::tripped(1.5),
             ..ViscousParams::default()
         },
     ] {

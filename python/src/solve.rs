@@ -7,11 +7,11 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 use numpy::{IntoPyArray, PyArray1};
-use polargen::arguments;
+use polargen::arguments::{self, TransitionArgs};
 use polargen::polar::{
     check_alphas, parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams,
 };
-use polargen::section::PolarPoint;
+use polargen::section::{PolarPoint, Transition};
 use polargen::table::{build_table_cancellable, BuildError, GridSpec, PolarTable};
 use polargen::viscous::distributions::pressure_coefficient;
 use polargen::viscous::{BlStation, ViscousParams, ViscousSolver};
@@ -24,10 +24,7 @@ use crate::table::Table;
 
 /// The solver settings shared by `polar`, `point` and `table`, checked.
 struct Settings {
-    xtr_top: f64,
-    xtr_bot: f64,
-    /// N_crit of the upper and the lower surface.
-    ncrit: (f64, f64),
+    transition: Transition,
     tolerance: f64,
 }
 
@@ -37,23 +34,24 @@ type NcritArgs = (f64, Option<f64>, Option<f64>);
 impl Settings {
     /// Checks each setting as the CLI checks its flag.
     fn checked(xtr_top: f64, xtr_bot: f64, ncrit: NcritArgs, tolerance: f64) -> PyResult<Self> {
-        let input = |r: Result<(), arguments::ArgumentError>| r.map_err(|e| raise(None, e));
-        // One value for both surfaces is the argument `xtr` (the CLI's `--xtr`).
-        let names = if xtr_top == xtr_bot {
+        // One value for both surfaces (bit for bit: NaN too) is the argument `xtr` (the CLI's
+        // `--xtr`).
+        let names = if xtr_top.to_bits() == xtr_bot.to_bits() {
             ["xtr", "xtr"]
         } else {
             ["xtr_top", "xtr_bot"]
         };
-        input(arguments::transition(names[0], xtr_top))?;
-        input(arguments::transition(names[1], xtr_bot))?;
-        let names = ["ncrit", "ncrit_top", "ncrit_bot"];
-        let ncrit =
-            arguments::ncrit_sides(names, ncrit.0, ncrit.1, ncrit.2).map_err(|e| raise(None, e))?;
-        input(arguments::tolerance("tolerance", tolerance))?;
+        let transition = arguments::transition(&TransitionArgs {
+            ncrit: ("ncrit", ncrit.0),
+            ncrit_top: ("ncrit_top", ncrit.1),
+            ncrit_bot: ("ncrit_bot", ncrit.2),
+            xtr_top: (names[0], xtr_top),
+            xtr_bot: (names[1], xtr_bot),
+        })
+        .map_err(|e| raise(None, e))?;
+        arguments::tolerance("tolerance", tolerance).map_err(|e| raise(None, e))?;
         Ok(Self {
-            xtr_top,
-            xtr_bot,
-            ncrit,
+            transition,
             tolerance,
         })
     }
@@ -63,11 +61,8 @@ impl Settings {
         ViscousParams {
             reynolds,
             mach,
-            ncrit_top: self.ncrit.0,
-            ncrit_bot: self.ncrit.1,
+            transition: self.transition,
             tolerance: self.tolerance,
-            xtr_top: self.xtr_top,
-            xtr_bot: self.xtr_bot,
             ..ViscousParams::default()
         }
     }

@@ -103,11 +103,12 @@ impl Table {
         let m = self.inner.meta();
         let d = PyDict::new(py);
         d.set_item("airfoil", &m.airfoil)?;
-        d.set_item("ncrit", m.common_ncrit())?;
-        d.set_item("ncrit_top", m.ncrit_top)?;
-        d.set_item("ncrit_bot", m.ncrit_bot)?;
-        d.set_item("xtr_top_set", m.xtr_top_set)?;
-        d.set_item("xtr_bot_set", m.xtr_bot_set)?;
+        let t = &m.transition;
+        d.set_item("ncrit", t.common_ncrit())?;
+        d.set_item("ncrit_top", t.ncrit_top)?;
+        d.set_item("ncrit_bot", t.ncrit_bot)?;
+        d.set_item("xtr_top_set", t.xtr_top)?;
+        d.set_item("xtr_bot_set", t.xtr_bot)?;
         d.set_item("panels", m.panels)?;
         d.set_item("solver", &m.solver)?;
         Ok(d)

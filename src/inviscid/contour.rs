@@ -94,6 +94,8 @@ pub struct PanelGeometry {
     pub chord: f64,
     /// Trailing-edge data.
     pub te: TrailingEdge,
+    /// The contour spline x(s), y(s) through the nodes (XFOIL SEGSPL).
+    pub spline: ContourSpline,
 }
 
 impl PanelGeometry {
@@ -206,6 +208,7 @@ impl PanelGeometry {
                 closed,
                 wake_gap_slope,
             },
+            spline,
         })
     }
 

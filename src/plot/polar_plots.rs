@@ -140,18 +140,6 @@ fn usable_points(points: &[PolarPoint]) -> Vec<PolarPoint> {
     pts
 }
 
-/// Legend text of a transition setting (x/c on the upper and lower surface, 1 = free):
-/// `free`, `xtr 0.07`, or `xtr 0.05/0.1` (upper/lower).
-pub fn transition_label(xtr_top: f64, xtr_bot: f64) -> String {
-    if xtr_top >= 1.0 && xtr_bot >= 1.0 {
-        "free".to_string()
-    } else if xtr_top == xtr_bot {
-        format!("xtr {xtr_top}")
-    } else {
-        format!("xtr {xtr_top}/{xtr_bot}")
-    }
-}
-
 /// Compact number for titles: 1.9e6 → `1.9e6` (mantissa to three decimals), below 10⁴ as is.
 pub fn compact_number(v: f64) -> String {
     if v >= 1e4 {

@@ -6,9 +6,7 @@ use std::path::{Path, PathBuf};
 
 use super::drag_axis::CdAxis;
 use super::figure::{Figure, Style};
-use super::polar_plots::{
-    compact_number, overlay_title, polar_figure_styled, transition_label, PolarCurve,
-};
+use super::polar_plots::{compact_number, overlay_title, polar_figure_styled, PolarCurve};
 use crate::limits::short_number;
 use crate::section::{FlowCondition, PolarPoint};
 use crate::table::{read_table, TableError};
@@ -119,7 +117,7 @@ pub fn table_overlay_figure(overlay: &TableOverlay) -> Result<Figure, OverlayErr
         names.push(match labels.get(i) {
             Some(label) => label.clone(),
             None => {
-                let trip = transition_label(meta.xtr_top_set, meta.xtr_bot_set);
+                let trip = meta.transition.trip_label();
                 format!("{} {trip}", meta.airfoil)
             }
         });

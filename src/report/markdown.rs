@@ -81,7 +81,7 @@ pub(super) fn markdown(
         ac.name,
         ac.mass_kg,
         rotor_foil.row.name,
-        rotor_foil.tables[0].meta().ncrit_text(),
+        rotor_foil.tables[0].meta().transition.ncrit_text(),
         rotor_foil.paths[0].display(),
         rotor_foil.paths[1].display(),
     );

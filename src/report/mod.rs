@@ -285,12 +285,13 @@ fn check_table_case(
     xtr: f64,
 ) -> Result<(), ReportError> {
     let meta = table.meta();
-    if airfoil_key(&meta.airfoil) != stem || meta.xtr_top_set != xtr || meta.xtr_bot_set != xtr {
+    let t = &meta.transition;
+    if airfoil_key(&meta.airfoil) != stem || t.xtr_top != xtr || t.xtr_bot != xtr {
         return Err(ReportError::MisnamedTable {
             path: path.to_path_buf(),
             airfoil: meta.airfoil.clone(),
-            xtr_top: meta.xtr_top_set,
-            xtr_bot: meta.xtr_bot_set,
+            xtr_top: t.xtr_top,
+            xtr_bot: t.xtr_bot,
             stem,
             xtr,
         });

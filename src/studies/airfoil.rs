@@ -5,12 +5,12 @@
 use super::files::records_csv;
 use super::{
     cell, load_study_airfoil, Penalty, Performance, Progress, StudiesError, StudyFiles, TableCache,
-    Transition, PAPER_TRIP_XTR,
+    CLEAN, PAPER_TRIP_XTR,
 };
 use crate::plot::{Figure, Panel, Series, Style};
 use crate::rotor::study::{paper_run, PAPER_TRIM_SPEED_KT};
 use crate::rotor::Aircraft;
-use crate::section::SectionAero;
+use crate::section::{SectionAero, Transition};
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -117,7 +117,7 @@ impl AirfoilStudy {
             .iter()
             .map(|a| load_study_airfoil(a, cache.panels))
             .collect::<Result<Vec<_>, _>>()?;
-        let keys = [Transition::CLEAN, Transition::tripped(PAPER_TRIP_XTR)];
+        let keys = [CLEAN, Transition::tripped(PAPER_TRIP_XTR)];
         let missing: usize = foils.iter().map(|f| cache.missing_points(f, &keys)).sum();
         progress.start(missing, "table points");
         let tables = foils

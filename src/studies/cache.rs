@@ -10,9 +10,10 @@
 //! anything else — a corrupt or cut-short file, a stale entry — is solved again and
 //! replaced. Entries are written atomically ([`write_output`](crate::output::write_output)).
 
-use super::{StudiesError, Transition};
+use super::StudiesError;
 use crate::geometry::{airfoil_by_name_or_path, Airfoil};
 use crate::polar::SweepParams;
+use crate::section::Transition;
 use crate::table::{build_table, parse_table, write_table, GridSpec, PolarTable, TableFormat};
 use crate::viscous::ViscousParams;
 use std::path::{Path, PathBuf};
@@ -92,10 +93,7 @@ impl TableCache {
     /// The solver parameters of a table with `transition`.
     fn params(transition: &Transition) -> ViscousParams {
         ViscousParams {
-            ncrit_top: transition.ncrit,
-            ncrit_bot: transition.ncrit,
-            xtr_top: transition.xtr_top,
-            xtr_bot: transition.xtr_bot,
+            transition: *transition,
             ..ViscousParams::default()
         }
     }
@@ -134,9 +132,7 @@ impl TableCache {
         let table = parse_table(&bytes, TableFormat::Json).ok()?;
         let m = table.meta();
         let matches = m.airfoil == foil.name
-            && m.common_ncrit() == Some(transition.ncrit)
-            && m.xtr_top_set == transition.xtr_top
-            && m.xtr_bot_set == transition.xtr_bot
+            && m.transition == *transition
             && m.panels == self.panels
             && table.re() == self.grid.reynolds.as_slice()
             && table.mach() == self.grid.mach.as_slice()

@@ -11,12 +11,12 @@
 use super::files::{band_markers, records_csv};
 use super::{
     cell, load_study_airfoil, sections, study_tables, Penalty, Performance, Progress, Sections,
-    StudiesError, StudyFiles, TableCache, Transition, PAPER_TRIP_XTR,
+    StudiesError, StudyFiles, TableCache, CLEAN, PAPER_TRIP_XTR,
 };
 use crate::plot::{Figure, Marker, Panel, Series, Style};
 use crate::rotor::study::{paper_run, PAPER_TRIM_SPEED_KT};
 use crate::rotor::{Aircraft, SpanwiseSection};
-use crate::section::SectionAero;
+use crate::section::{SectionAero, Transition};
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -98,19 +98,19 @@ impl Default for ContaminationOptions {
 }
 
 impl ContaminationOptions {
-    /// The settings, clean first, each checked (trip in (0, 1], N_crit in (0, 20], radii in
-    /// [0, 1]).
+    /// The settings, clean first, each checked (the transition setting by its rule,
+    /// [`Transition::check`]; radii in [0, 1]).
     pub fn settings(&self) -> Result<Vec<Setting>, StudiesError> {
         let whole = |group, transition: Transition| -> Result<Setting, StudiesError> {
             Ok(Setting {
                 group,
-                transition: transition.checked()?,
+                transition: super::checked_transition(transition)?,
                 inner: 0.0,
                 outer: 1.0,
             })
         };
         let paper = Transition::tripped(PAPER_TRIP_XTR);
-        let mut out = vec![whole(Group::Clean, Transition::CLEAN)?];
+        let mut out = vec![whole(Group::Clean, CLEAN)?];
         for &n in &self.ncrits {
             out.push(whole(Group::Ncrit, Transition::free(n))?);
         }
@@ -201,9 +201,7 @@ pub const CSV_COLUMNS: [&str; 19] = [
 
 /// The transition settings whose tables `settings` need (the clean one first).
 pub fn transitions(settings: &[Setting]) -> Vec<Transition> {
-    super::cache::unique(
-        std::iter::once(Transition::CLEAN).chain(settings.iter().map(|s| s.transition)),
-    )
+    super::cache::unique(std::iter::once(CLEAN).chain(settings.iter().map(|s| s.transition)))
 }
 
 /// Trim at the paper's speed and takeoff for every setting (in parallel), each against the
@@ -215,7 +213,7 @@ pub fn run_contamination<S: SectionAero + Sync + ?Sized>(
     sections: &Sections<S>,
     on_done: &(dyn Fn() + Sync),
 ) -> Result<Vec<ContaminationRecord>, StudiesError> {
-    let clean = sections.get(&Transition::CLEAN)?;
+    let clean = sections.get(&CLEAN)?;
     let runs: Vec<Performance> = settings
         .par_iter()
         .map(|s| {
@@ -241,7 +239,7 @@ pub fn run_contamination<S: SectionAero + Sync + ?Sized>(
             group: s.group,
             xtr_top: s.transition.xtr_top,
             xtr_bot: s.transition.xtr_bot,
-            ncrit: s.transition.ncrit,
+            ncrit: s.transition.ncrit_top,
             coverage_inner_r_over_r: s.inner,
             coverage_outer_r_over_r: s.outer,
             penalty: Penalty::between(&reference, &performance),

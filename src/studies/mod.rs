@@ -33,6 +33,7 @@ use crate::output::OutputError;
 use crate::plot::PlotError;
 use crate::rotor::study::StudyError;
 use crate::rotor::{TakeoffResult, TrimResult};
+use crate::section::{Transition, DEFAULT_NCRIT};
 use crate::table::{BuildError, TableError};
 use serde::Serialize;
 
@@ -41,8 +42,8 @@ use serde::Serialize;
 pub const PAPER_TRIP_XTR: f64 = 0.07;
 
 /// N_crit of the clean blade: the e^n method's standard value for a low-turbulence free stream
-/// (XFOIL default; Drela, *XFOIL 6.9 User Primer*).
-pub const CLEAN_NCRIT: f64 = 9.0;
+/// ([`DEFAULT_NCRIT`], XFOIL's default).
+pub const CLEAN_NCRIT: f64 = DEFAULT_NCRIT;
 
 /// Why a study failed.
 #[derive(Debug, thiserror::Error)]
@@ -88,67 +89,15 @@ pub enum StudiesError {
     Csv(#[source] csv::Error),
 }
 
-/// The boundary-layer transition setting a section table is built with.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Transition {
-    /// Critical amplification ratio N_crit of the e^n method.
-    pub ncrit: f64,
-    /// Forced transition x/c on the upper surface (1 = free).
-    pub xtr_top: f64,
-    /// Forced transition x/c on the lower surface (1 = free).
-    pub xtr_bot: f64,
-}
+/// The clean blade: free transition with N_crit [`CLEAN_NCRIT`].
+pub const CLEAN: Transition = Transition::free(CLEAN_NCRIT);
 
-impl Transition {
-    /// Free transition with N_crit [`CLEAN_NCRIT`]: the clean blade.
-    pub const CLEAN: Self = Self::free(CLEAN_NCRIT);
-
-    /// Free transition on both surfaces with `ncrit`.
-    pub const fn free(ncrit: f64) -> Self {
-        Self {
-            ncrit,
-            xtr_top: 1.0,
-            xtr_bot: 1.0,
-        }
-    }
-
-    /// Transition fixed at `xtr` on both surfaces (N_crit [`CLEAN_NCRIT`] ahead of the trip).
-    pub const fn tripped(xtr: f64) -> Self {
-        Self {
-            ncrit: CLEAN_NCRIT,
-            xtr_top: xtr,
-            xtr_bot: xtr,
-        }
-    }
-
-    /// Checked: N_crit positive, trip locations in (0, 1].
-    pub fn checked(self) -> Result<Self, StudiesError> {
-        for (name, x) in [("xtr_top", self.xtr_top), ("xtr_bot", self.xtr_bot)] {
-            if !(x > 0.0 && x <= 1.0) {
-                return Err(StudiesError::BadSetting(format!(
-                    "{name} {x}: a trip location must be a chord fraction in (0, 1]"
-                )));
-            }
-        }
-        if !(self.ncrit.is_finite() && self.ncrit > 0.0 && self.ncrit <= 20.0) {
-            return Err(StudiesError::BadSetting(format!(
-                "ncrit {}: must be in (0, 20]",
-                self.ncrit
-            )));
-        }
-        Ok(self)
-    }
-
-    /// Short label, e.g. `free Ncrit 9`, `xtr 0.07`, `xtr 0.07/1`.
-    pub fn label(&self) -> String {
-        if self.xtr_top >= 1.0 && self.xtr_bot >= 1.0 {
-            format!("free Ncrit {}", self.ncrit)
-        } else if self.xtr_top == self.xtr_bot {
-            format!("xtr {}", self.xtr_top)
-        } else {
-            format!("xtr {}/{}", self.xtr_top, self.xtr_bot)
-        }
-    }
+/// `transition` if its values obey their rule ([`Transition::check`]), else the setting error.
+pub fn checked_transition(transition: Transition) -> Result<Transition, StudiesError> {
+    transition
+        .check()
+        .map(|()| transition)
+        .map_err(|e| StudiesError::BadSetting(e.to_string()))
 }
 
 /// Section data by transition setting: what a study run reads.

@@ -2,8 +2,9 @@
 //! for the trims. Shown only when standard error is a terminal; silent otherwise and in tests.
 
 use super::cache::TableCache;
-use super::{Sections, StudiesError, Transition};
+use super::{Sections, StudiesError};
 use crate::geometry::Airfoil;
+use crate::section::Transition;
 use crate::table::PolarTable;
 use indicatif::{ProgressBar, ProgressStyle};
 

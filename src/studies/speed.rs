@@ -4,11 +4,11 @@
 use super::files::{band_markers, records_csv};
 use super::{
     cell, check_speeds, load_study_airfoil, sections, study_tables, Progress, StudiesError,
-    StudyFiles, TableCache, Transition,
+    StudyFiles, TableCache, CLEAN,
 };
 use crate::plot::{Figure, Panel, Series, Style};
 use crate::rotor::{speed_sweep, Aircraft, TrimParams, TrimResult};
-use crate::section::SectionAero;
+use crate::section::{SectionAero, Transition};
 use serde::Serialize;
 
 use super::contamination::FLIGHT_TEST_DELTA_ENGINE_RPM;
@@ -124,10 +124,10 @@ impl SpeedStudy {
         cache: &TableCache,
         progress: &Progress,
     ) -> Result<Self, StudiesError> {
-        let trip = Transition::tripped(xtr).checked()?;
+        let trip = super::checked_transition(Transition::tripped(xtr))?;
         check_speeds("--speeds", speeds_kt)?;
         let foil = load_study_airfoil(airfoil, cache.panels)?;
-        let keys = [Transition::CLEAN, trip];
+        let keys = [CLEAN, trip];
         let tables = study_tables(cache, &foil, &keys, progress)?;
         let s = sections(&keys, &tables);
         let (records, notes) = run_speeds(aircraft, s.get(&keys[0])?, s.get(&keys[1])?, speeds_kt);

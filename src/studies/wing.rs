@@ -7,9 +7,10 @@ use super::files::records_csv;
 use super::{
     cell, check_speeds, load_study_airfoil, sections, study_tables, Progress, StudiesError,
 };
-use super::{StudyFiles, TableCache, Transition};
+use super::{StudyFiles, TableCache, CLEAN};
 use crate::plot::{Figure, Panel, Series, Style};
 use crate::rotor::{speed_sweep, Aircraft, BladeSection, TrimError, TrimParams, TrimResult};
+use crate::section::Transition;
 use serde::Serialize;
 
 /// Most areas × speeds of one study: each case is one trim of about a second, so 200 cases
@@ -122,8 +123,9 @@ impl WingOptions {
                 "{cases} areas × speeds: at most {MAX_WING_CASES} trims per study"
             ));
         }
-        self.xtr
-            .map_or(Ok(Transition::CLEAN), |x| Transition::tripped(x).checked())
+        self.xtr.map_or(Ok(CLEAN), |x| {
+            super::checked_transition(Transition::tripped(x))
+        })
     }
 }
 

@@ -178,10 +178,7 @@ pub fn build_table_cancellable(
 pub(crate) fn table_meta(foil: &Airfoil, panels: usize, base: &ViscousParams) -> TableMeta {
     TableMeta {
         airfoil: foil.name.clone(),
-        ncrit_top: base.ncrit_top,
-        ncrit_bot: base.ncrit_bot,
-        xtr_top_set: base.xtr_top,
-        xtr_bot_set: base.xtr_bot,
+        transition: base.transition,
         panels,
         solver: format!("polargen {}", env!("CARGO_PKG_VERSION")),
     }

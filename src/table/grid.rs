@@ -4,7 +4,8 @@ use super::error::TableError;
 use super::lookup::{bracket, AlphaCurve};
 use super::meta::TableMeta;
 use super::post_stall::PostStallParams;
-use super::validation::{check_axis, check_meta, check_polar, MAX_RE};
+use super::validation::{check_axis, check_meta, check_polar};
+use crate::limits::MAX_RE;
 use crate::section::{FlowCondition, PolarPoint};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 

@@ -1,5 +1,6 @@
 //! [`TableMeta`]: how a table was made, and its serde form.
 
+use crate::section::Transition;
 use serde::{Deserialize, Serialize};
 
 /// How a table was made: the airfoil and the solver settings shared by all its polars.
@@ -8,34 +9,13 @@ use serde::{Deserialize, Serialize};
 pub struct TableMeta {
     /// Airfoil display name.
     pub airfoil: String,
-    /// e^n transition criterion N_crit on the upper surface (XFOIL ACRIT(1), VPAR `NT`).
-    pub ncrit_top: f64,
-    /// e^n transition criterion N_crit on the lower surface (XFOIL ACRIT(2), VPAR `NB`).
-    pub ncrit_bot: f64,
-    /// Forced transition x/c on the upper surface (1 = free transition).
-    pub xtr_top_set: f64,
-    /// Forced transition x/c on the lower surface (1 = free transition).
-    pub xtr_bot_set: f64,
+    /// The transition setting of every polar: N_crit and trip x/c per surface (the files'
+    /// `ncrit` or `ncrit_top`/`ncrit_bot`, and `xtr_top_set`, `xtr_bot_set`).
+    pub transition: Transition,
     /// Number of panel nodes on the airfoil.
     pub panels: usize,
     /// Solver name and version that produced the polars.
     pub solver: String,
-}
-
-impl TableMeta {
-    /// The N_crit of both surfaces when they are equal (bit for bit), as the files write it:
-    /// one `ncrit` value, else one per side.
-    pub fn common_ncrit(&self) -> Option<f64> {
-        (self.ncrit_top.to_bits() == self.ncrit_bot.to_bits()).then_some(self.ncrit_top)
-    }
-
-    /// N_crit for a comment line: `9`, or `9 (top) 3 (bottom)` when the surfaces differ.
-    pub fn ncrit_text(&self) -> String {
-        match self.common_ncrit() {
-            Some(n) => n.to_string(),
-            None => format!("{} (top) {} (bottom)", self.ncrit_top, self.ncrit_bot),
-        }
-    }
 }
 
 /// The serde form of [`TableMeta`] (the JSON table format): `ncrit` when both surfaces have the
@@ -57,15 +37,16 @@ struct MetaRecord {
 
 impl From<TableMeta> for MetaRecord {
     fn from(m: TableMeta) -> Self {
-        let common = m.common_ncrit();
+        let t = m.transition;
+        let common = t.common_ncrit();
         let per_side = |n: f64| common.is_none().then_some(n);
         Self {
             ncrit: common,
-            ncrit_top: per_side(m.ncrit_top),
-            ncrit_bot: per_side(m.ncrit_bot),
+            ncrit_top: per_side(t.ncrit_top),
+            ncrit_bot: per_side(t.ncrit_bot),
             airfoil: m.airfoil,
-            xtr_top_set: m.xtr_top_set,
-            xtr_bot_set: m.xtr_bot_set,
+            xtr_top_set: t.xtr_top,
+            xtr_bot_set: t.xtr_bot,
             panels: m.panels,
             solver: m.solver,
         }
@@ -83,10 +64,7 @@ impl TryFrom<MetaRecord> for TableMeta {
         };
         Ok(Self {
             airfoil: r.airfoil,
-            ncrit_top,
-            ncrit_bot,
-            xtr_top_set: r.xtr_top_set,
-            xtr_bot_set: r.xtr_bot_set,
+            transition: Transition::sides(ncrit_top, ncrit_bot, r.xtr_top_set, r.xtr_bot_set),
             panels: r.panels,
             solver: r.solver,
         })

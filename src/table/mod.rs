@@ -24,15 +24,12 @@
 //! * `error` — [`TableError`].
 //!
 //! ```
-//! use polargen::section::{FlowCondition, PolarPoint, SectionAero};
+//! use polargen::section::{FlowCondition, PolarPoint, SectionAero, Transition};
 //! use polargen::table::{PolarTable, TableMeta};
 //!
 //! let meta = TableMeta {
 //!     airfoil: "flat".into(),
-//!     ncrit_top: 9.0,
-//!     ncrit_bot: 9.0,
-//!     xtr_top_set: 1.0,
-//!     xtr_bot_set: 1.0,
+//!     transition: Transition::default(),
 //!     panels: 160,
 //!     solver: "example".into(),
 //! };
@@ -81,6 +78,7 @@ mod meta;
 mod post_stall;
 mod validation;
 
+pub use crate::limits::MAX_RE;
 pub use batch::{
     Batch, BatchError, BatchSettings, BatchSummary, IndexRow, Shard, TableStatus, AIRFOIL_EXTENSION,
 };
@@ -98,4 +96,4 @@ pub use io::{
 };
 pub use meta::TableMeta;
 pub use post_stall::PostStallParams;
-pub use validation::{COEFFICIENT_BOUNDS, MAX_RE};
+pub use validation::COEFFICIENT_BOUNDS;

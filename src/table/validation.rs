@@ -6,7 +6,7 @@ use super::error::TableError;
 use super::meta::TableMeta;
 use crate::inviscid::MAX_SECTION_CL;
 use crate::limits::{short_number, short_text};
-use crate::section::PolarPoint;
+use crate::section::{PolarPoint, TransitionField};
 
 /// Non-empty and strictly increasing.
 pub(super) fn check_axis(name: &'static str, axis: &[f64]) -> Result<(), TableError> {
@@ -25,10 +25,6 @@ pub(super) fn check_axis(name: &'static str, axis: &[f64]) -> Result<(), TableEr
     Ok(())
 }
 
-/// Largest Reynolds number of a table: 10¹⁰, beyond ships' hulls; far above it the text
-/// formats' fixed fields no longer hold the value.
-pub const MAX_RE: f64 = 1e10;
-
 /// Slack of a converged point's transition location beyond the chord, [0, 1]: the solver reports
 /// x/c of the transition point along the surface, and the corner points of a blunt trailing edge
 /// lie a little aft of the chord line's end (a Clark Y normalised on its chord line, 0.12 % c
@@ -41,30 +37,25 @@ pub const XTR_SLACK: f64 = 1e-3;
 /// A value beyond is not a section coefficient (`Cl 1e300` at a converged point).
 pub const COEFFICIENT_BOUNDS: [(&str, f64); 3] = [("cl", MAX_SECTION_CL), ("cd", 4.0), ("cm", 4.0)];
 
-/// Check the metadata: a finite, positive N_crit, transition settings in [0, 1], names
-/// without control characters (they head text files).
+/// Check the metadata: the transition setting by its rule ([`Transition::check`]: N_crit
+/// positive, trips in [0, 1]), names without control characters (they head text files).
+///
+/// [`Transition::check`]: crate::section::Transition::check
 pub(super) fn check_meta(meta: &TableMeta) -> Result<(), TableError> {
-    let bad = |field, value: f64, rule| TableError::BadMeta {
-        field,
-        value: short_number(value),
-        rule,
-    };
-    let ncrit = match meta.common_ncrit() {
-        Some(n) => vec![("ncrit", n)],
-        None => vec![("ncrit_top", meta.ncrit_top), ("ncrit_bot", meta.ncrit_bot)],
-    };
-    for (field, n) in ncrit {
-        if !(n.is_finite() && n > 0.0) {
-            return Err(bad(field, n, "a positive number"));
-        }
-    }
-    for (field, x) in [
-        ("xtr_top_set", meta.xtr_top_set),
-        ("xtr_bot_set", meta.xtr_bot_set),
-    ] {
-        if !(0.0..=1.0).contains(&x) {
-            return Err(bad(field, x, "in [0, 1]"));
-        }
+    if let Err(e) = meta.transition.check() {
+        // The fields as the files name them: one `ncrit` when both surfaces share it.
+        let field = match (e.field, meta.transition.common_ncrit()) {
+            (TransitionField::NcritTop | TransitionField::NcritBot, Some(_)) => "ncrit",
+            (TransitionField::NcritTop, None) => "ncrit_top",
+            (TransitionField::NcritBot, None) => "ncrit_bot",
+            (TransitionField::XtrTop, _) => "xtr_top_set",
+            (TransitionField::XtrBot, _) => "xtr_bot_set",
+        };
+        return Err(TableError::BadMeta {
+            field,
+            value: short_number(e.value),
+            rule: e.field.range(),
+        });
     }
     for (field, text) in [("airfoil", &meta.airfoil), ("solver", &meta.solver)] {
         if text.chars().any(char::is_control) {

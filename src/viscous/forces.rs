@@ -5,6 +5,7 @@
 
 use crate::compressibility::KarmanTsien;
 use crate::inviscid::forces::{integrate_pressure, MOMENT_REFERENCE};
+use crate::inviscid::PanelGeometry;
 
 /// Lift and moment coefficients (about [`MOMENT_REFERENCE`]) of a closed contour with surface
 /// speeds `q` (|q| = Ue/V∞ at the airfoil nodes): the Karman–Tsien Cp integrated as the
@@ -40,24 +41,12 @@ pub(crate) fn friction_drag(x: &[f64], y: &[f64], tau: &[f64], alpha_deg: f64) -
         .sum()
 }
 
-/// x/c of a transition point at ξ_tr, interpolated linearly in ξ between the two stations that
-/// bracket it (XFOIL XOCTR); 1 (or the TE x) if there is no transition.
-pub(crate) fn transition_x(xi: &[f64], x: &[f64], xi_tr: Option<f64>) -> f64 {
-    let Some(xt) = xi_tr else {
-        return x.last().copied().unwrap_or(1.0);
-    };
-    for i in 1..xi.len().min(x.len()) {
-        if xt <= xi[i] {
-            let d = xi[i] - xi[i - 1];
-            let f = if d.abs() > 0.0 {
-                (xt - xi[i - 1]) / d
-            } else {
-                1.0
-            };
-            return x[i - 1] + f.clamp(0.0, 1.0) * (x[i] - x[i - 1]);
-        }
-    }
-    x.last().copied().unwrap_or(1.0)
+/// x/c of the transition point at ξ_tr from the stagnation point (arc length `sst`) on the
+/// upper surface (arc length sst − ξ_tr) or the lower one (sst + ξ_tr): the point's chord
+/// fraction on the contour spline (XFOIL XOCTR), the measure a trip location is given in.
+pub(crate) fn transition_x(contour: &PanelGeometry, sst: f64, upper: bool, xi_tr: f64) -> f64 {
+    let s = if upper { sst - xi_tr } else { sst + xi_tr };
+    contour.spline.chord_fraction(contour.s_le, s)
 }
 
 #[cfg(test)]
@@ -65,10 +54,28 @@ mod tests {
     use super::*;
 
     #[test]
-    fn transition_location_is_interpolated_in_xi() {
-        let xi = [0.0, 0.1, 0.3];
-        let x = [0.0, 0.08, 0.3];
-        assert!((transition_x(&xi, &x, Some(0.2)) - 0.19).abs() < 1e-12);
-        assert_eq!(transition_x(&xi, &x, None), 0.3);
+    fn transition_location_is_the_chord_fraction_of_the_point() {
+        // A contour with its chord line tilted 30°: x/c runs along the chord line.
+        let (sa, ca) = 30f64.to_radians().sin_cos();
+        let foil = crate::geometry::naca("0012", &Default::default()).unwrap();
+        let (x, y): (Vec<f64>, Vec<f64>) = foil
+            .x
+            .iter()
+            .zip(&foil.y)
+            .map(|(&x, &y)| (ca * x + sa * y, -sa * x + ca * y))
+            .unzip();
+        let contour = PanelGeometry::new(&x, &y, &Default::default()).unwrap();
+        let s_le = contour.s_le;
+        for xtr in [0.0, 0.07, 0.5, 0.999] {
+            for upper in [true, false] {
+                let s = contour
+                    .spline
+                    .arc_at_chord_fraction(s_le, xtr, upper)
+                    .unwrap();
+                let xi = if upper { s_le - s } else { s - s_le };
+                let back = transition_x(&contour, s_le, upper, xi);
+                assert!((back - xtr).abs() < 1e-12, "{xtr} {upper}: {back}");
+            }
+        }
     }
 }

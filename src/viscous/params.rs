@@ -5,6 +5,7 @@ use super::error::ViscousError;
 use super::march::MarchParams;
 use super::update::UpdateLimits;
 use crate::boundary_layer::{BlConditions, BlModel, BlParams};
+use crate::section::Transition;
 
 /// The boundary-layer models of the two sides, which differ in N_crit only: index 0 = upper
 /// surface, 1 = lower surface and wake (XFOIL sets AMCRIT = ACRIT(IS) before it marches or
@@ -18,16 +19,8 @@ pub struct ViscousParams {
     pub reynolds: f64,
     /// Free-stream Mach number (Karman–Tsien compressibility).
     pub mach: f64,
-    /// Critical amplification ratio of the e^n method on the upper surface (XFOIL ACRIT(1),
-    /// VPAR `NT`; default 9).
-    pub ncrit_top: f64,
-    /// Critical amplification ratio on the lower surface; the wake, which XFOIL marches as
-    /// part of side 2, uses it too (XFOIL ACRIT(2), VPAR `NB`; default 9).
-    pub ncrit_bot: f64,
-    /// Forced transition x/c on the upper surface (≥ 1 = free transition).
-    pub xtr_top: f64,
-    /// Forced transition x/c on the lower surface (≥ 1 = free transition).
-    pub xtr_bot: f64,
+    /// N_crit and trip location of each surface (XFOIL VPAR N, NT, NB, XTR).
+    pub transition: Transition,
     /// Newton iteration cap per attempt.
     pub max_iterations: u32,
     /// Convergence threshold on the RMS relative Newton change (XFOIL EPS1 = 1e-4; 1e-3 here).
@@ -74,10 +67,7 @@ impl Default for ViscousParams {
         Self {
             reynolds: 1.0e6,
             mach: 0.0,
-            ncrit_top: 9.0,
-            ncrit_bot: 9.0,
-            xtr_top: 1.0,
-            xtr_bot: 1.0,
+            transition: Transition::default(),
             max_iterations: 100,
             tolerance: 1e-3,
             limits: UpdateLimits::default(),
@@ -94,34 +84,35 @@ impl Default for ViscousParams {
 
 impl ViscousParams {
     /// The defaults at one flow condition: Reynolds number, Mach number, and transition forced
-    /// at x/c = `xtr` on both surfaces (1 = free transition).
+    /// at x/c = `xtr` on both surfaces (1 = free transition), N_crit 9.
     pub fn at(reynolds: f64, mach: f64, xtr: f64) -> Self {
         Self {
             reynolds,
             mach,
-            xtr_top: xtr,
-            xtr_bot: xtr,
+            transition: Transition::tripped(xtr),
             ..Self::default()
         }
     }
 
-    /// Rejects non-physical parameters.
+    /// Rejects non-physical parameters; the transition setting by its own rule
+    /// ([`Transition::check`]).
     pub(crate) fn check(&self) -> Result<(), ViscousError> {
         let params = self;
         for (name, value, ok) in [
             ("reynolds", params.reynolds, params.reynolds > 0.0),
             ("mach", params.mach, (0.0..1.0).contains(&params.mach)),
-            ("ncrit_top", params.ncrit_top, params.ncrit_top > 0.0),
-            ("ncrit_bot", params.ncrit_bot, params.ncrit_bot > 0.0),
-            ("xtr_top", params.xtr_top, params.xtr_top >= 0.0),
-            ("xtr_bot", params.xtr_bot, params.xtr_bot >= 0.0),
             ("tolerance", params.tolerance, params.tolerance > 0.0),
         ] {
             if !(value.is_finite() && ok) {
                 return Err(ViscousError::BadParameter { name, value });
             }
         }
-        Ok(())
+        self.transition
+            .check()
+            .map_err(|e| ViscousError::BadParameter {
+                name: e.field.name(),
+                value: e.value,
+            })
     }
 
     /// The boundary-layer models of the flow condition, with XFOIL's closure constants, one per
@@ -135,6 +126,9 @@ impl ViscousParams {
             };
             BlModel::new(&conditions, BlParams::default()).map_err(ViscousError::FlowConditions)
         };
-        Ok([model(self.ncrit_top)?, model(self.ncrit_bot)?])
+        Ok([
+            model(self.transition.ncrit_top)?,
+            model(self.transition.ncrit_bot)?,
+        ])
     }
 }

@@ -132,17 +132,20 @@ pub(super) fn solution(
         let range = a.layout.range(surface);
         let mut xs = Vec::with_capacity(range.len());
         let mut ys = Vec::with_capacity(range.len());
-        let mut xis = Vec::with_capacity(range.len());
         let mut tau = Vec::with_capacity(range.len());
+        let mut xi_te = 0.0;
         for k in range {
             let st = a.layout.stations[k];
             xs.push(g.x[st.node]);
             ys.push(g.y[st.node]);
-            xis.push(st.xi);
+            xi_te = st.xi;
             tau.push(props[k].tau_wall);
         }
         cdf += friction_drag(&xs, &ys, &tau, alpha_deg);
-        xtr[side] = transition_x(&xis, &xs, a.transition[side]);
+        // Without transition, the trailing edge's x/c.
+        let xi_tr = a.transition[side].unwrap_or(xi_te);
+        let sst = a.layout.stagnation.sst;
+        xtr[side] = transition_x(g, sst, surface == Surface::Upper, xi_tr);
     }
     let last = a.layout.len() - 1;
     let cd = bl

@@ -6,7 +6,9 @@ use std::sync::Arc;
 
 use crate::boundary_layer::BlModel;
 use crate::geometry::Airfoil;
+use crate::inviscid::PanelGeometry;
 use crate::section::PolarPoint;
+use crate::section::{Transition, FREE_XTR};
 
 use super::error::ViscousError;
 use super::march::march;
@@ -50,6 +52,41 @@ enum PanelSource {
     Airfoil(Arc<SharedPanels>),
 }
 
+/// A trip this far (in chords of arc length) upstream of the stagnation point on its surface
+/// counts as at the stagnation point: a trip at x/c = 0 on a symmetric section at α = 0 acts
+/// on both surfaces, not on whichever side round-off puts the stagnation point.
+const TRIP_AT_STAGNATION: f64 = 1e-6;
+
+/// Where in the first interval a trip between the stagnation point and the first station acts,
+/// as a fraction of the interval ([`ViscousSolver::forced_xi`]): at its start, just inside the
+/// interval so that the interval's transition check meets it.
+const FIRST_STATION_TRIP: f64 = 1e-6;
+
+/// Arc length s of the trip on each surface (upper, lower) of the contour: where the chord
+/// fraction ([`ContourSpline::chord_fraction`]) first reaches the trip x/c, walking from the
+/// leading edge along that surface (XFOIL XIFSET: SINVRT on the chord-based x/c). `None` for
+/// free transition; the surface's TE end for a trip the surface never reaches.
+///
+/// [`ContourSpline::chord_fraction`]: crate::geometry::ContourSpline::chord_fraction
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct TripArcs([Option<f64>; 2]);
+
+impl TripArcs {
+    fn new(contour: &PanelGeometry, transition: &Transition) -> Self {
+        let s = &contour.s;
+        let ends = [s[0], s[s.len() - 1]];
+        let arc = |side: usize, xtr: f64| {
+            (xtr < FREE_XTR).then(|| {
+                contour
+                    .spline
+                    .arc_at_chord_fraction(contour.s_le, xtr, side == 0)
+                    .unwrap_or(ends[side])
+            })
+        };
+        Self([arc(0, transition.xtr_top), arc(1, transition.xtr_bot)])
+    }
+}
+
 /// Viscous–inviscid solver for one airfoil and one (Re, M, Ncrit, trip) condition.
 /// Holds its own state; many solvers can run in parallel.
 #[derive(Debug)]
@@ -62,6 +99,8 @@ pub struct ViscousSolver {
     panels_alpha: Option<f64>,
     /// Boundary-layer models of the two sides.
     bl: SideModels,
+    /// Where the trips are on the contour.
+    trips: TripArcs,
     warm: Option<WarmState>,
     /// α of the last fresh-start attempt that failed. A fresh start depends on α alone, so
     /// it is not repeated at that α (sweep recoveries revisit a failed α several times).
@@ -89,12 +128,14 @@ impl ViscousSolver {
         panels.check()?;
         params.check()?;
         let bl = params.boundary_layer()?;
+        let trips = TripArcs::new(&panels.airfoil, &params.transition);
         Ok(Self {
             params,
             source: PanelSource::Fixed,
             panels: Arc::new(panels),
             panels_alpha: None,
             bl,
+            trips,
             warm: None,
             fresh_failed_at: None,
             work: SolverWork::default(),
@@ -117,12 +158,14 @@ impl ViscousSolver {
         params.check()?;
         let panels = shared.model(0.0)?;
         let bl = params.boundary_layer()?;
+        let trips = TripArcs::new(&panels.airfoil, &params.transition);
         Ok(Self {
             params,
             source: PanelSource::Airfoil(shared),
             panels,
             panels_alpha: Some(0.0),
             bl,
+            trips,
             warm: None,
             fresh_failed_at: None,
             work: SolverWork::default(),
@@ -161,32 +204,41 @@ impl ViscousSolver {
         &self.bl[0]
     }
 
-    /// ξ of forced transition on each surface: the trip x/c converted to ξ along that surface
-    /// (XFOIL XIFSET), at most the TE ξ (XFOIL forces transition at the TE at the latest).
+    /// ξ of forced transition on each surface for the stagnation point of `layout` (XFOIL
+    /// XIFSET), from the trips' arc lengths ([`TripArcs`]): the distance from the stagnation
+    /// point to the trip along the surface, at most the TE ξ (XFOIL forces transition at the
+    /// TE at the latest). Two cases XIFSET leaves to the marches:
+    ///
+    /// * the stagnation point lies downstream of the trip (ξ < 0, by more than
+    ///   [`TRIP_AT_STAGNATION`]): the flow of that surface never passes the trip, transition is
+    ///   free there (XIFSET's "stagnation point is past trip");
+    /// * the trip lies between the stagnation point and the first station: transition at the
+    ///   first station, the whole first interval turbulent. XFOIL's transition check starts at
+    ///   the first interval and never meets such a trip, which leaves transition free on a
+    ///   surface whose flow passes the trip.
     fn forced_xi(&self, layout: &StationLayout) -> [Option<f64>; 2] {
-        let g = &self.panels.airfoil;
+        let sst = layout.stagnation.sst;
         let mut out = [None, None];
-        for (side, (surface, xtr)) in [
-            (Surface::Upper, self.params.xtr_top),
-            (Surface::Lower, self.params.xtr_bot),
-        ]
-        .into_iter()
-        .enumerate()
-        {
-            let range = layout.range(surface);
-            let sts = &layout.stations[range];
+        for (side, surface) in [Surface::Upper, Surface::Lower].into_iter().enumerate() {
+            let sts = &layout.stations[layout.range(surface)];
             let xi_te = sts.last().map(|s| s.xi).unwrap_or(0.0);
-            let mut xi_trip = xi_te;
-            if xtr < 1.0 {
-                for w in sts.windows(2) {
-                    let (x1, x2) = (g.x[w[0].node], g.x[w[1].node]);
-                    if x1 < xtr && x2 >= xtr {
-                        let f = (xtr - x1) / (x2 - x1);
-                        xi_trip = w[0].xi + f * (w[1].xi - w[0].xi);
-                        break;
+            let xi_trip = match self.trips.0[side] {
+                None => xi_te,
+                Some(s_trip) => {
+                    let xi = if surface == Surface::Upper {
+                        sst - s_trip
+                    } else {
+                        s_trip - sst
+                    };
+                    match sts {
+                        _ if xi < -TRIP_AT_STAGNATION => xi_te,
+                        [first, second, ..] if xi <= first.xi => {
+                            first.xi + FIRST_STATION_TRIP * (second.xi - first.xi)
+                        }
+                        _ => xi,
                     }
                 }
-            }
+            };
             out[side] = Some(xi_trip.min(xi_te));
         }
         out

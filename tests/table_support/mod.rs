@@ -1,17 +1,14 @@
 //! Shared builders for the table tests: analytic polars and the XFOIL reference polars.
 #![allow(dead_code)]
 
-use polargen::section::PolarPoint;
+use polargen::section::{PolarPoint, Transition};
 use polargen::table::{PolarTable, TableMeta};
 
 /// Metadata of the synthetic test tables.
 pub fn meta(name: &str) -> TableMeta {
     TableMeta {
         airfoil: name.to_string(),
-        ncrit_top: 9.0,
-        ncrit_bot: 9.0,
-        xtr_top_set: 1.0,
-        xtr_bot_set: 1.0,
+        transition: Transition::default(),
         panels: 160,
         solver: "polargen 0.1.0".to_string(),
     }

@@ -169,7 +169,8 @@ def polar(
     re : chord Reynolds number.
     mach : free-stream Mach number, 0 ≤ M < 1 (Karman–Tsien).
     alpha : angles of attack [deg]: ``"A0:A1:DA"`` or a list/array.
-    xtr : forced transition x/c on both surfaces, or ``(top, bottom)``; 1 = free (e^n).
+    xtr : forced transition x/c on both surfaces, or ``(top, bottom)``, along the chord line from
+        the leading edge; 0 = leading edge, 1 = free (e^n).
     ncrit : critical amplification ratio N of the e^n criterion, both surfaces.
     ncrit_top, ncrit_bot : N_crit of the upper / lower surface (XFOIL ``NT``, ``NB``) if it
         differs from ``ncrit``, as ``--ncrit-top``, ``--ncrit-bot``.

@@ -107,7 +107,7 @@ pub struct PointCase {
     pub cl: Option<f64>,
 
     /// Transition settings, one case each (overlaid by plot-point): comma-separated x/c on
-    /// both surfaces (1 = free).
+    /// both surfaces (0 = leading edge, 1 = free).
     #[arg(
         long,
         value_name = "LIST",
@@ -285,15 +285,16 @@ pub struct GridArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub alpha: Option<String>,
 
-    /// Forced transition x/c on both surfaces (1 = free transition, e^n).
+    /// Forced transition x/c on both surfaces, along the chord line from the leading edge
+    /// (0 = leading edge, 1 = free transition, e^n).
     #[arg(long, value_name = "X", allow_hyphen_values = true, conflicts_with_all = ["xtr_top", "xtr_bot"])]
     pub xtr: Option<f64>,
 
-    /// Forced transition x/c on the upper surface (1 = free).
+    /// Forced transition x/c on the upper surface (0 = leading edge, 1 = free).
     #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub xtr_top: Option<f64>,
 
-    /// Forced transition x/c on the lower surface (1 = free).
+    /// Forced transition x/c on the lower surface (0 = leading edge, 1 = free).
     #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub xtr_bot: Option<f64>,
 

@@ -23,16 +23,16 @@ use args::{
 };
 use clap::CommandFactory;
 
-use polargen::arguments;
+use polargen::arguments::{self, TransitionArgs};
 use polargen::cli::{self, Tool};
 use polargen::geometry::{solver_airfoil, Airfoil};
 use polargen::inviscid::PanelSystem;
 use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
-use polargen::plot::polar_plots::transition_label;
 use polargen::plot::table_plots::{table_overlay_figure, TableOverlay};
 use polargen::plot::{check_image_path, render};
 use polargen::polar::{parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams};
+use polargen::section::{Transition, FREE_XTR};
 use polargen::table::{
     build_table, read_table, with_cd_max, write_table, Batch, BatchSettings, GridSpec, TableFormat,
     DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
@@ -141,17 +141,14 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
     Ok(())
 }
 
-/// The transition setting of `--xtr` or `--xtr-top`/`--xtr-bot`, checked.
-fn transition(cli: &GridArgs) -> Result<(f64, f64)> {
+/// The transition setting of the N_crit flags and `--xtr` or `--xtr-top`/`--xtr-bot`, checked.
+fn grid_transition(cli: &GridArgs) -> Result<Transition> {
     let sides = match cli.xtr {
         Some(x) => [("--xtr", x), ("--xtr", x)],
         None => [("--xtr-top", cli.xtr_top), ("--xtr-bot", cli.xtr_bot)]
-            .map(|(flag, x)| (flag, x.unwrap_or(1.0))),
+            .map(|(flag, x)| (flag, x.unwrap_or(FREE_XTR))),
     };
-    for (flag, x) in sides {
-        arguments::transition(flag, x)?;
-    }
-    Ok((sides[0].1, sides[1].1))
+    transition(&cli.ncrit, sides)
 }
 
 /// The grid and solver settings of the grid flags, checked.
@@ -172,16 +169,12 @@ fn grid_request(cli: &GridArgs) -> Result<(GridSpec, ViscousParams)> {
             .context("--alpha")?,
     };
     grid.check_size()?;
-    let (xtr_top, xtr_bot) = transition(cli)?;
-    let (ncrit_top, ncrit_bot) = ncrit_sides(&cli.ncrit)?;
+    let transition = grid_transition(cli)?;
     arguments::tolerance("--tolerance", cli.newton.tolerance)?;
     arguments::panels("--panels", cli.panels)?;
     let base = ViscousParams {
-        ncrit_top,
-        ncrit_bot,
+        transition,
         tolerance: cli.newton.tolerance,
-        xtr_top,
-        xtr_bot,
         ..ViscousParams::default()
     };
     Ok((grid, base))
@@ -253,15 +246,16 @@ fn run_batch(args: &BatchArgs) -> Result<()> {
     }
 }
 
-/// `--ncrit`, `--ncrit-top`, `--ncrit-bot` ([`arguments::ncrit_sides`]).
-fn ncrit_sides(n: &Ncrit) -> Result<(f64, f64)> {
-    let flags = ["--ncrit", "--ncrit-top", "--ncrit-bot"];
-    Ok(arguments::ncrit_sides(
-        flags,
-        n.ncrit,
-        n.ncrit_top,
-        n.ncrit_bot,
-    )?)
+/// The transition setting of `--ncrit`, `--ncrit-top`, `--ncrit-bot` and the trips `xtr`
+/// (flag and value of each surface), checked ([`arguments::transition`]).
+fn transition(n: &Ncrit, xtr: [(&str, f64); 2]) -> Result<Transition> {
+    Ok(arguments::transition(&TransitionArgs {
+        ncrit: ("--ncrit", n.ncrit),
+        ncrit_top: ("--ncrit-top", n.ncrit_top),
+        ncrit_bot: ("--ncrit-bot", n.ncrit_bot),
+        xtr_top: xtr[0],
+        xtr_bot: xtr[1],
+    })?)
 }
 
 /// `polargen plot`: overlay one polar from each table.
@@ -306,7 +300,7 @@ fn plot_point(args: &PlotPointArgs) -> Result<()> {
         solutions_title(&foil.name, c.re, c.mach, alpha, c.cl, &cases)
     });
     // The Ncrit line of the N panel when both surfaces have the same Ncrit.
-    let ncrit = Some(ncrit_sides(&c.ncrit)?).and_then(|(t, b)| (t == b).then_some(t));
+    let ncrit = transition(&c.ncrit, [("--xtr", FREE_XTR); 2])?.common_ncrit();
     // The image first: if it cannot be written, no CSV is left behind either.
     let figure = solutions_figure(&cases, c.mach, &title, ncrit);
     render(&with_airfoil_contour(figure, &foil), &args.out)?;
@@ -329,22 +323,21 @@ fn point(case: &PointCase, csv: &Path) -> Result<()> {
 fn solve_cases(args: &PointCase) -> Result<(Airfoil, Vec<(String, ViscousSolution)>)> {
     arguments::reynolds("--re", args.re)?;
     arguments::mach("--mach", args.mach)?;
-    let (ncrit_top, ncrit_bot) = ncrit_sides(&args.ncrit)?;
+    let settings = arguments::number_list("--xtr", &args.xtr)?
+        .into_iter()
+        .map(|x| transition(&args.ncrit, [("--xtr", x); 2]))
+        .collect::<Result<Vec<_>>>()?;
     arguments::tolerance("--tolerance", args.newton.tolerance)?;
-    let xtrs = arguments::number_list("--xtr", &args.xtr)?;
-    xtrs.iter()
-        .try_for_each(|&x| arguments::transition("--xtr", x))?;
     let foil = load_airfoil(Some(&args.airfoil), args.panels, &args.shape)?;
     let mut runs: Vec<(String, ViscousSolution)> = Vec::new();
-    for &xtr in &xtrs {
+    for transition in settings {
         let params = ViscousParams {
-            ncrit_top,
-            ncrit_bot,
+            transition,
             tolerance: args.newton.tolerance,
-            ..ViscousParams::at(args.re, args.mach, xtr)
+            ..ViscousParams::at(args.re, args.mach, FREE_XTR)
         };
         let mut solver = ViscousSolver::new(&foil, params).context("viscous solver")?;
-        let label = transition_label(xtr, xtr);
+        let label = transition.trip_label();
         let at = args.cl.map_or(
             OperatingPoint::Alpha(args.alpha.unwrap_or(f64::NAN)),
             OperatingPoint::Cl,

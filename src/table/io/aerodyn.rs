@@ -100,9 +100,9 @@ pub fn write_aerodyn_to(
             &meta.solver
         },
         meta.airfoil.replace(['\n', '\r'], " "),
-        meta.ncrit_text(),
-        meta.xtr_top_set,
-        meta.xtr_bot_set
+        meta.transition.ncrit_text(),
+        meta.transition.xtr_top,
+        meta.transition.xtr_bot
     );
     let _ = writeln!(
         s,

@@ -49,7 +49,7 @@
 use super::xfoil_polar::re_label;
 use super::{extension_or, stem_or};
 use crate::output::{fixed_decimals, write_output, OutputSet};
-use crate::section::{PolarPoint, SectionAero};
+use crate::section::{PolarPoint, SectionAero, Transition};
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -530,10 +530,7 @@ pub fn parse_c81(text: &str, stem: &str) -> Result<PolarTable, TableError> {
         } else {
             airfoil
         },
-        ncrit_top: 9.0,
-        ncrit_bot: 9.0,
-        xtr_top_set: 1.0,
-        xtr_bot_set: 1.0,
+        transition: Transition::default(),
         panels: 0,
         solver: "C81 file".to_string(),
     };

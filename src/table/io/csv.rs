@@ -13,7 +13,7 @@
 
 use super::supercritical_from_cpmin;
 use crate::output::write_output;
-use crate::section::{FlowCondition, PolarPoint};
+use crate::section::{FlowCondition, PolarPoint, Transition};
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::collections::HashMap;
 use std::io::{Read, Write};
@@ -69,10 +69,11 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
         }
     };
     let m = table.meta();
-    let (ncrit, ncrit_names) = match m.common_ncrit() {
+    let t = &m.transition;
+    let (ncrit, ncrit_names) = match t.common_ncrit() {
         Some(n) => (vec![n.to_string()], vec![COLUMNS[NCRIT].to_string()]),
         None => (
-            vec![m.ncrit_top.to_string(), m.ncrit_bot.to_string()],
+            vec![t.ncrit_top.to_string(), t.ncrit_bot.to_string()],
             NCRIT_SIDES.map(str::to_string).to_vec(),
         ),
     };
@@ -80,7 +81,7 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
     out.write_record(with_ncrit(COLUMNS, &ncrit_names))
         .map_err(werr)?;
     let panels = m.panels.to_string();
-    let (xt, xb) = (m.xtr_top_set.to_string(), m.xtr_bot_set.to_string());
+    let (xt, xb) = (t.xtr_top.to_string(), t.xtr_bot.to_string());
     for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
         let (re, mach) = (re.to_string(), mach.to_string());
         for p in points {
@@ -177,10 +178,7 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
         };
         let this = TableMeta {
             airfoil: row.text(0)?.to_string(),
-            ncrit_top,
-            ncrit_bot,
-            xtr_top_set: row.num(4)?,
-            xtr_bot_set: row.num(5)?,
+            transition: Transition::sides(ncrit_top, ncrit_bot, row.num(4)?, row.num(5)?),
             panels: row.opt_int(17)?.unwrap_or(0) as usize,
             solver: row.opt_text(18).unwrap_or("").to_string(),
         };
@@ -307,10 +305,7 @@ pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableErr
     };
     let meta = TableMeta {
         airfoil: stem.split('_').next().unwrap_or("polar").to_string(),
-        ncrit_top: 9.0,
-        ncrit_bot: 9.0,
-        xtr_top_set: 1.0,
-        xtr_bot_set: 1.0,
+        transition: Transition::default(),
         panels: 0,
         solver: "XFOIL polar file".to_string(),
     };
@@ -326,13 +321,13 @@ pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableErr
 fn meta_difference(a: &TableMeta, b: &TableMeta) -> Option<&'static str> {
     if a.airfoil != b.airfoil {
         Some("airfoil")
-    } else if a.ncrit_top.to_bits() != b.ncrit_top.to_bits() {
+    } else if a.transition.ncrit_top.to_bits() != b.transition.ncrit_top.to_bits() {
         Some("ncrit_top")
-    } else if a.ncrit_bot.to_bits() != b.ncrit_bot.to_bits() {
+    } else if a.transition.ncrit_bot.to_bits() != b.transition.ncrit_bot.to_bits() {
         Some("ncrit_bot")
-    } else if a.xtr_top_set.to_bits() != b.xtr_top_set.to_bits() {
+    } else if a.transition.xtr_top.to_bits() != b.transition.xtr_top.to_bits() {
         Some("xtr_top_set")
-    } else if a.xtr_bot_set.to_bits() != b.xtr_bot_set.to_bits() {
+    } else if a.transition.xtr_bot.to_bits() != b.transition.xtr_bot.to_bits() {
         Some("xtr_bot_set")
     } else if a.panels != b.panels {
         Some("panels")

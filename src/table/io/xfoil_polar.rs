@@ -17,7 +17,7 @@
 
 use super::{stem_or, supercritical_from_cpmin};
 use crate::output::OutputSet;
-use crate::section::{FlowCondition, PolarPoint};
+use crate::section::{FlowCondition, PolarPoint, Transition};
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -72,13 +72,14 @@ pub fn write_polar_to(
     s.push_str(" \n");
     s.push_str(&format!(
         " xtrf = {:7.3} (top)      {:7.3} (bottom)  \n",
-        meta.xtr_top_set, meta.xtr_bot_set
+        meta.transition.xtr_top, meta.transition.xtr_bot
     ));
     let re_field = format!("{:9.3}", re / 1e6);
     // One N_crit, or top and bottom side by side as XFOIL 6.99 writes unequal NT and NB.
-    let ncrit = match meta.common_ncrit() {
+    let t = &meta.transition;
+    let ncrit = match t.common_ncrit() {
         Some(n) => vec![("ncrit", n)],
-        None => vec![("ncrit_top", meta.ncrit_top), ("ncrit_bot", meta.ncrit_bot)],
+        None => vec![("ncrit_top", t.ncrit_top), ("ncrit_bot", t.ncrit_bot)],
     };
     let mut fields = vec![("Re", re, re_field.clone())];
     fields.extend(ncrit.iter().map(|&(f, n)| (f, n, format!("{n:7.3}"))));
@@ -302,10 +303,7 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
     }
     let meta = TableMeta {
         airfoil: name,
-        ncrit_top,
-        ncrit_bot,
-        xtr_top_set: xt,
-        xtr_bot_set: xb,
+        transition: Transition::sides(ncrit_top, ncrit_bot, xt, xb),
         panels: 0,
         solver,
     };

@@ -45,8 +45,7 @@ impl Setup {
             // Different N_crit on the two sides, so that each side's equations are pinged
             // with its own.
             bl: ViscousParams {
-                ncrit_top: 9.0,
-                ncrit_bot: 7.0,
+                transition: crate::section::Transition::sides(9.0, 7.0, 1.0, 1.0),
                 ..ViscousParams::at(RE, 0.0, 1.0)
             }
             .boundary_layer()
