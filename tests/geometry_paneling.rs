@@ -175,7 +175,7 @@ fn chord_units_never_change_the_angle_reference() {
             y: base.y.iter().map(|y| y * factor).collect(),
         };
         let (unit, normalised) = scaled.in_chord_units().unwrap();
-        assert_eq!(normalised, factor > 1.01, "factor {factor}");
+        assert_eq!(normalised.is_some(), factor > 1.01, "factor {factor}");
         let paneled = unit.repanel(160, &PanelingParams::default()).unwrap();
         PanelSystem::new(&paneled)
             .unwrap()

@@ -34,10 +34,10 @@ impl Airfoil {
     /// (`UserWarning`, the CLI's note) when the contour had to be normalised.
     pub fn solver_nodes(&self, py: Python<'_>, panels: usize) -> PyResult<Contour> {
         arguments::panels("panels", panels).map_err(|e| raise(None, e))?;
-        let (nodes, normalised) =
+        let (nodes, normalisation) =
             shielded(|| self.contour.solver_nodes(panels))?.map_err(|e| raise(None, e))?;
-        if normalised {
-            let note = Contour::normalisation_note(&self.contour.name);
+        if let Some(n) = normalisation {
+            let note = n.note(&self.contour.name);
             PyErr::warn(
                 py,
                 &py.get_type::<PyUserWarning>(),

@@ -117,6 +117,23 @@ pub enum GeometryError {
         /// The limit.
         limit: f64,
     },
+    /// Every point of the contour is the same point.
+    #[error(
+        "{file}: all {count} points are the point ({}, {}): the contour spans nothing \
+         (coordinates printed with too few decimals for their size?)",
+        short_number(*x),
+        short_number(*y)
+    )]
+    SinglePoint {
+        /// File name (or airfoil name).
+        file: String,
+        /// Number of points.
+        count: usize,
+        /// x of the point.
+        x: f64,
+        /// y of the point.
+        y: f64,
+    },
     /// A point repeats an earlier, non-adjacent point.
     #[error(
         "{file}:{line}: point ({}, {}) repeats the point at line {first_line}: the contour \
@@ -168,6 +185,30 @@ pub enum GeometryError {
         y: f64,
         /// The turn at the point (degrees).
         degrees: f64,
+    },
+    /// The contour turns back and forth: many turns against its sense add up to more than a
+    /// real section's concave stretches do.
+    #[error(
+        "{file}:{line}: the contour zigzags: {reversals} turns against its sense between lines \
+         {line} and {last_line} add up to {degrees:.1}° (a smooth section stays below \
+         {limit:.0}°, and the coordinates' rounding is allowed for): a sawtooth or a noisy \
+         surface, not a smooth one"
+    )]
+    Zigzag {
+        /// File name (or airfoil name).
+        file: String,
+        /// 1-based line number of the first point turning against the sense of the contour.
+        line: usize,
+        /// 1-based line number of the point where the total passed the limit.
+        last_line: usize,
+        /// Number of points turning against the sense of the contour up to there.
+        reversals: usize,
+        /// Their turns against the sense of the contour, beyond what rounding explains, added.
+        degrees: f64,
+        /// The most a smooth section turns against its sense ([`MAX_REVERSE_TURNING_DEG`]).
+        ///
+        /// [`MAX_REVERSE_TURNING_DEG`]: super::MAX_REVERSE_TURNING_DEG
+        limit: f64,
     },
     /// The contour encloses (almost) no area.
     #[error(

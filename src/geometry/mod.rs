@@ -25,16 +25,65 @@ pub use error::GeometryError;
 pub use naca::{naca, NacaOptions, NacaSection, TrailingEdge};
 pub use paneling::{PaneledAirfoil, PanelingParams, DEFAULT_PANEL_NODES};
 pub use registry::{airfoil_by_name_or_path, airfoil_key, naca8h12, solver_airfoil};
-pub use spline::{ContourSpline, CubicSpline, EndCondition};
+pub use spline::{ContourSpline, CubicSpline, EndCondition, MEAN_LINE_STEPS};
 pub use validation::{
     MAX_REVERSE_TURNING_DEG, MAX_REVERSE_TURN_DEG, MAX_TE_GAP_RATIO, MAX_TURNING_DEG,
     MIN_AREA_RATIO, MIN_POINTS, SPIKE_TURN_DEG,
 };
 
-/// Deviation of the chord (x of the TE midpoint less x of the leading-edge point) from 1 and of
-/// the leading-edge point from the origin (chord units) up to which
-/// [`Airfoil::in_chord_units`] keeps a contour as given.
+/// Deviation of the chord (the distance from the leading-edge point to the TE midpoint, or the
+/// length of the mean line) from 1 and of the leading-edge point from the origin (chord units)
+/// up to which [`Airfoil::in_chord_units`] keeps a contour as given.
 pub const CHORD_UNITS_TOLERANCE: f64 = 0.01;
+
+/// How [`Airfoil::in_chord_units`] brought a contour to chord units: translated so that its
+/// leading-edge point is at the origin and scaled by `scale`, the inverse of its chord (the
+/// distance from the leading-edge point to the TE midpoint); never rotated.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Normalisation {
+    /// The leading-edge point as given (moved to the origin).
+    pub leading_edge: (f64, f64),
+    /// The factor the coordinates were multiplied by: 1 / chord.
+    pub scale: f64,
+    /// Inclination of the chord line to the x axis (degrees, positive with the trailing edge
+    /// above the leading edge), which the normalisation keeps.
+    pub chord_angle_deg: f64,
+}
+
+impl Normalisation {
+    /// The note a user reads about the normalisation of the airfoil given as `given` (a name
+    /// or a path): the chord and leading edge found, the scale factor, and the chord line's
+    /// inclination, which stays the reference of α.
+    pub fn note(&self, given: &str) -> String {
+        let (xl, yl) = self.leading_edge;
+        // No "-0.000" for a level chord line.
+        let angle = if self.chord_angle_deg.abs() < 5e-4 {
+            0.0
+        } else {
+            self.chord_angle_deg
+        };
+        format!(
+            "{given}: normalised to unit chord: the chord (leading edge at ({}, {}) to the \
+             trailing-edge midpoint) is {}; coordinates scaled by {} and translated to put the \
+             leading edge at (0, 0), not rotated (the chord line stays at {:.3} deg to the x \
+             axis)",
+            short_number(xl),
+            short_number(yl),
+            short_number(1.0 / self.scale),
+            short_number(self.scale),
+            angle
+        )
+    }
+}
+
+/// The chord line of a contour: leading-edge point, TE midpoint and their distance, and the
+/// length of the mean line.
+struct ChordLine {
+    le: (f64, f64),
+    te: (f64, f64),
+    chord: f64,
+    mean_line: f64,
+}
 
 /// An airfoil contour as an ordered list of points in XFOIL order: from the upper-surface
 /// trailing edge, forward over the upper surface, around the leading edge and back along the
@@ -115,30 +164,48 @@ impl Airfoil {
         Ok((xt - xl).hypot(yt - yl))
     }
 
-    /// Copy translated and scaled so that the leading-edge point is at the origin and the TE
-    /// midpoint at x = 1 (XFOIL `NORM`): never rotated, so that angles of attack keep the
-    /// reference of the coordinates (their x axis). A TE midpoint that is not aft of the
-    /// leading edge is an error.
+    /// Copy translated and scaled so that the leading-edge point is at the origin and the
+    /// chord (leading-edge point to TE midpoint) is 1 (XFOIL `NORM` on a level contour): never
+    /// rotated, so that angles of attack keep the reference of the coordinates (their x axis).
+    /// A TE midpoint that is not aft of the leading edge is an error.
     pub fn normalized(&self) -> Result<Airfoil, GeometryError> {
+        Ok(self.normalised_by(&self.chord_line()?))
+    }
+
+    /// The leading-edge point and the TE midpoint (XFOIL `LEFIND`, the TE midpoint), checked:
+    /// the trailing edge aft of the leading edge (the chord line less than 90° from the x axis).
+    fn chord_line(&self) -> Result<ChordLine, GeometryError> {
         let sp = self.spline()?;
-        let (xl, yl) = sp.point(sp.leading_edge()?);
-        let (xt, _) = sp.te_midpoint();
-        let chord = xt - xl;
-        if !(chord > 0.0 && chord.is_finite()) {
+        let s_le = sp.leading_edge()?;
+        let le = sp.point(s_le);
+        let te = sp.te_midpoint();
+        let chord = (te.0 - le.0).hypot(te.1 - le.1);
+        if !(te.0 > le.0 && chord.is_finite()) {
             return Err(GeometryError::Paneling(format!(
                 "{}: the trailing edge is not aft of the leading edge (x {} vs {}), cannot \
                  normalise",
                 self.name,
-                short_number(xt),
-                short_number(xl)
+                short_number(te.0),
+                short_number(le.0)
             )));
         }
-        let scale = 1.0 / chord;
-        Ok(Airfoil {
+        Ok(ChordLine {
+            le,
+            te,
+            chord,
+            mean_line: sp.mean_line_length(s_le),
+        })
+    }
+
+    /// Copy translated to put the leading edge of `line` at the origin and scaled by 1/chord.
+    fn normalised_by(&self, line: &ChordLine) -> Airfoil {
+        let (xl, yl) = line.le;
+        let scale = 1.0 / line.chord;
+        Airfoil {
             name: self.name.clone(),
             x: self.x.iter().map(|&px| (px - xl) * scale).collect(),
             y: self.y.iter().map(|&py| (py - yl) * scale).collect(),
-        })
+        }
     }
 
     /// Inclination of the chord line (leading-edge point to TE midpoint) to the x axis, in
@@ -174,23 +241,31 @@ impl Airfoil {
     }
 
     /// The contour in chord units. A contour whose leading-edge point is at the origin and
-    /// whose TE midpoint is at x = 1 within [`CHORD_UNITS_TOLERANCE`] is returned as given
-    /// (like XFOIL, which does not normalise, so results on standard files match XFOIL's); any
-    /// other (e.g. ordinates in millimetres or percent, or a shifted contour) is
-    /// [`normalized`]: translated and scaled, never rotated. The flag says whether it was
-    /// normalised.
+    /// whose chord (the distance from the leading-edge point to the TE midpoint) or mean line
+    /// ([`ContourSpline::mean_line_length`]: a deflected flap shortens the chord, not the mean
+    /// line; strong camber lengthens the mean line, not the chord) is 1 within
+    /// [`CHORD_UNITS_TOLERANCE`] is returned as given, whatever the inclination of its chord
+    /// line (like XFOIL, which does not normalise, so results on standard files match
+    /// XFOIL's); any other (e.g. ordinates in millimetres or percent, or a shifted contour) is
+    /// [`normalized`]: translated and scaled by 1/chord, never rotated. With the
+    /// [`Normalisation`] when it was normalised.
     ///
     /// [`normalized`]: Self::normalized
-    pub fn in_chord_units(&self) -> Result<(Airfoil, bool), GeometryError> {
-        let sp = self.spline()?;
-        let (xl, yl) = sp.point(sp.leading_edge()?);
-        let (xt, _) = sp.te_midpoint();
+    pub fn in_chord_units(&self) -> Result<(Airfoil, Option<Normalisation>), GeometryError> {
+        let line = self.chord_line()?;
+        let (xl, yl) = line.le;
         let tol = CHORD_UNITS_TOLERANCE;
-        if (xt - xl - 1.0).abs() <= tol && xl.hypot(yl) <= tol {
-            Ok((self.clone(), false))
-        } else {
-            Ok((self.normalized()?, true))
+        let unit = |length: f64| (length - 1.0).abs() <= tol;
+        if xl.hypot(yl) <= tol && (unit(line.chord) || unit(line.mean_line)) {
+            return Ok((self.clone(), None));
         }
+        let (xt, yt) = line.te;
+        let normalisation = Normalisation {
+            leading_edge: line.le,
+            scale: 1.0 / line.chord,
+            chord_angle_deg: (yt - yl).atan2(xt - xl).to_degrees(),
+        };
+        Ok((self.normalised_by(&line), Some(normalisation)))
     }
 
     /// Curvature-based repaneling to `n` nodes (XFOIL `PANGEN`), with helper data for the
@@ -208,24 +283,17 @@ impl Airfoil {
         paneling::panel(self, n, params).map(|p| p.airfoil)
     }
 
-    /// The note a user reads when [`solver_nodes`](Self::solver_nodes) normalised the contour
-    /// of the airfoil given as `given` (a name or a path).
-    pub fn normalisation_note(given: &str) -> String {
-        format!(
-            "{given}: chord is not 1 or the leading edge is not at the origin; coordinates \
-             normalised to unit chord by scaling and translation (LE at 0,0, TE at x = 1), \
-             not rotated"
-        )
-    }
-
     /// The nodes the solvers work on: the contour [`in chord units`] repaneled to `panels`
     /// nodes with the default [`PanelingParams`] (XFOIL `PANE`), as the command-line tools and
-    /// the Python package prepare every airfoil. The flag says whether the contour was
+    /// the Python package prepare every airfoil; with the [`Normalisation`] if the contour was
     /// normalised on the way. Errors name the step and the airfoil
     /// ([`GeometryError::Preparing`]).
     ///
     /// [`in chord units`]: Self::in_chord_units
-    pub fn solver_nodes(&self, panels: usize) -> Result<(Airfoil, bool), GeometryError> {
+    pub fn solver_nodes(
+        &self,
+        panels: usize,
+    ) -> Result<(Airfoil, Option<Normalisation>), GeometryError> {
         let step = |step: &'static str| {
             move |source: GeometryError| GeometryError::Preparing {
                 step,

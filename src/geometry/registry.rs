@@ -106,9 +106,9 @@ pub fn solver_airfoil(
              chord line)"
         ));
     }
-    let (foil, normalised) = given.solver_nodes(panels)?;
-    if normalised {
-        notes.push(Airfoil::normalisation_note(spec));
+    let (foil, normalisation) = given.solver_nodes(panels)?;
+    if let Some(n) = normalisation {
+        notes.push(n.note(spec));
     }
     Ok((foil, notes))
 }

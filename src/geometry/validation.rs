@@ -13,9 +13,12 @@
 //!   most [`MAX_TURNING_DEG`] (a contour listed twice turns 540°);
 //! * no spike: no vertex but the leading edge turns by more than [`SPIKE_TURN_DEG`] (folds
 //!   the contour back), none turns by more than [`MAX_REVERSE_TURN_DEG`] against the sense of
-//!   the contour and all together not more than [`MAX_REVERSE_TURNING_DEG`] (concave
-//!   stretches of real sections add tens of degrees in small steps; a stray point turns its
-//!   two neighbours back by about its own angle);
+//!   the contour (a stray point turns its two neighbours back by about its own angle), and all
+//!   together not more than [`MAX_REVERSE_TURNING_DEG`] (concave stretches of real sections
+//!   add tens of degrees in small steps; a sawtooth adds its teeth). Each turn is judged
+//!   beyond what the rounding of the coordinates to their printed precision can make of it
+//!   ([`printed_precision`]): a contour exported with many points and few decimals is a
+//!   staircase whose vertices turn back and forth by degrees;
 //! * thickness: the enclosed area is at least [`MIN_AREA_RATIO`] of the chord squared.
 //!
 //! Errors name the file (or airfoil) and the line (or point number) concerned.
@@ -51,6 +54,31 @@ pub const MAX_REVERSE_TURNING_DEG: f64 = 150.0;
 /// 0.685·t/c, so this refuses sections thinner than about 0.015 % of the chord (a flat line
 /// traced out and back).
 pub const MIN_AREA_RATIO: f64 = 1e-4;
+
+/// The precision the coordinates were printed with: the largest power of ten 10⁻ᵈ of which at
+/// least nine in ten coordinates are whole multiples (1e-4 for a file with 4 decimals, 1 for
+/// whole millimetres); the round-off of a double for coordinates printed in full. Each point
+/// then lies within half of it of the point meant, in x and in y.
+pub(crate) fn printed_precision(x: &[f64], y: &[f64]) -> f64 {
+    // Decimals of each coordinate: the fewest with which it is a whole number of 10⁻ᵈ, up to
+    // the 17 significant digits a double holds.
+    let decimals = |v: f64| -> i32 {
+        (0..=MAX_DECIMALS)
+            .find(|&d| {
+                let scaled = v * 10f64.powi(d);
+                (scaled - scaled.round()).abs() <= 8.0 * f64::EPSILON * scaled.abs().max(1.0)
+            })
+            .unwrap_or(MAX_DECIMALS)
+    };
+    let mut d: Vec<i32> = x.iter().chain(y).map(|&v| decimals(v)).collect();
+    d.sort_unstable();
+    let k = (d.len() * 9).div_ceil(10).saturating_sub(1);
+    d.get(k).map_or(0.0, |&d| 10f64.powi(-d))
+}
+
+/// Most decimals [`printed_precision`] looks for: a double's 17 significant digits of a
+/// coordinate near 1.
+const MAX_DECIMALS: i32 = 17;
 
 /// Checks a contour (see the module documentation). `line_of[i]` is the line (or point
 /// number) reported for point i; `file` names the source.
@@ -101,6 +129,14 @@ pub(crate) fn validate_contour(
         hi - lo
     };
     let extent = span(x).max(span(y));
+    if extent == 0.0 {
+        return Err(GeometryError::SinglePoint {
+            file: file.to_string(),
+            count: n,
+            x: x[0],
+            y: y[0],
+        });
+    }
     if extent < MIN_CONTOUR_EXTENT {
         return Err(GeometryError::TooSmall {
             file: file.to_string(),
@@ -190,7 +226,7 @@ fn vertex_turns<'a>(x: &'a [f64], y: &'a [f64]) -> impl Iterator<Item = f64> + '
     })
 }
 
-/// One turn around the section, no spike (see the module documentation).
+/// One turn around the section, no spike, no sawtooth (see the module documentation).
 fn check_turning(x: &[f64], y: &[f64], line_of: &[usize], file: &str) -> Result<(), GeometryError> {
     let net: f64 = vertex_turns(x, y).sum::<f64>().to_degrees();
     if net.abs() > MAX_TURNING_DEG {
@@ -209,8 +245,18 @@ fn check_turning(x: &[f64], y: &[f64], line_of: &[usize], file: &str) -> Result<
                 .total_cmp(&(x[b] - xt).hypot(y[b] - yt))
         })
         .unwrap_or(0);
+    // A segment whose end points each lie within `position_error` of where they were meant
+    // points within asin(2e/length) of its meant direction.
+    let position_error = printed_precision(x, y) / std::f64::consts::SQRT_2;
+    let segment_slack = |i: usize| {
+        let length = (x[i + 1] - x[i]).hypot(y[i + 1] - y[i]);
+        (2.0 * position_error / length).min(1.0).asin().to_degrees()
+    };
+    // turns[k] is the turn at vertex k + 1, and slack[k] what rounding can add to it.
     let turns: Vec<f64> = vertex_turns(x, y).map(f64::to_degrees).collect();
-    // turns[k] is the turn at vertex k + 1.
+    let slack: Vec<f64> = (1..n - 1)
+        .map(|i| segment_slack(i - 1) + segment_slack(i))
+        .collect();
     let turn_at = |i: usize| {
         if i >= 1 && i < n - 1 {
             turns[i - 1]
@@ -232,19 +278,29 @@ fn check_turning(x: &[f64], y: &[f64], line_of: &[usize], file: &str) -> Result<
         }
     };
     let mut reverse_total = 0.0;
-    let mut worst = (0, 0.0);
-    for (k, &deg) in turns.iter().enumerate() {
+    let mut reversals = 0;
+    let mut first_reversal = None;
+    for (k, (&deg, &slack)) in turns.iter().zip(&slack).enumerate() {
         let i = k + 1;
-        let reverse = (-sense * deg).max(0.0);
-        reverse_total += reverse;
-        if (deg.abs() > SPIKE_TURN_DEG && i != le) || reverse > MAX_REVERSE_TURN_DEG {
+        let reverse = (-sense * deg - slack).max(0.0);
+        if (deg.abs() - slack > SPIKE_TURN_DEG && i != le) || reverse > MAX_REVERSE_TURN_DEG {
             return Err(spike(i));
         }
-        if reverse > worst.1 {
-            worst = (i, reverse);
+        if reverse > 0.0 {
+            reverse_total += reverse;
+            reversals += 1;
+            first_reversal.get_or_insert(i);
         }
         if reverse_total > MAX_REVERSE_TURNING_DEG {
-            return Err(spike(worst.0));
+            let from = first_reversal.unwrap_or(i);
+            return Err(GeometryError::Zigzag {
+                file: file.to_string(),
+                line: line_of[from],
+                last_line: line_of[i],
+                reversals,
+                degrees: reverse_total,
+                limit: MAX_REVERSE_TURNING_DEG,
+            });
         }
     }
     Ok(())
