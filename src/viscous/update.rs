@@ -186,3 +186,6 @@ pub fn apply_step(
         max_change,
     })
 }
+
+#[cfg(test)]
+mod tests;
