@@ -61,11 +61,14 @@ def naca_digits(airfoil):
 def is_plain(path):
     """Whether a coordinate file has no name line (its first line holds two numbers)."""
     with open(path) as f:
-        first = f.readline().split()
+        first = f.readline().replace(",", " ").split()
+    if len(first) < 2:
+        return False
     try:
-        return len(first) >= 2 and all(float(t) == float(t) for t in first[:2])
+        float(first[0]), float(first[1])
     except ValueError:
         return False
+    return True
 
 
 def geometry_keys(airfoil):
@@ -239,11 +242,11 @@ def parse_args():
 def main():
     args = parse_args()
     polar = args.kind in ("polar", "inviscid")
-    # Dumps are written inside the work folder under plain names, then moved.
+    # Dumps are written inside the work folder under plain names, then copied out.
     outputs = []
-    for dumps in (args.bl_dump, args.cp_dump):
+    for kind, dumps in (("bl", args.bl_dump), ("cp", args.cp_dump)):
         for k, (alpha, target) in enumerate(dumps):
-            inner = "%s_%d.txt" % ("bl" if dumps is args.bl_dump else "cp", k)
+            inner = "%s_%d.txt" % (kind, k)
             outputs.append((inner, target))
             dumps[k] = (alpha, inner)
     if polar:
