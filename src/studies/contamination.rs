@@ -73,7 +73,7 @@ impl Setting {
     }
 }
 
-/// What to compute; [`Default`] is the set of issue 24.
+/// What to compute; [`Default`] is the set listed in `docs/studies.md`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ContaminationOptions {
     /// Trip locations x/c on both surfaces.
@@ -151,7 +151,7 @@ impl ContaminationOptions {
     }
 }
 
-/// The result of one setting. JSON keys as in issue 24.
+/// The result of one setting; its field names are the `--json` keys of `gyro study contamination`.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ContaminationRecord {
     /// Label of the setting.
