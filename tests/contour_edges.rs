@@ -1,9 +1,11 @@
-//! Contours at the edges of what a coordinate file may hold (`tests/data/contours/`, XFOIL 6.99
-//! references): chord units with an inclined chord line or a deflected flap are used as given;
+//! Contours at the edges of what a coordinate file may hold (`tests/data/contours`; XFOIL 6.99
+//! references on them in `tests/data/xfoil`): chord units with an inclined chord line or a deflected flap are used as given;
 //! any other contour is scaled by its chord, the distance from the leading edge to the
 //! trailing-edge midpoint, never by its x-extent; CAD exports with many points and few decimals
 //! pass the spike test while real spikes and sawtooth contours do not; messages give the numbers
 //! (a contour of 1e-12, a Reynolds number above the cap).
+
+mod xfoil_support;
 
 use polargen::geometry::{
     parse_airfoil_text, read_airfoil_file, solver_airfoil, Airfoil, GeometryError,
@@ -18,18 +20,6 @@ const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/contours/");
 
 fn data(name: &str) -> String {
     format!("{DATA}{name}")
-}
-
-/// The rows `alpha,cl,cd,cdp,cm,xtr_top,xtr_bot` of an XFOIL reference file.
-fn reference(file: &str) -> Vec<[f64; 7]> {
-    let text = std::fs::read_to_string(data(file)).unwrap();
-    text.lines()
-        .skip(1)
-        .map(|l| {
-            let v: Vec<f64> = l.split(',').map(|f| f.parse().unwrap()).collect();
-            [v[0], v[1], v[2], v[3], v[4], v[5], v[6]]
-        })
-        .collect()
 }
 
 /// The solver's nodes of `spec` (as `polargen --airfoil` prepares them) and the notes.
@@ -59,14 +49,14 @@ fn inclined_and_flapped_contours_in_chord_units_are_used_as_given() {
     for (file, viscous_ref, inviscid_ref) in [
         (
             "n0012_tilt10.dat",
-            Some("n0012_tilt10_Re1e6.csv"),
-            "n0012_tilt10_inviscid.csv",
+            Some("n0012_tilt10_Re1e6_M0_free.csv"),
+            "n0012_tilt10_inviscid_M0.csv",
         ),
-        ("n0012_tilt30.dat", None, "n0012_tilt30_inviscid.csv"),
+        ("n0012_tilt30.dat", None, "n0012_tilt30_inviscid_M0.csv"),
         (
             "n0012_flap20.dat",
-            Some("n0012_flap20_Re1e6.csv"),
-            "n0012_flap20_inviscid.csv",
+            Some("n0012_flap20_Re1e6_M0_free.csv"),
+            "n0012_flap20_inviscid_M0.csv",
         ),
     ] {
         let (foil, notes) = nodes(&data(file));
@@ -78,26 +68,24 @@ fn inclined_and_flapped_contours_in_chord_units_are_used_as_given() {
             notes.iter().any(|n| n.contains("inclined")),
             "{file}: {notes:?}"
         );
-        for r in reference(inviscid_ref) {
-            let (cl, cm) = inviscid(&foil, r[0]);
+        for r in xfoil_support::polar(inviscid_ref) {
+            let (cl, cm) = inviscid(&foil, r.alpha);
             assert!(
-                (cl - r[1]).abs() <= 1.5e-4 && (cm - r[4]).abs() <= 1.5e-4,
-                "{file} α {}: cl {cl} cm {cm} vs XFOIL {} {}",
-                r[0],
-                r[1],
-                r[4]
+                (cl - r.cl).abs() <= 1.5e-4 && (cm - r.cm).abs() <= 1.5e-4,
+                "{file} α {}: cl {cl} cm {cm} vs XFOIL {r:?}",
+                r.alpha
             );
         }
-        for r in viscous_ref.map(reference).unwrap_or_default() {
-            let p = viscous(&foil, r[0]);
-            assert!(p.converged, "{file} α {}", r[0]);
+        for r in viscous_ref.map(xfoil_support::polar).unwrap_or_default() {
+            let p = viscous(&foil, r.alpha);
+            assert!(p.converged, "{file} α {}", r.alpha);
             assert!(
-                (p.cl - r[1]).abs() <= 1.5e-4
-                    && (p.cd / r[2] - 1.0).abs() <= 1e-3
-                    && (p.xtr_top - r[5]).abs() <= 3e-4
-                    && (p.xtr_bot - r[6]).abs() <= 3e-4,
+                (p.cl - r.cl).abs() <= 1.5e-4
+                    && (p.cd / r.cd - 1.0).abs() <= 1e-3
+                    && (p.xtr_top - r.xtr_top).abs() <= 3e-4
+                    && (p.xtr_bot - r.xtr_bot).abs() <= 3e-4,
                 "{file} α {}: {p:?} vs XFOIL {r:?}",
-                r[0]
+                r.alpha
             );
         }
     }
@@ -136,7 +124,7 @@ fn a_contour_not_in_chord_units_is_scaled_by_its_chord_and_not_rotated() {
         assert!((a - b).abs() < 1e-6, "α {alpha}: {a} vs {b}");
     }
     // A level contour in percent of the chord: scaled by 0.01.
-    let level = read_airfoil_file(Path::new(&data("n0012_xfoil_buffer.dat"))).unwrap();
+    let level = xfoil_support::nodes("naca0012_buffer.dat");
     let percent = moved(&level, 100.0, 0.0, 0.0, "percent.dat");
     let (_, notes) = nodes(percent.to_str().unwrap());
     assert!(
@@ -198,9 +186,9 @@ fn cad_exports_with_few_decimals_are_read() {
     // staircase turns its vertices back and forth by degrees). XFOIL solves the 501-point file:
     // Cl 0.4268, Cd 0.00733 at 4°; measured 0.42680, 0.007331.
     let (cl, cd) = cl_cd_at_4(&read_airfoil_file(Path::new(&data("n0012_cad501.dat"))).unwrap());
-    let r = reference("n0012_cad501_Re1e6.csv")[0];
+    let r = xfoil_support::polar("n0012_cad501_Re1e6_M0_free_a4.csv")[0];
     assert!(
-        (cl - r[1]).abs() <= 1.5e-4 && (cd / r[2] - 1.0).abs() <= 2e-3,
+        (cl - r.cl).abs() <= 1.5e-4 && (cd / r.cd - 1.0).abs() <= 2e-3,
         "{cl} {cd}"
     );
     // More points and decimals (XFOIL's buffer takes at most a few hundred points). Against
@@ -288,19 +276,19 @@ fn polargen(args: &[&str]) -> (bool, String) {
 
 #[test]
 fn messages_give_the_numbers() {
-    let level = read_airfoil_file(Path::new(&data("n0012_xfoil_buffer.dat"))).unwrap();
+    let level = xfoil_support::nodes("naca0012_buffer.dat");
     // A contour 1e-12 across, printed in full: its size is printed.
     let mut text = String::from("tiny\n");
     for (x, y) in level.x.iter().zip(&level.y) {
         text.push_str(&format!("{:e} {:e}\n", 1e-12 * x, 1e-12 * y));
     }
     let e = parse(&text).unwrap_err().to_string();
-    assert!(e.contains("spans only 9.99974e-13, less than 1e-9"), "{e}");
+    assert!(e.contains("spans only 1e-12, less than 1e-9"), "{e}");
     // The same printed with 9 decimals: every point is (0, 0); before, "spans only 0".
     let flat = print(&points(&text), 9);
     let e = parse(&flat).unwrap_err().to_string();
     assert!(
-        e.contains("all 160 points are the point (0, 0)") && e.contains("too few decimals"),
+        e.contains("all 245 points are the point (0, 0)") && e.contains("too few decimals"),
         "{e}"
     );
     // The Reynolds number cap (docs/limits.md), before any solve.
