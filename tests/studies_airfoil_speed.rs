@@ -1,9 +1,9 @@
 //! The airfoil and speed studies on the shipped 8-H-12 tables: each record's penalty is the
 //! difference of its own runs, the speed study's 60 kt point is the contamination study's.
 
-use polargen::rotor::study::paper_runs;
 use polargen::rotor::Aircraft;
 use polargen::studies::airfoil::run_airfoils;
+use polargen::studies::paper::paper_runs;
 use polargen::studies::speed::run_speeds;
 use polargen::table::read_lookup_table;
 use std::path::Path;

@@ -2,11 +2,11 @@
 //! summaries, the speed-sweep table and the paper comparison (Tables 3 and 4, text and JSON).
 //! Each function appends to a text buffer the tool prints.
 
-use crate::rotor::study::paper::{
+use crate::rotor::{TakeoffResult, TrimResult};
+use crate::studies::paper::published::{
     change_percent as rel, compare as paired, Comparison, TABLE3_TRIM, TABLE4_TAKEOFF,
 };
-use crate::rotor::study::PaperRun;
-use crate::rotor::{TakeoffResult, TrimResult};
+use crate::studies::paper::PaperRun;
 use serde::Serialize;
 
 /// Engine rpm as printed, or `above max` when the engine cannot reach the thrust.

@@ -3,7 +3,7 @@
 //! [`write_report`] reads the shipped polar tables, runs the cruise trim (Table 3), the takeoff
 //! (Table 4), the blade α(ψ) (Fig. 10), the power-required sweep and the sensitivity to the
 //! preset's estimates for the clean and the contaminated 8-H-12 rotor
-//! ([`rotor::study`](crate::rotor::study)), looks up Cd at Cl = 0.8 (Table 5) for both
+//! ([`studies::paper`](crate::studies::paper)), looks up Cd at Cl = 0.8 (Table 5) for both
 //! airfoils, draws every figure (PNG and SVG) and writes `README.md` with our numbers beside
 //! the flight test's and the paper's and the differences in words. Everything is computed on each
 //! run; nothing in the report is typed in except the paper's own values.
@@ -33,14 +33,14 @@ use crate::geometry::airfoil_key;
 use crate::output::{check_output_path, OutputError, OutputSet};
 use crate::plot::rotor_plots::{power_plot, takeoff_plot};
 use crate::plot::{render_into_set, Figure, PlotError};
-use crate::rotor::study::paper::{Table5Row, SECTION_MACH, SECTION_RE, TABLE5, TABLE5_CL};
-use crate::rotor::study::sensitivity::{sensitivity, Sensitivity};
-use crate::rotor::study::{
-    blade_alpha_cases, paper_runs, sweep_cases, SpeedSweep, StudyError, CASE_LABELS,
-    PAPER_TRIM_SPEED_KT,
-};
 use crate::rotor::{
     sweep_speeds, Aircraft, AircraftError, Powerplant, PropellerError, TakeoffResult, TrimResult,
+};
+use crate::studies::paper::published::{Table5Row, SECTION_MACH, SECTION_RE, TABLE5, TABLE5_CL};
+use crate::studies::paper::sensitivity::{sensitivity, Sensitivity};
+use crate::studies::paper::{
+    blade_alpha_cases, paper_runs, sweep_cases, SpeedSweep, StudyError, CASE_LABELS,
+    PAPER_TRIM_SPEED_KT,
 };
 use crate::table::{alpha_at_cl, LiftMatch, PolarTable, TableError};
 use fidelity::PropellerFacts;

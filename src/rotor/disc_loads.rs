@@ -1,6 +1,6 @@
 //! Azimuth-averaged loads of the teetering rotor: the blade-element sum over radial strips and
 //! azimuth steps at given induced inflow and teeter flapping (solved for in
-//! [`inflow_flapping`](super::inflow_flapping)).
+//! `inflow_flapping`).
 //!
 //! Hub frame: x along the hub plane pointing downstream (ψ = 0, the rear), y towards the
 //! advancing side (ψ = 90°), z along the shaft, up. The disc is tilted back by the hub angle
@@ -14,7 +14,6 @@ use super::inflow::{
     drees_coefficients, gessow_myers_tip_loss, glauert_thrust, prandtl_strip_mean, InflowModel,
     TipLoss, YawedFlow,
 };
-pub(super) use super::inflow_flapping::{RotorError, RotorSolution, RotorSolverParams};
 use super::spanwise::BladeSection;
 use std::f64::consts::TAU;
 
@@ -53,6 +52,35 @@ pub struct Rotor {
     pub induced_power_factor: f64,
     /// Numerics.
     pub solver: RotorSolverParams,
+}
+
+/// Tunable numerics of the coupled inflow/flapping Newton iteration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RotorSolverParams {
+    /// Largest number of Newton iterations.
+    pub max_iterations: usize,
+    /// Convergence: scaled Newton step below this (v0 in units of ΩR, β in rad), the step
+    /// taken to the returned state or the next one from it.
+    pub tolerance: f64,
+    /// Finite-difference step for the Jacobian (same scaling).
+    pub fd_step: f64,
+    /// Largest allowed change of a flap coefficient per iteration \[rad\].
+    pub max_flap_step: f64,
+    /// A Broyden-updated Jacobian is kept while each iteration shrinks the largest scaled
+    /// residual by at least this factor; otherwise it is taken afresh by finite differences.
+    pub broyden_contraction: f64,
+}
+
+impl Default for RotorSolverParams {
+    fn default() -> Self {
+        Self {
+            max_iterations: 40,
+            tolerance: 1e-9,
+            fd_step: 1e-6,
+            max_flap_step: 0.05,
+            broyden_contraction: 0.5,
+        }
+    }
 }
 
 /// Operating point of the rotor.
@@ -327,31 +355,6 @@ impl Rotor {
         loads.supercritical_fraction = supercritical as f64 / (n * radii.len()) as f64;
         loads.tip_loss_b = 1.0 - lift_free / (n as f64 * self.radius);
         loads
-    }
-
-    /// Section angle of attack α(ψ) \[deg\] at radius fraction `r_over_r` for `samples` azimuths
-    /// ψ_k = 360°·k/samples (ψ = 0 at the rear), using a converged `solution`'s inflow and
-    /// flapping. Returns (ψ \[deg\], α \[deg\]) pairs.
-    pub fn alpha_at_radius(
-        &self,
-        solution: &RotorSolution,
-        r_over_r: f64,
-        samples: usize,
-    ) -> Vec<(f64, f64)> {
-        let r = r_over_r * self.radius;
-        (0..samples)
-            .map(|k| {
-                let psi = TAU * k as f64 / samples.max(1) as f64;
-                let flow = self.strip_flow(
-                    &solution.condition,
-                    solution.induced_velocity,
-                    &solution.teeter,
-                    r,
-                    psi,
-                );
-                (psi.to_degrees(), flow.alpha_deg)
-            })
-            .collect()
     }
 }
 

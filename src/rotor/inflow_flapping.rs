@@ -7,16 +7,18 @@
 //! finite-difference Jacobian, which each iterate between evaluations updates by Broyden's
 //! rank-one formula (Broyden, "A class of methods for solving nonlinear simultaneous
 //! equations", Math. Comp. 19, 1965; Dennis & Schnabel, *Numerical Methods for Unconstrained
-//! Optimization and Nonlinear Equations*, 1983, §8.1). A solution keeps its Jacobian, so a warm
-//! start from a neighbouring operating point (the next takeoff stage, the next rpm of a trim
-//! search) needs about one blade-element sum per iteration instead of four. The Jacobian is
-//! taken afresh by finite differences whenever an iteration fails to contract the residual
-//! ([`RotorSolverParams::broyden_contraction`]); the converged state is the same root to the
-//! step tolerance, only the path to it differs.
+//! Optimization and Nonlinear Equations*, 1983, §8.1). A solve hands back, beside its result,
+//! its Jacobian in a [`RotorWarmStart`], so a warm start from a neighbouring operating point (the
+//! next takeoff stage, the next rpm of a trim search) needs about one blade-element sum per
+//! iteration instead of four. The Jacobian is taken afresh by finite differences whenever an
+//! iteration fails to contract the residual
+//! ([`RotorSolverParams::broyden_contraction`](super::RotorSolverParams::broyden_contraction));
+//! the converged state is the same root to the step tolerance, only the path to it differs.
 
 use super::disc_loads::{FlightCondition, Loads, Rotor};
 use super::flapping::Teeter;
 use super::inflow::glauert_induced_velocity;
+use super::solution::{RotorSolution, RotorWarmStart};
 use super::spanwise::BladeSection;
 use crate::numerics::small_dense;
 
@@ -34,93 +36,6 @@ pub enum RotorError {
         /// Size of the last Newton step (scaled).
         step: f64,
     },
-}
-
-/// Tunable numerics of the coupled inflow/flapping Newton iteration.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RotorSolverParams {
-    /// Largest number of Newton iterations.
-    pub max_iterations: usize,
-    /// Convergence: scaled Newton step below this (v0 in units of ΩR, β in rad), the step
-    /// taken to the returned state or the next one from it.
-    pub tolerance: f64,
-    /// Finite-difference step for the Jacobian (same scaling).
-    pub fd_step: f64,
-    /// Largest allowed change of a flap coefficient per iteration \[rad\].
-    pub max_flap_step: f64,
-    /// A Broyden-updated Jacobian is kept while each iteration shrinks the largest scaled
-    /// residual by at least this factor; otherwise it is taken afresh by finite differences.
-    pub broyden_contraction: f64,
-}
-
-impl Default for RotorSolverParams {
-    fn default() -> Self {
-        Self {
-            max_iterations: 40,
-            tolerance: 1e-9,
-            fd_step: 1e-6,
-            max_flap_step: 0.05,
-            broyden_contraction: 0.5,
-        }
-    }
-}
-
-/// Converged rotor state and its azimuth-averaged loads.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RotorSolution {
-    /// Operating point solved.
-    pub condition: FlightCondition,
-    /// Mean induced velocity v0 \[m/s\] (downwards positive).
-    pub induced_velocity: f64,
-    /// Teeter flapping.
-    pub teeter: Teeter,
-    /// Tip-loss factor B used: 1 − (lift-free length)/R, for Prandtl's factor the equivalent
-    /// value ∫(1 − F)dr/R averaged over the azimuth.
-    pub tip_loss_b: f64,
-    /// Thrust along the shaft T \[N\].
-    pub thrust: f64,
-    /// In-plane force towards the rear (H-force) \[N\].
-    pub h_force: f64,
-    /// In-plane force towards the advancing side \[N\].
-    pub side_force: f64,
-    /// Rotor lift, perpendicular to the flight path \[N\].
-    pub lift: f64,
-    /// Rotor drag, along the flight path, rearwards \[N\].
-    pub drag: f64,
-    /// Aerodynamic driving torque about the shaft \[N m\]; positive accelerates the rotor,
-    /// zero in autorotation (the shaft torque needed to drive the rotor is its negative).
-    pub torque: f64,
-    /// Advance ratio μ = V cos α_H/(ΩR).
-    pub advance_ratio: f64,
-    /// Net upflow ratio λ = (V sin α_H − v0)/(ΩR).
-    pub inflow_ratio: f64,
-    /// Thrust coefficient C_T = T/(ρA(ΩR)²).
-    pub thrust_coefficient: f64,
-    /// Fraction of the strip-azimuth samples in reverse flow.
-    pub reverse_flow_fraction: f64,
-    /// Fraction of the strip-azimuth samples whose Reynolds or Mach number lay outside the
-    /// section table, so that the lookup used the table's edge (see [`Lookup`](crate::section::Lookup)).
-    pub table_clamped_fraction: f64,
-    /// Fraction of the strip-azimuth samples whose section data lean on supercritical table
-    /// points (Cp_min < Cp*, outside the validity of the section method).
-    pub table_supercritical_fraction: f64,
-    /// Newton iterations used.
-    pub iterations: usize,
-    /// Jacobian of the scaled residuals with respect to z at the solution (finite differences,
-    /// Broyden-updated): the start of a warm solve from this one.
-    jacobian: [[f64; 3]; 3],
-}
-
-impl RotorSolution {
-    /// Angle of attack of the tip-path plane α_R = α_H − β1c \[rad\] (the "rotor AoA").
-    pub fn disc_aoa(&self) -> f64 {
-        self.condition.hub_aoa + self.teeter.tilt_back()
-    }
-
-    /// Resultant rotor force √(L² + D²) \[N\].
-    pub fn resultant(&self) -> f64 {
-        self.lift.hypot(self.drag)
-    }
 }
 
 impl Rotor {
@@ -161,13 +76,14 @@ impl Rotor {
     }
 
     /// Solves inflow and teeter flapping at `cond` (Newton's method on the three scaled
-    /// unknowns, Broyden-updated Jacobian; module documentation), starting from `warm` and its
-    /// Jacobian if given.
+    /// unknowns, Broyden-updated Jacobian; module documentation), starting from the state and
+    /// Jacobian in `warm` if it holds one (`&mut None` for a cold start). On success `warm`
+    /// holds the converged state's, the start of the next solve; on failure it is unchanged.
     pub fn solve<S: BladeSection + ?Sized>(
         &self,
         section: &S,
         cond: &FlightCondition,
-        warm: Option<&RotorSolution>,
+        warm: &mut Option<RotorWarmStart>,
     ) -> Result<RotorSolution, RotorError> {
         if !(cond.airspeed.is_finite() && cond.hub_aoa.is_finite() && cond.omega.is_finite()) {
             return Err(RotorError::InvalidCondition(
@@ -193,6 +109,7 @@ impl Rotor {
         let p = self.solver;
         let (mut f, _) = self.residuals(section, cond, z);
         let warm_jacobian = warm
+            .as_ref()
             .map(|w| w.jacobian)
             .filter(|j| j.iter().flatten().all(|v| v.is_finite()));
         let mut jac = match warm_jacobian {
@@ -230,7 +147,13 @@ impl Rotor {
             // Converged when the step taken or the next one is below the tolerance.
             let next_step = dz.map_or(f64::INFINITY, max_abs);
             if last_step < p.tolerance || next_step < p.tolerance {
-                return Ok(self.package(cond, z_next, loads, iter, jac));
+                let solution = self.package(cond, z_next, loads, iter);
+                *warm = Some(RotorWarmStart {
+                    induced_velocity: solution.induced_velocity,
+                    teeter: solution.teeter,
+                    jacobian: jac,
+                });
+                return Ok(solution);
             }
             if max_abs(f_next) > p.broyden_contraction * max_abs(f) {
                 jac = self.fd_jacobian(section, cond, z_next, f_next);
@@ -271,7 +194,6 @@ impl Rotor {
         z: [f64; 3],
         loads: Loads,
         iterations: usize,
-        jacobian: [[f64; 3]; 3],
     ) -> RotorSolution {
         let tip = cond.omega * self.radius;
         let rho = cond.atmosphere.density;
@@ -300,7 +222,6 @@ impl Rotor {
             table_clamped_fraction: loads.clamped_fraction,
             table_supercritical_fraction: loads.supercritical_fraction,
             iterations,
-            jacobian,
         }
     }
 }

@@ -4,7 +4,7 @@
 //! The rotor sees the airfoil only through [`BladeSection`]: every strip turns its local
 //! velocity into (α, Re, M) and asks the section at its radius for (c_l, c_d, c_m); every
 //! [`SectionAero`](crate::section::SectionAero) is a blade section uniform along the span. The facade is re-exported here (the aircraft, the rotor and its solution,
-//! trim, takeoff, cruise sweeps, the blade element) and [`study`]; the files inside:
+//! trim, takeoff, cruise sweeps, the blade element); the files inside:
 //!
 //! * `atmosphere` — ISA standard atmosphere (density, speed of sound, viscosity).
 //! * `aircraft` — the aircraft preset (rotor, airframe, propeller, engine, takeoff data and an
@@ -17,6 +17,8 @@
 //!   sum.
 //! * `inflow_flapping` — the disc's induced inflow and teeter flapping solved together with
 //!   those loads (Newton–Broyden).
+//! * `solution` — what a solve returns: the converged state and its loads, and apart from it
+//!   the solver's memory for a warm start.
 //! * `trim` — autorotation rpm and level-cruise trim.
 //! * `cruise` — power-required speed sweep and blade α(ψ) in trimmed cruise.
 //! * `engine` — full-throttle torque curve and reduction gear (Rotax 912 ULS in the preset).
@@ -25,7 +27,6 @@
 //! * `takeoff` — time-domain takeoff simulation to 15 m.
 //! * `spanwise` — section data along the blade: [`BladeSection`] and [`SpanwiseSection`], a
 //!   blade that reads another section over part of its span.
-//! * [`study`] — the paper's clean-versus-contaminated study and its published values.
 
 mod aircraft;
 mod atmosphere;
@@ -37,8 +38,8 @@ mod flapping;
 mod inflow;
 mod inflow_flapping;
 mod propeller;
+mod solution;
 mod spanwise;
-pub mod study;
 mod takeoff;
 mod trim;
 
@@ -50,12 +51,13 @@ pub use aircraft::{
 pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};
 pub use cruise::{checked_sweep_speeds, cruise_blade_alpha, speed_sweep, sweep_speeds, SweepPoint};
-pub use disc_loads::{FlightCondition, Rotor};
+pub use disc_loads::{FlightCondition, Rotor, RotorSolverParams};
 pub use engine::Engine;
 pub use flapping::Teeter;
 pub use inflow::{InflowModel, TipLoss, YawedFlow};
-pub use inflow_flapping::{RotorError, RotorSolution, RotorSolverParams};
+pub use inflow_flapping::RotorError;
 pub use propeller::{FullThrottle, Powerplant, Propeller, PropellerError, PropellerPoint};
+pub use solution::{RotorSolution, RotorWarmStart};
 pub use spanwise::{BladeSection, SpanBand, SpanwiseSection};
 pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
 pub use trim::{autorotation, trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};

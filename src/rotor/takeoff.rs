@@ -24,8 +24,10 @@
 
 use super::aircraft::{Aircraft, WingError, WingLoads};
 use super::atmosphere::Atmosphere;
-use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
+use super::disc_loads::{FlightCondition, Rotor};
+use super::inflow_flapping::RotorError;
 use super::propeller::{FullThrottle, Powerplant, PropellerError};
+use super::solution::{RotorSolution, RotorWarmStart};
 use super::spanwise::BladeSection;
 use super::{rad_s_to_rpm, rpm_to_rad_s, G0};
 use serde::Serialize;
@@ -140,8 +142,8 @@ struct Model<'a, S: BladeSection + ?Sized> {
     /// Last full-throttle equilibrium, the start of the next solve (local to this run).
     warm_prop: Option<FullThrottle>,
     inertia: f64,
-    /// Last rotor solution, the warm start of the next solve (local to this run).
-    warm: Option<RotorSolution>,
+    /// The last rotor solve's state, the warm start of the next solve (local to this run).
+    warm: Option<RotorWarmStart>,
     /// Airspeed at lift-off \[m/s\] (start of the pilot's airspeed schedule).
     liftoff_speed: f64,
 }
@@ -167,12 +169,9 @@ impl<S: BladeSection + ?Sized> Model<'_, S> {
                 reason: "the rotor stopped",
             });
         }
-        let s = self
-            .rotor
-            .solve(self.section, &cond, self.warm.as_ref())
-            .map_err(|source| TakeoffError::Rotor { time_s: t, source })?;
-        self.warm = Some(s);
-        Ok(s)
+        self.rotor
+            .solve(self.section, &cond, &mut self.warm)
+            .map_err(|source| TakeoffError::Rotor { time_s: t, source })
     }
 
     /// The wing's lift and drag in state `y`.

@@ -14,12 +14,12 @@ use polargen::output::{check_output_path, write_output, OutputError};
 use polargen::report::{
     check_report_paths, write_report, ReportInputs, SHIPPED_AIRCRAFT, SHIPPED_POLARS,
 };
-use polargen::rotor::study::{paper_runs, SpeedSweep};
 use polargen::rotor::{
     check_altitude_m, check_azimuth_samples, check_blade_radius, check_mass_kg, check_speed_kt,
     checked_sweep_speeds, cruise_blade_alpha, simulate_takeoff, trim_aircraft, Aircraft,
     TrimParams, MAX_ISA_ALTITUDE_M,
 };
+use polargen::studies::paper::{paper_runs, SpeedSweep};
 use polargen::table::read_lookup_table;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;

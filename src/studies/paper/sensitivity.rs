@@ -5,9 +5,7 @@
 //! computed again. Each range is argued or cited beside the value ([`ESTIMATES`]).
 
 use super::{StudyError, PAPER_TRIM_SPEED_KT};
-use crate::rotor::takeoff::simulate_takeoff;
-use crate::rotor::trim::{trim_aircraft, TrimParams};
-use crate::rotor::{Aircraft, TipLoss, YawedFlow};
+use crate::rotor::{simulate_takeoff, trim_aircraft, Aircraft, TipLoss, TrimParams, YawedFlow};
 use crate::section::SectionAero;
 use rayon::prelude::*;
 
