@@ -28,7 +28,7 @@ fn hover_inflow_matches_actuator_disc() {
         s.induced_velocity
     );
     // Axisymmetric hover: no flapping, no in-plane force, and the rotor needs driving torque.
-    assert!(s.teeter.amplitude() < 1e-8, "{:?}", s.teeter);
+    assert!(s.flapping.amplitude() < 1e-8, "{:?}", s.flapping);
     assert!(s.h_force.abs() < 1e-6 * s.thrust && s.side_force.abs() < 1e-6 * s.thrust);
     assert!(s.torque < 0.0);
 }
@@ -165,9 +165,9 @@ fn warm_start_reaches_the_cold_solution() {
         let cold = r.solve(&section, &target, &mut None).unwrap();
         let tip = target.omega * r.radius;
         let dv = (warm.induced_velocity - cold.induced_velocity).abs() / tip;
-        let db = (warm.teeter.beta1c - cold.teeter.beta1c)
+        let db = (warm.flapping.beta1c - cold.flapping.beta1c)
             .abs()
-            .max((warm.teeter.beta1s - cold.teeter.beta1s).abs());
+            .max((warm.flapping.beta1s - cold.flapping.beta1s).abs());
         assert!(
             dv < 1e-8 && db < 1e-8,
             "{target:?}: Δv0/ΩR {dv:e}, Δβ {db:e}"

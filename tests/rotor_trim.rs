@@ -126,7 +126,7 @@ fn flapping_tilts_the_disc_back_advancing_blade_rises() {
         &TrimParams::default(),
     )
     .unwrap();
-    let teeter = s.teeter;
+    let teeter = s.flapping;
     // Advancing blade (ψ = 90°) moves up: dβ/dψ > 0 there, and down on the retreating side.
     assert!(teeter.beta_rate(90f64.to_radians()) > 0.0);
     assert!(teeter.beta_rate(270f64.to_radians()) < 0.0);
@@ -190,7 +190,7 @@ fn reverse_flow_region_at_high_advance_ratio() {
     let inner = r.alpha_at_radius(&s, 0.15, 36);
     let a270 = inner[27].1;
     assert!(a270.abs() > 150.0, "α at ψ = 270°, 0.15 R: {a270}");
-    assert!(s.thrust.is_finite() && s.torque.is_finite() && s.teeter.amplitude().is_finite());
+    assert!(s.thrust.is_finite() && s.torque.is_finite() && s.flapping.amplitude().is_finite());
 }
 
 #[test]

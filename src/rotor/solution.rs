@@ -3,7 +3,7 @@
 //! apart from it the solver's memory for a warm start from that state ([`RotorWarmStart`]).
 
 use super::disc_loads::{FlightCondition, Rotor};
-use super::flapping::Teeter;
+use super::flapping::Flapping;
 use std::f64::consts::TAU;
 
 /// Converged rotor state and its azimuth-averaged loads.
@@ -13,8 +13,8 @@ pub struct RotorSolution {
     pub condition: FlightCondition,
     /// Mean induced velocity v0 \[m/s\] (downwards positive).
     pub induced_velocity: f64,
-    /// Teeter flapping.
-    pub teeter: Teeter,
+    /// Blade flapping.
+    pub flapping: Flapping,
     /// Tip-loss factor B used: 1 − (lift-free length)/R, for Prandtl's factor the equivalent
     /// value ∫(1 − F)dr/R averaged over the azimuth.
     pub tip_loss_b: f64,
@@ -52,7 +52,7 @@ pub struct RotorSolution {
 impl RotorSolution {
     /// Angle of attack of the tip-path plane α_R = α_H − β1c \[rad\] (the "rotor AoA").
     pub fn disc_aoa(&self) -> f64 {
-        self.condition.hub_aoa + self.teeter.tilt_back()
+        self.condition.hub_aoa + self.flapping.tilt_back()
     }
 
     /// Resultant rotor force √(L² + D²) \[N\].
@@ -70,9 +70,18 @@ pub struct RotorWarmStart {
     /// Mean induced velocity v0 \[m/s\].
     pub(super) induced_velocity: f64,
     /// Flapping.
-    pub(super) teeter: Teeter,
+    pub(super) flapping: Flapping,
     /// Jacobian of the scaled residuals with respect to the scaled unknowns.
-    pub(super) jacobian: [[f64; 3]; 3],
+    pub(super) jacobian: WarmJacobian,
+}
+
+/// The Jacobian of a warm start, sized by the hub's unknowns.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum WarmJacobian {
+    /// (v0/ΩR, β1c, β1s).
+    Teetering([[f64; 3]; 3]),
+    /// (v0/ΩR, β1c, β1s, β0).
+    Articulated([[f64; 4]; 4]),
 }
 
 impl Rotor {
@@ -92,7 +101,7 @@ impl Rotor {
                 let flow = self.strip_flow(
                     &solution.condition,
                     solution.induced_velocity,
-                    &solution.teeter,
+                    &solution.flapping,
                     r,
                     psi,
                 );

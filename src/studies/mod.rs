@@ -7,6 +7,8 @@
 //! * [`contamination`] — trip location on both or one surface, free transition at several
 //!   N_crit, and spanwise coverage (the blade reads the tripped table over part of its span):
 //!   the 60 kt trim and the takeoff of each setting against the clean rotor;
+//! * [`pca2`] — the rotor model on a second rotor: the PCA-2 autogiro rotor against its
+//!   full-scale tunnel and flight tests (NACA Reports 515 and 487);
 //! * [`airfoil`] — the same rotor with each of several airfoils, clean and tripped;
 //! * [`speed`] — the contamination penalty over the airspeed range;
 //! * [`wing`] — a fixed wing of several areas over the airspeed range: the rotor unloads;
@@ -22,6 +24,7 @@ mod cache;
 pub mod contamination;
 mod files;
 pub mod paper;
+pub mod pca2;
 mod progress;
 mod request;
 pub mod speed;

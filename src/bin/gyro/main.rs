@@ -3,6 +3,7 @@
 //! plots ([`plot`]) and the paper report ([`polargen::report`]). Text output is formatted in
 //! [`print`](mod@print).
 
+mod autorotate;
 mod plot;
 use polargen::report::console as print;
 mod study;
@@ -129,6 +130,8 @@ enum Command {
         #[arg(long, default_value_t = 36, allow_hyphen_values = true)]
         samples: usize,
     },
+    /// Isolated rotor in a wind tunnel: autorotative rpm, C_L, C_D, L/D, coning and flapping.
+    Autorotate(autorotate::AutorotateArgs),
     /// Rotor figures, clean vs contaminated, to SVG or PNG: alpha, takeoff or power.
     #[command(arg_required_else_help = true)]
     Plot {
@@ -345,6 +348,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
                 outln!(buf, "{psi:.1},{a:.3}");
             }
         }
+        Command::Autorotate(args) => autorotate::run(args, buf, |n| TOOL.say(n))?,
         Command::Plot { kind } => plot::run(kind)?,
         Command::Completions(args) => {
             let script = cli::completions(Cli::command(), args.shell);
