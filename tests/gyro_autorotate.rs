@@ -1,19 +1,16 @@
 //! `gyro autorotate`: the isolated rotor in a tunnel — JSON keys, μ with a reference rpm, the
 //! cases CSV over NACA Report 515's Table III, the pitch override and one-line errors.
 
-mod gyro_support;
+mod cli_support;
 
-use gyro_support::{aircraft, assert_ok, assert_one_line_error, gyro, root};
+use cli_support::{aircraft, assert_ok, assert_one_line_error, gyro, polars, repo};
 
 fn pca2() -> String {
-    root().join("aircraft/pca2.toml").display().to_string()
+    repo("aircraft/pca2.toml")
 }
 
 fn goe429() -> String {
-    root()
-        .join("polars/goe429_xtr0.07.csv")
-        .display()
-        .to_string()
+    polars("goe429_xtr0.07.csv")
 }
 
 fn json(args: &[&str]) -> serde_json::Value {
@@ -88,10 +85,7 @@ fn one_case_json_and_mu_with_a_reference_rpm() {
 #[test]
 fn cases_csv_runs_table_iii_in_one_command() {
     let (a, t) = (pca2(), goe429());
-    let cases = root()
-        .join("tests/data/pca2/tr515_table3_pitch1.9_faired.csv")
-        .display()
-        .to_string();
+    let cases = repo("tests/data/pca2/tr515_table3_pitch1.9_faired.csv");
     let out = gyro(&[
         "-q",
         "autorotate",
@@ -123,10 +117,7 @@ fn cases_csv_runs_table_iii_in_one_command() {
 
 #[test]
 fn a_whole_aircraft_preset_autorotates_too() {
-    let t = root()
-        .join("polars/naca8h12_free.csv")
-        .display()
-        .to_string();
+    let t = polars("naca8h12_free.csv");
     let v = json(&[
         "autorotate",
         "--aircraft",
