@@ -148,22 +148,27 @@ fn bad_arguments_are_one_line_errors() {
         gyro(&[&["autorotate", "--aircraft", &a, "--table", &t][..], extra].concat())
     };
     assert_one_line_error(
+        "gyro",
         &run(&["--alpha-deg", "95", "--speed-m-s", "20"]),
         "--alpha-deg",
     );
     assert_one_line_error(
+        "gyro",
         &run(&["--alpha-deg", "5", "--speed-m-s", "-3"]),
         "--speed-m-s",
     );
     assert_one_line_error(
+        "gyro",
         &run(&["--alpha-deg", "5", "--speed-m-s", "NaN"]),
         "--speed-m-s",
     );
     assert_one_line_error(
+        "gyro",
         &run(&["--alpha-deg", "5", "--mu", "0.2", "--reference-rpm", "0"]),
         "--reference-rpm",
     );
     assert_one_line_error(
+        "gyro",
         &run(&["--alpha-deg", "5", "--speed-m-s", "20", "--pitch-deg", "30"]),
         "rotor.incidence_deg",
     );
@@ -175,12 +180,12 @@ fn bad_arguments_are_one_line_errors() {
     let bad = dir.path().join("bad.csv");
     std::fs::write(&bad, "alpha,speed\n5,20\n").unwrap();
     let bad = bad.display().to_string();
-    assert_one_line_error(&run(&["--cases", &bad]), "alpha_deg");
+    assert_one_line_error("gyro", &run(&["--cases", &bad]), "alpha_deg");
     let row = dir.path().join("row.csv");
     std::fs::write(&row, "alpha_deg,speed_m_s\n5,20\n5,1e6\n").unwrap();
     let row = row.display().to_string();
-    assert_one_line_error(&run(&["--cases", &row]), "line 3");
+    assert_one_line_error("gyro", &run(&["--cases", &row]), "line 3");
     // The rotor-only preset cannot be trimmed as an aircraft.
     let out = gyro(&["trim", "--aircraft", &a, "--table", &t]);
-    assert_one_line_error(&out, "describes a rotor alone");
+    assert_one_line_error("gyro", &out, "describes a rotor alone");
 }
