@@ -55,8 +55,7 @@ fn read_polar(name: &str) -> Vec<PolarPoint> {
                 converged: true,
                 iterations: 0,
                 residual: 0.0,
-                cpmin: f64::NAN,
-                supercritical: None,
+                ..PolarPoint::from_coefficients(v[0], v[1], v[2], v[4])
             }
         })
         .collect()

@@ -104,6 +104,9 @@ pub struct RotorSolution {
     /// Fraction of the strip-azimuth samples whose section data lean on supercritical table
     /// points (Cp_min < Cp*, outside the validity of the section method).
     pub table_supercritical_fraction: f64,
+    /// Fraction of the strip-azimuth samples at whose α the table's points are in massive
+    /// separation (outside the validity of the section method; the 360° extension stands in).
+    pub table_separated_fraction: f64,
     /// Newton iterations used.
     pub iterations: usize,
     /// Jacobian of the scaled residuals with respect to z at the solution (finite differences,
@@ -299,6 +302,7 @@ impl Rotor {
             reverse_flow_fraction: loads.reverse_fraction,
             table_clamped_fraction: loads.clamped_fraction,
             table_supercritical_fraction: loads.supercritical_fraction,
+            table_separated_fraction: loads.separated_fraction,
             iterations,
             jacobian,
         }

@@ -33,6 +33,9 @@ pub fn point(alpha: f64, cl: f64, cd: f64, cm: f64) -> PolarPoint {
         residual: 1e-9,
         cpmin: -0.8,
         supercritical: Some(false),
+        xsep_top: 1.0,
+        xsep_bot: 1.0,
+        massive_separation: Some(false),
     }
 }
 
@@ -121,6 +124,9 @@ pub fn xfoil_reference(file: &str) -> Vec<PolarPoint> {
                 residual: 0.0,
                 cpmin: f64::NAN,
                 supercritical: None,
+                xsep_top: f64::NAN,
+                xsep_bot: f64::NAN,
+                massive_separation: None,
             }
         })
         .collect()
