@@ -5,6 +5,7 @@
 //! (and say so), files without the flag still read.
 
 mod table_support;
+mod xfoil_support;
 
 use polargen::section::{PolarPoint, SectionAero, MASSIVE_SEPARATION_XSEP};
 use polargen::table::{parse_table, read_table, write_table, PolarTable, TableFormat};
@@ -42,18 +43,26 @@ fn flags(t: &PolarTable) -> Vec<(f64, Option<bool>)> {
         .collect()
 }
 
-/// The XFOIL 6.99 separation locations of tests/data/post_stall: (Re, α, x_sep/c).
-fn xfoil_separation() -> Vec<(f64, f64, f64)> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/post_stall/naca0012_xfoil_separation.csv");
-    let text = std::fs::read_to_string(path).unwrap();
-    text.lines()
-        .skip(1)
-        .map(|l| {
-            let v: Vec<f64> = l.split(',').map(|f| f.parse().unwrap()).collect();
-            (v[0], v[1], v[2])
-        })
-        .collect()
+/// Where the reversed flow (Cf < 0) that reaches the upper trailing edge starts, x/c, in an
+/// XFOIL DUMP of tests/data/xfoil (rows s, x, y, Ue, δ*, θ, Cf, … from the upper trailing edge
+/// to the leading edge, the lower surface and the wake): the zero of Cf interpolated linearly
+/// in x, 1 when Cf ≥ 0 at the trailing edge — the rule of polargen's `xsep_top`.
+fn xfoil_separation(dump: &str) -> f64 {
+    let rows = xfoil_support::dump(dump);
+    let le = (1..rows.len())
+        .find(|&k| rows[k][1] > rows[k - 1][1])
+        .unwrap_or(rows.len())
+        - 1;
+    let upper = &rows[..=le];
+    let reversed = upper.iter().take_while(|r| r[6] < 0.0).count();
+    match reversed {
+        0 => 1.0,
+        n if n == upper.len() => upper[n - 1][1],
+        n => {
+            let (a, b) = (&upper[n - 1], &upper[n]);
+            b[1] + b[6] / (b[6] - a[6]) * (a[1] - b[1])
+        }
+    }
 }
 
 #[test]
@@ -93,34 +102,53 @@ fn post_stall_points_are_flagged_whatever_the_sweep() {
 #[test]
 fn separation_locations_match_xfoil() {
     let dir = scratch("xfoil");
-    let tables = [
-        (2e5, solve(&dir, "2e5", "0:30:2")),
-        (2e6, solve(&dir, "2e6", "0:22:1")),
+    let cases = [
+        (
+            "2e5",
+            "0:30:2",
+            "naca0012_Re2e5_M0_free",
+            vec![12.0, 14.0, 16.0, 30.0],
+        ),
+        (
+            "2e6",
+            "0:22:1",
+            "naca0012_Re2e6_M0_free",
+            vec![16.0, 17.0, 18.0, 19.0, 20.0],
+        ),
     ];
-    let mut compared = 0;
-    for (re, alpha, xfoil) in xfoil_separation() {
-        let (_, t) = tables.iter().find(|(r, _)| *r == re).unwrap();
-        let p = t
-            .polar_at(0, 0)
-            .unwrap()
-            .iter()
-            .find(|p| p.alpha == alpha && p.converged)
-            .unwrap();
-        // Measured: within 0.004 of XFOIL's location on the same point (0.9182 vs 0.9211 at
-        // 16°, Re 2·10⁶); the flag agrees with XFOIL's location on every point.
-        assert!(
-            (p.xsep_top - xfoil).abs() < 0.015,
-            "Re {re}, alpha {alpha}: {} vs XFOIL {xfoil}",
-            p.xsep_top
-        );
-        assert_eq!(
-            p.massive_separation,
-            Some(xfoil < MASSIVE_SEPARATION_XSEP),
-            "alpha {alpha}"
-        );
-        compared += 1;
+    for (re, alphas, case, dumps) in cases {
+        let t = solve(&dir, re, alphas);
+        for alpha in dumps {
+            let xfoil = xfoil_separation(&format!("{case}_bl_a{alpha}.txt"));
+            let p = t
+                .polar_at(0, 0)
+                .unwrap()
+                .iter()
+                .find(|p| p.alpha == alpha && p.converged)
+                .unwrap();
+            // Measured: within 0.004 of XFOIL's location on the same point (0.9182 vs 0.9211 at
+            // 16°, Re 2·10⁶); the flag agrees with XFOIL's location on every point.
+            assert!(
+                (p.xsep_top - xfoil).abs() < 0.015,
+                "Re {re}, alpha {alpha}: {} vs XFOIL {xfoil}",
+                p.xsep_top
+            );
+            assert_eq!(
+                p.massive_separation,
+                Some(xfoil < MASSIVE_SEPARATION_XSEP),
+                "alpha {alpha}"
+            );
+        }
     }
-    assert_eq!(compared, 13);
+    // XFOIL's sweep stays past stall on the branch polargen reaches from 20° (Cl 0.674 at 30°).
+    let xfoil = xfoil_support::polar("naca0012_Re2e5_M0_free.csv");
+    let from_twenty = solve(&dir, "2e5", "20:30:10");
+    let cl30 = from_twenty.polar_at(0, 0).unwrap()[1].cl;
+    let reference = xfoil_support::at_alpha(&xfoil, 30.0).unwrap().cl;
+    assert!(
+        (cl30 - reference).abs() < 0.003,
+        "{cl30} vs XFOIL {reference}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 
