@@ -272,7 +272,7 @@ fn report_tables_match_the_single_commands() {
             "360",
         ]);
         assert_ok(&out);
-        let (psi, alpha) = String::from_utf8(out.stdout)
+        let samples: Vec<(f64, f64)> = String::from_utf8(out.stdout)
             .unwrap()
             .lines()
             .skip(1)
@@ -280,7 +280,15 @@ fn report_tables_match_the_single_commands() {
                 let (p, a) = l.split_once(',').unwrap();
                 (p.parse::<f64>().unwrap(), a.parse::<f64>().unwrap())
             })
-            .fold((0.0, f64::MIN), |m, r| if r.1 > m.1 { r } else { m });
+            .collect();
+        let alpha = samples.iter().map(|s| s.1).fold(f64::MIN, f64::max);
+        // The samples that tie the maximum to the printed 3 decimals (a flat top: 4 in a row
+        // for the clean rotor), any of which is the maximum the report found unrounded.
+        let tied: Vec<f64> = samples
+            .iter()
+            .filter(|s| s.1 == alpha)
+            .map(|s| s.0)
+            .collect();
         let fig10 = row(
             &md,
             if kind == "free" {
@@ -290,14 +298,17 @@ fn report_tables_match_the_single_commands() {
             },
         );
         // `gyro alpha` prints α to 3 decimals, so near the flat top neighbouring samples can tie:
-        // allow that rounding on α and one 1° sample on ψ.
+        // allow that rounding on α, and on ψ any tied sample or one 1° sample beside them.
         let alpha_readme: f64 = fig10[2].parse().unwrap();
         assert!(
             (alpha_readme - alpha).abs() <= 0.0055,
             "{fig10:?} vs {alpha}"
         );
         let psi_readme: f64 = fig10[5].parse().unwrap();
-        assert!((psi_readme - psi).abs() <= 1.0, "{fig10:?} vs {psi}");
+        assert!(
+            tied.iter().any(|psi| (psi_readme - psi).abs() <= 1.0),
+            "{fig10:?} vs {tied:?}"
+        );
     }
 
     // Table 5: ours is the table lookup at Re 1.9e6, M 0.41, and within 3 % of XFOIL 6.99
