@@ -12,6 +12,13 @@
 /// file; a link to `/dev/zero` or a runaway file is refused before it fills memory.
 pub const MAX_INPUT_BYTES: u64 = 64 << 20;
 
+/// Most points (rows) one table may hold, read or built: 100 000, twice the most one
+/// `polargen` run computes ([`MAX_GRID_POINTS`]). A table this large is about 55 MB as
+/// JSON (the most verbose format: ≈ 550 bytes a point), so that what polargen reads it can
+/// also write in every format and read back; a writer still measures the file first and
+/// refuses one beyond [`MAX_INPUT_BYTES`] (very long airfoil names, say) before writing.
+pub const MAX_TABLE_POINTS: usize = 100_000;
+
 /// Most points of an airfoil contour read from a file: 20 000, the most the repaneling spline
 /// accepts and 50 times a dense published coordinate file (UIUC files hold 35–400 points).
 /// Validation is O(n log n) (a sweep over the segments), so even this many points are

@@ -2,12 +2,15 @@
 //! that consume them.
 //!
 //! * [`PolarPoint`] — one solved operating point (α, Cl, Cd, Cm, transition, convergence,
-//!   minimum pressure and the supercritical flag).
+//!   minimum pressure and the supercritical flag, separation and the massive-separation flag).
+//! * [`massive_separation`] — the rule that marks a converged point outside the method's
+//!   validity in separated flow.
 //! * [`FlowCondition`] — the (Re, M) pair a polar or a table node is computed at.
 //! * [`Transition`] — the transition setting a polar is computed with (N_crit and trip x/c per
 //!   surface), with the one rule for its values ([`Transition::check`]).
 //! * [`SectionAero`] and [`Lookup`] — section coefficients at any (α, Re, M) with the flags a
-//!   consumer needs to judge them (clamped, post-stall, bridged, supercritical).
+//!   consumer needs to judge them (clamped, post-stall, bridged, supercritical, massive
+//!   separation).
 //!
 //! * [`wrap_deg`] — an angle of attack brought onto the circle the tables cover.
 //!
@@ -228,7 +231,9 @@ pub struct TransitionError {
 /// One operating point of a polar: the result of the solver at one (Re, M, α).
 ///
 /// Unconverged points are kept (with `converged = false`) so that tables can flag them;
-/// their coefficients must never be used as results.
+/// their coefficients must never be used as results. Nor are those of a converged point in
+/// massive separation ([`massive_separation`]): [`usable`](Self::usable) says which points'
+/// coefficients are results.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct PolarPoint {
     /// Angle of attack \[deg\].
@@ -268,6 +273,20 @@ pub struct PolarPoint {
     /// validity of the method (no shocks). `None` when unknown, as `cpmin`.
     #[serde(default)]
     pub supercritical: Option<bool>,
+    /// x/c on the upper surface where the reversed flow (Cf < 0) that reaches the trailing edge
+    /// begins, interpolated where Cf changes sign; the trailing edge's x (1) when the flow is
+    /// attached there (a separation bubble that reattaches does not count). NaN when unknown
+    /// (a point that could not be solved, a file without the column).
+    #[serde(default = "unknown_x")]
+    pub xsep_top: f64,
+    /// The same on the lower surface.
+    #[serde(default = "unknown_x")]
+    pub xsep_bot: f64,
+    /// The point lies in massive separation ([`massive_separation`] of `xsep_top`,
+    /// `xsep_bot`), outside the validity of the integral boundary-layer method: its
+    /// coefficients are not results, even when the solver converged. `None` when unknown.
+    #[serde(default)]
+    pub massive_separation: Option<bool>,
 }
 
 impl PolarPoint {
@@ -288,13 +307,53 @@ impl PolarPoint {
             residual: 0.0,
             cpmin: f64::NAN,
             supercritical: None,
+            xsep_top: f64::NAN,
+            xsep_bot: f64::NAN,
+            massive_separation: None,
         }
+    }
+
+    /// Whether the coefficients are results: the solver converged and the point is not in
+    /// massive separation (or its table does not say). Lookups, the C81 and AeroDyn rows
+    /// and the 360° extension's junction use these points only; supercritical points are
+    /// used, flagged.
+    pub fn usable(&self) -> bool {
+        self.converged && self.massive_separation != Some(true)
     }
 }
 
 /// The `cpmin` of a point that does not say (NaN).
 fn unknown_cpmin() -> f64 {
     f64::NAN
+}
+
+/// The separation location of a point that does not say (NaN).
+fn unknown_x() -> f64 {
+    f64::NAN
+}
+
+/// The separation location x/c ahead of which a point is in massive separation: reversed flow
+/// from mid-chord (or further forward) to the trailing edge.
+///
+/// Why half the chord (measured, docs/limits.md): the integral boundary layer coupled through
+/// the displacement thickness (Drela 1989, XFOIL) follows trailing-edge separation through
+/// C_l,max, and polargen and XFOIL 6.99 place the separation alike on every point compared
+/// (NACA 0012, within 0.004 c); once the separation lies ahead of mid-chord the points stop
+/// depending on α alone (α 30°, Re 2·10⁵: C_l 1.139 after a sweep from 0°, 0.674 from 20°,
+/// both converged) and their drag falls to about half a flat plate's (Hoerner 1965, ch. 3).
+/// In the shipped tables the first point past the bound lies at or past the first C_l
+/// extremum of its α branch on 534 of 588 branches, and on a stall plateau on the others;
+/// none lies on a linear part of a lift curve.
+pub const MASSIVE_SEPARATION_XSEP: f64 = 0.5;
+
+/// Whether a point with separation locations `xsep_top`, `xsep_bot` (x/c, see
+/// [`PolarPoint::xsep_top`]) is in massive separation: either surface separated ahead of
+/// [`MASSIVE_SEPARATION_XSEP`]. `None` when neither location is known.
+pub fn massive_separation(xsep_top: f64, xsep_bot: f64) -> Option<bool> {
+    if xsep_top.is_nan() && xsep_bot.is_nan() {
+        return None;
+    }
+    Some(xsep_top < MASSIVE_SEPARATION_XSEP || xsep_bot < MASSIVE_SEPARATION_XSEP)
 }
 
 /// Section coefficients returned by a table lookup.
@@ -321,6 +380,13 @@ pub struct Lookup {
     /// A table point the value leans on does not say whether it is supercritical (a table
     /// written without the flag).
     pub supercritical_unknown: bool,
+    /// The table's points at this α are in massive separation
+    /// ([`PolarPoint::massive_separation`]) and were not used: the value comes from the 360°
+    /// extension (`post_stall` is set too) or bridges over them (`bridged` is set too).
+    pub massive_separation: bool,
+    /// A table point the value leans on does not say whether it is in massive separation (a
+    /// table written without the flag).
+    pub separation_unknown: bool,
 }
 
 impl Lookup {

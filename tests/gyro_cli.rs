@@ -48,6 +48,7 @@ fn trim_json_keys_and_values() {
         "static_thrust_n",
         "table_clamped_fraction",
         "table_supercritical_fraction",
+        "table_separated_fraction",
     ] {
         assert!(v[key].is_number(), "{key} missing: {v}");
     }

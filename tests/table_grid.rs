@@ -168,7 +168,8 @@ fn points_are_validated() {
     assert!(!t.has_lookup());
     assert_eq!(
         t.require_lookup().unwrap_err().to_string(),
-        "empty table: no polar has at least 2 converged points"
+        "empty table: no polar has at least 2 converged points outside massive separation \
+         (docs/limits.md)"
     );
     assert!(t.lookup(1.0, 1e6, 0.3).cl.is_nan());
 }

@@ -227,16 +227,18 @@ fn xfoil_polar_files_have_xfoil_layout() {
     );
     assert_eq!(
         lines[10],
-        "   alpha    CL        CD       CDp       CM     Top_Xtr  Bot_Xtr   Cpmin"
+        "   alpha    CL        CD       CDp       CM     Top_Xtr  Bot_Xtr   Cpmin   Top_Xsep \
+         Bot_Xsep"
     );
     for (line, p) in lines[12..].iter().zip(&conv) {
-        assert_eq!(line.len(), 8 + 9 + 10 + 10 + 9 + 9 + 9 + 9);
+        assert_eq!(line.len(), 8 + 9 + 10 + 10 + 9 + 9 + 9 + 9 + 9 + 9);
         let v: Vec<f64> = line
             .split_whitespace()
             .map(|f| f.parse().unwrap())
             .collect();
-        assert_eq!(v.len(), 8);
+        assert_eq!(v.len(), 10);
         assert!(v[7].to_bits() == p.cpmin.to_bits() || (v[7] - p.cpmin).abs() <= 5e-5);
+        assert!((v[8] - p.xsep_top).abs() <= 5e-5 && (v[9] - p.xsep_bot).abs() <= 5e-5);
         assert!((v[0] - p.alpha).abs() <= 5e-4 && (v[1] - p.cl).abs() <= 5e-5);
         assert!((v[2] - p.cd).abs() <= 5e-6 && (v[4] - p.cm).abs() <= 5e-5);
     }

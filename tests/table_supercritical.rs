@@ -36,7 +36,9 @@ fn lookups_flag_the_intervals_of_supercritical_points() {
             points: 7,
             converged: 7,
             supercritical: 2,
-            unknown: 0
+            unknown: 0,
+            massive_separation: 0,
+            separation_unknown: 0,
         }
     );
 }
@@ -53,8 +55,9 @@ fn files_without_the_columns_read_as_unknown() {
     assert!(l.supercritical_unknown && !l.supercritical);
     assert_eq!(
         t.census().to_string(),
-        "2 of 2 points converged (100.0 %); 0 of them supercritical (Cp_min < Cp*), \
-         2 without the flag (unknown)"
+        "2 of 2 points converged (100.0 %); 0 of them supercritical (Cp_min < Cp*), 0 in \
+         massive separation (not used), 2 without the supercritical and 2 without the \
+         separation flag (unknown)"
     );
     // With `cpmin` but without `supercritical` the flag follows from Cp* at the row's Mach
     // number: Cp*(0.6) = −1.2948, so −1.30 is supercritical and −1.29 is not.
@@ -109,6 +112,6 @@ fn every_readable_format_carries_the_flag() {
         .lines()
         .next()
         .unwrap()
-        .ends_with(",cpmin,supercritical"));
+        .ends_with(",cpmin,supercritical,xsep_top,xsep_bot,massive_separation"));
     std::fs::remove_dir_all(dir).unwrap();
 }

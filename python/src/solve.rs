@@ -68,8 +68,10 @@ impl Settings {
     }
 }
 
-/// The points of a polar as columns: a dict of NumPy arrays (`alpha`, `cl`, `cd`, `cdp`,
-/// `cdf`, `cm`, `xtr_top`, `xtr_bot`, `converged`, `iterations`, `residual`).
+/// The points of a polar as columns: a dict of NumPy arrays, every per-point column of the
+/// CSV table (`alpha`, `cl`, `cd`, `cdp`, `cdf`, `cm`, `xtr_top`, `xtr_bot`, `converged`,
+/// `iterations`, `residual`, `cpmin`, `supercritical`, `xsep_top`, `xsep_bot`,
+/// `massive_separation`); the two flags as int8 (1 yes, 0 no, −1 unknown, an empty CSV field).
 pub fn polar_columns<'py>(py: Python<'py>, points: &[PolarPoint]) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     let column = |f: fn(&PolarPoint) -> f64| -> Bound<'py, PyArray1<f64>> {
@@ -88,6 +90,18 @@ pub fn polar_columns<'py>(py: Python<'py>, points: &[PolarPoint]) -> PyResult<Bo
     let iterations: Vec<i64> = points.iter().map(|p| i64::from(p.iterations)).collect();
     d.set_item("iterations", iterations.into_pyarray(py))?;
     d.set_item("residual", column(|p| p.residual))?;
+    d.set_item("cpmin", column(|p| p.cpmin))?;
+    let flag = |f: fn(&PolarPoint) -> Option<bool>| -> Bound<'py, PyArray1<i8>> {
+        points
+            .iter()
+            .map(|p| f(p).map_or(-1, i8::from))
+            .collect::<Vec<i8>>()
+            .into_pyarray(py)
+    };
+    d.set_item("supercritical", flag(|p| p.supercritical))?;
+    d.set_item("xsep_top", column(|p| p.xsep_top))?;
+    d.set_item("xsep_bot", column(|p| p.xsep_bot))?;
+    d.set_item("massive_separation", flag(|p| p.massive_separation))?;
     Ok(d)
 }
 

@@ -38,6 +38,10 @@ fn lookup_dict<'py>(py: Python<'py>, l: &Lookup) -> PyResult<Bound<'py, PyDict>>
     d.set_item("mach_clamped", l.mach_clamped)?;
     d.set_item("post_stall", l.post_stall)?;
     d.set_item("bridged", l.bridged)?;
+    d.set_item("supercritical", l.supercritical)?;
+    d.set_item("supercritical_unknown", l.supercritical_unknown)?;
+    d.set_item("massive_separation", l.massive_separation)?;
+    d.set_item("separation_unknown", l.separation_unknown)?;
     Ok(d)
 }
 
@@ -181,7 +185,8 @@ impl Table {
     }
 
     /// Section coefficients at every (alpha, re, mach) of three equally long 1-D arrays, with
-    /// the flags: (cl, cd, cm, re_clamped, mach_clamped, post_stall, bridged).
+    /// the flags: (cl, cd, cm, re_clamped, mach_clamped, post_stall, bridged, supercritical,
+    /// supercritical_unknown, massive_separation, separation_unknown).
     fn lookup<'py>(
         &self,
         py: Python<'py>,
@@ -215,6 +220,12 @@ impl Table {
                 flag(|l| l.mach_clamped).into_pyarray(py).into_any(),
                 flag(|l| l.post_stall).into_pyarray(py).into_any(),
                 flag(|l| l.bridged).into_pyarray(py).into_any(),
+                flag(|l| l.supercritical).into_pyarray(py).into_any(),
+                flag(|l| l.supercritical_unknown)
+                    .into_pyarray(py)
+                    .into_any(),
+                flag(|l| l.massive_separation).into_pyarray(py).into_any(),
+                flag(|l| l.separation_unknown).into_pyarray(py).into_any(),
             ],
         )
     }
@@ -248,7 +259,13 @@ impl Table {
         self.inner.converged_count()
     }
 
-    /// Whether lookups are possible (some polar has two converged points).
+    /// Number of usable points: converged and not in massive separation (those lookups use).
+    #[getter]
+    fn usable_count(&self) -> usize {
+        self.inner.usable_count()
+    }
+
+    /// Whether lookups are possible (some polar has two usable points).
     #[getter]
     fn has_lookup(&self) -> bool {
         self.inner.has_lookup()

@@ -18,7 +18,7 @@ const REFERENCE_COLOR: usize = 7;
 pub struct PolarCurve<'a> {
     /// Legend label, e.g. `"NACA 8-H-12 free transition"`.
     pub label: &'a str,
-    /// Solved points; unconverged ones are skipped.
+    /// Solved points; unconverged ones are skipped, those in massive separation drawn apart.
     pub points: &'a [PolarPoint],
     /// Colour and line kind.
     pub style: Style,
@@ -46,6 +46,8 @@ pub fn polar_figure(polars: &[(&str, &[PolarPoint])], title: &str) -> Figure {
 /// The transition panel draws x_tr/c of the upper surface in the curve's style and of the
 /// lower surface dashed; it is left out when no polar carries transition locations (C81).
 /// Points with `converged == false` or non-finite Cl, Cd, Cm are left out of every line;
+/// converged points in massive separation ([`PolarPoint::usable`]) are drawn as unconnected
+/// points in the curve's colour, labelled `(massive separation)`, not joined to the line;
 /// Cl/Cd skips Cd ≤ 0 (inviscid). Drag beyond the Cd axis is marked by arrowheads at its right
 /// edge and counted in its label.
 pub fn polar_figure_styled(curves: &[PolarCurve], title: &str, cd_axis: CdAxis) -> Figure {
@@ -59,7 +61,10 @@ pub fn polar_figure_styled(curves: &[PolarCurve], title: &str, cd_axis: CdAxis) 
     .with_x_range(CHORD_LIMITS.0, CHORD_LIMITS.1);
     let mut ratio = Panel::new("Lift-to-drag ratio", "α [deg]", "Cl/Cd [-]");
     let mut moment = Panel::new("Pitching moment", "α [deg]", "Cm (c/4) [-]");
-    let usable: Vec<Vec<PolarPoint>> = curves.iter().map(|c| usable_points(c.points)).collect();
+    let usable: Vec<Vec<PolarPoint>> = curves
+        .iter()
+        .map(|c| finite_points(c.points, PolarPoint::usable))
+        .collect();
     for (c, pts) in curves.iter().zip(&usable) {
         let series = |f: &dyn Fn(&PolarPoint) -> Option<(f64, f64)>| {
             Series::from_pairs(c.label, pts.iter().filter_map(f), c.style)
@@ -83,6 +88,24 @@ pub fn polar_figure_styled(curves: &[PolarCurve], title: &str, cd_axis: CdAxis) 
             pts.iter().map(|p| (p.xtr_bot, p.cl)),
             lower,
         ));
+    }
+    for c in curves {
+        // Converged points in massive separation: drawn as unconnected points, not as results.
+        let separated = finite_points(c.points, |p| p.converged && !p.usable());
+        if separated.is_empty() {
+            continue;
+        }
+        let label = format!("{} (massive separation)", c.label);
+        let style = Style::points(c.style.color);
+        let series = |f: &dyn Fn(&PolarPoint) -> Option<(f64, f64)>| {
+            Series::from_pairs(label.as_str(), separated.iter().filter_map(f), style)
+        };
+        lift.series.push(series(&|p| Some((p.alpha, p.cl))));
+        drag.series.push(series(&|p| Some((p.cd, p.cl))));
+        ratio
+            .series
+            .push(series(&|p| (p.cd > 0.0).then(|| (p.alpha, p.cl / p.cd))));
+        moment.series.push(series(&|p| Some((p.alpha, p.cm))));
     }
     let polars: Vec<&[PolarPoint]> = usable.iter().map(Vec::as_slice).collect();
     if let Some(limit) = cd_axis.upper_limit(&polars) {
@@ -123,12 +146,13 @@ pub fn mark_lift_coefficient(mut figure: Figure, cl: f64) -> Figure {
     figure
 }
 
-/// Converged points with finite α, Cl, Cd, Cm, sorted by α (sweeps may run 0 → up, 0 → down).
-fn usable_points(points: &[PolarPoint]) -> Vec<PolarPoint> {
+/// The points `keep` selects with finite α, Cl, Cd, Cm, sorted by α (sweeps may run 0 → up,
+/// 0 → down).
+fn finite_points(points: &[PolarPoint], keep: impl Fn(&PolarPoint) -> bool) -> Vec<PolarPoint> {
     let mut pts: Vec<PolarPoint> = points
         .iter()
         .filter(|p| {
-            p.converged
+            keep(p)
                 && p.alpha.is_finite()
                 && p.cl.is_finite()
                 && p.cd.is_finite()

@@ -350,6 +350,9 @@ mod tests {
                 residual: 0.0,
                 cpmin: -1.0,
                 supercritical: Some(false),
+                xsep_top: 1.0,
+                xsep_bot: 1.0,
+                massive_separation: Some(false),
             }
         }
         fn reset(&mut self) {

@@ -31,6 +31,25 @@ fn alpha_max(curve: &[(f64, f64)]) -> (f64, f64) {
 }
 
 /// The rows of Table 3.
+/// The sentence on the blade-element lookups that fall where the tables' points are in
+/// massive separation (the 360° extension stands in for them), when there are any.
+fn separated_share(clean: &TrimResult, dirty: &TrimResult) -> String {
+    let (c, d) = (
+        clean.table_separated_fraction,
+        dirty.table_separated_fraction,
+    );
+    if c == 0.0 && d == 0.0 {
+        return String::new();
+    }
+    format!(
+        " {:.1} % (clean) and {:.1} % (contaminated) fall where the table's points are in \
+         massive separation, also outside the method's validity: the 360° extension stands in \
+         for them.",
+        100.0 * c,
+        100.0 * d
+    )
+}
+
 fn trim_rows(t: &[TrimResult; 2]) -> Vec<Comparison> {
     compare(&TABLE3_TRIM, &t[0], &t[1])
 }
@@ -125,7 +144,7 @@ pub(super) fn markdown(
          M {}…{mach_max}) and use its edge values: the inboard strips below the lowest \
          Reynolds number, where the blade meets the air at a few m/s (the reverse-flow circle \
          and its edge){tip}. {:.1} % (clean) and {:.1} % (contaminated) lean on supercritical \
-         table points (locally supersonic flow, where the section method is not valid).",
+         table points (locally supersonic flow, where the section method is not valid).{}",
         100.0 * clean.table_clamped_fraction,
         100.0 * dirty.table_clamped_fraction,
         table.re()[0],
@@ -133,6 +152,7 @@ pub(super) fn markdown(
         table.mach()[0],
         100.0 * clean.table_supercritical_fraction,
         100.0 * dirty.table_supercritical_fraction,
+        separated_share(clean, dirty),
     );
     outln!(o);
 

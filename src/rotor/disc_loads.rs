@@ -177,6 +177,9 @@ pub(super) struct Loads {
     pub(super) clamped_fraction: f64,
     /// Fraction of samples leaning on supercritical table points.
     pub(super) supercritical_fraction: f64,
+    /// Fraction of samples where the table's points are in massive separation (the 360°
+    /// extension stands in for them).
+    pub(super) separated_fraction: f64,
     /// Equivalent tip-loss factor B.
     pub(super) tip_loss_b: f64,
 }
@@ -345,6 +348,7 @@ impl Rotor {
         let mut reversed = 0usize;
         let mut clamped = 0usize;
         let mut supercritical = 0usize;
+        let mut separated = 0usize;
         let mut lift_free = 0.0;
         let stream = self.disc_stream(cond, v0);
         for (k, moment) in moments.iter_mut().enumerate() {
@@ -377,6 +381,7 @@ impl Rotor {
                 if coeffs.supercritical {
                     supercritical += 1;
                 }
+                separated += usize::from(coeffs.massive_separation);
                 let load = strip_load(&flow, &coeffs, rho, strip.chord, lift_factor);
                 ft_sum += load.tangential * dr;
                 fn_sum += load.normal * dr;
@@ -409,6 +414,7 @@ impl Rotor {
         loads.reverse_fraction = reversed as f64 / cells;
         loads.clamped_fraction = clamped as f64 / cells;
         loads.supercritical_fraction = supercritical as f64 / cells;
+        loads.separated_fraction = separated as f64 / cells;
         loads.tip_loss_b = 1.0 - lift_free / (n as f64 * self.radius);
         loads
     }

@@ -296,6 +296,7 @@ impl Rotor {
             reverse_flow_fraction: loads.reverse_fraction,
             table_clamped_fraction: loads.clamped_fraction,
             table_supercritical_fraction: loads.supercritical_fraction,
+            table_separated_fraction: loads.separated_fraction,
             iterations,
         }
     }

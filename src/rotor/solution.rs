@@ -45,6 +45,9 @@ pub struct RotorSolution {
     /// Fraction of the strip-azimuth samples whose section data lean on supercritical table
     /// points (Cp_min < Cp*, outside the validity of the section method).
     pub table_supercritical_fraction: f64,
+    /// Fraction of the strip-azimuth samples at whose α the table's points are in massive
+    /// separation (outside the validity of the section method; the 360° extension stands in).
+    pub table_separated_fraction: f64,
     /// Newton iterations used.
     pub iterations: usize,
 }

@@ -121,7 +121,8 @@ impl Default for TrimParams {
 /// Trimmed level flight. Its serde form (what `gyro trim --json` and `gyro sweep --json`
 /// print) holds the paper's Table 3 quantities, both rotor angles, the hub angle, the power,
 /// the flapping, the speed in knots (as `speed_kt`), the propeller's predicted static thrust and
-/// the shares of table lookups clamped or supercritical; the other fields are left out of it.
+/// the shares of table lookups clamped, supercritical or in massive separation; the other
+/// fields are left out of it.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TrimResult {
     /// Rotor speed n_R \[rpm\].
@@ -182,6 +183,9 @@ pub struct TrimResult {
     /// Fraction of the blade-element lookups at the trim point whose section data lean on
     /// supercritical table points (locally supersonic flow, outside the method's validity).
     pub table_supercritical_fraction: f64,
+    /// Fraction of the blade-element lookups at the trim point at whose α the table's points
+    /// are in massive separation (outside the method's validity; the 360° extension stands in).
+    pub table_separated_fraction: f64,
     /// The propeller's full-throttle static thrust at the trim's altitude \[N\], predicted by
     /// the calibrated blade-element propeller (the paper's Table 1 quotes ≈ 2000 N).
     pub static_thrust_n: f64,
@@ -220,6 +224,15 @@ impl TrimResult {
                  table points (locally supersonic, outside the section method's validity)",
                 self.airspeed_kt,
                 100.0 * self.table_supercritical_fraction
+            ));
+        }
+        if self.table_separated_fraction > 0.0 {
+            notes.push(format!(
+                "note: at {:.1} kt, {:.1} % of the blade-element lookups fall where the table's \
+                 points are in massive separation (outside the section method's validity): the \
+                 360-degree extension stands in for them",
+                self.airspeed_kt,
+                100.0 * self.table_separated_fraction
             ));
         }
         if let Some(w) = self.wing.filter(|w| w.stalled) {
@@ -421,6 +434,7 @@ pub fn trim_aircraft<S: BladeSection + ?Sized>(
         torque_nm: s.torque,
         table_clamped_fraction: s.table_clamped_fraction,
         table_supercritical_fraction: s.table_supercritical_fraction,
+        table_separated_fraction: s.table_separated_fraction,
         static_thrust_n: static_thrust,
     })
 }

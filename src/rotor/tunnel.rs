@@ -172,6 +172,9 @@ pub struct Autorotation {
     pub table_clamped_fraction: f64,
     /// Share of the blade-element lookups leaning on supercritical table points.
     pub table_supercritical_fraction: f64,
+    /// Share of the blade-element lookups at whose α the table's points are in massive
+    /// separation (the 360° extension stands in).
+    pub table_separated_fraction: f64,
 }
 
 impl Autorotation {
@@ -193,11 +196,12 @@ impl Autorotation {
             reverse_flow_fraction: f64::NAN,
             table_clamped_fraction: f64::NAN,
             table_supercritical_fraction: f64::NAN,
+            table_separated_fraction: f64::NAN,
         }
     }
 
-    /// What a user should read beside the result: lookups outside the table or on
-    /// supercritical points. One line each, starting `note: `.
+    /// What a user should read beside the result: lookups outside the table, on
+    /// supercritical points or in massive separation. One line each, starting `note: `.
     pub fn notes(&self) -> Vec<String> {
         let at = format!("α {} deg, V {} m/s", self.alpha_deg, self.speed_m_s);
         let mut notes = Vec::new();
@@ -213,6 +217,14 @@ impl Autorotation {
                 "note: at {at}, {:.1} % of the blade-element lookups lean on supercritical \
                  table points (locally supersonic, outside the section method's validity)",
                 100.0 * self.table_supercritical_fraction
+            ));
+        }
+        if self.table_separated_fraction > 0.0 {
+            notes.push(format!(
+                "note: at {at}, {:.1} % of the blade-element lookups fall where the table's \
+                 points are in massive separation (outside the section method's validity): the \
+                 360-degree extension stands in for them",
+                100.0 * self.table_separated_fraction
             ));
         }
         notes
@@ -254,6 +266,7 @@ pub fn autorotate<S: BladeSection + ?Sized>(
         reverse_flow_fraction: s.reverse_flow_fraction,
         table_clamped_fraction: s.table_clamped_fraction,
         table_supercritical_fraction: s.table_supercritical_fraction,
+        table_separated_fraction: s.table_separated_fraction,
     })
 }
 

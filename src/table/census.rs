@@ -1,5 +1,6 @@
 //! What a table holds, counted: points, converged points, and how many of the converged ones
-//! are supercritical or do not say — the line `polargen` prints on stderr after a grid.
+//! are supercritical, in massive separation or do not say — the line `polargen` prints on
+//! stderr after a grid.
 
 use super::PolarTable;
 use std::fmt;
@@ -9,12 +10,19 @@ use std::fmt;
 pub struct TableCensus {
     /// Points, converged or not.
     pub points: usize,
-    /// Converged points (the only ones lookups use).
+    /// Converged points.
     pub converged: usize,
-    /// Converged points flagged supercritical (Cp_min < Cp*, outside the method's validity).
+    /// Converged points flagged supercritical (Cp_min < Cp*, outside the method's validity;
+    /// lookups use them, flagged).
     pub supercritical: usize,
-    /// Converged points without the flag (a table written before it existed).
+    /// Converged points without the supercritical flag (a table written before it existed).
     pub unknown: usize,
+    /// Converged points in massive separation (outside the method's validity; lookups do
+    /// not use them).
+    pub massive_separation: usize,
+    /// Converged points without the massive-separation flag (a table written before it
+    /// existed, or read from a format without it).
+    pub separation_unknown: usize,
 }
 
 impl PolarTable {
@@ -31,27 +39,49 @@ impl PolarTable {
                         Some(false) => {}
                         None => c.unknown += 1,
                     }
+                    match p.massive_separation {
+                        Some(true) => c.massive_separation += 1,
+                        Some(false) => {}
+                        None => c.separation_unknown += 1,
+                    }
                 }
             }
         }
         c
     }
+
+    /// Number of usable points (converged and not in massive separation: the points lookups
+    /// use, [`PolarPoint::usable`](crate::section::PolarPoint::usable)).
+    pub fn usable_count(&self) -> usize {
+        self.polars()
+            .flat_map(|(_, polar)| polar)
+            .filter(|p| p.usable())
+            .count()
+    }
 }
 
 impl fmt::Display for TableCensus {
-    /// `1825 of 1830 points converged (99.7 %); 12 of them supercritical (Cp_min < Cp*)`, with
-    /// the unknown ones named when there are any.
+    /// `1825 of 1830 points converged (99.7 %); 12 of them supercritical (Cp_min < Cp*), 40
+    /// in massive separation (not used)`, with the unknown ones named when there are any.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{} of {} points converged ({:.1} %); {} of them supercritical (Cp_min < Cp*)",
+            "{} of {} points converged ({:.1} %); {} of them supercritical (Cp_min < Cp*), {} \
+             in massive separation (not used)",
             self.converged,
             self.points,
             100.0 * self.converged as f64 / self.points.max(1) as f64,
-            self.supercritical
+            self.supercritical,
+            self.massive_separation,
         )?;
-        if self.unknown > 0 {
-            write!(f, ", {} without the flag (unknown)", self.unknown)?;
+        match (self.unknown, self.separation_unknown) {
+            (0, 0) => {}
+            (u, 0) => write!(f, ", {u} without the supercritical flag (unknown)")?,
+            (0, s) => write!(f, ", {s} without the separation flag (unknown)")?,
+            (u, s) => write!(
+                f,
+                ", {u} without the supercritical and {s} without the separation flag (unknown)"
+            )?,
         }
         Ok(())
     }

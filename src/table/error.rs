@@ -123,6 +123,46 @@ pub enum TableError {
         /// Mach number.
         mach: f64,
     },
+    /// A table holds more points than [`MAX_TABLE_POINTS`](crate::limits::MAX_TABLE_POINTS).
+    #[error("table of {points} points: more than the {limit} a table may hold (docs/limits.md)")]
+    TooManyPoints {
+        /// Points of the table.
+        points: usize,
+        /// The limit.
+        limit: usize,
+    },
+    /// A polar of a table computed by polargen lacks α values its other polars have.
+    #[error(
+        "polar Re {}, M {} has {got} of the {expected} alpha values of the table's first polar \
+         and ends at alpha {}: a table computed by polargen keeps every alpha in every polar, \
+         so the file is cut short or was edited",
+        short_number(*re),
+        short_number(*mach),
+        short_number(*last_alpha)
+    )]
+    AlphaListDiffers {
+        /// Reynolds number of the polar.
+        re: f64,
+        /// Mach number of the polar.
+        mach: f64,
+        /// Its α values.
+        got: usize,
+        /// The α values of the first polar.
+        expected: usize,
+        /// Its last α.
+        last_alpha: f64,
+    },
+    /// The file a writer would produce is larger than polargen reads back.
+    #[error(
+        "the {format} file would be larger than {limit_mib} MiB, the most polargen reads back \
+         (docs/limits.md); nothing written: write fewer points or another format"
+    )]
+    TooLargeToReadBack {
+        /// Format name.
+        format: &'static str,
+        /// The read limit in MiB.
+        limit_mib: u64,
+    },
     /// The transition location of a converged point is not a chord fraction.
     #[error(
         "{field} = {} at alpha {} in polar Re {}, M {} is not a chord fraction in [0, 1]",
@@ -177,8 +217,12 @@ pub enum TableError {
         /// The allowed range.
         rule: &'static str,
     },
-    /// No polar of the table has the two converged points a lookup needs.
-    #[error("empty table: no polar has at least 2 converged points")]
+    /// No polar of the table has the two usable points (converged, not in massive
+    /// separation) a lookup needs.
+    #[error(
+        "empty table: no polar has at least 2 converged points outside massive separation \
+         (docs/limits.md)"
+    )]
     Empty,
     /// A CSV record could not be parsed.
     #[error("CSV line {line}: {message}")]

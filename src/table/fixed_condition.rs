@@ -12,7 +12,9 @@ use crate::section::{Lookup, PolarPoint, SectionAero};
 ///
 /// Lookups give only cl, cd and cm: `cdp`, `cdf`, `xtr_top`, `xtr_bot`, `residual` and `cpmin`
 /// are NaN and `iterations` is 0; `supercritical` says whether a table point the value leans on
-/// is supercritical (`None` if one of them does not say). A point is marked `converged` unless it comes from the 360°
+/// is supercritical (`None` if one of them does not say), `massive_separation` whether the
+/// table's points at that α are in massive separation (and were replaced by the extension or
+/// bridged), the separation locations are NaN. A point is marked `converged` unless it comes from the 360°
 /// post-stall extension (outside the computed α range), so plots of the result show only
 /// values interpolated from solved points.
 pub fn sample_polar<S: SectionAero + ?Sized>(
@@ -32,6 +34,11 @@ pub fn sample_polar<S: SectionAero + ?Sized>(
                     Some(true)
                 } else {
                     (!l.supercritical_unknown).then_some(false)
+                },
+                massive_separation: if l.massive_separation {
+                    Some(true)
+                } else {
+                    (!l.separation_unknown).then_some(false)
                 },
                 ..PolarPoint::from_coefficients(alpha, l.cl, l.cd, l.cm)
             }

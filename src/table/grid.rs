@@ -4,9 +4,9 @@ use super::error::TableError;
 use super::lookup::{bracket, AlphaCurve};
 use super::meta::TableMeta;
 use super::post_stall::PostStallParams;
-use super::validation::{check_axis, check_meta, check_polar};
+use super::validation::{check_axis, check_meta, check_polar, check_shared_alphas, check_size};
 use crate::limits::MAX_RE;
-use crate::section::{FlowCondition, PolarPoint};
+use crate::section::{massive_separation, FlowCondition, PolarPoint};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 /// A Re × Mach × α table of section coefficients: one polar (list of solved points, converged
@@ -30,14 +30,68 @@ pub struct PolarTable {
 }
 
 impl PartialEq for PolarTable {
-    /// Tables are equal when their metadata, axes, polars and post-stall settings are.
+    /// Tables are equal when their metadata, axes, polars and post-stall settings are; a
+    /// value unknown (NaN) in both points counts as equal, so that a table read back from its
+    /// file equals the table written.
     fn eq(&self, other: &Self) -> bool {
         self.meta == other.meta
             && self.re == other.re
             && self.mach == other.mach
-            && self.polars == other.polars
             && self.params == other.params
+            && self.polars.len() == other.polars.len()
+            && self
+                .polars
+                .iter()
+                .zip(&other.polars)
+                .all(|(a, b)| a.len() == b.len() && a.iter().zip(b).all(|(p, q)| same_record(p, q)))
     }
+}
+
+/// Two points hold the same values, NaN equal to NaN (every field named: a new one must be
+/// compared here too).
+fn same_record(p: &PolarPoint, q: &PolarPoint) -> bool {
+    let same = |a: f64, b: f64| a == b || (a.is_nan() && b.is_nan());
+    let PolarPoint {
+        alpha,
+        cl,
+        cd,
+        cdp,
+        cdf,
+        cm,
+        xtr_top,
+        xtr_bot,
+        converged,
+        iterations,
+        residual,
+        cpmin,
+        supercritical,
+        xsep_top,
+        xsep_bot,
+        massive_separation,
+    } = *p;
+    [
+        (alpha, q.alpha),
+        (cl, q.cl),
+        (cd, q.cd),
+        (cdp, q.cdp),
+        (cdf, q.cdf),
+        (cm, q.cm),
+        (xtr_top, q.xtr_top),
+        (xtr_bot, q.xtr_bot),
+        (residual, q.residual),
+        (cpmin, q.cpmin),
+        (xsep_top, q.xsep_top),
+        (xsep_bot, q.xsep_bot),
+    ]
+    .into_iter()
+    .all(|(a, b)| same(a, b))
+        && (converged, iterations, supercritical, massive_separation)
+            == (
+                q.converged,
+                q.iterations,
+                q.supercritical,
+                q.massive_separation,
+            )
 }
 
 impl PolarTable {
@@ -46,8 +100,10 @@ impl PolarTable {
     /// Validates: metadata (N_crit > 0, transition settings in [0, 1], names without control
     /// characters); non-empty, strictly increasing axes; 0 < Re ≤ [`MAX_RE`]; 0 ≤ M < 1; no
     /// empty polar; finite α within ±180°, unique within each polar; finite coefficients,
-    /// cd ≥ 0 and the [`COEFFICIENT_BOUNDS`](super::COEFFICIENT_BOUNDS) at converged points. So every table that exists
-    /// can be written and read back. Points are sorted by α. A table in which no polar has two converged points
+    /// cd ≥ 0 and the [`COEFFICIENT_BOUNDS`](super::COEFFICIENT_BOUNDS) at converged points; at
+    /// most [`MAX_TABLE_POINTS`](crate::limits::MAX_TABLE_POINTS) points; one α list in every
+    /// polar of a table computed by polargen (its solver name starts with `polargen`). So every
+    /// table that exists can be written and read back. Points are sorted by α. A table in which no polar has two converged points
     /// is accepted (see [`has_lookup`](Self::has_lookup)).
     pub fn new(
         meta: TableMeta,
@@ -85,10 +141,12 @@ impl PolarTable {
                 got: polars.len(),
             });
         }
+        check_size(&polars)?;
         for (k, polar) in polars.iter_mut().enumerate() {
             let (r, m) = (re[k / mach.len()], mach[k % mach.len()]);
             check_polar(r, m, polar)?;
         }
+        check_shared_alphas(&meta, &re, &mach, &polars)?;
         let ln_re = re.iter().map(|r| r.ln()).collect();
         let curves = build_curves(&re, &mach, &polars, params)?;
         Ok(Self {
@@ -359,10 +417,24 @@ struct PointRecord {
     /// Absent (or null): unknown.
     #[serde(default)]
     supercritical: Option<bool>,
+    /// Absent in files written before the field existed: unknown (NaN).
+    #[serde(with = "nonfinite", default = "unknown_x")]
+    xsep_top: f64,
+    /// As `xsep_top`.
+    #[serde(with = "nonfinite", default = "unknown_x")]
+    xsep_bot: f64,
+    /// Absent (or null): follows from `xsep_top` and `xsep_bot`, unknown when they are.
+    #[serde(default)]
+    massive_separation: Option<bool>,
 }
 
 /// The `cpmin` of a point whose record does not hold one.
 fn unknown_cpmin() -> f64 {
+    f64::NAN
+}
+
+/// The separation location of a point whose record does not hold one.
+fn unknown_x() -> f64 {
     f64::NAN
 }
 
@@ -382,6 +454,9 @@ impl From<&PolarPoint> for PointRecord {
             residual: p.residual,
             cpmin: p.cpmin,
             supercritical: p.supercritical,
+            xsep_top: p.xsep_top,
+            xsep_bot: p.xsep_bot,
+            massive_separation: p.massive_separation,
         }
     }
 }
@@ -402,6 +477,11 @@ impl From<PointRecord> for PolarPoint {
             residual: p.residual,
             cpmin: p.cpmin,
             supercritical: p.supercritical,
+            xsep_top: p.xsep_top,
+            xsep_bot: p.xsep_bot,
+            massive_separation: p
+                .massive_separation
+                .or_else(|| massive_separation(p.xsep_top, p.xsep_bot)),
         }
     }
 }

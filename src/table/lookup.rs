@@ -9,9 +9,12 @@
 //! natural cubic spline because it never overshoots the data near c_l,max or the edges of the
 //! drag bucket, is local (a point only influences its two neighbouring intervals) and still
 //! reproduces the table exactly at its nodes and linear data exactly between them.
-//! Unconverged points are skipped; an interval that spans one or more of them is *bridged*
-//! and lookups inside it are flagged. Outside the converged α range the 360° extension of
-//! [`post_stall`](super::post_stall) takes over.
+//! Only usable points ([`PolarPoint::usable`]: converged, not in massive separation) are
+//! interpolated; an interval that spans one or more other points is *bridged* and lookups
+//! inside it are flagged. Outside the usable α range the 360° extension of
+//! [`post_stall`](super::post_stall) takes over, from the last point the method can be trusted
+//! at: converged points in massive separation beyond it are replaced by the extension, and
+//! lookups there say so ([`Lookup::massive_separation`]).
 //!
 //! **Between polars** the four (Re, M) neighbours are combined bilinearly, linear in ln Re and
 //! linear in M; each neighbour is evaluated at the same α with its own converged range and
@@ -22,20 +25,27 @@ use super::PolarTable;
 use crate::section::PolarPoint;
 use crate::section::{wrap_deg, Lookup, SectionAero};
 
-/// One polar prepared for fast lookups: converged points sorted by α, PCHIP slopes, bridged
+/// One polar prepared for fast lookups: usable points sorted by α, PCHIP slopes, bridged
 /// intervals and the 360° extension.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct AlphaCurve {
-    /// α of the converged points (deg), strictly increasing.
+    /// α of the usable points (deg), strictly increasing.
     alpha: Vec<f64>,
-    /// (cl, cd, cm) at each converged point.
+    /// (cl, cd, cm) at each usable point.
     value: Vec<[f64; 3]>,
-    /// Supercritical flag of each converged point ([`Criticality`]).
+    /// Supercritical flag of each usable point ([`Criticality`]).
     criticality: Vec<Criticality>,
-    /// d(cl, cd, cm)/dα (1/deg) at each converged point.
+    /// Each usable point's table does not say whether it is in massive separation.
+    separation_unknown: Vec<bool>,
+    /// d(cl, cd, cm)/dα (1/deg) at each usable point.
     slope: Vec<[f64; 3]>,
-    /// Interval k (between converged points k and k+1) spans unconverged points.
+    /// Interval k (between usable points k and k+1) spans other points.
     bridged: Vec<bool>,
+    /// Interval k spans converged points in massive separation.
+    separated_gap: Vec<bool>,
+    /// The α span of the converged points in massive separation beyond the first and the last
+    /// usable point (deg): lookups in it are flagged. Empty spans are (α₀, α₀) and (αₙ, αₙ).
+    separated_beyond: (f64, f64),
     /// This curve stands in for a neighbouring polar that has too few converged points.
     pub(crate) substitute: bool,
     /// Extension beyond the first and last converged α.
@@ -94,32 +104,54 @@ pub(crate) struct CurveValue {
     pub(crate) supercritical: bool,
     /// A point it leans on does not say whether it is supercritical.
     pub(crate) supercritical_unknown: bool,
+    /// The table's points at this α are in massive separation (replaced or bridged).
+    pub(crate) massive_separation: bool,
+    /// A point it leans on does not say whether it is in massive separation.
+    pub(crate) separation_unknown: bool,
 }
 
 impl AlphaCurve {
-    /// Prepare a polar (points sorted by α). `None` if it has fewer than two converged points.
+    /// Prepare a polar (points sorted by α). `None` if it has fewer than two usable points.
     pub(crate) fn new(points: &[PolarPoint], params: PostStallParams) -> Option<Self> {
         let mut alpha = Vec::new();
         let mut value = Vec::new();
         let mut criticality = Vec::new();
+        let mut separation_unknown = Vec::new();
         let mut bridged = Vec::new();
-        let mut skipped = false;
+        let mut separated_gap = Vec::new();
+        let (mut skipped, mut separated) = (false, false);
+        let mut separated_below = None;
         for p in points {
-            if !p.converged {
+            if !p.usable() {
                 skipped = true;
+                if p.converged {
+                    separated = true;
+                    if alpha.is_empty() {
+                        separated_below.get_or_insert(p.alpha);
+                    }
+                }
                 continue;
             }
             if !alpha.is_empty() {
                 bridged.push(skipped);
+                separated_gap.push(separated);
             }
-            skipped = false;
+            (skipped, separated) = (false, false);
             alpha.push(p.alpha);
             value.push([p.cl, p.cd, p.cm]);
             criticality.push(Criticality::of(p));
+            separation_unknown.push(p.massive_separation.is_none());
         }
         if alpha.len() < 2 {
             return None;
         }
+        let last = alpha[alpha.len() - 1];
+        let separated_above = points
+            .iter()
+            .rev()
+            .find(|p| p.converged && !p.usable() && p.alpha > last)
+            .map_or(last, |p| p.alpha);
+        let separated_beyond = (separated_below.unwrap_or(alpha[0]), separated_above);
         let slope = pchip_slopes(&alpha, &value);
         let n = alpha.len();
         let junction = |k: usize| Junction {
@@ -134,8 +166,11 @@ impl AlphaCurve {
             alpha,
             value,
             criticality,
+            separation_unknown,
             slope,
             bridged,
+            separated_gap,
+            separated_beyond,
             substitute: false,
             ext,
             bucket_scale,
@@ -143,26 +178,30 @@ impl AlphaCurve {
         })
     }
 
-    /// First and last converged α (deg).
+    /// First and last usable α (deg).
     pub(crate) fn alpha_range(&self) -> (f64, f64) {
         (self.alpha[0], self.alpha[self.alpha.len() - 1])
     }
 
-    /// (cl, cd, cm) at `a` (deg, within ±180°): cubic Hermite inside the converged range
+    /// (cl, cd, cm) at `a` (deg, within ±180°): cubic Hermite inside the usable range
     /// (Fritsch & Carlson 1980, eq. 2 basis), the 360° extension outside.
     /// `trig` caches (sin α, cos α) across the polars of one lookup.
     pub(crate) fn eval(&self, a: f64, trig: &mut Option<(f64, f64)>) -> CurveValue {
         let n = self.alpha.len();
         if !(a >= self.alpha[0] && a <= self.alpha[n - 1]) {
             let (s, c) = *trig.get_or_insert_with(|| a.to_radians().sin_cos());
-            let junction = self.criticality[if a < self.alpha[0] { 0 } else { n - 1 }];
-            let (supercritical, supercritical_unknown) = Criticality::flags(junction, junction);
+            let k = if a < self.alpha[0] { 0 } else { n - 1 };
+            let (supercritical, supercritical_unknown) =
+                Criticality::flags(self.criticality[k], self.criticality[k]);
+            let (below, above) = self.separated_beyond;
             return CurveValue {
                 v: self.ext.eval_sc(a, s, c),
                 post_stall: true,
                 bridged: self.substitute,
                 supercritical,
                 supercritical_unknown,
+                massive_separation: a >= below && a <= above,
+                separation_unknown: self.separation_unknown[k],
             };
         }
         let b = (((a - self.alpha[0]) * self.bucket_scale) as usize).min(self.bucket.len() - 1);
@@ -192,6 +231,8 @@ impl AlphaCurve {
             bridged: self.bridged[k] || self.substitute,
             supercritical,
             supercritical_unknown,
+            massive_separation: self.separated_gap[k],
+            separation_unknown: self.separation_unknown[k] || self.separation_unknown[k + 1],
         }
     }
 }
@@ -297,10 +338,11 @@ impl PolarTable {
 }
 
 impl SectionAero for PolarTable {
-    /// Table lookup: PCHIP in α over converged points, 360° extension outside the computed
-    /// range, bilinear in (ln Re, M) between the four neighbouring polars, clamped (and
-    /// flagged) outside the Re and Mach axes; flagged supercritical when a point it leans on
-    /// (either end of an α interval of a polar with weight) is. Allocation-free; O(1) per polar (interval
+    /// Table lookup: PCHIP in α over usable points, 360° extension outside their range,
+    /// bilinear in (ln Re, M) between the four neighbouring polars, clamped (and flagged)
+    /// outside the Re and Mach axes; flagged supercritical when a point it leans on (either end
+    /// of an α interval of a polar with weight) is, and massive separation when a polar with
+    /// weight has such points at this α. Allocation-free; O(1) per polar (interval
     /// index, no binary search in α).
     fn lookup(&self, alpha_deg: f64, re: f64, mach: f64) -> Lookup {
         if !self.has_lookup() {
@@ -340,6 +382,8 @@ impl SectionAero for PolarTable {
                 out.bridged |= c.bridged;
                 out.supercritical |= c.supercritical;
                 out.supercritical_unknown |= c.supercritical_unknown;
+                out.massive_separation |= c.massive_separation;
+                out.separation_unknown |= c.separation_unknown;
             }
         }
         out

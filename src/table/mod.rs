@@ -49,6 +49,9 @@
 //!             residual: 1e-10,
 //!             cpmin: -0.9,
 //!             supercritical: Some(false),
+//!             xsep_top: 1.0,
+//!             xsep_bot: 1.0,
+//!             massive_separation: Some(false),
 //!         })
 //!         .collect()
 //! };

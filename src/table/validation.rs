@@ -5,7 +5,7 @@
 use super::error::TableError;
 use super::meta::TableMeta;
 use crate::inviscid::MAX_SECTION_CL;
-use crate::limits::{short_number, short_text};
+use crate::limits::{short_number, short_text, MAX_TABLE_POINTS};
 use crate::section::{PolarPoint, TransitionField};
 
 /// Non-empty and strictly increasing.
@@ -111,8 +111,13 @@ pub(super) fn check_polar(re: f64, mach: f64, polar: &mut [PolarPoint]) -> Resul
                     cd: p.cd,
                 });
             }
-            // NaN: unknown (a C81 file carries no transition locations).
-            for (field, value) in [("xtr_top", p.xtr_top), ("xtr_bot", p.xtr_bot)] {
+            // NaN: unknown (a C81 file carries no transition or separation locations).
+            for (field, value) in [
+                ("xtr_top", p.xtr_top),
+                ("xtr_bot", p.xtr_bot),
+                ("xsep_top", p.xsep_top),
+                ("xsep_bot", p.xsep_bot),
+            ] {
                 if !(value.is_nan() || (-XTR_SLACK..=1.0 + XTR_SLACK).contains(&value)) {
                     return Err(TableError::TransitionRange {
                         field,
@@ -146,4 +151,49 @@ pub(super) fn check_polar(re: f64, mach: f64, polar: &mut [PolarPoint]) -> Resul
         });
     }
     Ok(())
+}
+
+/// At most [`MAX_TABLE_POINTS`] points in all.
+pub(super) fn check_size(polars: &[Vec<PolarPoint>]) -> Result<(), TableError> {
+    let points: usize = polars.iter().map(Vec::len).sum();
+    if points > MAX_TABLE_POINTS {
+        return Err(TableError::TooManyPoints {
+            points,
+            limit: MAX_TABLE_POINTS,
+        });
+    }
+    Ok(())
+}
+
+/// A table computed by polargen (its solver name starts with `polargen`) keeps every α of its
+/// grid in every polar, converged or not: a polar with other α values than the first one is
+/// refused, so that a file cut at a row boundary inside its last polar (or edited) does not
+/// pass for a table. Tables of other codes may differ from polar to polar (XFOIL drops the
+/// points it cannot converge) and are not checked. `polars` are sorted by α, Re-major on the
+/// axes `re` × `mach`.
+pub(super) fn check_shared_alphas(
+    meta: &TableMeta,
+    re: &[f64],
+    mach: &[f64],
+    polars: &[Vec<PolarPoint>],
+) -> Result<(), TableError> {
+    if !meta.solver.starts_with("polargen") {
+        return Ok(());
+    }
+    let Some(first) = polars.first() else {
+        return Ok(());
+    };
+    let same = |p: &[PolarPoint]| {
+        p.len() == first.len() && p.iter().zip(first).all(|(a, b)| a.alpha == b.alpha)
+    };
+    match polars.iter().position(|p| !same(p)) {
+        None => Ok(()),
+        Some(k) => Err(TableError::AlphaListDiffers {
+            re: re[k / mach.len()],
+            mach: mach[k % mach.len()],
+            got: polars[k].len(),
+            expected: first.len(),
+            last_alpha: polars[k].last().map_or(f64::NAN, |p| p.alpha),
+        }),
+    }
 }

@@ -49,6 +49,27 @@ pub(crate) fn transition_x(contour: &PanelGeometry, sst: f64, upper: bool, xi_tr
     contour.spline.chord_fraction(contour.s_le, s)
 }
 
+/// x of the start of the reversed flow (Cf < 0) that reaches the trailing edge, on one surface
+/// given from the stagnation point to the trailing edge: the zero of Cf interpolated linearly
+/// in x between the last station with Cf ≥ 0 and the first of the reversed run; the first
+/// station's x when the whole surface is reversed, the trailing edge's x when the flow is
+/// attached there. A bubble that reattaches before the trailing edge does not count.
+pub(crate) fn separation_x(x: &[f64], cf: &[f64]) -> f64 {
+    let n = x.len().min(cf.len());
+    let Some(&x_te) = x[..n].last() else {
+        return f64::NAN;
+    };
+    let Some(first) = (0..n).rev().take_while(|&k| cf[k] < 0.0).last() else {
+        return x_te;
+    };
+    if first == 0 {
+        return x[0];
+    }
+    let (c0, c1) = (cf[first - 1], cf[first]);
+    let f = c0 / (c0 - c1);
+    x[first - 1] + f.clamp(0.0, 1.0) * (x[first] - x[first - 1])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -77,5 +98,19 @@ mod tests {
                 assert!((back - xtr).abs() < 1e-12, "{xtr} {upper}: {back}");
             }
         }
+    }
+
+    #[test]
+    fn separation_starts_where_the_reversed_flow_to_the_trailing_edge_does() {
+        let x = [0.0, 0.2, 0.4, 0.6, 0.8, 1.0];
+        // A bubble at 0.2 reattaches; the flow separates for good between 0.6 and 0.8.
+        let cf = [0.01, -0.001, 0.002, 0.003, -0.001, -0.002];
+        assert!((separation_x(&x, &cf) - 0.75).abs() < 1e-12);
+        assert_eq!(
+            separation_x(&x, &[0.01, -0.001, 0.002, 0.003, 0.001, 0.0]),
+            1.0
+        );
+        assert_eq!(separation_x(&x, &[-1.0; 6]), 0.0);
+        assert!(separation_x(&[], &[]).is_nan());
     }
 }

@@ -1,14 +1,15 @@
 //! What a viscous solution reports: the integrated coefficients (Cl, Cm, Cd, its friction and
-//! pressure parts, transition, the minimum pressure and whether it is supercritical) and the
-//! boundary-layer distributions of both surfaces and the wake.
+//! pressure parts, transition, the minimum pressure and whether it is supercritical, where the
+//! flow separates and whether that is massive separation) and the boundary-layer distributions
+//! of both surfaces and the wake.
 
-use super::forces::{friction_drag, lift_and_moment, transition_x};
+use super::forces::{friction_drag, lift_and_moment, separation_x, transition_x};
 use super::panel_model::PanelModel;
 use super::state::BlState;
 use super::stations::{StationLayout, Surface};
 use super::tangent::Tangent;
 use crate::boundary_layer::{BlModel, Regime};
-use crate::section::PolarPoint;
+use crate::section::{massive_separation, PolarPoint};
 
 /// One boundary-layer station of a solution, for plots and debugging.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -125,6 +126,11 @@ pub(super) fn solution(
     let upper = dist(Surface::Upper);
     let lower = dist(Surface::Lower);
     let wake = dist(Surface::Wake);
+    let [xsep_top, xsep_bot] = [&upper, &lower].map(|stations| {
+        let x: Vec<f64> = stations.iter().map(|s| s.x).collect();
+        let cf: Vec<f64> = stations.iter().map(|s| s.cf).collect();
+        separation_x(&x, &cf)
+    });
     // Friction drag from the wall shear τ = ½ρe·Ue,c²·Cf (XFOIL CDCALC).
     let mut cdf = 0.0;
     let mut xtr = [1.0, 1.0];
@@ -167,6 +173,9 @@ pub(super) fn solution(
             residual: a.residual,
             cpmin: minimum.cp,
             supercritical: Some(minimum.supercritical),
+            xsep_top,
+            xsep_bot,
+            massive_separation: massive_separation(xsep_top, xsep_bot),
         },
         upper,
         lower,
@@ -191,6 +200,9 @@ pub(super) fn failed_solution(alpha_deg: f64, iterations: u32) -> ViscousSolutio
             residual: f64::NAN,
             cpmin: f64::NAN,
             supercritical: None,
+            xsep_top: f64::NAN,
+            xsep_bot: f64::NAN,
+            massive_separation: None,
         },
         upper: Vec::new(),
         lower: Vec::new(),

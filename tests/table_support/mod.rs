@@ -39,6 +39,9 @@ pub fn point(alpha: f64, cl: f64, cd: f64, cm: f64) -> PolarPoint {
         residual: 1e-9,
         cpmin: -0.8,
         supercritical: Some(false),
+        xsep_top: 1.0,
+        xsep_bot: 1.0,
+        massive_separation: Some(false),
     }
 }
 

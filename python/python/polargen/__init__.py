@@ -7,7 +7,7 @@ NumPy arrays in and out.
 >>> import polargen as pg
 >>> foil = pg.Airfoil.naca("23012")
 >>> pol = pg.polar(foil, re=1.9e6, mach=0.41, alpha="-4:12:0.5", xtr=0.07)
->>> pol.cd[pol.converged]                                   # doctest: +SKIP
+>>> pol.cd[pol.usable]                                      # doctest: +SKIP
 
 * :class:`Airfoil` — ``naca``, ``named`` (what ``--airfoil`` accepts), ``from_file``,
   ``from_coordinates``; ``coordinates``, ``x``, ``y``.
@@ -162,7 +162,9 @@ def polar(
     Computed exactly as ``polargen --airfoil … --re RE --mach M --alpha …`` computes it: the
     airfoil in chord units, repaneled to ``panels`` nodes, a warm-started sweep from the α
     nearest 0° up and down with recovery of failed points. Points that did not converge are
-    kept with ``converged == False`` (their coefficients are not results).
+    kept with ``converged == False``, points that converged in massive separation with
+    ``massive_separation == True``: the coefficients of either are not results
+    (``Polar.usable`` marks those that are).
 
     Parameters
     ----------

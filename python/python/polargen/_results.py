@@ -11,12 +11,18 @@ import numpy as np
 
 POLAR_COLUMNS = (
     "alpha", "cl", "cd", "cdp", "cdf", "cm", "xtr_top", "xtr_bot", "converged",
-    "iterations", "residual",
+    "iterations", "residual", "cpmin", "supercritical", "xsep_top", "xsep_bot",
+    "massive_separation",
 )
+# Flags a table may not know (an empty CSV field): the core gives them as int8, −1 unknown.
+FLAG_COLUMNS = ("supercritical", "massive_separation")
 STATION_COLUMNS = (
     "s", "x", "y", "ue", "cp", "dstar", "theta", "cf", "h", "hk", "n_or_ctau", "turbulent",
 )
-LOOKUP_COLUMNS = ("cl", "cd", "cm", "re_clamped", "mach_clamped", "post_stall", "bridged")
+LOOKUP_COLUMNS = (
+    "cl", "cd", "cm", "re_clamped", "mach_clamped", "post_stall", "bridged", "supercritical",
+    "supercritical_unknown", "massive_separation", "separation_unknown",
+)
 
 
 def _pandas():
@@ -30,11 +36,18 @@ def _pandas():
 class Polar:
     """One polar at (``re``, ``mach``): NumPy columns in the order of the requested α.
 
-    Columns: ``alpha`` [deg], ``cl``, ``cd`` (Squire–Young), ``cdp`` (= cd − cdf), ``cdf``
-    (skin friction), ``cm`` (c/4), ``xtr_top``, ``xtr_bot`` (transition x/c), ``converged``
-    (bool), ``iterations``, ``residual``. Coefficients of points with ``converged == False``
-    are not results. ``meta`` holds the table metadata (airfoil, ncrit — None when
-    ncrit_top and ncrit_bot differ —, trips, panels, solver).
+    Columns (those of the CSV table): ``alpha`` [deg], ``cl``, ``cd`` (Squire–Young), ``cdp``
+    (= cd − cdf), ``cdf`` (skin friction), ``cm`` (c/4), ``xtr_top``, ``xtr_bot`` (transition
+    x/c), ``converged`` (bool), ``iterations``, ``residual``, ``cpmin`` (Karman–Tsien minimum
+    Cp), ``supercritical`` (bool: Cp_min < Cp*, locally supersonic), ``xsep_top``,
+    ``xsep_bot`` (x/c where the reversed flow reaching the trailing edge starts; 1 attached)
+    and ``massive_separation`` (bool: separation ahead of mid-chord, outside the method's
+    validity). Coefficients of points with ``converged == False`` are not results, nor those
+    of points in massive separation: ``usable`` (``converged & ~massive_separation``) marks
+    the points lookups use. A flag the table does not know (a file written without it) reads
+    as False in the array; :meth:`unknown` gives the mask and ``to_pandas()`` shows it as
+    ``<NA>``. ``meta`` holds the table metadata (airfoil, ncrit — None when ncrit_top and
+    ncrit_bot differ —, trips, panels, solver).
     """
 
     alpha: np.ndarray
@@ -48,14 +61,36 @@ class Polar:
     converged: np.ndarray
     iterations: np.ndarray
     residual: np.ndarray
+    cpmin: np.ndarray
+    supercritical: np.ndarray
+    xsep_top: np.ndarray
+    xsep_bot: np.ndarray
+    massive_separation: np.ndarray
 
     def __init__(self, re: float, mach: float, columns: Dict[str, np.ndarray],
                  meta: Dict[str, Any]) -> None:
         self.re = re
         self.mach = mach
         self.meta = meta
+        self._unknown: Dict[str, np.ndarray] = {}
         for name in POLAR_COLUMNS:
-            setattr(self, name, columns[name])
+            value = columns[name]
+            if name in FLAG_COLUMNS:
+                coded = np.asarray(value)
+                self._unknown[name] = coded < 0
+                value = coded > 0
+            setattr(self, name, value)
+
+    @property
+    def usable(self) -> np.ndarray:
+        """The points whose coefficients are results (those lookups use): converged and not
+        in massive separation."""
+        return self.converged & ~self.massive_separation
+
+    def unknown(self, flag: str) -> np.ndarray:
+        """Where the table does not know the flag ``"supercritical"`` or
+        ``"massive_separation"`` (its array reads False there)."""
+        return self._unknown[flag]
 
     def __len__(self) -> int:
         return len(self.alpha)
@@ -69,8 +104,14 @@ class Polar:
         return {name: getattr(self, name) for name in POLAR_COLUMNS}
 
     def to_pandas(self):
-        """The columns as a ``pandas.DataFrame`` (with ``re`` and ``mach`` columns)."""
-        frame = _pandas().DataFrame(self.columns())
+        """The columns as a ``pandas.DataFrame`` (with ``re`` and ``mach`` columns); the
+        flags a table may not know are nullable booleans (``<NA>`` where unknown)."""
+        pandas = _pandas()
+        frame = pandas.DataFrame(self.columns())
+        for name in FLAG_COLUMNS:
+            frame[name] = pandas.array(
+                [None if u else bool(v) for v, u in zip(getattr(self, name), self._unknown[name])],
+                dtype="boolean")
         frame.insert(0, "mach", self.mach)
         frame.insert(0, "re", self.re)
         return frame
@@ -113,8 +154,11 @@ class Distribution:
 
 class Point:
     """One converged operating point: the coefficients (``alpha``, ``cl``, ``cd``, ``cdp``,
-    ``cdf``, ``cm``, ``xtr_top``, ``xtr_bot``, ``iterations``, ``residual``) and the
-    distributions ``upper``, ``lower`` and ``wake`` (:class:`Distribution`)."""
+    ``cdf``, ``cm``, ``xtr_top``, ``xtr_bot``, ``iterations``, ``residual``), ``cpmin`` and
+    ``supercritical``, ``xsep_top``, ``xsep_bot`` and ``massive_separation`` (as
+    :class:`Polar`: a point in massive separation converged, but its coefficients are outside
+    the method's validity) and the distributions ``upper``, ``lower`` and ``wake``
+    (:class:`Distribution`)."""
 
     def __init__(self, re: float, mach: float, result: Dict[str, Any]) -> None:
         self.re = re
@@ -131,6 +175,11 @@ class Point:
         self.converged: bool = bool(point["converged"][0])
         self.iterations: int = int(point["iterations"][0])
         self.residual: float = float(point["residual"][0])
+        self.cpmin: float = float(point["cpmin"][0])
+        self.supercritical: bool = bool(point["supercritical"][0] > 0)
+        self.xsep_top: float = float(point["xsep_top"][0])
+        self.xsep_bot: float = float(point["xsep_bot"][0])
+        self.massive_separation: bool = bool(point["massive_separation"][0] > 0)
         self.upper = Distribution(result["upper"])
         self.lower = Distribution(result["lower"])
         self.wake = Distribution(result["wake"])
@@ -154,8 +203,12 @@ class Point:
 class Lookup:
     """Section coefficients from table lookups, in the broadcast shape of (α, Re, M):
     ``cl``, ``cd``, ``cm`` and the flags ``re_clamped``, ``mach_clamped`` (outside the table's
-    axis, edge value used), ``post_stall`` (from the 360° extension) and ``bridged``
-    (interpolated across unconverged points, or from a neighbouring polar)."""
+    axis, edge value used), ``post_stall`` (from the 360° extension), ``bridged``
+    (interpolated across unconverged points or points in massive separation, or from a
+    neighbouring polar), ``supercritical`` (a table point it leans on is supercritical),
+    ``supercritical_unknown`` (one does not say), ``massive_separation`` (the table's points
+    at this α are in massive separation and were not used: the extension or a bridge stands
+    in) and ``separation_unknown`` (a point it leans on does not say)."""
 
     cl: np.ndarray
     cd: np.ndarray
@@ -164,6 +217,10 @@ class Lookup:
     mach_clamped: np.ndarray
     post_stall: np.ndarray
     bridged: np.ndarray
+    supercritical: np.ndarray
+    supercritical_unknown: np.ndarray
+    massive_separation: np.ndarray
+    separation_unknown: np.ndarray
 
     def __init__(self, columns: Dict[str, np.ndarray], shape: Optional[tuple] = None) -> None:
         for name in LOOKUP_COLUMNS:

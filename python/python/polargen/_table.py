@@ -8,7 +8,7 @@ from typing import Any, Dict, List, Optional, Tuple, Union
 import numpy as np
 
 from . import _polargen
-from ._results import Lookup, Polar
+from ._results import LOOKUP_COLUMNS, Lookup, Polar
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -17,9 +17,10 @@ class Table:
     """A table of polars, one per (Re, M) node, as ``polargen`` writes and reads it.
 
     Lookups (:meth:`lookup`) interpolate like the rotor model: monotone cubic (PCHIP) in α over
-    the converged points, linear in ln Re and in M between polars, the edge value outside the
-    Re and Mach axes (flagged), and beyond the converged α range the 360° extension
-    (Viterna–Corrigan to ±90°, a flat plate beyond; flagged ``post_stall``).
+    the usable points (converged, not in massive separation), linear in ln Re and in M between
+    polars, the edge value outside the Re and Mach axes (flagged), and beyond the usable α
+    range the 360° extension (Viterna–Corrigan to ±90°, a flat plate beyond; flagged
+    ``post_stall``, and ``massive_separation`` where it stands in for such points).
     """
 
     def __init__(self, core: "_polargen.PolarTable") -> None:
@@ -85,8 +86,14 @@ class Table:
         return self._core.converged_count
 
     @property
+    def usable_count(self) -> int:
+        """Number of usable points: converged and not in massive separation (the points
+        lookups use)."""
+        return self._core.usable_count
+
+    @property
     def has_lookup(self) -> bool:
-        """Whether lookups are possible (some polar has two converged points)."""
+        """Whether lookups are possible (some polar has two usable points)."""
         return self._core.has_lookup
 
     def polars(self) -> List[Polar]:
@@ -113,8 +120,7 @@ class Table:
         shape = a.shape
         flat = [np.ascontiguousarray(v).reshape(-1) for v in (a, r, m)]
         columns = self._core.lookup(*flat)
-        return Lookup(dict(zip(("cl", "cd", "cm", "re_clamped", "mach_clamped", "post_stall",
-                                "bridged"), columns)), shape)
+        return Lookup(dict(zip(LOOKUP_COLUMNS, columns)), shape)
 
     def alpha_at_cl(self, cl: float, re: float, mach: float, alpha_min: float = -10.0,
                     alpha_max: float = 20.0) -> Optional[Tuple[float, Dict[str, Any]]]:

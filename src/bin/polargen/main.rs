@@ -344,6 +344,15 @@ fn solve_cases(args: &PointCase) -> Result<(Airfoil, Vec<(String, ViscousSolutio
         );
         let solution = solve_operating_point(&mut solver, at, &TargetClParams::default())
             .with_context(|| label.clone())?;
+        let p = &solution.point;
+        if p.massive_separation == Some(true) {
+            TOOL.say(format!(
+                "note: {label}: alpha {:.3}: massive separation (separation at x/c {:.3} upper, \
+                 {:.3} lower): converged, but outside the method's validity; the coefficients \
+                 are not results (docs/limits.md)",
+                p.alpha, p.xsep_top, p.xsep_bot
+            ));
+        }
         runs.push((label, solution));
     }
     Ok((foil, runs))

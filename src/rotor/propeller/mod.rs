@@ -149,6 +149,9 @@ pub struct PropellerPoint {
     pub post_stall_fraction: f64,
     /// Share of the annuli whose section data lean on supercritical table points.
     pub supercritical_fraction: f64,
+    /// Share of the annuli at whose α the table's points are in massive separation (the 360°
+    /// extension stands in for them; counted in `post_stall_fraction` too).
+    pub separated_fraction: f64,
     /// ψ of each annulus (the warm start of a neighbouring point).
     psi: Vec<f64>,
 }
@@ -247,6 +250,7 @@ impl Propeller {
         let blades = f64::from(self.blades);
         let (mut thrust, mut torque) = (0.0, 0.0);
         let (mut clamped, mut stalled, mut supercritical) = (0usize, 0usize, 0usize);
+        let mut separated = 0usize;
         let mut psis = Vec::with_capacity(self.stations.len());
         let section = self.section.as_ref();
         for (k, s) in self.stations.iter().enumerate() {
@@ -286,6 +290,7 @@ impl Propeller {
             clamped += usize::from(l.re_clamped || l.mach_clamped);
             stalled += usize::from(l.post_stall);
             supercritical += usize::from(l.supercritical);
+            separated += usize::from(l.massive_separation);
             // Blade-element loads per unit radius of all blades (Kutta–Joukowski with the
             // converged circulation): ½ρW²Bc(c_l cos φ − c_d sin φ) and ×r for the torque.
             let q = 0.5 * air.density * t.w * t.w * blades * s.chord * s.dr;
@@ -307,6 +312,7 @@ impl Propeller {
             clamped_fraction: clamped as f64 / count,
             post_stall_fraction: stalled as f64 / count,
             supercritical_fraction: supercritical as f64 / count,
+            separated_fraction: separated as f64 / count,
             psi: psis,
         })
     }

@@ -14,11 +14,13 @@
 //! * One table per Re of the grid, Re strictly increasing, `UserProp` 0 (AeroDyn interpolates
 //!   between tables in ln Re with `AFTabMod = 2`). A table with several Mach numbers gives one
 //!   file per Mach number (`<stem>_M<mach>.dat`), all together or none ([`OutputSet`]).
-//! * α rows: every converged α of the polar at that (Re, M), and outside the computed range
+//! * α rows: every usable α (converged, not in massive separation) of the polar at that
+//!   (Re, M), and outside that range
 //!   rows every [`OUTER_STEP_DEG`] from −180° and up to 180°, kept at least half a step away
 //!   from it. Values come from [`SectionAero::lookup`], so they include the 360° extension
 //!   (Viterna–Corrigan, then a flat plate, with the table's `cd_max`) and never use
-//!   unconverged points; the +180° row repeats the −180° row.
+//!   unconverged points or points in massive separation (the extension replaces them, from the
+//!   last usable point; a comment line says so); the +180° row repeats the −180° row.
 //! * Numbers in shortest round-trip form (reading the file gives back the same doubles).
 //! * `InclUAdata False` for every table: no unsteady-aerodynamics parameters from us. In
 //!   current OpenFAST this does **not** switch unsteady aerodynamics off (that is `UA_Mod = 0`
@@ -45,7 +47,7 @@ fn aerodyn_alphas(table: &PolarTable, i_re: usize, i_mach: usize) -> Vec<f64> {
         .polar_at(i_re, i_mach)
         .unwrap_or(&[])
         .iter()
-        .filter(|p| p.converged && p.alpha.abs() < 180.0)
+        .filter(|p| p.usable() && p.alpha.abs() < 180.0)
         .map(|p| p.alpha)
         .collect();
     inner.sort_by(f64::total_cmp);
@@ -106,8 +108,8 @@ pub fn write_aerodyn_to(
     );
     let _ = writeln!(
         s,
-        "! Beyond the computed alpha range: 360-degree extension (Viterna-Corrigan, flat plate), \
-         Cd_max {}",
+        "! Beyond the usable alpha range (converged points outside massive separation): \
+         360-degree extension (Viterna-Corrigan, flat plate), Cd_max {}",
         table.post_stall_params().cd_max
     );
     s.push_str("\"DEFAULT\"   InterpOrd    ! interpolation order: OpenFAST's default\n");

@@ -20,13 +20,15 @@
 //! * One table per Reynolds number (file `<stem>_Re<re>.c81`, or `path` itself when the table
 //!   has one Re), or a single table at a chosen Re (interpolated in ln Re).
 //! * The three blocks share the Mach list (the table's Mach axis) and the α list.
-//! * α rows: every converged α of the polars used (the nearest Re row of the grid), thinned
-//!   uniformly if needed to fit the 99-row limit of the I2 counts, plus rows every
+//! * α rows: every usable α (converged, not in massive separation) of the polars used (the
+//!   nearest Re row of the grid), thinned uniformly if needed to fit the 99-row limit of the
+//!   I2 counts, plus rows every
 //!   `outer_step_deg` from −180° and up to +180° outside that range, kept at least half a
 //!   step away from it; any rows left of the 99 then split the widest gaps outside the
 //!   computed range, weighted towards it (the extension changes fastest after stall), while
-//!   gaps wider than 2° remain. Values come from [`SectionAero::lookup`], so they include the 360° extension
-//!   and never use unconverged points.
+//!   gaps wider than 2° remain. Values come from [`SectionAero::lookup`], so they include the
+//!   360° extension and never use unconverged points or points in massive separation (the
+//!   extension starts from the last usable point and replaces them).
 //! * Fields: Mach F7.3, α F7.2; each coefficient block with one decimal count for all its
 //!   values, the largest (≤ 4) that leaves every field a leading blank, so that free-format
 //!   (whitespace-splitting) readers work too. A negative value drops the zero before the
@@ -36,9 +38,10 @@
 //!   M + 0.1 (or halfway to 1 when that reaches 1), because some readers (c81utils) need two
 //!   Mach values; the values do not depend on Mach. [`parse_c81`] reads such a table back as
 //!   one Mach column.
-//! * The format has no comment line and no field for the minimum pressure or the supercritical
-//!   flag, so a deck cannot carry them: supercritical points enter it like any other. The CSV,
-//!   JSON and XFOIL-polar forms of the same table hold them.
+//! * The format has no comment line and no field for the minimum pressure, the supercritical
+//!   or the massive-separation flag, so a deck cannot carry them: supercritical points enter it
+//!   like any other, points in massive separation not at all (the extension stands in for
+//!   them). The CSV, JSON and XFOIL-polar forms of the same table hold them.
 //!
 //! The reader ([`parse_c81`]) takes the fixed 7-column fields of the format's definition
 //! (MBDyn files need not leave blanks between fields), the counts from columns 31–42 of the
@@ -82,7 +85,7 @@ pub fn c81_alphas(table: &PolarTable, i_re: usize, outer_step_deg: f64) -> Vec<f
     let mut inner: Vec<f64> = (0..table.mach().len())
         .filter_map(|j| table.polar_at(i_re, j))
         .flatten()
-        .filter(|p| p.converged)
+        .filter(|p| p.usable())
         .map(|p| p.alpha)
         .collect();
     inner.sort_by(f64::total_cmp);

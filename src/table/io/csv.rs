@@ -1,26 +1,29 @@
 //! CSV, long form: one row per point, the table's metadata repeated on every row.
 //!
 //! Columns: `airfoil,re,mach,ncrit,xtr_top_set,xtr_bot_set,alpha,cl,cd,cdp,cm,xtr_top,xtr_bot,
-//! converged,cdf,iterations,residual,panels,solver,cpmin,supercritical`; a table whose
+//! converged,cdf,iterations,residual,panels,solver,cpmin,supercritical,xsep_top,xsep_bot,
+//! massive_separation`; a table whose
 //! surfaces have different N_crit has the two columns `ncrit_top,ncrit_bot` in place of
 //! `ncrit`. Floats are written with Rust's shortest round-trip formatting (`NaN`, `-inf`
 //! where not finite), so reading a file back gives the identical table. The reader needs the
 //! first fourteen columns (any order; `ncrit` or both `ncrit_top` and `ncrit_bot`); `cdf` (default cd − cdp), `iterations`, `residual`, `panels` (default 0), `solver`
 //! (default empty), `cpmin` and `supercritical` are optional. A file without `cpmin` reads as
 //! minimum pressure unknown (NaN); without `supercritical` the flag follows from `cpmin` and
-//! the Mach number (Cp_min < Cp*), unknown (empty field, `None`) when `cpmin` is. A (Re, M)
-//! node without rows cannot be represented and reads back as a ragged grid.
+//! the Mach number (Cp_min < Cp*), unknown (empty field, `None`) when `cpmin` is; likewise
+//! `xsep_top`, `xsep_bot` (NaN when absent) and `massive_separation`, which follows from them
+//! when absent ([`massive_separation`]). A (Re, M) node without rows cannot be represented and
+//! reads back as a ragged grid.
 
 use super::supercritical_from_cpmin;
 use crate::output::write_output;
-use crate::section::{FlowCondition, PolarPoint, Transition};
+use crate::section::{massive_separation, FlowCondition, PolarPoint, Transition};
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::collections::HashMap;
 use std::io::{Read, Write};
 use std::path::Path;
 
 /// Column names written, in order.
-pub const COLUMNS: [&str; 21] = [
+pub const COLUMNS: [&str; 24] = [
     "airfoil",
     "re",
     "mach",
@@ -42,6 +45,9 @@ pub const COLUMNS: [&str; 21] = [
     "solver",
     "cpmin",
     "supercritical",
+    "xsep_top",
+    "xsep_bot",
+    "massive_separation",
 ];
 
 /// Columns a CSV file must have.
@@ -106,16 +112,24 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
                 &panels,
                 &m.solver,
                 &p.cpmin.to_string(),
-                match p.supercritical {
-                    Some(true) => "true",
-                    Some(false) => "false",
-                    None => "",
-                },
+                flag_field(p.supercritical),
+                &p.xsep_top.to_string(),
+                &p.xsep_bot.to_string(),
+                flag_field(p.massive_separation),
             ];
             out.write_record(with_ncrit(fields, &ncrit)).map_err(werr)?;
         }
     }
     out.flush().map_err(TableError::Write)
+}
+
+/// The field of an optional flag: `true`, `false`, or empty when unknown.
+fn flag_field(flag: Option<bool>) -> &'static str {
+    match flag {
+        Some(true) => "true",
+        Some(false) => "false",
+        None => "",
+    }
 }
 
 /// Write `table` as CSV to `path` (atomically).
@@ -204,6 +218,8 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
         let cd = row.num(8)?;
         let cdp = row.num(9)?;
         let cpmin = row.opt_num(19)?.unwrap_or(f64::NAN);
+        let xsep_top = row.opt_num(21)?.unwrap_or(f64::NAN);
+        let xsep_bot = row.opt_num(22)?.unwrap_or(f64::NAN);
         let p = PolarPoint {
             alpha: row.num(6)?,
             cl: row.num(7)?,
@@ -221,6 +237,13 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
                 Some("") => None,
                 Some(_) => Some(row.flag(20)?),
                 None => supercritical_from_cpmin(cpmin, mach),
+            },
+            xsep_top,
+            xsep_bot,
+            massive_separation: match row.opt_text(23) {
+                Some("") => None,
+                Some(_) => Some(row.flag(23)?),
+                None => massive_separation(xsep_top, xsep_bot),
             },
         };
         if converged {
@@ -295,8 +318,7 @@ pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableErr
             converged: true,
             iterations: 0,
             residual: 0.0,
-            cpmin: f64::NAN,
-            supercritical: None,
+            ..PolarPoint::from_coefficients(f64::NAN, f64::NAN, f64::NAN, f64::NAN)
         });
     }
     let stem_number = |key: &str| {

@@ -14,6 +14,7 @@ mod xfoil_polar;
 use super::{PolarTable, TableError};
 use crate::compressibility::KarmanTsien;
 use crate::input::read_input;
+use crate::limits::MAX_INPUT_BYTES;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
@@ -144,12 +145,57 @@ pub fn write_table(
         Some(f) => f,
         None => TableFormat::from_path(path)?,
     };
+    check_readable_size(table, format)?;
     match format {
         TableFormat::Csv => csv::write_csv(table, path).map(|()| vec![path.to_path_buf()]),
         TableFormat::Json => json::write_json(table, path).map(|()| vec![path.to_path_buf()]),
         TableFormat::XfoilPolar => xfoil_polar::write_xfoil_polars(table, path),
         TableFormat::C81 => c81::write_c81(table, path, &C81Options::default()),
         TableFormat::AeroDyn => aerodyn::write_aerodyn(table, path),
+    }
+}
+
+/// Refuse, before anything is written, a CSV or JSON file of `table` larger than polargen
+/// reads back ([`MAX_INPUT_BYTES`]): the file is produced once into a counting sink that stops
+/// at the limit. XFOIL polars (one fixed-width file per polar of at most
+/// [`MAX_TABLE_POINTS`](crate::limits::MAX_TABLE_POINTS) rows) and C81 decks (at most 99 × 99
+/// rows) always fit; AeroDyn files are not read.
+fn check_readable_size(table: &PolarTable, format: TableFormat) -> Result<(), TableError> {
+    let mut sink = SizeLimit {
+        written: 0,
+        limit: MAX_INPUT_BYTES,
+    };
+    let result = match format {
+        TableFormat::Csv => csv::write_csv_to(table, &mut sink),
+        TableFormat::Json => json::write_json_to(table, &mut sink),
+        TableFormat::XfoilPolar | TableFormat::C81 | TableFormat::AeroDyn => return Ok(()),
+    };
+    match result {
+        Err(_) if sink.written > sink.limit => Err(TableError::TooLargeToReadBack {
+            format: format.name(),
+            limit_mib: MAX_INPUT_BYTES >> 20,
+        }),
+        other => other,
+    }
+}
+
+/// A writer that counts the bytes given to it and fails once they pass `limit`.
+struct SizeLimit {
+    written: u64,
+    limit: u64,
+}
+
+impl std::io::Write for SizeLimit {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.written += buf.len() as u64;
+        if self.written > self.limit {
+            return Err(std::io::Error::other("larger than the read limit"));
+        }
+        Ok(buf.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
     }
 }
 

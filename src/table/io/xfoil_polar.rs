@@ -3,9 +3,11 @@
 //! bottom side by side as XFOIL 6.99 writes unequal `NT` and `NB` — then the columns
 //! `alpha CL CD CDp CM Top_Xtr Bot_Xtr` in Fortran F8.3, F9.4, F10.5, F10.5, F9.4, F9.4, F9.4
 //! fields, and the optional `Cpmin` column XFOIL adds with its minimum-Cp option, F9.4).
-//! Only converged points are written, sorted by α, with `Cpmin`; the supercritical flag is
-//! not a column of the format and follows from `Cpmin` and the Mach number of the header
-//! when the file is read. The version line names this table's solver instead of XFOIL; for
+//! Only converged points are written, sorted by α, with `Cpmin` and two columns of polargen's
+//! own after it, `Top_Xsep` and `Bot_Xsep` (the separation locations x/c, F9.4; XFOIL's
+//! `PGET` skips columns it does not know at the end of a row); the supercritical and
+//! massive-separation flags are not columns and follow from `Cpmin` and the Mach number of
+//! the header, and from the separation locations, when the file is read. The version line names this table's solver instead of XFOIL; for
 //! polargen's own tables it ends in `Version <major>.<minor>` as XFOIL's does, so that XFOIL's
 //! `PGET` shows the code and its version.
 //!
@@ -17,14 +19,14 @@
 
 use super::{stem_or, supercritical_from_cpmin};
 use crate::output::OutputSet;
-use crate::section::{FlowCondition, PolarPoint, Transition};
+use crate::section::{massive_separation, FlowCondition, PolarPoint, Transition};
 use crate::table::{PolarTable, TableError, TableMeta};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// Width and decimals of the point columns `alpha CL CD CDp CM Top_Xtr Bot_Xtr Cpmin` (XFOIL's
-/// F8.3, F9.4, F10.5, F10.5, F9.4, F9.4, F9.4, F9.4).
-const POLAR_FIELDS: [(usize, usize); 8] = [
+/// F8.3, F9.4, F10.5, F10.5, F9.4, F9.4, F9.4, F9.4) and `Top_Xsep Bot_Xsep` (F9.4).
+const POLAR_FIELDS: [(usize, usize); 10] = [
     (8, 3),
     (9, 4),
     (10, 5),
@@ -33,9 +35,11 @@ const POLAR_FIELDS: [(usize, usize); 8] = [
     (9, 4),
     (9, 4),
     (9, 4),
+    (9, 4),
+    (9, 4),
 ];
 
-/// Index of the `Cpmin` field in [`POLAR_FIELDS`].
+/// Index of the `Cpmin` field in [`POLAR_FIELDS`]; the fields from it on may be unknown.
 const CPMIN_FIELD: usize = 7;
 
 /// Write one polar in XFOIL's polar-file layout to `w`; a value wider than its field is
@@ -104,18 +108,25 @@ pub fn write_polar_to(
         " Mach = {mach:7.3}     Re = {re_field} e 6     Ncrit = {ncrit_field}\n"
     ));
     s.push_str(" \n");
-    s.push_str("   alpha    CL        CD       CDp       CM     Top_Xtr  Bot_Xtr   Cpmin\n");
-    s.push_str("  ------ -------- --------- --------- -------- -------- -------- --------\n");
+    s.push_str(
+        "   alpha    CL        CD       CDp       CM     Top_Xtr  Bot_Xtr   Cpmin   Top_Xsep \
+         Bot_Xsep\n",
+    );
+    s.push_str(
+        "  ------ -------- --------- --------- -------- -------- -------- -------- -------- \
+         --------\n",
+    );
     for p in points.iter().filter(|p| p.converged) {
         let values = [
-            p.alpha, p.cl, p.cd, p.cdp, p.cm, p.xtr_top, p.xtr_bot, p.cpmin,
+            p.alpha, p.cl, p.cd, p.cdp, p.cm, p.xtr_top, p.xtr_bot, p.cpmin, p.xsep_top, p.xsep_bot,
         ];
         for (k, (value, (width, decimals))) in values.into_iter().zip(POLAR_FIELDS).enumerate() {
             let field = format!("{value:width$.decimals$}");
             // A wider value would merge with its neighbour and not read back; a minimum
-            // pressure that is unknown (NaN) or beyond Karman–Tsien (−∞) is written as such.
-            let unknown_cpmin = k == CPMIN_FIELD && !value.is_finite();
-            if field.len() > width || !(value.is_finite() || unknown_cpmin) {
+            // pressure that is unknown (NaN) or beyond Karman–Tsien (−∞), or an unknown
+            // separation location, is written as such.
+            let unknown = k >= CPMIN_FIELD && !value.is_finite();
+            if field.len() > width || !(value.is_finite() || unknown) {
                 return Err(TableError::FieldOverflow { value, width });
             }
             s.push_str(&field);
@@ -195,8 +206,10 @@ fn check_alpha_resolution(re: f64, mach: f64, points: &[PolarPoint]) -> Result<(
 ///
 /// The header gives the airfoil name, `xtrf` (top, bottom), Mach, Re (`1.900 e 6`) and
 /// N_crit; the column-title line locates `alpha CL CD CDp CM Top_Xtr Bot_Xtr` and, if
-/// present, `Cpmin` among any other columns (XFOIL may add `Xcpmin`, `Chinge`). Without
-/// `Cpmin` the minimum pressure and the supercritical flag are unknown. Every row is a converged point
+/// present, `Cpmin`, `Top_Xsep` and `Bot_Xsep` among any other columns (XFOIL may add
+/// `Xcpmin`, `Chinge`). Without `Cpmin` the minimum pressure and the supercritical flag are
+/// unknown, without the separation columns the separation locations and the massive-separation
+/// flag. Every row is a converged point
 /// (XFOIL writes no others); a repeated α (XFOIL sweeps that revisit a point) keeps the first
 /// row. The panel count is unknown (0) and the solver is the file's first text line (the
 /// version line).
@@ -240,10 +253,15 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
                 num(line, v[k])
             };
             let (cd, cdp) = (get("CD")?, get("CDp")?);
-            let cpmin = match cols.iter().any(|c| c.eq_ignore_ascii_case("Cpmin")) {
-                true => get("Cpmin")?,
-                false => f64::NAN,
+            let optional = |name: &str| match cols.iter().any(|c| c.eq_ignore_ascii_case(name)) {
+                true => get(name),
+                false => Ok(f64::NAN),
             };
+            let (cpmin, xsep_top, xsep_bot) = (
+                optional("Cpmin")?,
+                optional("Top_Xsep")?,
+                optional("Bot_Xsep")?,
+            );
             let p = PolarPoint {
                 alpha: get("alpha")?,
                 cl: get("CL")?,
@@ -258,6 +276,9 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
                 residual: 0.0,
                 cpmin,
                 supercritical: None,
+                xsep_top,
+                xsep_bot,
+                massive_separation: massive_separation(xsep_top, xsep_bot),
             };
             if !points.iter().any(|q| q.alpha == p.alpha) {
                 points.push(p);
