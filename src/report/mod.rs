@@ -27,12 +27,15 @@ mod markdown;
 mod shipped;
 mod words;
 
-pub use shipped::{SHIPPED_AIRCRAFT, SHIPPED_POLARS};
+pub use shipped::{
+    ShippedInputs, SHIPPED_AIRCRAFT, SHIPPED_CONTAMINATED_TABLE, SHIPPED_POLARS, SHIPPED_TABLE,
+};
 
 use crate::geometry::airfoil_key;
 use crate::output::{check_output_path, OutputError, OutputSet};
 use crate::plot::rotor_plots::{power_plot, takeoff_plot};
 use crate::plot::{render_into_set, Figure, PlotError};
+use crate::progress::{Progress, Work};
 use crate::rotor::study::paper::{Table5Row, SECTION_MACH, SECTION_RE, TABLE5, TABLE5_CL};
 use crate::rotor::study::sensitivity::{sensitivity, Sensitivity};
 use crate::rotor::study::{
@@ -178,17 +181,22 @@ struct RotorResults {
     sensitivity: Sensitivity,
 }
 
-/// Writes the report (see the module documentation) after [`check_report_paths`].
-pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError> {
+/// Writes the report (see the module documentation) after [`check_report_paths`], telling
+/// `progress` the phases of its computations (the rotor cases, then the studies' tables and
+/// runs when asked for).
+pub fn write_report(
+    inputs: &ReportInputs,
+    progress: &dyn Progress,
+) -> Result<ReportOutcome, ReportError> {
     check_report_paths(&inputs.out)?;
     let ac = shipped::aircraft(&inputs.aircraft)?;
     let foils = TABLE5
         .iter()
         .map(|row| load_foil(&inputs.polars, row))
         .collect::<Result<Vec<_>, _>>()?;
-    let rotor = rotor_results(&ac, &foils[0].tables)?;
+    let rotor = rotor_results(&ac, &foils[0].tables, progress)?;
     let beyond = match &inputs.studies {
-        Some(cache) => Some(beyond::run(&ac, cache)?),
+        Some(cache) => Some(beyond::run(&ac, cache, progress)?),
         None => None,
     };
     // Every file of the report appears together with the others, or none does.
@@ -241,7 +249,8 @@ pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError>
         source,
     })?;
     let written = set.commit()?;
-    let notes = rotor.sweeps.iter().flat_map(SpeedSweep::notes).collect();
+    let mut notes: Vec<String> = rotor.sweeps.iter().flat_map(SpeedSweep::notes).collect();
+    notes.extend(beyond.into_iter().flat_map(|b| b.cache_notes));
     Ok(ReportOutcome { written, notes })
 }
 
@@ -324,15 +333,25 @@ fn load_foil(dir: &Path, row: &'static Table5Row) -> Result<FoilTables, ReportEr
 }
 
 /// Trim, takeoff, blade α(ψ) and the speed sweep for the clean and the contaminated section.
-fn rotor_results(ac: &Aircraft, tables: &[PolarTable; 2]) -> Result<RotorResults, ReportError> {
+fn rotor_results(
+    ac: &Aircraft,
+    tables: &[PolarTable; 2],
+    progress: &dyn Progress,
+) -> Result<RotorResults, ReportError> {
     let sections = [&tables[0], &tables[1]];
     let speeds = sweep_speeds(SWEEP_KT.0, SWEEP_KT.1, SWEEP_KT.2);
     let propeller = PropellerFacts::of(&Powerplant::from_aircraft(ac)?)?;
+    progress.start(&Work::new(
+        4,
+        "computations",
+        "the paper report: trim and takeoff, sensitivity, blade α and power sweep of the \
+         clean and the contaminated rotor",
+    ));
     let ((runs, sens), (alpha, sweeps)) = rayon::join(
         || {
             rayon::join(
-                || paper_runs(ac, sections[0], sections[1]),
-                || sensitivity(ac, sections[0], sections[1]),
+                || paper_runs(ac, sections[0], sections[1]).inspect(|_| progress.advance(1)),
+                || sensitivity(ac, sections[0], sections[1]).inspect(|_| progress.advance(1)),
             )
         },
         || {
@@ -346,11 +365,17 @@ fn rotor_results(ac: &Aircraft, tables: &[PolarTable; 2]) -> Result<RotorResults
                         FIG10_RADIUS,
                         FIG10_SAMPLES,
                     )
+                    .inspect(|_| progress.advance(1))
                 },
-                || sweep_cases(ac, &sections, &CASE_LABELS, &speeds),
+                || {
+                    let sweeps = sweep_cases(ac, &sections, &CASE_LABELS, &speeds);
+                    progress.advance(1);
+                    sweeps
+                },
             )
         },
     );
+    progress.finish();
     let [clean, dirty] = runs?;
     let alpha = alpha?;
     for sweep in &sweeps {
