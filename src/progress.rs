@@ -4,7 +4,7 @@
 //! phase. The command-line tools draw a bar on a terminal and print [`PlainLines`]
 //! otherwise (a log file, `nohup`, CI, a notebook cell); [`Silent`] shows nothing.
 
-use std::sync::Mutex;
+use std::sync::{mpsc, Arc, Mutex};
 use std::time::{Duration, Instant};
 
 /// The work of one phase of a job.
@@ -56,9 +56,16 @@ impl Progress for Silent {
 pub const PLAIN_LINE_INTERVAL: Duration = Duration::from_secs(15);
 
 /// Progress as plain text lines handed to `say`: a start line with the work and its
-/// estimate, then at most one line per interval, `done/total unit, elapsed, about ETA left`,
-/// written when a step finishes after the interval has passed.
-pub struct PlainLines<F: Fn(&str) + Sync> {
+/// estimate, then one line per interval while the phase runs, `done/total unit, elapsed,
+/// about ETA left` — from a ticker thread, so the lines keep their pace when steps are slow.
+pub struct PlainLines<F: Fn(&str) + Send + Sync + 'static> {
+    shared: Arc<Shared<F>>,
+    /// The ticker of the phase under way: its stop signal and thread.
+    ticker: Mutex<Option<(mpsc::Sender<()>, std::thread::JoinHandle<()>)>>,
+}
+
+/// What the caller and the ticker share.
+struct Shared<F> {
     say: F,
     interval: Duration,
     phase: Mutex<Option<Phase>>,
@@ -70,67 +77,93 @@ struct Phase {
     unit: &'static str,
     done: usize,
     started: Instant,
-    last_line: Instant,
 }
 
-impl<F: Fn(&str) + Sync> PlainLines<F> {
+impl<F: Fn(&str) + Send + Sync + 'static> PlainLines<F> {
     /// Lines to `say` every [`PLAIN_LINE_INTERVAL`].
     pub fn new(say: F) -> Self {
         Self::every(PLAIN_LINE_INTERVAL, say)
     }
 
-    /// Lines to `say` at most once per `interval`.
+    /// Lines to `say` every `interval`.
     pub fn every(interval: Duration, say: F) -> Self {
         Self {
-            say,
-            interval,
-            phase: Mutex::new(None),
+            shared: Arc::new(Shared {
+                say,
+                interval,
+                phase: Mutex::new(None),
+            }),
+            ticker: Mutex::new(None),
         }
     }
 
+    /// Stops the ticker of the phase under way, if any.
+    fn stop(&self) {
+        let ticker = self.ticker.lock().unwrap_or_else(|p| p.into_inner()).take();
+        if let Some((stop, thread)) = ticker {
+            drop(stop);
+            let _ = thread.join();
+        }
+    }
+}
+
+impl<F> Shared<F> {
     fn phase(&self) -> std::sync::MutexGuard<'_, Option<Phase>> {
         self.phase.lock().unwrap_or_else(|p| p.into_inner())
     }
 }
 
-impl<F: Fn(&str) + Sync> Progress for PlainLines<F> {
+impl<F: Fn(&str) + Send + Sync + 'static> Progress for PlainLines<F> {
     fn start(&self, work: &Work) {
-        (self.say)(&start_line(work));
-        let now = Instant::now();
-        *self.phase() = Some(Phase {
+        self.stop();
+        (self.shared.say)(&start_line(work));
+        *self.shared.phase() = Some(Phase {
             total: work.total,
             unit: work.unit,
             done: 0,
-            started: now,
-            last_line: now,
+            started: Instant::now(),
         });
+        let (stop, stopped) = mpsc::channel::<()>();
+        let shared = Arc::clone(&self.shared);
+        let thread = std::thread::spawn(move || {
+            while let Err(mpsc::RecvTimeoutError::Timeout) = stopped.recv_timeout(shared.interval) {
+                let line = shared.phase().as_ref().and_then(|p| {
+                    (p.done < p.total)
+                        .then(|| progress_line(p.done, p.total, p.unit, p.started.elapsed()))
+                });
+                if let Some(line) = line {
+                    (shared.say)(&line);
+                }
+            }
+        });
+        *self.ticker.lock().unwrap_or_else(|p| p.into_inner()) = Some((stop, thread));
     }
 
     fn advance(&self, steps: usize) {
-        let line = {
-            let mut slot = self.phase();
-            let Some(p) = slot.as_mut() else { return };
+        if let Some(p) = self.shared.phase().as_mut() {
             p.done = (p.done + steps).min(p.total);
-            let now = Instant::now();
-            if p.done >= p.total || now.duration_since(p.last_line) < self.interval {
-                return;
-            }
-            p.last_line = now;
-            progress_line(p.done, p.total, p.unit, now.duration_since(p.started))
-        };
-        (self.say)(&line);
+        }
     }
 
     fn finish(&self) {
-        *self.phase() = None;
+        self.stop();
+        *self.shared.phase() = None;
     }
 }
 
-/// The start line of `work`: `what: total unit, about 3 min`.
+impl<F: Fn(&str) + Send + Sync + 'static> Drop for PlainLines<F> {
+    fn drop(&mut self) {
+        self.stop();
+    }
+}
+
+/// The start line of `work`: `what: total unit, about 3 min 05 s` (or `under 1 s`).
 pub fn start_line(work: &Work) -> String {
     let mut line = format!("{}: {} {}", work.what, work.total, work.unit);
-    if let Some(s) = work.estimate_s.filter(|s| s.is_finite()) {
-        line.push_str(&format!(", about {}", duration_text(s)));
+    match work.estimate_s.filter(|s| s.is_finite()) {
+        Some(s) if s < 1.0 => line.push_str(", under 1 s"),
+        Some(s) => line.push_str(&format!(", about {}", duration_text(s))),
+        None => {}
     }
     line
 }
@@ -171,12 +204,20 @@ mod tests {
         assert_eq!(duration_text(7620.0), "2 h 07 min");
     }
 
+    /// The lines said so far, shared with the `say` of a [`PlainLines`].
+    fn recorder() -> (
+        Arc<Mutex<Vec<String>>>,
+        impl Fn(&str) + Send + Sync + 'static,
+    ) {
+        let said = Arc::new(Mutex::new(Vec::new()));
+        let to = Arc::clone(&said);
+        (said, move |l: &str| to.lock().unwrap().push(l.to_string()))
+    }
+
     #[test]
-    fn plain_lines_say_the_work_then_done_elapsed_and_eta() {
-        let said = Mutex::new(Vec::<String>::new());
-        let lines = PlainLines::every(Duration::ZERO, |l: &str| {
-            said.lock().unwrap().push(l.to_string())
-        });
+    fn plain_lines_say_the_work_then_done_elapsed_and_eta_at_their_pace() {
+        let (said, say) = recorder();
+        let lines = PlainLines::every(Duration::from_millis(40), say);
         lines.start(&Work {
             total: 4,
             unit: "table points",
@@ -184,29 +225,31 @@ mod tests {
             estimate_s: Some(130.0),
         });
         lines.advance(1);
-        lines.advance(3);
+        // No step finishes for a while: the lines keep coming.
+        std::thread::sleep(Duration::from_millis(230));
         lines.finish();
-        lines.advance(1);
-        let said = said.into_inner().unwrap();
-        assert_eq!(said.len(), 2, "{said:?}");
+        let count = said.lock().unwrap().len();
+        std::thread::sleep(Duration::from_millis(100));
+        let said = said.lock().unwrap().clone();
+        assert_eq!(said.len(), count, "a line after finish: {said:?}");
         assert_eq!(
             said[0],
             "1 table to solve: 4 table points, about 2 min 10 s"
         );
-        assert!(
-            said[1].starts_with("1/4 table points, elapsed 0 s, about ")
-                && said[1].ends_with(" left"),
-            "{}",
-            said[1]
-        );
+        assert!((3..=7).contains(&said.len()), "{said:?}");
+        for line in &said[1..] {
+            assert!(
+                line.starts_with("1/4 table points, elapsed 0 s, about ")
+                    && line.ends_with(" left"),
+                "{line}"
+            );
+        }
     }
 
     #[test]
-    fn plain_lines_wait_for_their_interval() {
-        let said = Mutex::new(0usize);
-        let lines = PlainLines::every(Duration::from_secs(3600), |_: &str| {
-            *said.lock().unwrap() += 1
-        });
+    fn plain_lines_wait_for_their_interval_and_stop_when_done() {
+        let (said, say) = recorder();
+        let lines = PlainLines::every(Duration::from_secs(3600), say);
         let work = Work {
             total: 100,
             unit: "points",
@@ -215,11 +258,13 @@ mod tests {
         };
         lines.start(&work);
         (0..99).for_each(|_| lines.advance(1));
+        lines.finish();
         assert_eq!(
-            *said.lock().unwrap(),
+            said.lock().unwrap().len(),
             1,
             "only the start line within the interval"
         );
         assert_eq!(start_line(&work), "grid: 100 points");
+        drop(lines);
     }
 }

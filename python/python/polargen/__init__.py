@@ -14,7 +14,8 @@ NumPy arrays in and out.
 * :func:`polar` — one polar (:class:`Polar`: NumPy columns, ``to_pandas()``).
 * :func:`point` — one operating point at α or at a target Cl with its surface and wake
   distributions (:class:`Point`).
-* :func:`table` — a Re × M × α table (:class:`Table`) with a progress callback;
+* :func:`table` — a Re × M × α table (:class:`Table`) with progress (plain lines on stderr
+  by default, :class:`PlainProgress`, or a callback);
   :meth:`Table.read`, :meth:`Table.write` in every CLI format; :meth:`Table.lookup`
   vectorised, with the clamping/bridging/post-stall flags and the 360° extension.
 * :mod:`polargen.rotor` — the gyroplane: ``Aircraft.read``, ``trim``, ``takeoff`` with the
@@ -143,7 +144,8 @@ class PlainProgress:
         if self.start is None:
             self.start = self.last = now
             estimate = _polargen.estimate_seconds(total, self.polars, self.threads)
-            self._say(f"{self.what}: {total} points, about {_duration(estimate)}")
+            about = "under 1 s" if estimate < 1.0 else f"about {_duration(estimate)}"
+            self._say(f"{self.what}: {total} points, {about}")
             return
         if done < total and now - self.last >= self.interval:
             self.last = now
