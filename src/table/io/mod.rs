@@ -61,7 +61,7 @@ impl TableFormat {
     /// CSV for standard output (`out` absent or `-`). XFOIL polars and C81 write one file
     /// per polar or per Re and need a file name.
     pub fn for_output(format: Option<Self>, out: Option<&Path>) -> Result<Self, TableError> {
-        let stdout = out.map_or(true, |p| p.as_os_str() == crate::output::STDOUT_PATH);
+        let stdout = out.is_none_or(|p| p.as_os_str() == crate::output::STDOUT_PATH);
         let chosen = match (format, out) {
             (Some(f), _) => f,
             (None, Some(path)) if !stdout => Self::from_path(path)?,
