@@ -4,48 +4,32 @@
 //! subcommand, `--format` is a value enum, and diagnostics never cost a result (a full stderr,
 //! a closed stdout, data on stdout kept apart from the summary).
 
+mod cli_support;
+
+use cli_support::{gyro, polargen, repo, scratch, stderr};
 use std::io::Read;
-use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
 const POLARGEN: &str = env!("CARGO_BIN_EXE_polargen");
 const GYRO: &str = env!("CARGO_BIN_EXE_gyro");
 
-fn tool(name: &str) -> &'static str {
+/// Runs `name` (`polargen` or `gyro`) with `args`.
+fn run(name: &str, args: &[&str]) -> Output {
     if name == "polargen" {
-        POLARGEN
+        polargen(args)
     } else {
-        GYRO
+        gyro(args)
     }
-}
-
-fn run_in(dir: &Path, bin: &str, args: &[&str]) -> Output {
-    Command::new(bin)
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("run binary")
-}
-
-fn run(bin: &str, args: &[&str]) -> Output {
-    run_in(Path::new(env!("CARGO_MANIFEST_DIR")), bin, args)
 }
 
 fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
 }
 
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("polargen-conv-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
 /// The run is a usage error: exit 2 and one line `<tool>: error: …` holding `expect`.
 fn usage_error(name: &str, args: &[&str], expect: &str) {
-    let o = run(tool(name), args);
-    let err = text(&o.stderr);
+    let o = run(name, args);
+    let err = stderr(&o);
     assert_eq!(o.status.code(), Some(2), "{name} {args:?}: {err}");
     assert_eq!(err.lines().count(), 1, "{name} {args:?}: {err}");
     assert!(err.starts_with(&format!("{name}: error: ")), "{err}");
@@ -232,8 +216,8 @@ fn every_bad_value_is_a_usage_error_naming_the_flag() {
 
 #[test]
 fn a_bare_command_prints_its_help() {
-    for bin in [POLARGEN, GYRO] {
-        let o = run(bin, &[]);
+    for name in ["polargen", "gyro"] {
+        let o = run(name, &[]);
         assert_eq!(o.status.code(), Some(2));
         let help = text(&o.stderr);
         assert!(help.contains("Usage:") && help.contains("--help"), "{help}");
@@ -242,17 +226,17 @@ fn a_bare_command_prints_its_help() {
 
 #[test]
 fn format_is_a_value_enum_listed_in_help_and_completions() {
-    let help = text(&run(POLARGEN, &["convert", "-h"]).stdout);
+    let help = text(&polargen(&["convert", "-h"]).stdout);
     assert!(
         help.contains("[possible values: csv, json, xfoil, c81, aerodyn]"),
         "{help}"
     );
-    let long = text(&run(POLARGEN, &["convert", "--help"]).stdout);
+    let long = text(&polargen(&["convert", "--help"]).stdout);
     assert!(
         long.contains("- aerodyn: OpenFAST AeroDyn airfoil file"),
         "{long}"
     );
-    let bash = text(&run(POLARGEN, &["completions", "bash"]).stdout);
+    let bash = text(&polargen(&["completions", "bash"]).stdout);
     assert!(
         bash.contains("csv json xfoil c81 aerodyn"),
         "no format values offered"
@@ -281,7 +265,7 @@ fn format_is_a_value_enum_listed_in_help_and_completions() {
 fn every_subcommand_has_a_man_page_and_every_reference_resolves() {
     for name in ["polargen", "gyro"] {
         let dir = scratch(&format!("man-{name}"));
-        let o = run(tool(name), &["man", "--out", dir.to_str().unwrap()]);
+        let o = run(name, &["man", "--out", dir.to_str().unwrap()]);
         assert!(o.status.success(), "{}", text(&o.stderr));
         let pages: Vec<String> = std::fs::read_dir(&dir)
             .unwrap()
@@ -310,9 +294,9 @@ fn every_subcommand_has_a_man_page_and_every_reference_resolves() {
         }
         let _ = std::fs::remove_dir_all(dir);
     }
-    let batch = text(&run(POLARGEN, &["man", "batch"]).stdout);
+    let batch = text(&polargen(&["man", "batch"]).stdout);
     assert!(batch.contains(".TH polargen-batch 1"), "{batch}");
-    let wing = text(&run(GYRO, &["man", "study", "wing"]).stdout);
+    let wing = text(&gyro(&["man", "study", "wing"]).stdout);
     assert!(
         wing.contains(".TH gyro-study-wing 1") && wing.contains("areas"),
         "{wing}"
@@ -323,7 +307,11 @@ fn every_subcommand_has_a_man_page_and_every_reference_resolves() {
 fn gyro_commands_read_the_shipped_aircraft_and_tables_when_none_are_given() {
     // Outside the repository the built-in copies stand in; one note says so.
     let dir = scratch("defaults");
-    let o = run_in(&dir, GYRO, &["trim"]);
+    let o = Command::new(GYRO)
+        .arg("trim")
+        .current_dir(&dir)
+        .output()
+        .unwrap();
     let err = text(&o.stderr);
     assert!(o.status.success(), "{err}");
     assert!(text(&o.stdout).contains("rotor rpm"), "{}", text(&o.stdout));
@@ -334,18 +322,15 @@ fn gyro_commands_read_the_shipped_aircraft_and_tables_when_none_are_given() {
         "{err}"
     );
     // Given inputs: no note, the same numbers.
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let given = run_in(
-        &dir,
-        GYRO,
-        &[
-            "trim",
-            "--aircraft",
-            root.join("aircraft/mtosport.toml").to_str().unwrap(),
-            "--table",
-            root.join("polars/naca8h12_free.csv").to_str().unwrap(),
-        ],
+    let (ac, table) = (
+        repo("aircraft/mtosport.toml"),
+        repo("polars/naca8h12_free.csv"),
     );
+    let given = Command::new(GYRO)
+        .args(["trim", "--aircraft", &ac, "--table", &table])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
     assert!(given.status.success(), "{}", text(&given.stderr));
     assert!(
         !text(&given.stderr).contains("shipped"),
@@ -396,7 +381,7 @@ fn a_full_stderr_costs_no_result_and_a_closed_stdout_is_an_error() {
 
 #[test]
 fn a_takeoff_history_on_stdout_is_data_only_and_stops_quietly_when_the_reader_goes() {
-    let o = run(GYRO, &["takeoff", "--history", "-"]);
+    let o = gyro(&["takeoff", "--history", "-"]);
     assert!(o.status.success(), "{}", text(&o.stderr));
     let csv = text(&o.stdout);
     assert!(csv.starts_with("t,x,h,v,rotor_rpm,alpha_r_deg,beta_deg\n"));

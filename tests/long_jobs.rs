@@ -3,18 +3,13 @@
 //! (polars or tables to solve, points, an estimate) before solving; `--quiet` silences it. The
 //! plain progress lines that follow at a steady interval are tested in `polargen::progress`.
 
+mod cli_support;
+
+use cli_support::scratch;
 use std::io::{BufRead, BufReader};
-use std::path::PathBuf;
 use std::process::{Command, Stdio};
 use std::sync::mpsc;
 use std::time::Duration;
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("polargen-long-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 /// Starts `bin args` with stderr on a pipe and returns the first stderr line holding `needle`
 /// within `within` (the process is then stopped), or every line read when none did.

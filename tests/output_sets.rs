@@ -4,17 +4,13 @@
 //! folders of a killed process are removed by the next run that writes into their folder; an
 //! interrupted run leaves no staging folder behind.
 
+mod cli_support;
+
+use cli_support::scratch;
 use polargen::output::{check_output_path, write_output, OutputError, OutputSet};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 use std::time::{Duration, Instant};
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("pg-sets-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 fn names(dir: &Path) -> Vec<String> {
     let mut v: Vec<String> = std::fs::read_dir(dir)

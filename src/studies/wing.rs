@@ -51,23 +51,6 @@ pub struct WingRecord {
     pub note: String,
 }
 
-/// Columns of the CSV file (the JSON keys).
-pub const CSV_COLUMNS: [&str; 13] = [
-    "wing_area_m2",
-    "speed_kt",
-    "converged",
-    "rotor_rpm",
-    "prop_thrust_n",
-    "delta_prop_thrust_pct",
-    "power_required_kw",
-    "engine_rpm",
-    "rotor_lift_share",
-    "rotor_drag_n",
-    "wing_drag_n",
-    "wing_lift_coefficient",
-    "note",
-];
-
 /// The settings of a wing study, checked before any work ([`WingOptions::checked`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct WingOptions {
@@ -325,7 +308,7 @@ impl WingStudy {
     pub fn files(&self) -> Result<StudyFiles, StudiesError> {
         Ok(StudyFiles {
             csv_stem: CSV_STEM.to_string(),
-            csv: records_csv(&CSV_COLUMNS, &self.records)?,
+            csv: records_csv(&self.records)?,
             figures: vec![(FIGURE_STEMS[0].to_string(), self.figure())],
         })
     }
