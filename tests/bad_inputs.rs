@@ -504,7 +504,7 @@ fn the_360_degree_rows_carry_no_round_off() {
         "polargen",
         &[
             "convert",
-            "tests/data/rotor/naca8h12_Re1.9e6_M0.41_free.csv",
+            TABLE,
             "--format",
             "aerodyn",
             "--out",

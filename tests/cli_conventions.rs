@@ -243,7 +243,7 @@ fn format_is_a_value_enum_listed_in_help_and_completions() {
     );
     // The aliases still parse.
     let o = run(
-        POLARGEN,
+        "polargen",
         &[
             "convert",
             "polars/naca8h12_free.csv",
