@@ -193,6 +193,15 @@ where
     }
 }
 
+/// Writes `bytes` to standard output ([`write_output`] of `-`: an error when standard output
+/// is closed or cannot be written).
+pub fn write_stdout(bytes: &[u8]) -> Result<(), OutputError> {
+    let path = Path::new(STDOUT_PATH);
+    write_output(path, |w| {
+        w.write_all(bytes).map_err(|e| OutputError::io(path, e))
+    })
+}
+
 /// Write the output `path` with `body`, which writes the whole content into the file named by
 /// the path it is given (for encoders that only write to named files, such as the PNG
 /// encoder, which picks its format from the name: the name given ends in `.{extension}`).

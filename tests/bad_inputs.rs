@@ -502,14 +502,7 @@ fn the_360_degree_rows_carry_no_round_off() {
     let out = d.join("t.dat");
     accepted(
         "polargen",
-        &[
-            "convert",
-            TABLE,
-            "--format",
-            "aerodyn",
-            "--out",
-            s(&out),
-        ],
+        &["convert", TABLE, "--format", "aerodyn", "--out", s(&out)],
     );
     let text = std::fs::read_to_string(&out).unwrap();
     for a in ["-180", "-90", "90", "180"] {

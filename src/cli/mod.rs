@@ -166,10 +166,16 @@ fn usage_message(e: &clap::Error) -> String {
     };
     let cause = std::error::Error::source(e);
     if let (ErrorKind::ValueValidation, Some(flag), Some(cause)) = (e.kind(), &flag, cause) {
-        return match cause.downcast_ref::<ArgumentError>() {
+        let value = match e.get(ContextKind::InvalidValue) {
+            Some(ContextValue::String(v)) => crate::limits::short_text(v),
+            _ => String::new(),
+        };
+        let cause = cause.to_string();
+        return match cause_argument(e) {
             Some(a) if a.value.is_empty() => format!("{flag}: {}", a.rule),
             Some(a) => format!("{flag} {}: {}", a.value, a.rule),
-            None => format!("{flag}: {cause}"),
+            None if value.is_empty() || cause.contains(&value) => format!("{flag}: {cause}"),
+            None => format!("{flag} {value}: {cause}"),
         };
     }
     if let (ErrorKind::InvalidValue, Some(flag)) = (e.kind(), &flag) {
@@ -204,6 +210,11 @@ fn usage_message(e: &clap::Error) -> String {
         }
     }
     parts.join("; ")
+}
+
+/// The [`ArgumentError`] a value parser refused a value with, if that is the cause.
+fn cause_argument(e: &clap::Error) -> Option<&ArgumentError> {
+    std::error::Error::source(e)?.downcast_ref::<ArgumentError>()
 }
 
 /// The completion script of `cmd` for `shell`.

@@ -11,9 +11,9 @@ use super::{
 use crate::geometry::Airfoil;
 use crate::plot::{Figure, Panel, Series, Style};
 use crate::progress::{Progress, Work};
-use crate::rotor::study::{paper_run, PAPER_TRIM_SPEED_KT};
 use crate::rotor::Aircraft;
 use crate::section::SectionAero;
+use crate::studies::paper::{paper_run, PAPER_TRIM_SPEED_KT};
 use rayon::prelude::*;
 use serde::Serialize;
 

@@ -15,9 +15,9 @@ use super::{
 };
 use crate::plot::{Figure, Marker, Panel, Series, Style};
 use crate::progress::{Progress, Work};
-use crate::rotor::study::{paper_run, PAPER_TRIM_SPEED_KT};
 use crate::rotor::{Aircraft, SpanwiseSection};
 use crate::section::SectionAero;
+use crate::studies::paper::{paper_run, PAPER_TRIM_SPEED_KT};
 use rayon::prelude::*;
 use serde::Serialize;
 

@@ -3,6 +3,7 @@
 //! plots ([`plot`]) and the paper report ([`polargen::report`]). Text output is formatted in
 //! [`print`](mod@print).
 
+mod autorotate;
 mod plot;
 use polargen::report::console as print;
 mod study;
@@ -10,33 +11,22 @@ mod study;
 use anyhow::{Context, Result};
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use polargen::cli::{self, values, Tool};
-use polargen::output::{check_output_path, is_stdout, write_output, OutputError};
+use polargen::output::{check_output_path, is_stdout, write_output, write_stdout, OutputError};
 use polargen::report::{self as paper, check_report_paths, write_report, ReportInputs};
 use polargen::report::{
     ShippedInputs, SHIPPED_AIRCRAFT, SHIPPED_CONTAMINATED_TABLE, SHIPPED_POLARS,
 };
-use polargen::rotor::study::{paper_runs, SpeedSweep};
 use polargen::rotor::{
     check_blade_radius, checked_sweep_speeds, cruise_blade_alpha, simulate_takeoff, trim_aircraft,
     Aircraft, TrimParams, MAX_ISA_ALTITUDE_M,
 };
+use polargen::studies::paper::{paper_runs, SpeedSweep};
 use polargen::table::PolarTable;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// This tool's name and error prefix.
 static TOOL: Tool = Tool::new("gyro");
-
-/// Appends one formatted line to an output `String` (writing to a `String` cannot fail).
-macro_rules! outln {
-    ($buf:expr) => {
-        $buf.push('\n')
-    };
-    ($buf:expr, $($arg:tt)*) => {{
-        use std::fmt::Write as _;
-        let _ = writeln!($buf, $($arg)*);
-    }};
-}
 
 #[derive(Parser)]
 #[command(
@@ -132,6 +122,8 @@ enum Command {
         #[arg(long, default_value_t = 36, allow_hyphen_values = true, value_parser = values::azimuth_samples)]
         samples: usize,
     },
+    /// Isolated rotor in a wind tunnel: autorotative rpm, C_L, C_D, L/D, coning and flapping.
+    Autorotate(autorotate::AutorotateArgs),
     /// Rotor figures, clean vs contaminated, to SVG or PNG: alpha, takeoff or power.
     #[command(arg_required_else_help = true)]
     Plot {
@@ -170,15 +162,26 @@ fn note_shipped(used: ShippedInputs) {
     used.note().into_iter().for_each(|n| TOOL.say(n));
 }
 
-/// The aircraft (at `mass`, else its own) and the table of a single-section command, the
-/// shipped ones when not given.
-fn load_inputs(inputs: &Inputs, mass: Option<f64>) -> Result<(Aircraft, PolarTable)> {
+/// The aircraft (at `mass`, else its own), what `check` makes of it (flags checked against it
+/// before the table is read) and the table of a single-section command; the shipped ones
+/// when not given.
+fn load<T>(
+    inputs: &Inputs,
+    mass: Option<f64>,
+    check: impl FnOnce(&Aircraft) -> Result<T>,
+) -> Result<(Aircraft, T, PolarTable)> {
     let mut shipped = ShippedInputs::default();
     let mut ac = shipped.aircraft(&inputs.aircraft)?;
     ac.mass_kg = mass.unwrap_or(ac.mass_kg);
+    let checked = check(&ac)?;
     let table = shipped.table(&inputs.table, paper::SHIPPED_TABLE)?;
     note_shipped(shipped);
-    Ok((ac, table))
+    Ok((ac, checked, table))
+}
+
+/// `value` as pretty JSON with a final newline.
+fn json<T: serde::Serialize>(value: &T) -> Result<String> {
+    Ok(serde_json::to_string_pretty(value)? + "\n")
 }
 
 /// `gyro report` options.
@@ -249,14 +252,13 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             altitude_m,
             json,
         } => {
-            let (ac, section) = load_inputs(&inputs, mass)?;
+            let (ac, (), section) = load(&inputs, mass, |_| Ok(()))?;
             let params = TrimParams::default();
             let t = trim_aircraft(&ac, &section, speed_kt, ac.mass_kg, altitude_m, &params)?;
             t.notes().iter().for_each(|n| TOOL.say(n));
-            if json {
-                outln!(buf, "{}", serde_json::to_string_pretty(&t)?);
-            } else {
-                print::trim(buf, &t);
+            match json {
+                true => *buf += &self::json(&t)?,
+                false => print::trim(buf, &t),
             }
         }
         Command::Takeoff {
@@ -268,14 +270,13 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             if let Some(path) = &history {
                 check_output_path(path).context("--history")?;
             }
-            let (ac, section) = load_inputs(&inputs, mass)?;
+            let (ac, (), section) = load(&inputs, mass, |_| Ok(()))?;
             let t = simulate_takeoff(&ac, &section)?;
             // The history is data: when it takes standard output, the summary goes to stderr.
             let mut summary = String::new();
-            if json {
-                outln!(summary, "{}", serde_json::to_string_pretty(&t)?);
-            } else {
-                print::takeoff(&mut summary, &t);
+            match json {
+                true => summary = self::json(&t)?,
+                false => print::takeoff(&mut summary, &t),
             }
             if let Some(path) = &history {
                 write_output(path, |w| {
@@ -313,18 +314,12 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             mass,
             json,
         } => {
-            let mut shipped = ShippedInputs::default();
-            let mut ac = shipped.aircraft(&inputs.aircraft)?;
-            ac.mass_kg = mass.unwrap_or(ac.mass_kg);
-            let speeds = speeds.checked(&ac)?;
-            let section = shipped.table(&inputs.table, paper::SHIPPED_TABLE)?;
-            note_shipped(shipped);
+            let (ac, speeds, section) = load(&inputs, mass, |ac| speeds.checked(ac))?;
             let sweep = SpeedSweep::run(&ac, &section, &speeds, None);
             report_sweep(&sweep)?;
-            if json {
-                outln!(buf, "{}", serde_json::to_string_pretty(&sweep.trims)?);
-            } else {
-                print::sweep(buf, &sweep.trims);
+            match json {
+                true => *buf += &self::json(&sweep.trims)?,
+                false => print::sweep(buf, &sweep.trims),
             }
         }
         Command::Alpha {
@@ -333,18 +328,16 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             radius,
             samples,
         } => {
-            let mut shipped = ShippedInputs::default();
-            let ac = shipped.aircraft(&inputs.aircraft)?;
-            check_blade_radius("--radius", radius, &ac)?;
-            let section = shipped.table(&inputs.table, paper::SHIPPED_TABLE)?;
-            note_shipped(shipped);
+            let check = |ac: &Aircraft| Ok(check_blade_radius("--radius", radius, ac)?);
+            let (ac, (), section) = load(&inputs, None, check)?;
             let params = TrimParams::default();
             let curve = cruise_blade_alpha(&ac, &section, speed_kt, 0.0, radius, samples, &params)?;
-            outln!(buf, "psi_deg,alpha_deg");
+            *buf += "psi_deg,alpha_deg\n";
             for (psi, a) in curve {
-                outln!(buf, "{psi:.1},{a:.3}");
+                *buf += &format!("{psi:.1},{a:.3}\n");
             }
         }
+        Command::Autorotate(args) => autorotate::run(args, buf, |n| TOOL.say(n))?,
         Command::Plot { kind } => plot::run(kind)?,
         Command::Completions(args) => {
             let script = cli::completions(Cli::command(), args.shell);
@@ -380,7 +373,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             };
             let outcome = write_report(&inputs, &TOOL.progress())?;
             for path in &outcome.written {
-                outln!(buf, "wrote {}", path.display());
+                *buf += &format!("wrote {}\n", path.display());
             }
             flush_stdout(buf)?;
             outcome.notes.iter().for_each(|n| TOOL.say(n));
@@ -392,16 +385,10 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
 /// Writes `buf` to standard output and empties it: the result goes out before the notes and
 /// summaries that follow it on stderr (a result that cannot be written is an error).
 fn flush_stdout(buf: &mut String) -> Result<()> {
-    if buf.is_empty() {
-        return Ok(());
+    if !buf.is_empty() {
+        write_stdout(buf.as_bytes()).context("cannot write output")?;
+        buf.clear();
     }
-    let stdout = Path::new("-");
-    write_output(stdout, |w| {
-        w.write_all(buf.as_bytes())
-            .map_err(|e| OutputError::io(stdout, e))
-    })
-    .context("cannot write output")?;
-    buf.clear();
     Ok(())
 }
 

@@ -25,8 +25,8 @@ use clap::CommandFactory;
 use polargen::arguments::{self, ArgumentError};
 use polargen::cli::{self, Tool};
 use polargen::geometry::{solver_airfoil, Airfoil};
-use polargen::inviscid::PanelSystem;
-use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError, STDOUT_PATH};
+use polargen::inviscid::{inviscid_polar_csv, PanelSystem};
+use polargen::output::{check_output_path, write_output, write_stdout, OutputError, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
 use polargen::plot::polar_plots::transition_label;
 use polargen::plot::table_plots::{table_overlay_figure, TableOverlay};
@@ -57,23 +57,14 @@ fn main() -> ExitCode {
         Some(Command::Batch(args)) => run_batch(args),
         Some(Command::Point { case, csv }) => point(case, csv),
         Some(Command::Completions(args)) => {
-            to_stdout(&cli::completions(Cli::command(), args.shell))
+            write_stdout(&cli::completions(Cli::command(), args.shell)).map_err(Into::into)
         }
         Some(Command::Man(args)) => {
-            cli::man(Cli::command(), args).and_then(|page| to_stdout(&page))
+            cli::man(Cli::command(), args).and_then(|page| Ok(write_stdout(&page)?))
         }
         None if cli.run.inviscid => run_inviscid(&cli.run),
         None => run_viscous(&cli.run),
     })
-}
-
-/// Write `bytes` to standard output.
-fn to_stdout(bytes: &[u8]) -> Result<()> {
-    let path = Path::new(STDOUT_PATH);
-    write_output(path, |w| {
-        w.write_all(bytes).map_err(|e| OutputError::io(path, e))
-    })?;
-    Ok(())
 }
 
 /// Mach numbers from `--mach` (each checked by its parser), or `default`; none twice.
@@ -112,30 +103,8 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
     }
     let foil = load_airfoil(cli.airfoil.as_deref(), cli.grid.panels, &cli.grid.shape)?;
     let system = PanelSystem::new(&foil).context("panel system")?;
-    let mut csv = String::from("alpha,cl,cd,cm,converged\n");
-    let mut supercritical: Vec<f64> = Vec::new();
-    for &alpha in &alphas {
-        let sol = system
-            .solve(alpha, mach)
-            .with_context(|| format!("alpha {alpha}"))?;
-        if sol.supercritical {
-            supercritical.push(alpha);
-        }
-        csv.push_str(&format!(
-            "{alpha},{},0,{},true\n",
-            fixed_decimals(sol.cl, 6),
-            fixed_decimals(sol.cm, 6)
-        ));
-    }
-    if let (Some(first), Some(last)) = (supercritical.first(), supercritical.last()) {
-        TOOL.say(format!(
-            "note: M {mach}: {} of {} points supercritical (alpha {first} … {last}): the \
-             minimum Cp is below the sonic Cp*, beyond the validity of the Karman-Tsien \
-             correction; those Cl and Cm are only indicative",
-            supercritical.len(),
-            alphas.len()
-        ));
-    }
+    let (csv, note) = inviscid_polar_csv(&system, &alphas, mach)?;
+    note.into_iter().for_each(|n| TOOL.say(n));
     let path = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
     write_output(path, |w| {
         w.write_all(csv.as_bytes())
