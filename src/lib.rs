@@ -9,7 +9,7 @@
 //! geometry → inviscid → boundary_layer → viscous → polar → table → rotor → studies → report
 //!                                                              ↘ plot ↗
 //! leaf modules every layer may use: section, compressibility, input, output, limits,
-//! diagnostics, arguments, cli
+//! diagnostics, arguments, progress, cli
 //! ```
 //!
 //! * [`geometry`] — airfoil shapes (NACA 4/5-digit, coordinate files, named registry), splines,
@@ -49,8 +49,12 @@
 //! * [`diagnostics`] — an error and its causes on one line, for the command-line tools.
 //! * [`arguments`] — checks of user-given values (flags, Python arguments) with one-line
 //!   errors naming the argument.
-//! * [`cli`] — the conventions both command-line tools share: the error line and exit codes,
-//!   `--quiet`, completions, man pages and the generated command-line reference.
+//! * [`progress`] — progress of long jobs reported to a callback the caller supplies
+//!   ([`progress::Progress`]); the library never picks a display.
+//! * `cli` (the `cli` feature, on by default; the Python package builds without it) — the
+//!   conventions both command-line tools share: the error line and exit codes, value parsers
+//!   of every flag, `--quiet`, progress on stderr, completions, man pages and the generated
+//!   command-line reference.
 //!
 //! # Public API
 //!
@@ -79,6 +83,7 @@
 
 pub mod arguments;
 pub mod boundary_layer;
+#[cfg(feature = "cli")]
 pub mod cli;
 pub mod compressibility;
 pub mod diagnostics;
@@ -90,6 +95,7 @@ mod numerics;
 pub mod output;
 pub mod plot;
 pub mod polar;
+pub mod progress;
 pub mod report;
 pub mod rotor;
 pub mod section;

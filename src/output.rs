@@ -10,21 +10,27 @@
 //!   `( echo a; polargen … --out /dev/stdout; echo b ) > f` the shell's file `f` would be
 //!   swapped for a new one and lose `a` and `b`.
 //! * An existing device or FIFO — opened and written in place (streamed), never renamed over.
-//! * Anything else names a regular file, written atomically: into a fresh temporary file in
-//!   the target's folder (the `tempfile` crate; `.<name>.<random>.tmp`), flushed and synced,
-//!   then renamed over the target. Missing folders are created; a symbolic link is written
-//!   through (its target is replaced, the link stays). A failure at any step removes the
-//!   temporary file and leaves the target as it was.
+//! * Anything else names a regular file, written atomically as a one-file [`OutputSet`]: into
+//!   a hidden staging folder beside the target (`.polargen-set-<pid>.<random>/`, a short
+//!   name, so any legal file name can be staged under its own name), flushed and synced, then
+//!   renamed over the target. Missing folders are created; a symbolic link is written through
+//!   (its target is replaced, the link stays). A failure at any step removes the staging
+//!   folder and leaves the target as it was.
 //!
-//! Several files that belong together (a set of polars, a report) go through an
-//! [`OutputSet`]: staged in a hidden folder beside their targets and renamed into place
-//! together, or not at all. [`remove_staged_files_on_signals`] makes SIGINT/SIGTERM remove
-//! whatever is staged.
+//! Several files that belong together (a set of polars, a report) go through one
+//! [`OutputSet`]: renamed into place together, or not at all (the targets they replace are
+//! kept as hard links in the stage until the set is complete, and put back on any failure).
+//! [`remove_staged_files_on_signals`] makes SIGINT/SIGTERM/SIGHUP remove whatever is staged;
+//! the staging folders of a process that was killed outright are removed by the next run
+//! that writes into the same folder.
 //!
-//! Paths are checked by [`check_output_path`] before a long computation: the path itself,
-//! and that the folder that will hold the file accepts new files (a temporary probe file is
-//! created and removed). Every error is an [`OutputError`] naming the path it concerns, never
-//! a temporary name.
+//! Standard output is a result like any file: when it is closed (`>&-`; the Rust runtime then
+//! leaves `/dev/null` open in its place) or cannot be written, the write is an error.
+//!
+//! Paths are checked by [`check_output_path`] before a long computation: the path itself (a
+//! file name longer than [`MAX_FILE_NAME_BYTES`] is refused), and that the folder that will
+//! hold the file accepts new files (a probe file is created and removed). Every error is an
+//! [`OutputError`] naming the path it concerns, never a temporary name.
 
 mod interrupt;
 mod set;
@@ -38,6 +44,10 @@ use std::path::{Component, Path, PathBuf};
 
 /// The output path that means standard output.
 pub const STDOUT_PATH: &str = "-";
+
+/// Longest file name (one path component) the file systems in use accept, in bytes (NAME_MAX
+/// of Linux and the BSDs, the limit of ext4, XFS, btrfs, APFS).
+pub const MAX_FILE_NAME_BYTES: usize = 255;
 
 /// Longest chain of symbolic links followed when looking for an open descriptor.
 const MAX_LINK_HOPS: usize = 40;
@@ -129,9 +139,14 @@ enum Target {
 ///
 /// For a regular file it also checks, by creating and removing a temporary probe file, that
 /// the nearest existing folder that will hold it accepts new files (a read-only or
-/// permission-denied folder is found here, not after the computation).
+/// permission-denied folder is found here, not after the computation); for standard output,
+/// that it is open.
 pub fn check_output_path(path: &Path) -> Result<(), OutputError> {
-    if let Target::File(target) = resolve(path)? {
+    let target = resolve(path)?;
+    if target == Target::Stdout {
+        return stdout_open().map_err(|e| OutputError::io(path, e));
+    }
+    if let Target::File(target) = target {
         let mut dir = match target.parent().filter(|d| !d.as_os_str().is_empty()) {
             Some(d) => d.to_path_buf(),
             None => PathBuf::from("."),
@@ -168,17 +183,23 @@ where
     F: FnOnce(&mut dyn Write) -> Result<(), E>,
 {
     match resolve(path)? {
-        Target::File(target) => {
-            let mut staged = Staged::create(path, &target, ".tmp")?;
-            {
-                let mut w = BufWriter::new(staged.file.as_file_mut());
-                body(&mut w)?;
-                w.flush().map_err(|e| OutputError::io(path, e))?;
-            }
-            Ok(staged.commit()?)
+        Target::File(_) => {
+            let mut set = OutputSet::new();
+            set.write(path, body)?;
+            set.commit()?;
+            Ok(())
         }
         stream => stream_into(path, &stream, body),
     }
+}
+
+/// Writes `bytes` to standard output ([`write_output`] of `-`: an error when standard output
+/// is closed or cannot be written).
+pub fn write_stdout(bytes: &[u8]) -> Result<(), OutputError> {
+    let path = Path::new(STDOUT_PATH);
+    write_output(path, |w| {
+        w.write_all(bytes).map_err(|e| OutputError::io(path, e))
+    })
 }
 
 /// Write the output `path` with `body`, which writes the whole content into the file named by
@@ -190,21 +211,23 @@ where
     E: From<OutputError>,
     F: FnOnce(&Path) -> Result<(), E>,
 {
-    let suffix = format!(".tmp.{extension}");
     match resolve(path)? {
-        Target::File(target) => {
-            let staged = Staged::create(path, &target, &suffix)?;
-            body(staged.file.path())?;
-            Ok(staged.commit()?)
+        Target::File(_) => {
+            let mut set = OutputSet::new();
+            let staged = set.stage_with_extension(path, extension)?;
+            body(&staged)?;
+            set.commit()?;
+            Ok(())
         }
         stream => {
+            // Encoded into a staging folder in the system's temporary folder, then copied.
             let scratch = tempfile::Builder::new()
                 .prefix(".polargen-output.")
-                .suffix(&suffix)
-                .tempfile()
-                .map_err(|e| OutputError::io(path, e))?;
-            body(scratch.path())?;
-            let mut bytes = File::open(scratch.path()).map_err(|e| OutputError::io(path, e))?;
+                .tempdir()
+                .map_err(|e| OutputError::io(path, without_path(e)))?;
+            let file = scratch.path().join(format!("output.{extension}"));
+            body(&file)?;
+            let mut bytes = File::open(&file).map_err(|e| OutputError::io(path, e))?;
             stream_into(path, &stream, |w| {
                 io::copy(&mut bytes, w)
                     .map(|_| ())
@@ -212,6 +235,18 @@ where
             })
         }
     }
+}
+
+/// Whether `path` names a regular file (existing or not, through a link), not a stream:
+/// standard output, a descriptor, a device or a FIFO.
+pub fn names_a_file(path: &Path) -> bool {
+    matches!(resolve(path), Ok(Target::File(_)))
+}
+
+/// Whether `path` means this process's standard output (`-`, `/dev/stdout`, `/proc/self/fd/1`
+/// …): a caller that writes data there keeps its other output off standard output.
+pub fn is_stdout(path: &Path) -> bool {
+    matches!(resolve(path), Ok(Target::Stdout))
 }
 
 /// Run `body` on a buffered writer into the stream `target` of `path`, then flush.
@@ -223,6 +258,7 @@ where
     let io_err = |e| E::from(OutputError::io(path, e));
     match target {
         Target::Stdout => {
+            stdout_open().map_err(io_err)?;
             let mut w = BufWriter::new(io::stdout().lock());
             body(&mut w)?;
             w.flush().map_err(io_err)
@@ -242,67 +278,39 @@ where
     }
 }
 
-/// A temporary file next to its target, renamed over the target by [`Staged::commit`] and
-/// removed when dropped uncommitted.
-struct Staged {
-    /// The path as requested (named in errors).
-    requested: PathBuf,
-    /// The file to replace.
-    target: PathBuf,
-    /// The temporary file.
-    file: tempfile::NamedTempFile,
-    /// Its listing for removal on interruption.
-    _registration: interrupt::Registration,
+/// `Ok` when standard output is open. A process started with standard output closed (`>&-`)
+/// finds `/dev/null` there, opened read-write by the Rust runtime (a shell's `>/dev/null`
+/// opens it write-only): writing would succeed and lose the result, so that case is an error.
+#[cfg(unix)]
+fn stdout_open() -> io::Result<()> {
+    use std::os::unix::fs::FileTypeExt;
+    use std::os::unix::fs::MetadataExt;
+    use std::os::unix::io::AsFd;
+    let closed = || io::Error::other("standard output is closed: the result has nowhere to go");
+    let fd = io::stdout()
+        .as_fd()
+        .try_clone_to_owned()
+        .map_err(|_| closed())?;
+    // SAFETY: F_GETFL on a descriptor this process owns reads its status flags only.
+    let flags = unsafe { libc::fcntl(std::os::unix::io::AsRawFd::as_raw_fd(&fd), libc::F_GETFL) };
+    if flags == -1 {
+        return Err(closed());
+    }
+    if flags & libc::O_ACCMODE != libc::O_RDWR {
+        return Ok(());
+    }
+    let here = File::from(fd).metadata()?;
+    let null = fs::metadata("/dev/null")?;
+    if here.file_type().is_char_device() && here.rdev() == null.rdev() {
+        return Err(closed());
+    }
+    Ok(())
 }
 
-impl Staged {
-    /// Create the missing folders above `target` and a temporary file beside it, named
-    /// `.<name>.<random><suffix>`.
-    fn create(requested: &Path, target: &Path, suffix: &str) -> Result<Self, OutputError> {
-        let dir = match target.parent().filter(|d| !d.as_os_str().is_empty()) {
-            Some(d) => {
-                fs::create_dir_all(d).map_err(|e| OutputError::io(d, e))?;
-                d
-            }
-            None => Path::new("."),
-        };
-        let name = target
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        let prefix = format!(".{name}.");
-        let mut builder = tempfile::Builder::new();
-        builder.prefix(&prefix).suffix(suffix);
-        // Like a file created by `File::create`: 0666 less the umask (tempfile's own default
-        // is 0600, which would hide results from other users).
-        #[cfg(unix)]
-        {
-            use std::os::unix::fs::PermissionsExt;
-            builder.permissions(fs::Permissions::from_mode(0o666));
-        }
-        let file = builder
-            .tempfile_in(dir)
-            .map_err(|e| OutputError::io(requested, without_path(e)))?;
-        Ok(Self {
-            requested: requested.to_path_buf(),
-            target: target.to_path_buf(),
-            _registration: interrupt::Registration::new(file.path()),
-            file,
-        })
-    }
-
-    /// Sync the temporary file and rename it over the target.
-    fn commit(self) -> Result<(), OutputError> {
-        let requested = self.requested;
-        self.file
-            .as_file()
-            .sync_all()
-            .map_err(|e| OutputError::io(&requested, e))?;
-        self.file
-            .persist(&self.target)
-            .map(|_| ())
-            .map_err(|e| OutputError::io(&requested, without_path(e.error)))
-    }
+/// `Ok` (no way to tell a closed standard output here).
+#[cfg(not(unix))]
+fn stdout_open() -> io::Result<()> {
+    Ok(())
 }
 
 /// `e` without the temporary path the `tempfile` crate adds to its messages (errors name the
@@ -316,8 +324,13 @@ pub(crate) fn without_path(e: io::Error) -> io::Error {
         .and_then(|r| r.source())
         .and_then(|s| s.downcast_ref::<io::Error>())
         .and_then(io::Error::raw_os_error);
-    match inner {
-        Some(code) => io::Error::from_raw_os_error(code),
+    if let Some(code) = inner {
+        return io::Error::from_raw_os_error(code);
+    }
+    // tempfile's own wording: "<cause> at path \"<temporary path>\"".
+    let text = e.to_string();
+    match text.split_once(" at path ") {
+        Some((cause, _)) => io::Error::new(e.kind(), cause.to_string()),
         None => e,
     }
 }
@@ -343,6 +356,12 @@ fn resolve(path: &Path) -> Result<Target, OutputError> {
     }
     if path.file_name().is_none() {
         return Err(OutputError::bad(path, "not a file name"));
+    }
+    if path.iter().any(|c| c.len() > MAX_FILE_NAME_BYTES) {
+        return Err(OutputError::bad(
+            path,
+            "a file or folder name in it is longer than 255 bytes, more than file systems take",
+        ));
     }
     let target = match fs::symlink_metadata(path) {
         Ok(m) if m.file_type().is_symlink() => fs::canonicalize(path)

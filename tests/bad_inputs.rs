@@ -40,6 +40,7 @@ fn refused(tool: &str, args: &[&str], expect: &str) {
         "polargen-set",
         "line 0",
         ".tmp",
+        "polargen-probe",
     ] {
         assert!(
             !err.contains(bad),
@@ -440,4 +441,82 @@ fn a_file_set_appears_whole_or_not_at_all() {
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
     assert_eq!(names, ["t_Re1e6.c81"], "{names:?}");
+}
+
+/// A single-polar table of `alphas` (a plausible attached-flow polar in the units given).
+fn short_table(path: &Path, alphas: &[f64], per_degree: f64) {
+    let mut text = String::from("alpha,cl,cd,cm\n");
+    for a in alphas {
+        let cl = 0.1 * a / per_degree + 0.2;
+        text.push_str(&format!("{a},{cl},{},-0.02\n", 0.008 + 0.005 * cl * cl));
+    }
+    std::fs::write(path, text).unwrap();
+}
+
+#[test]
+fn a_table_short_of_the_rotors_alpha_range_is_refused_before_the_trim() {
+    let d = scratch("alpha-range");
+    let narrow = d.join("narrow.csv");
+    short_table(&narrow, &[-2.0, -1.0, 0.0, 1.0, 2.0], 1.0);
+    let radians = d.join("radians.csv");
+    let rad: Vec<f64> = (-3..=6).map(|k| f64::from(k) * 0.05).collect();
+    short_table(&radians, &rad, std::f64::consts::PI / 180.0);
+    refused(
+        "gyro",
+        &["trim", "--aircraft", AIRCRAFT, "--table", s(&narrow)],
+        "α spans only -2…2°",
+    );
+    refused(
+        "gyro",
+        &["takeoff", "--table", s(&radians)],
+        "α in radians?",
+    );
+    refused(
+        "gyro",
+        &["compare", "--clean", TABLE, "--contaminated", s(&narrow)],
+        "narrow.csv",
+    );
+}
+
+#[test]
+fn a_prerotation_beyond_the_speed_of_sound_at_the_tip_is_refused() {
+    let d = scratch("prerotation");
+    let preset =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(AIRCRAFT)).unwrap();
+    let line = preset
+        .lines()
+        .find(|l| l.trim_start().starts_with("prerotation_rpm"))
+        .expect("the preset sets prerotation_rpm");
+    let fast = d.join("fast.toml");
+    std::fs::write(&fast, preset.replace(line, "prerotation_rpm = 1e9")).unwrap();
+    refused(
+        "gyro",
+        &["takeoff", "--aircraft", s(&fast), "--table", TABLE],
+        "takeoff.prerotation_rpm = 1e9 is invalid: must keep the blade tip below the speed of sound",
+    );
+}
+
+#[test]
+fn the_360_degree_rows_carry_no_round_off() {
+    let d = scratch("rows360");
+    let out = d.join("t.dat");
+    accepted(
+        "polargen",
+        &["convert", TABLE, "--format", "aerodyn", "--out", s(&out)],
+    );
+    let text = std::fs::read_to_string(&out).unwrap();
+    for a in ["-180", "-90", "90", "180"] {
+        let row = text
+            .lines()
+            .find(|l| l.split_whitespace().next() == Some(a))
+            .unwrap_or_else(|| panic!("no row at {a}°"));
+        assert!(!row.contains("e-1"), "round-off in the {a}° row: {row}");
+    }
+    let row = |a: &str| {
+        text.lines()
+            .find(|l| l.starts_with(&format!("{a} ")))
+            .unwrap()
+    };
+    assert_eq!(row("-90"), "-90 0 2 0.5");
+    assert_eq!(row("180"), "180 0 0.03 0");
 }

@@ -258,7 +258,7 @@ fn bad_input_is_one_line_before_any_solve() {
         (&["--airfoils", j], "b.dat"),
         (
             &["--airfoils", f, "--format", "c81"],
-            "a batch writes csv or json tables",
+            "--format c81: must be one of csv, json",
         ),
     ];
     for (args, expected) in cases {

@@ -268,7 +268,7 @@ fn re_alone_is_one_polar_at_mach_0_and_mach_alone_is_refused() {
         "{out}"
     );
     let m = run(POLARGEN, &["--airfoil", "naca0012", "--mach", "0.3"]);
-    assert_eq!(m.status.code(), Some(1));
+    assert_eq!(m.status.code(), Some(2));
     assert!(text(&m.stderr).contains("--re"), "{}", text(&m.stderr));
 }
 

@@ -841,15 +841,15 @@ mod png_decode {
                             16 => {
                                 let prev = *lengths.last().ok_or("repeat without length")?;
                                 let n = 3 + bits.get(2)?;
-                                lengths.extend(std::iter::repeat(prev).take(n as usize));
+                                lengths.extend(std::iter::repeat_n(prev, n as usize));
                             }
                             17 => {
                                 let n = 3 + bits.get(3)?;
-                                lengths.extend(std::iter::repeat(0).take(n as usize));
+                                lengths.extend(std::iter::repeat_n(0, n as usize));
                             }
                             _ => {
                                 let n = 11 + bits.get(7)?;
-                                lengths.extend(std::iter::repeat(0).take(n as usize));
+                                lengths.extend(std::iter::repeat_n(0, n as usize));
                             }
                         }
                     }

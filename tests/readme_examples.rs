@@ -166,6 +166,39 @@ fn the_readme_examples_run_as_pasted() {
             String::from_utf8_lossy(&out.stderr)
         );
     }
+    // Whatever the examples wrote at the top of the checkout is either a folder the repository
+    // has or something its .gitignore ignores: pasted commands leave no stray files.
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let ignore = fs::read_to_string(repo.join(".gitignore")).unwrap_or_default();
+    for entry in fs::read_dir(root.path()).unwrap() {
+        let name = entry.unwrap().file_name().to_string_lossy().into_owned();
+        let shipped = repo.join(&name).exists() && !ignored(&ignore, &name);
+        assert!(
+            shipped || ignored(&ignore, &name),
+            "the README's examples leave {name} at the top of the checkout, which git does not \
+             ignore"
+        );
+    }
+}
+
+/// Whether a top-level `name` matches a pattern of the `.gitignore` text `rules` (the forms
+/// the project uses: `name`, `/name`, `/name/`, and `*` wildcards).
+fn ignored(rules: &str, name: &str) -> bool {
+    rules
+        .lines()
+        .map(str::trim)
+        .filter(|r| !r.is_empty() && !r.starts_with('#') && !r.starts_with('!'))
+        .map(|r| r.trim_start_matches('/').trim_end_matches('/'))
+        .any(|pattern| glob(pattern.as_bytes(), name.as_bytes()))
+}
+
+/// `*`-wildcard matching of `name` against `pattern`.
+fn glob(pattern: &[u8], name: &[u8]) -> bool {
+    match pattern.split_first() {
+        None => name.is_empty(),
+        Some((b'*', rest)) => (0..=name.len()).any(|k| glob(rest, &name[k..])),
+        Some((c, rest)) => name.first() == Some(c) && glob(rest, &name[1..]),
+    }
 }
 
 #[test]
@@ -180,4 +213,11 @@ fn blocks_commands_and_markers_are_found() {
     assert_eq!(texts, [vec!["./a --x --y"], vec!["./c"]]);
     assert_eq!(blocks[0][0].line, 5);
     assert_eq!(skipped.len(), 2, "{skipped:?}");
+}
+
+#[test]
+fn ignore_patterns_match_as_git_does_for_top_level_names() {
+    let rules = "/target\n# c\n/out/\n.polargen-set-*\n";
+    assert!(ignored(rules, "target") && ignored(rules, "out"));
+    assert!(ignored(rules, ".polargen-set-12.ab") && !ignored(rules, "tables"));
 }

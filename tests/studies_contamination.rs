@@ -112,16 +112,16 @@ fn paper_setting_reproduces_compare_coverage_reaches_both_ends_and_keys_hold() {
 
 /// A small grid around the rotor's working range, quick to solve.
 fn small_cache(dir: &Path) -> TableCache {
-    TableCache {
-        dir: dir.to_path_buf(),
-        grid: GridSpec {
+    TableCache::new(
+        dir.to_path_buf(),
+        GridSpec {
             reynolds: vec![0.7e6, 1.5e6],
             mach: vec![0.2, 0.4],
             alpha_deg: (-6..=14).map(f64::from).collect(),
         },
-        panels: DEFAULT_PANEL_NODES,
-        threads: 0,
-    }
+        DEFAULT_PANEL_NODES,
+        0,
+    )
 }
 
 #[test]

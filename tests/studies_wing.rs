@@ -126,3 +126,20 @@ fn bad_settings_are_one_line_errors() {
     let err = run_wing(&ac, &clean, &options(&[1.0], &[60.0]), &|| {}).unwrap_err();
     assert!(err.to_string().contains("[wing]"), "{err}");
 }
+
+#[test]
+fn the_default_options_are_plain_values_the_cli_shows() {
+    let d = WingOptions::default();
+    assert_eq!(d.airfoil, "naca8h12");
+    assert_eq!(d.areas_m2, [0.0, 1.0, 1.7, 2.5]);
+    assert_eq!(d.speeds_kt, [30.0, 45.0, 60.0, 75.0, 90.0]);
+    assert_eq!(d.xtr, None);
+    assert!(d.checked().is_ok());
+    let help = std::process::Command::new(env!("CARGO_BIN_EXE_gyro"))
+        .args(["study", "wing", "--help"])
+        .output()
+        .unwrap();
+    let help = String::from_utf8_lossy(&help.stdout);
+    assert!(help.contains("[default: 0,1,1.7,2.5]"), "{help}");
+    assert!(help.contains("[default: 30,45,60,75,90]"), "{help}");
+}

@@ -25,7 +25,7 @@ mod _polargen {
     #[pymodule_export]
     use crate::rotor::{PyAircraft, PyRotor};
     #[pymodule_export]
-    use crate::solve::{alpha_range, point, table};
+    use crate::solve::{alpha_range, estimate_seconds, point, table};
     #[pymodule_export]
     use crate::table::Table;
 

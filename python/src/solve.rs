@@ -175,6 +175,10 @@ fn build(
     let nodes = airfoil.solver_nodes(py, panels)?;
     let base = settings.params(1.0, 0.0);
     let total = grid.point_count();
+    // The work before any of it is done (a default progress prints its start line).
+    if let Some(callback) = &progress {
+        callback.call1(py, (0, total))?;
+    }
     let cancel = AtomicBool::new(false);
     let (result, interrupted) = py.detach(|| {
         let (sender, receiver) = mpsc::channel::<usize>();
@@ -245,6 +249,13 @@ fn build(
         )),
         Err(e) => Err(raise(None, e)),
     }
+}
+
+/// Estimated time to solve `points` points in `polars` polars on `threads` workers (0 = all
+/// cores), in seconds (the estimate of the command-line tools' start line).
+#[pyfunction]
+pub fn estimate_seconds(points: usize, polars: usize, threads: usize) -> f64 {
+    polargen::table::estimated_build_seconds(points, polars, threads)
 }
 
 /// A Re × M × α table, computed as the CLI computes it (one polar: one Re and one Mach

@@ -89,3 +89,19 @@ def test_ctrl_c_stops_a_table_after_the_polars_under_way():
     finally:
         timer.cancel()
     assert time.perf_counter() - start < 10
+
+
+def test_a_table_states_its_work_on_stderr_by_default_and_progress_lines_follow(capsys):
+    pg.table("naca2412", re=[1e6], mach=[0.0, 0.2], alpha="0:4:1")
+    err = capsys.readouterr().err
+    assert err.startswith("polargen: 2 polars of NACA 2412: 10 points, under 1 s"), err
+    pg.table("naca2412", re=[1e6], mach=[0.0], alpha="0:4:1", progress=None)
+    assert capsys.readouterr().err == ""
+    # The lines that follow the start line, at their interval (here every call).
+    lines = pg.PlainProgress("grid", polars=1, threads=1, interval=0.0)
+    for done in (0, 10, 20, 40):
+        lines(done, 40)
+    err = capsys.readouterr().err.splitlines()
+    assert err[0] == "polargen: grid: 40 points, about 1 s", err
+    assert err[1].startswith("polargen: 10/40 points, elapsed 0 s, about ") and err[1].endswith(" left")
+    assert len(err) == 3, err

@@ -11,7 +11,8 @@
 //!
 //! Inside (private): `contour` (the contour prepared for the panels: SCALC, SEGSPL, LEFIND,
 //! TECALC), `influence` (PSILIN/PSWLIN kernels), `system` (matrix, Kutta/sharp-TE rows, LU,
-//! unit solutions), `wake` (XYWAKE, QWCALC), `source_influence` (QDCALC), `forces` (CLCALC).
+//! unit solutions), `wake` (XYWAKE, QWCALC), `source_influence` (QDCALC), `forces` (CLCALC);
+//! `polar` writes the inviscid polar of `polargen --inviscid`.
 //! The viscous coupling (a higher layer) uses the wake and the source influence, which are
 //! crate-internal.
 //!
@@ -31,6 +32,7 @@ mod contour;
 mod error;
 pub(crate) mod forces;
 mod influence;
+mod polar;
 pub(crate) mod source_influence;
 mod system;
 pub(crate) mod wake;
@@ -40,6 +42,7 @@ mod tests;
 
 pub use contour::{PanelGeometry, PanelParams, TrailingEdge};
 pub use error::InviscidError;
+pub use polar::inviscid_polar_csv;
 pub use system::{InviscidSolution, PanelSystem, MAX_SECTION_CL, MAX_UNIT_SPEED};
 
 pub(crate) use source_influence::SourceInfluence;

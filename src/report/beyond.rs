@@ -3,6 +3,7 @@
 //! with what each depends on. Every number is read from the study records.
 
 use crate::plot::Figure;
+use crate::progress::Progress;
 use crate::rotor::Aircraft;
 use crate::studies::airfoil::{self, AirfoilStudy};
 use crate::studies::contamination::{
@@ -11,7 +12,7 @@ use crate::studies::contamination::{
 };
 use crate::studies::speed::{self, default_speeds, SpeedStudy};
 use crate::studies::wing::{self, WingOptions, WingRecord, WingStudy};
-use crate::studies::{command_line_cache, Progress, StudiesError, TableCache, PAPER_TRIP_XTR};
+use crate::studies::{command_line_cache, StudiesError, TableCache, PAPER_TRIP_XTR};
 use std::path::Path;
 
 /// Rotor rpm change still read as "unchanged" \[rpm\]: an assumed reading resolution of the
@@ -30,13 +31,6 @@ pub(super) fn figure_stems() -> Vec<&'static str> {
     v
 }
 
-/// The wing areas of the report's wing study \[m²\]: none, and about 0.6, 1 and 1.5 times the
-/// 1.7 m² wing of the paper's §6 (as `gyro study wing`).
-const WING_AREAS_M2: [f64; 4] = [0.0, 1.0, 1.7, 2.5];
-
-/// The airspeeds of the report's wing study \[kt\].
-const WING_SPEEDS_KT: [f64; 5] = [30.0, 45.0, 60.0, 75.0, 90.0];
-
 /// A signed whole number of rpm, or `-`.
 fn signed(v: Option<f64>) -> String {
     v.map_or_else(|| "-".to_string(), |d| format!("{d:+.0}"))
@@ -49,37 +43,48 @@ pub(super) struct Beyond {
     speed: SpeedStudy,
     /// The wing study of the clean rotor; `None` when the aircraft file has no `[wing]`.
     wing: Option<WingStudy>,
+    /// The table cache's notes (entries solved again).
+    pub(super) cache_notes: Vec<String>,
 }
 
 /// Run the studies with tables from the cache folder `cache`.
-pub(super) fn run(ac: &Aircraft, cache: &Path) -> Result<Beyond, StudiesError> {
-    run_with(ac, &command_line_cache(Some(cache.to_path_buf()))?)
+pub(super) fn run(
+    ac: &Aircraft,
+    cache: &Path,
+    progress: &dyn Progress,
+) -> Result<Beyond, StudiesError> {
+    run_with(
+        ac,
+        &command_line_cache(Some(cache.to_path_buf()))?,
+        progress,
+    )
 }
 
 /// Run the studies with tables from `cache`.
-fn run_with(ac: &Aircraft, cache: &TableCache) -> Result<Beyond, StudiesError> {
-    let progress = Progress::on_terminal();
+fn run_with(
+    ac: &Aircraft,
+    cache: &TableCache,
+    progress: &dyn Progress,
+) -> Result<Beyond, StudiesError> {
     let options = ContaminationOptions::default();
-    let contamination = ContaminationStudy::run(ac, AIRFOILS[0], &options, cache, &progress)?;
+    let contamination = ContaminationStudy::run(ac, AIRFOILS[0], &options, cache, progress)?;
     let names: Vec<String> = AIRFOILS.iter().map(|s| s.to_string()).collect();
-    let airfoils = AirfoilStudy::run(ac, &names, cache, &progress)?;
+    let airfoils = AirfoilStudy::run(ac, &names, cache, progress)?;
     let speed = SpeedStudy::run(
         ac,
         AIRFOILS[0],
         PAPER_TRIP_XTR,
         &default_speeds(),
         cache,
-        &progress,
+        progress,
     )?;
     let wing = match ac.wing {
         Some(_) => {
             let options = WingOptions {
                 airfoil: AIRFOILS[0].to_string(),
-                areas_m2: WING_AREAS_M2.to_vec(),
-                speeds_kt: WING_SPEEDS_KT.to_vec(),
-                xtr: None,
+                ..WingOptions::default()
             };
-            Some(WingStudy::run(ac, &options, cache, &progress)?)
+            Some(WingStudy::run(ac, &options, cache, progress)?)
         }
         None => None,
     };
@@ -88,6 +93,7 @@ fn run_with(ac: &Aircraft, cache: &TableCache) -> Result<Beyond, StudiesError> {
         airfoils,
         speed,
         wing,
+        cache_notes: cache.notes(),
     })
 }
 
@@ -251,7 +257,8 @@ fn wing_findings(o: &mut String, w: &WingStudy) {
             .iter()
             .find(|r| r.wing_area_m2 == area && r.speed_kt == v && r.converged)
     };
-    let cells: Vec<String> = WING_AREAS_M2[1..]
+    let areas = WingOptions::default().areas_m2;
+    let cells: Vec<String> = areas[1..]
         .iter()
         .map(|&area| {
             let one = |v: f64| {
@@ -296,19 +303,19 @@ mod tests {
     #[test]
     fn section_states_each_study_from_its_records() {
         let dir = tempfile::tempdir().unwrap();
-        let cache = TableCache {
-            dir: dir.path().to_path_buf(),
-            grid: GridSpec {
+        let cache = TableCache::new(
+            dir.path().to_path_buf(),
+            GridSpec {
                 reynolds: vec![0.7e6, 1.5e6],
                 mach: vec![0.2, 0.4],
                 alpha_deg: (-6..=14).map(f64::from).collect(),
             },
-            panels: crate::geometry::DEFAULT_PANEL_NODES,
-            threads: 0,
-        };
+            crate::geometry::DEFAULT_PANEL_NODES,
+            0,
+        );
         let root = Path::new(env!("CARGO_MANIFEST_DIR"));
         let ac = Aircraft::from_toml_file(&root.join("aircraft/mtosport.toml")).unwrap();
-        let b = run_with(&ac, &cache).unwrap();
+        let b = run_with(&ac, &cache, &crate::progress::Silent).unwrap();
         let text = b.markdown();
         assert!(text.starts_with("## Beyond the paper"));
         // One entry per trip location, each with the Δ engine rpm of its record.
@@ -337,7 +344,8 @@ mod tests {
         assert!(airfoil_line.contains(&pct), "{pct}: {airfoil_line}");
         // The wing: the shipped aircraft has a [wing] of area 0, scaled to each area.
         let w = b.wing.as_ref().expect("the shipped aircraft has a [wing]");
-        assert_eq!(w.records.len(), WING_AREAS_M2.len() * WING_SPEEDS_KT.len());
+        let o = WingOptions::default();
+        assert_eq!(w.records.len(), o.areas_m2.len() * o.speeds_kt.len());
         let wing_line = text.lines().find(|l| l.contains("**Fixed wing**")).unwrap();
         let r = w
             .records

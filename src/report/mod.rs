@@ -30,12 +30,15 @@ mod second_rotor;
 mod shipped;
 mod words;
 
-pub use shipped::{SHIPPED_AIRCRAFT, SHIPPED_POLARS};
+pub use shipped::{
+    ShippedInputs, SHIPPED_AIRCRAFT, SHIPPED_CONTAMINATED_TABLE, SHIPPED_POLARS, SHIPPED_TABLE,
+};
 
 use crate::geometry::airfoil_key;
 use crate::output::{check_output_path, OutputError, OutputSet};
 use crate::plot::rotor_plots::{power_plot, takeoff_plot};
 use crate::plot::{render_into_set, Figure, PlotError};
+use crate::progress::{Progress, Work};
 use crate::rotor::{
     sweep_speeds, Aircraft, AircraftError, Powerplant, PropellerError, TakeoffResult, TrimResult,
 };
@@ -183,18 +186,23 @@ struct RotorResults {
     sensitivity: Sensitivity,
 }
 
-/// Writes the report (see the module documentation) after [`check_report_paths`].
-pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError> {
+/// Writes the report (see the module documentation) after [`check_report_paths`], telling
+/// `progress` the phases of its computations (the rotor cases, then the studies' tables and
+/// runs when asked for).
+pub fn write_report(
+    inputs: &ReportInputs,
+    progress: &dyn Progress,
+) -> Result<ReportOutcome, ReportError> {
     check_report_paths(&inputs.out)?;
     let ac = shipped::aircraft(&inputs.aircraft)?;
     let foils = TABLE5
         .iter()
         .map(|row| load_foil(&inputs.polars, row))
         .collect::<Result<Vec<_>, _>>()?;
-    let rotor = rotor_results(&ac, &foils[0].tables)?;
+    let rotor = rotor_results(&ac, &foils[0].tables, progress)?;
     let second = second_rotor_results(inputs)?;
     let beyond = match &inputs.studies {
-        Some(cache) => Some(beyond::run(&ac, cache)?),
+        Some(cache) => Some(beyond::run(&ac, cache, progress)?),
         None => None,
     };
     // Every file of the report appears together with the others, or none does.
@@ -251,7 +259,8 @@ pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError>
         source,
     })?;
     let written = set.commit()?;
-    let notes = rotor.sweeps.iter().flat_map(SpeedSweep::notes).collect();
+    let mut notes: Vec<String> = rotor.sweeps.iter().flat_map(SpeedSweep::notes).collect();
+    notes.extend(beyond.into_iter().flat_map(|b| b.cache_notes));
     Ok(ReportOutcome { written, notes })
 }
 
@@ -353,15 +362,25 @@ fn second_rotor_results(inputs: &ReportInputs) -> Result<second_rotor::SecondRot
 }
 
 /// Trim, takeoff, blade α(ψ) and the speed sweep for the clean and the contaminated section.
-fn rotor_results(ac: &Aircraft, tables: &[PolarTable; 2]) -> Result<RotorResults, ReportError> {
+fn rotor_results(
+    ac: &Aircraft,
+    tables: &[PolarTable; 2],
+    progress: &dyn Progress,
+) -> Result<RotorResults, ReportError> {
     let sections = [&tables[0], &tables[1]];
     let speeds = sweep_speeds(SWEEP_KT.0, SWEEP_KT.1, SWEEP_KT.2);
     let propeller = PropellerFacts::of(&Powerplant::from_aircraft(ac)?)?;
+    progress.start(&Work::new(
+        4,
+        "computations",
+        "the paper report: trim and takeoff, sensitivity, blade α and power sweep of the \
+         clean and the contaminated rotor",
+    ));
     let ((runs, sens), (alpha, sweeps)) = rayon::join(
         || {
             rayon::join(
-                || paper_runs(ac, sections[0], sections[1]),
-                || sensitivity(ac, sections[0], sections[1]),
+                || paper_runs(ac, sections[0], sections[1]).inspect(|_| progress.advance(1)),
+                || sensitivity(ac, sections[0], sections[1]).inspect(|_| progress.advance(1)),
             )
         },
         || {
@@ -375,11 +394,17 @@ fn rotor_results(ac: &Aircraft, tables: &[PolarTable; 2]) -> Result<RotorResults
                         FIG10_RADIUS,
                         FIG10_SAMPLES,
                     )
+                    .inspect(|_| progress.advance(1))
                 },
-                || sweep_cases(ac, &sections, &CASE_LABELS, &speeds),
+                || {
+                    let sweeps = sweep_cases(ac, &sections, &CASE_LABELS, &speeds);
+                    progress.advance(1);
+                    sweeps
+                },
             )
         },
     );
+    progress.finish();
     let [clean, dirty] = runs?;
     let alpha = alpha?;
     for sweep in &sweeps {

@@ -11,14 +11,22 @@
 
 use crate::input::exists;
 use crate::rotor::{Aircraft, AircraftError, RotorPreset};
-use crate::table::{parse_table, read_lookup_table, PolarTable, TableError, TableFormat};
-use std::path::Path;
+use crate::table::{
+    check_lookup_table, parse_table, read_lookup_table, PolarTable, TableError, TableFormat,
+};
+use std::path::{Path, PathBuf};
 
 /// Default aircraft preset path of `gyro report`.
 pub const SHIPPED_AIRCRAFT: &str = "aircraft/mtosport.toml";
 
 /// Default table folder of `gyro report`.
 pub const SHIPPED_POLARS: &str = "polars";
+
+/// Default section table of the `gyro` commands of one section: the clean 8-H-12.
+pub const SHIPPED_TABLE: &str = "polars/naca8h12_free.csv";
+
+/// Default contaminated section table of `gyro compare`: the 8-H-12 tripped at 7 % chord.
+pub const SHIPPED_CONTAMINATED_TABLE: &str = "polars/naca8h12_xtr0.07.csv";
 
 /// The MTOsport preset as shipped.
 const AIRCRAFT_TOML: &str = include_str!("../../aircraft/mtosport.toml");
@@ -64,7 +72,7 @@ const TABLES: [(&str, &str); 6] = [
 pub(super) fn aircraft(path: &Path) -> Result<Aircraft, AircraftError> {
     if path == Path::new(SHIPPED_AIRCRAFT) && !exists(path) {
         let section = parse_table(PROPELLER_TABLE.as_bytes(), TableFormat::Csv)
-            .and_then(|t| t.require_lookup().map(|()| t))
+            .and_then(|t| check_lookup_table(&t).map(|()| t))
             .map_err(|source| AircraftError::PropellerSection {
                 path: SHIPPED_AIRCRAFT.to_string(),
                 source,
@@ -76,11 +84,13 @@ pub(super) fn aircraft(path: &Path) -> Result<Aircraft, AircraftError> {
     Aircraft::from_toml_file(path)
 }
 
-/// The rotor preset at `path`, or the built-in PCA-2 preset when `path` is the default and
-/// absent.
+/// The rotor preset at `path`, or the built-in PCA-2 or MTOsport preset (its rotor) when
+/// `path` is the default path of either and absent.
 pub(super) fn rotor_preset(path: &Path) -> Result<RotorPreset, AircraftError> {
-    if path == Path::new(SHIPPED_PCA2) && !exists(path) {
-        return RotorPreset::from_toml_str(PCA2_TOML, SHIPPED_PCA2);
+    for (shipped, toml) in [(SHIPPED_PCA2, PCA2_TOML), (SHIPPED_AIRCRAFT, AIRCRAFT_TOML)] {
+        if path == Path::new(shipped) && !exists(path) {
+            return RotorPreset::from_toml_str(toml, shipped);
+        }
     }
     RotorPreset::from_toml_file(path)
 }
@@ -99,8 +109,56 @@ pub(super) fn table(path: &Path) -> Result<PolarTable, TableError> {
         source: Box::new(source),
     };
     let table = parse_table(text.as_bytes(), TableFormat::Csv).map_err(in_file)?;
-    table.require_lookup().map_err(in_file)?;
+    check_lookup_table(&table).map_err(in_file)?;
     Ok(table)
+}
+
+/// The inputs of a command that reads an aircraft and section tables: each file given, else
+/// the shipped one (the file in a checkout, else the built-in copy: [`aircraft`], [`table`]),
+/// the rule of `gyro report` for every command; [`note`](Self::note) names the shipped inputs
+/// used, in one line.
+#[derive(Debug, Default)]
+pub struct ShippedInputs(Vec<&'static str>);
+
+impl ShippedInputs {
+    /// `given`, else the shipped path `shipped` (recorded for the note).
+    fn path(&mut self, given: &Option<PathBuf>, shipped: &'static str) -> PathBuf {
+        given.clone().unwrap_or_else(|| {
+            self.0.push(shipped);
+            PathBuf::from(shipped)
+        })
+    }
+
+    /// The aircraft at `given`, else the shipped MTOsport ([`SHIPPED_AIRCRAFT`]).
+    pub fn aircraft(&mut self, given: &Option<PathBuf>) -> Result<Aircraft, AircraftError> {
+        aircraft(&self.path(given, SHIPPED_AIRCRAFT))
+    }
+
+    /// The rotor of the aircraft or rotor preset at `given`, else the shipped MTOsport's.
+    pub fn rotor_preset(&mut self, given: &Option<PathBuf>) -> Result<RotorPreset, AircraftError> {
+        rotor_preset(&self.path(given, SHIPPED_AIRCRAFT))
+    }
+
+    /// The lookup table at `given`, else the shipped table `shipped` (a path below
+    /// [`SHIPPED_POLARS`], e.g. [`SHIPPED_TABLE`]).
+    pub fn table(
+        &mut self,
+        given: &Option<PathBuf>,
+        shipped: &'static str,
+    ) -> Result<PolarTable, TableError> {
+        table(&self.path(given, shipped))
+    }
+
+    /// The note naming the shipped inputs used (`None` when every input was given).
+    pub fn note(&self) -> Option<String> {
+        (!self.0.is_empty()).then(|| {
+            format!(
+                "note: the shipped {} (the copy built in where the file is absent); \
+                 --aircraft, --table, --clean, --contaminated choose others",
+                self.0.join(" and ")
+            )
+        })
+    }
 }
 
 #[cfg(test)]

@@ -3,11 +3,14 @@
 //! F_prop, engine rpm, takeoff, and the penalty of contamination for each airfoil.
 
 use super::files::records_csv;
+use super::progress::solving_phase;
 use super::{
-    cell, load_study_airfoil, Penalty, Performance, Progress, StudiesError, StudyFiles, TableCache,
+    cell, load_study_airfoil, Penalty, Performance, StudiesError, StudyFiles, TableCache,
     TakeoffFigures, TrimFigures, CLEAN, PAPER_TRIP_XTR,
 };
+use crate::geometry::Airfoil;
 use crate::plot::{Figure, Panel, Series, Style};
+use crate::progress::{Progress, Work};
 use crate::rotor::Aircraft;
 use crate::section::{SectionAero, Transition};
 use crate::studies::paper::{paper_run, PAPER_TRIM_SPEED_KT};
@@ -93,18 +96,19 @@ impl AirfoilStudy {
         aircraft: &Aircraft,
         airfoils: &[String],
         cache: &TableCache,
-        progress: &Progress,
+        progress: &dyn Progress,
     ) -> Result<Self, StudiesError> {
         if airfoils.is_empty() {
-            return Err(StudiesError::BadSetting("--airfoils: empty list".into()));
+            let e = crate::arguments::ArgumentError::with_text("--airfoils", "", "empty list");
+            return Err(e.into());
         }
         let foils = airfoils
             .iter()
             .map(|a| load_study_airfoil(a, cache.panels))
             .collect::<Result<Vec<_>, _>>()?;
         let keys = [CLEAN, Transition::tripped(PAPER_TRIP_XTR)];
-        let missing: usize = foils.iter().map(|f| cache.missing_points(f, &keys)).sum();
-        progress.start(missing, "table points");
+        let refs: Vec<&Airfoil> = foils.iter().collect();
+        solving_phase(cache, &refs, &keys, progress);
         let tables = foils
             .iter()
             .map(|f| cache.tables(f, &keys, &|n| progress.advance(n)))
@@ -116,7 +120,11 @@ impl AirfoilStudy {
             .zip(&tables)
             .map(|(f, t)| (f.name.as_str(), &t[0], &t[1]))
             .collect();
-        progress.start(2 * cases.len(), "cases");
+        progress.start(&Work::new(
+            2 * cases.len(),
+            "cases",
+            "airfoil study: trim and takeoff of each airfoil, clean and tripped",
+        ));
         let records = run_airfoils(aircraft, &cases, &|| progress.advance(1));
         progress.finish();
         Ok(Self { records: records? })

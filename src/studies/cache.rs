@@ -7,16 +7,21 @@
 //! axes, the solver's parameters (their full debug form, so any change of a default gives a
 //! new key), the crate version and [`CACHE_FORMAT`]. An entry is used only when it parses
 //! and describes exactly the requested table (airfoil, setting, panels, axes, point count);
-//! anything else — a corrupt or cut-short file, a stale entry — is solved again and
-//! replaced. Entries are written atomically ([`write_output`](crate::output::write_output)).
+//! anything else — a corrupt or cut-short file, a stale entry, an entry that is not a regular
+//! file (a FIFO, a link to a device) or is larger than the input limit — is solved again and
+//! replaced, with a note ([`TableCache::notes`]). Entries are read through the one capped,
+//! regular-file-only reader ([`read_input`]) and written atomically
+//! ([`write_output`](crate::output::write_output)).
 
 use super::StudiesError;
 use crate::geometry::{airfoil_by_name_or_path, Airfoil};
+use crate::input::{read_input, InputProblem};
 use crate::polar::SweepParams;
 use crate::section::Transition;
 use crate::table::{build_table, parse_table, write_table, GridSpec, PolarTable, TableFormat};
 use crate::viscous::ViscousParams;
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
 
 /// Version of the cache's key and file layout; raise it when either changes.
 pub const CACHE_FORMAT: u32 = 1;
@@ -87,9 +92,42 @@ pub struct TableCache {
     pub panels: usize,
     /// Worker threads of a table build (0 = all cores).
     pub threads: usize,
+    /// Why entries that exist were not used (shared by clones).
+    notes: Arc<Mutex<Vec<String>>>,
 }
 
 impl TableCache {
+    /// The cache in folder `dir` of tables on `grid` with `panels` nodes, built on `threads`
+    /// workers (0 = all cores).
+    pub fn new(dir: PathBuf, grid: GridSpec, panels: usize, threads: usize) -> Self {
+        Self {
+            dir,
+            grid,
+            panels,
+            threads,
+            notes: Arc::default(),
+        }
+    }
+
+    /// Why entries that exist were not used (unreadable, not a regular file, too large,
+    /// corrupt or stale) and were solved again, one note per entry.
+    pub fn notes(&self) -> Vec<String> {
+        self.notes.lock().map(|n| n.clone()).unwrap_or_default()
+    }
+
+    /// Records why the entry `path` was not used.
+    fn note(&self, path: &Path, why: impl std::fmt::Display) {
+        let note = format!(
+            "note: table cache entry {}: {why}; solved again and replaced",
+            path.display()
+        );
+        if let Ok(mut notes) = self.notes.lock() {
+            if !notes.contains(&note) {
+                notes.push(note);
+            }
+        }
+    }
+
     /// The solver parameters of a table with `transition`.
     fn params(transition: &Transition) -> ViscousParams {
         ViscousParams {
@@ -126,10 +164,25 @@ impl TableCache {
         self.dir.join(format!("{stem}_{:016x}.json", h.0))
     }
 
-    /// The cached table, if its entry is a valid table of exactly this request.
+    /// The cached table, if its entry is a valid table of exactly this request; an entry
+    /// that exists but is not used gets a note.
     pub fn cached(&self, foil: &Airfoil, transition: &Transition) -> Option<PolarTable> {
-        let bytes = std::fs::read(self.entry(foil, transition)).ok()?;
-        let table = parse_table(&bytes, TableFormat::Json).ok()?;
+        let path = self.entry(foil, transition);
+        let bytes = match read_input(&path) {
+            Ok(bytes) => bytes,
+            Err(e) if e.problem == InputProblem::NotFound => return None,
+            Err(e) => {
+                self.note(&path, e.problem);
+                return None;
+            }
+        };
+        let table = match parse_table(&bytes, TableFormat::Json) {
+            Ok(t) => t,
+            Err(e) => {
+                self.note(&path, format!("not a readable table ({e})"));
+                return None;
+            }
+        };
         let m = table.meta();
         let matches = m.airfoil == foil.name
             && m.transition == *transition
@@ -138,6 +191,9 @@ impl TableCache {
             && table.mach() == self.grid.mach.as_slice()
             && table.point_count() == self.grid.point_count()
             && table.require_lookup().is_ok();
+        if !matches {
+            self.note(&path, "holds another table than its name promises");
+        }
         matches.then_some(table)
     }
 
@@ -191,12 +247,14 @@ impl TableCache {
             source,
         })?;
         table.require_lookup().map_err(StudiesError::Cache)?;
-        write_table(
-            &table,
-            &self.entry(foil, transition),
-            Some(TableFormat::Json),
-        )
-        .map_err(StudiesError::Cache)?;
+        let entry = self.entry(foil, transition);
+        // An entry that is not a regular file (a FIFO, a link to a device) would be written
+        // in place: the cache's own name is replaced by a regular file instead.
+        if std::fs::symlink_metadata(&entry).is_ok_and(|m| !m.is_file()) {
+            std::fs::remove_file(&entry)
+                .map_err(|e| StudiesError::Output(crate::output::OutputError::io(&entry, e)))?;
+        }
+        write_table(&table, &entry, Some(TableFormat::Json)).map_err(StudiesError::Cache)?;
         Ok(table)
     }
 }

@@ -10,10 +10,11 @@
 
 use super::files::{band_markers, records_csv};
 use super::{
-    cell, load_study_airfoil, sections, study_tables, Penalty, Performance, Progress, Sections,
-    StudiesError, StudyFiles, TableCache, TakeoffFigures, TrimFigures, CLEAN, PAPER_TRIP_XTR,
+    cell, load_study_airfoil, sections, study_tables, Penalty, Performance, Sections, StudiesError,
+    StudyFiles, TableCache, TakeoffFigures, TrimFigures, CLEAN, PAPER_TRIP_XTR,
 };
 use crate::plot::{Figure, Marker, Panel, Series, Style};
+use crate::progress::{Progress, Work};
 use crate::rotor::{Aircraft, SpanwiseSection};
 use crate::section::{SectionAero, Transition};
 use crate::studies::paper::{paper_run, PAPER_TRIM_SPEED_KT};
@@ -130,9 +131,13 @@ impl ContaminationOptions {
         ] {
             for &r in radii {
                 if !(0.0..=1.0).contains(&r) {
-                    return Err(StudiesError::BadSetting(format!(
-                        "coverage radius {r}: must be a fraction r/R in [0, 1]"
-                    )));
+                    let flag = if group == Group::Outboard {
+                        "--outboard"
+                    } else {
+                        "--inboard"
+                    };
+                    let rule = "a coverage radius must be a fraction r/R in [0, 1]";
+                    return Err(crate::arguments::ArgumentError::new(flag, r, rule).into());
                 }
                 let (inner, outer) = if group == Group::Outboard {
                     (r, 1.0)
@@ -384,13 +389,17 @@ impl ContaminationStudy {
         airfoil: &str,
         options: &ContaminationOptions,
         cache: &TableCache,
-        progress: &Progress,
+        progress: &dyn Progress,
     ) -> Result<Self, StudiesError> {
         let settings = options.settings()?;
         let foil = load_study_airfoil(airfoil, cache.panels)?;
         let keys = transitions(&settings);
         let tables = study_tables(cache, &foil, &keys, progress)?;
-        progress.start(settings.len(), "settings");
+        progress.start(&Work::new(
+            settings.len(),
+            "settings",
+            "contamination study: trim and takeoff of each setting",
+        ));
         let records = run_contamination(aircraft, &settings, &sections(&keys, &tables), &|| {
             progress.advance(1)
         });

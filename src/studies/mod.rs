@@ -32,7 +32,7 @@ pub mod wing;
 
 pub use cache::{check_cache_dir, default_cache_dir, load_study_airfoil, TableCache, CACHE_FORMAT};
 pub use files::{check_study_out, StudyFiles};
-pub use progress::{sections, study_tables, Progress};
+pub use progress::{sections, study_tables};
 pub use request::{records_json, StudyKind, StudyOutcome, StudyRequest};
 
 use crate::geometry::GeometryError;
@@ -58,6 +58,9 @@ pub enum StudiesError {
     /// A setting of the study is out of range (named in the message).
     #[error("{0}")]
     BadSetting(String),
+    /// A user-given setting of the study is out of range (a usage error of the tools).
+    #[error("{0}")]
+    Argument(#[from] crate::arguments::ArgumentError),
     /// An airfoil could not be loaded or paneled.
     #[error("airfoil {name}")]
     Airfoil {
@@ -212,20 +215,20 @@ impl Penalty {
 pub fn command_line_cache(dir: Option<std::path::PathBuf>) -> Result<TableCache, StudiesError> {
     let dir = dir.unwrap_or_else(default_cache_dir);
     check_cache_dir(&dir)?;
-    Ok(TableCache {
+    Ok(TableCache::new(
         dir,
-        grid: crate::table::GridSpec::default(),
-        panels: crate::geometry::DEFAULT_PANEL_NODES,
-        threads: 0,
-    })
+        crate::table::GridSpec::default(),
+        crate::geometry::DEFAULT_PANEL_NODES,
+        0,
+    ))
 }
 
 /// Airspeeds of a study given with `flag`, checked with the rotor layer's
 /// [`check_speed_kt`](crate::rotor::check_speed_kt): each above 0 and below the maximum.
 pub(crate) fn check_speeds(flag: &str, speeds_kt: &[f64]) -> Result<(), StudiesError> {
-    speeds_kt.iter().try_for_each(|&v| {
-        crate::rotor::check_speed_kt(flag, v).map_err(|e| StudiesError::BadSetting(e.to_string()))
-    })
+    speeds_kt
+        .iter()
+        .try_for_each(|&v| crate::rotor::check_speed_kt(flag, v).map_err(StudiesError::Argument))
 }
 
 /// A value with `decimals` decimals, or `-` for none.

@@ -1,86 +1,55 @@
-//! Progress of a study on the terminal: a bar for the table points still to solve, then one
-//! for the trims. Shown only when standard error is a terminal; silent otherwise and in tests.
+//! The tables of a study with their progress: the points still to solve, reported to the
+//! caller's [`Progress`] (a phase that states the tables to solve, their points and an
+//! estimate).
 
 use super::cache::TableCache;
 use super::{Sections, StudiesError};
 use crate::geometry::Airfoil;
+use crate::progress::{Progress, Work};
 use crate::section::Transition;
 use crate::table::PolarTable;
-use indicatif::{ProgressBar, ProgressStyle};
 
-/// Progress display of a study.
-#[derive(Default)]
-pub struct Progress {
-    /// Shown at all.
-    visible: bool,
-    /// The bar of the current phase.
-    bar: std::sync::Mutex<Option<ProgressBar>>,
-}
-
-impl Progress {
-    /// Bars on standard error if it is a terminal, else silent.
-    pub fn on_terminal() -> Self {
-        use std::io::IsTerminal;
-        Self {
-            visible: std::io::stderr().is_terminal(),
-            bar: Default::default(),
-        }
-    }
-
-    /// Silent.
-    pub fn hidden() -> Self {
-        Self::default()
-    }
-
-    /// Start a phase of `total` steps named by `unit`.
-    pub fn start(&self, total: usize, unit: &str) {
-        if !self.visible || total == 0 {
-            return;
-        }
-        let bar = ProgressBar::new(total as u64);
-        if let Ok(style) =
-            ProgressStyle::with_template(&format!("{{bar:40}} {{pos}}/{{len}} {unit}, eta {{eta}}"))
-        {
-            bar.set_style(style);
-        }
-        if let Ok(mut slot) = self.bar.lock() {
-            if let Some(old) = slot.replace(bar) {
-                old.finish_and_clear();
-            }
-        }
-    }
-
-    /// Advance the current phase by `n` steps.
-    pub fn advance(&self, n: usize) {
-        if let Ok(slot) = self.bar.lock() {
-            if let Some(bar) = slot.as_ref() {
-                bar.inc(n as u64);
-            }
-        }
-    }
-
-    /// End the current phase.
-    pub fn finish(&self) {
-        if let Ok(mut slot) = self.bar.lock() {
-            if let Some(bar) = slot.take() {
-                bar.finish_and_clear();
-            }
-        }
-    }
-}
-
-/// The tables of `foil` for `transitions` from `cache` (solving the missing ones with a
-/// progress bar of their points).
+/// The tables of `foil` for `transitions` from `cache`, solving the missing ones as one
+/// phase of `progress` (none when every table is cached).
 pub fn study_tables(
     cache: &TableCache,
     foil: &Airfoil,
     transitions: &[Transition],
-    progress: &Progress,
+    progress: &dyn Progress,
 ) -> Result<Vec<PolarTable>, StudiesError> {
-    progress.start(cache.missing_points(foil, transitions), "table points");
+    solving_phase(cache, &[foil], transitions, progress);
     let tables = cache.tables(foil, transitions, &|n| progress.advance(n));
     progress.finish();
     tables
+}
+
+/// Starts the phase of `progress` that solves the tables of `foils` × `transitions` missing
+/// from `cache`, if any: its start line names the tables, their points and an estimate.
+pub(crate) fn solving_phase(
+    cache: &TableCache,
+    foils: &[&Airfoil],
+    transitions: &[Transition],
+    progress: &dyn Progress,
+) {
+    let missing: usize = foils
+        .iter()
+        .map(|f| cache.missing_points(f, transitions) / cache.grid.point_count().max(1))
+        .sum();
+    if missing == 0 {
+        return;
+    }
+    let names: Vec<&str> = foils.iter().map(|f| f.name.as_str()).collect();
+    progress.start(&Work {
+        total: missing * cache.grid.point_count(),
+        unit: "table points",
+        what: format!(
+            "{missing} section table{} of {} to solve (cached in {} for the next run)",
+            if missing == 1 { "" } else { "s" },
+            names.join(", "),
+            cache.dir.display()
+        ),
+        estimate_s: Some(cache.grid.estimated_seconds(missing, cache.threads)),
+    });
 }
 
 /// `tables` by their `transitions` (same order).

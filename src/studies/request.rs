@@ -3,7 +3,8 @@
 //! text table or the JSON records to print.
 
 use super::{airfoil, contamination, speed, wing};
-use super::{check_study_out, command_line_cache, Progress, StudiesError, StudyFiles};
+use super::{check_study_out, command_line_cache, StudiesError, StudyFiles, TableCache};
+use crate::progress::Progress;
 use crate::rotor::Aircraft;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -41,8 +42,8 @@ pub enum StudyKind {
 pub struct StudyRequest {
     /// The study and its settings.
     pub kind: StudyKind,
-    /// Aircraft preset (TOML).
-    pub aircraft: PathBuf,
+    /// The aircraft (loaded by the caller: a preset file, or a built-in one).
+    pub aircraft: Aircraft,
     /// Folder for the CSV table and the figures (all or none), if any.
     pub out: Option<PathBuf>,
     /// Table cache folder (else [`default_cache_dir`](super::default_cache_dir)).
@@ -70,9 +71,9 @@ pub fn records_json<T: Serialize>(records: &[T]) -> String {
 }
 
 impl StudyRequest {
-    /// Run the study. Settings, the output folder, the cache folder and the aircraft file are
-    /// checked before any table is solved.
-    pub fn run(&self, progress: &Progress) -> Result<StudyOutcome, StudiesError> {
+    /// Checks the settings, the output folder and the cache folder (before any work; also the
+    /// first thing [`run`](Self::run) does).
+    pub fn check(&self) -> Result<TableCache, StudiesError> {
         let (csv_stem, figures): (&str, &[&str]) = match &self.kind {
             StudyKind::Contamination { options, .. } => {
                 options.settings()?;
@@ -80,7 +81,9 @@ impl StudyRequest {
             }
             StudyKind::Airfoil { airfoils } => {
                 if airfoils.iter().all(|a| a.trim().is_empty()) {
-                    return Err(StudiesError::BadSetting("--airfoils: empty list".into()));
+                    let e =
+                        crate::arguments::ArgumentError::with_text("--airfoils", "", "empty list");
+                    return Err(e.into());
                 }
                 (airfoil::CSV_STEM, &airfoil::FIGURE_STEMS)
             }
@@ -93,14 +96,18 @@ impl StudyRequest {
         if let Some(dir) = &self.out {
             check_study_out(dir, csv_stem, figures)?;
         }
-        let cache = command_line_cache(self.cache.clone())?;
-        let ac = Aircraft::from_toml_file(&self.aircraft)?;
+        command_line_cache(self.cache.clone())
+    }
+
+    /// Run the study, after [`check`](Self::check).
+    pub fn run(&self, progress: &dyn Progress) -> Result<StudyOutcome, StudiesError> {
+        let cache = self.check()?;
+        let ac = &self.aircraft;
         let mut outcome = StudyOutcome::default();
         let (json, text, files) = match &self.kind {
             StudyKind::Contamination { airfoil, options } => {
-                let s = contamination::ContaminationStudy::run(
-                    &ac, airfoil, options, &cache, progress,
-                )?;
+                let s =
+                    contamination::ContaminationStudy::run(ac, airfoil, options, &cache, progress)?;
                 (
                     records_json(&s.records),
                     s.text(),
@@ -108,7 +115,7 @@ impl StudyRequest {
                 )
             }
             StudyKind::Airfoil { airfoils } => {
-                let s = airfoil::AirfoilStudy::run(&ac, airfoils, &cache, progress)?;
+                let s = airfoil::AirfoilStudy::run(ac, airfoils, &cache, progress)?;
                 (
                     records_json(&s.records),
                     s.text(),
@@ -120,7 +127,7 @@ impl StudyRequest {
                 xtr,
                 speeds_kt,
             } => {
-                let s = speed::SpeedStudy::run(&ac, airfoil, *xtr, speeds_kt, &cache, progress)?;
+                let s = speed::SpeedStudy::run(ac, airfoil, *xtr, speeds_kt, &cache, progress)?;
                 outcome.notes = s.notes.clone();
                 (
                     records_json(&s.records),
@@ -129,7 +136,7 @@ impl StudyRequest {
                 )
             }
             StudyKind::Wing(options) => {
-                let s = wing::WingStudy::run(&ac, options, &cache, progress)?;
+                let s = wing::WingStudy::run(ac, options, &cache, progress)?;
                 (
                     records_json(&s.records),
                     s.text(),
@@ -138,6 +145,7 @@ impl StudyRequest {
             }
         };
         outcome.written = files;
+        outcome.notes.extend(cache.notes());
         outcome.stdout = if self.json { json } else { text };
         Ok(outcome)
     }

@@ -3,10 +3,11 @@
 
 use super::files::{band_markers, records_csv};
 use super::{
-    cell, check_speeds, load_study_airfoil, sections, study_tables, Progress, StudiesError,
-    StudyFiles, TableCache, CLEAN,
+    cell, check_speeds, load_study_airfoil, sections, study_tables, StudiesError, StudyFiles,
+    TableCache, CLEAN,
 };
 use crate::plot::{Figure, Panel, Series, Style};
+use crate::progress::Progress;
 use crate::rotor::{speed_sweep, Aircraft, TrimParams, TrimResult};
 use crate::section::{SectionAero, Transition};
 use serde::Serialize;
@@ -108,7 +109,7 @@ impl SpeedStudy {
         xtr: f64,
         speeds_kt: &[f64],
         cache: &TableCache,
-        progress: &Progress,
+        progress: &dyn Progress,
     ) -> Result<Self, StudiesError> {
         let trip = super::checked_transition(Transition::tripped(xtr))?;
         check_speeds("--speeds", speeds_kt)?;

@@ -4,11 +4,11 @@
 //! the propeller thrust, power and engine rpm follow (the paper's §6 argument for a wing).
 
 use super::files::records_csv;
-use super::{
-    cell, check_speeds, load_study_airfoil, sections, study_tables, Progress, StudiesError,
-};
+use super::{cell, check_speeds, load_study_airfoil, sections, study_tables, StudiesError};
 use super::{StudyFiles, TableCache, CLEAN};
+use crate::arguments::ArgumentError;
 use crate::plot::{Figure, Panel, Series, Style};
+use crate::progress::{Progress, Work};
 use crate::rotor::{speed_sweep, Aircraft, BladeSection, TrimError, TrimParams, TrimResult};
 use crate::section::Transition;
 use serde::Serialize;
@@ -52,33 +52,31 @@ pub struct WingRecord {
     pub note: String,
 }
 
-/// The settings of a wing study (also `gyro study wing`'s flags), checked before any work.
-/// The default areas are none and about 0.6, 1 and 1.5 times the 1.7 m² wing of the paper's
-/// §6.
-#[derive(Clone, Debug, clap::Args)]
+/// The settings of a wing study, checked before any work ([`WingOptions::checked`]).
+#[derive(Clone, Debug, PartialEq)]
 pub struct WingOptions {
     /// Rotor airfoil name or coordinate file.
-    #[arg(long, default_value = "naca8h12")]
     pub airfoil: String,
-    /// Wing areas in m² (0 = no wing): the aircraft's [wing] at its span, incidence and section.
-    #[arg(
-        long = "areas",
-        value_name = "AREAS",
-        value_delimiter = ',',
-        default_value = "0,1,1.7,2.5"
-    )]
+    /// Wing areas \[m²\] (0 = no wing): the aircraft's `[wing]` at its span, incidence and
+    /// section.
     pub areas_m2: Vec<f64>,
-    /// Airspeeds in knots.
-    #[arg(
-        long = "speeds",
-        value_name = "SPEEDS",
-        value_delimiter = ',',
-        default_value = "30,45,60,75,90"
-    )]
+    /// Airspeeds \[kt\].
     pub speeds_kt: Vec<f64>,
-    /// Trip location x/c on both surfaces of a contaminated rotor [default: the clean rotor].
-    #[arg(long)]
+    /// Trip location x/c on both surfaces of a contaminated rotor; `None`: the clean rotor.
     pub xtr: Option<f64>,
+}
+
+impl Default for WingOptions {
+    /// The 8-H-12 rotor, clean; areas none and about 0.6, 1 and 1.5 times the 1.7 m² wing of
+    /// the paper's §6; 30 to 90 kt in steps of 15 kt.
+    fn default() -> Self {
+        Self {
+            airfoil: "naca8h12".to_string(),
+            areas_m2: vec![0.0, 1.0, 1.7, 2.5],
+            speeds_kt: vec![30.0, 45.0, 60.0, 75.0, 90.0],
+            xtr: None,
+        }
+    }
 }
 
 impl WingOptions {
@@ -86,25 +84,23 @@ impl WingOptions {
     /// [0, [`MAX_WING_AREA_M2`]], speeds valid airspeeds, lists not empty, at most
     /// [`MAX_WING_CASES`] areas × speeds.
     pub fn checked(&self) -> Result<Transition, StudiesError> {
-        let bad = |s: String| Err(StudiesError::BadSetting(s));
+        let bad = |name: &str, rule: String| Err(ArgumentError::with_text(name, "", rule).into());
         if self.areas_m2.is_empty() || self.speeds_kt.is_empty() {
-            return bad("--areas and --speeds: each needs at least one value".into());
+            return bad("--areas, --speeds", "each needs at least one value".into());
         }
-        if let Some(a) = self
+        if let Some(&a) = self
             .areas_m2
             .iter()
             .find(|a| !(**a >= 0.0 && **a <= MAX_WING_AREA_M2))
         {
-            return bad(format!(
-                "--areas {a}: a wing area must be in [0, {MAX_WING_AREA_M2}] m²"
-            ));
+            let rule = format!("a wing area must be in [0, {MAX_WING_AREA_M2}] m²");
+            return Err(ArgumentError::new("--areas", a, rule).into());
         }
         check_speeds("--speeds", &self.speeds_kt)?;
         let cases = self.areas_m2.len() * self.speeds_kt.len();
         if cases > MAX_WING_CASES {
-            return bad(format!(
-                "{cases} areas × speeds: at most {MAX_WING_CASES} trims per study"
-            ));
+            let rule = format!("{cases} areas × speeds: at most {MAX_WING_CASES} trims per study");
+            return bad("--areas, --speeds", rule);
         }
         self.xtr.map_or(Ok(CLEAN), |x| {
             super::checked_transition(Transition::tripped(x))
@@ -216,7 +212,7 @@ impl WingStudy {
         aircraft: &Aircraft,
         options: &WingOptions,
         cache: &TableCache,
-        progress: &Progress,
+        progress: &dyn Progress,
     ) -> Result<Self, StudiesError> {
         let rotor = options.checked()?;
         aircraft.with_wing_area(0.0)?;
@@ -224,7 +220,14 @@ impl WingStudy {
         let keys = [rotor];
         let tables = study_tables(cache, &foil, &keys, progress)?;
         let section = sections(&keys, &tables).get(&rotor)?;
-        progress.start(options.areas_m2.len(), "wing areas");
+        progress.start(&Work::new(
+            options.areas_m2.len(),
+            "wing areas",
+            format!(
+                "wing study: {} trims",
+                options.areas_m2.len() * options.speeds_kt.len()
+            ),
+        ));
         let records = run_wing(aircraft, section, options, &|| progress.advance(1))?;
         progress.finish();
         Ok(Self {

@@ -35,6 +35,7 @@ use super::{build_table, read_table, write_table, GridSpec, TableError, TableFor
 use crate::diagnostics::error_line;
 use crate::geometry::{solver_airfoil, Airfoil, GeometryError};
 use crate::output::{check_output_path, OutputError};
+use crate::progress::Work;
 use crate::viscous::ViscousParams;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
@@ -274,6 +275,27 @@ impl Batch {
     /// Points this run asks for (all tables of the shard, kept ones included).
     pub fn point_count(&self) -> usize {
         self.airfoils.len() * self.settings.grid.point_count()
+    }
+
+    /// The work of [`run`](Self::run) for a progress display: the tables, their points
+    /// (kept ones included) and an estimate of solving them all.
+    pub fn work(&self) -> Work {
+        let s = &self.settings;
+        let tables = self.airfoils.len();
+        let threads = match s.threads {
+            0 => 0,
+            t => t * s.jobs.max(1),
+        };
+        Work {
+            total: self.point_count(),
+            unit: "points",
+            what: format!(
+                "{tables} airfoil table{} into {}",
+                if tables == 1 { "" } else { "s" },
+                self.out.display()
+            ),
+            estimate_s: Some(s.grid.estimated_seconds(tables, threads)),
+        }
     }
 
     /// Solve (or keep) every table, writing each and the index after it; `on_points` is

@@ -6,6 +6,7 @@ use super::{PolarTable, TableError, TableMeta};
 use crate::geometry::Airfoil;
 use crate::limits::MAX_GRID_POINTS;
 use crate::polar::{parse_alpha_range, run_grid, GridPolar, SweepParams};
+use crate::progress::Work;
 use crate::section::FlowCondition;
 use crate::viscous::{SharedPanels, ViscousError, ViscousParams, ViscousSolver};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -25,6 +26,27 @@ pub const DEFAULT_MACH: [f64; 8] = [0.0, 0.2, 0.3, 0.4, 0.5, 0.55, 0.6, 0.65];
 
 /// α range of the default rotor grid, `A0:A1:DA` in degrees ([`parse_alpha_range`]).
 pub const DEFAULT_ALPHA: &str = "-10:20:0.5";
+
+/// Measured cost of one table point on one core \[s\], for the estimate of a progress start
+/// line: 13 default-grid tables (50 752 points) of the 8-H-12 took 12 min 31 s on the
+/// project's two cores (`gyro study contamination`, docs/studies.md), ≈ 30 ms per point and
+/// core; single polars of the 8-H-12 at M 0.3 take 13–45 ms per point (Re 10⁶ … 10⁵,
+/// `polargen --threads 1`). An estimate, not a promise: the machine's load moves it by 2×.
+pub const SECONDS_PER_POINT_CORE: f64 = 0.03;
+
+/// Estimated time to solve `points` points in `polars` polars with `threads` workers (0 = all
+/// cores) \[s\]: [`SECONDS_PER_POINT_CORE`] per point, the workers busy as far as the polars
+/// allow (each polar's two α branches run in parallel).
+pub fn estimated_build_seconds(points: usize, polars: usize, threads: usize) -> f64 {
+    let cores = std::thread::available_parallelism().map_or(1, usize::from);
+    let threads = if threads == 0 {
+        cores
+    } else {
+        threads.min(cores)
+    };
+    let workers = threads.min(2 * polars).max(1);
+    points as f64 * SECONDS_PER_POINT_CORE / workers as f64
+}
 
 /// The axes of a table to build.
 #[derive(Clone, Debug, PartialEq)]
@@ -60,6 +82,29 @@ impl GridSpec {
     /// Number of points the grid asks for.
     pub fn point_count(&self) -> usize {
         self.reynolds.len() * self.mach.len() * self.alpha_deg.len()
+    }
+
+    /// Estimated time to solve `tables` tables on this grid with `threads` workers (0 = all
+    /// cores) \[s\]: [`SECONDS_PER_POINT_CORE`] per point, the workers busy as far as the
+    /// polars allow (each polar's two α branches run in parallel).
+    pub fn estimated_seconds(&self, tables: usize, threads: usize) -> f64 {
+        let polars = tables * self.reynolds.len() * self.mach.len();
+        estimated_build_seconds(tables * self.point_count(), polars, threads)
+    }
+
+    /// The work of building `airfoil`'s table on this grid with `threads` workers, for a
+    /// progress display.
+    pub fn work(&self, airfoil: &str, threads: usize) -> Work {
+        let polars = self.reynolds.len() * self.mach.len();
+        Work {
+            total: self.point_count(),
+            unit: "points",
+            what: format!(
+                "{polars} polar{} of {airfoil}",
+                if polars == 1 { "" } else { "s" }
+            ),
+            estimate_s: Some(self.estimated_seconds(1, threads)),
+        }
     }
 
     /// Refuses a grid of more than [`MAX_GRID_POINTS`] points (a check before any solve).

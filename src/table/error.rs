@@ -224,6 +224,27 @@ pub enum TableError {
          (docs/limits.md)"
     )]
     Empty,
+    /// The table's α range misses part of the attached-flow range a rotor, propeller or wing
+    /// section works in ([`LOOKUP_ALPHA_COVER_DEG`](crate::table::LOOKUP_ALPHA_COVER_DEG)).
+    #[error(
+        "its α spans only {}…{}°: a rotor, propeller or wing needs the section from {}° to at \
+         least {}° from the table, not from the post-stall extension{}",
+        short_number(*low),
+        short_number(*high),
+        crate::table::LOOKUP_ALPHA_COVER_DEG.0,
+        crate::table::LOOKUP_ALPHA_COVER_DEG.1,
+        if high.abs().max(low.abs()) <= std::f64::consts::FRAC_PI_2 {
+            " (α in radians? the table's α must be in degrees)"
+        } else {
+            ""
+        }
+    )]
+    AlphaCover {
+        /// Smallest α of the table \[deg\].
+        low: f64,
+        /// Largest α of the table \[deg\].
+        high: f64,
+    },
     /// A CSV record could not be parsed.
     #[error("CSV line {line}: {message}")]
     Csv {

@@ -189,7 +189,7 @@ impl AlphaCurve {
     pub(crate) fn eval(&self, a: f64, trig: &mut Option<(f64, f64)>) -> CurveValue {
         let n = self.alpha.len();
         if !(a >= self.alpha[0] && a <= self.alpha[n - 1]) {
-            let (s, c) = *trig.get_or_insert_with(|| a.to_radians().sin_cos());
+            let (s, c) = *trig.get_or_insert_with(|| super::post_stall::sin_cos_deg(a));
             let k = if a < self.alpha[0] { 0 } else { n - 1 };
             let (supercritical, supercritical_unknown) =
                 Criticality::flags(self.criticality[k], self.criticality[k]);

@@ -86,16 +86,17 @@ pub use batch::{
     Batch, BatchError, BatchSettings, BatchSummary, IndexRow, Shard, TableStatus, AIRFOIL_EXTENSION,
 };
 pub use build::{
-    build_table, build_table_cancellable, BuildError, GridSpec, DEFAULT_ALPHA, DEFAULT_MACH,
-    DEFAULT_RE,
+    build_table, build_table_cancellable, estimated_build_seconds, BuildError, GridSpec,
+    DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE, SECONDS_PER_POINT_CORE,
 };
 pub use census::TableCensus;
 pub use error::TableError;
 pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
 pub use grid::PolarTable;
 pub use io::{
-    parse_c81, parse_table, read_lookup_table, read_table, with_cd_max, write_aerodyn, write_c81,
-    write_table, C81Options, TableFormat,
+    check_lookup_table, check_table_output, parse_c81, parse_table, read_lookup_table, read_table,
+    table_files, with_cd_max, write_aerodyn, write_c81, write_table, C81Options, TableFormat,
+    LOOKUP_ALPHA_COVER_DEG,
 };
 pub use meta::TableMeta;
 pub use post_stall::PostStallParams;

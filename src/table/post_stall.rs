@@ -101,6 +101,21 @@ impl PostStallParams {
     }
 }
 
+/// (sin α, cos α) of `alpha_deg`, exact (0, ±1) at the multiples of 90°, where converting to
+/// radians first would leave round-off (sin 180° = 1.2e-16) in the extension's values.
+pub(crate) fn sin_cos_deg(alpha_deg: f64) -> (f64, f64) {
+    if alpha_deg % 90.0 == 0.0 {
+        match (alpha_deg / 90.0).rem_euclid(4.0) as u8 {
+            0 => (0.0, 1.0),
+            1 => (1.0, 0.0),
+            2 => (0.0, -1.0),
+            _ => (-1.0, 0.0),
+        }
+    } else {
+        alpha_deg.to_radians().sin_cos()
+    }
+}
+
 /// The coefficients at the junction between computed data and the extension.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Junction {

@@ -54,16 +54,31 @@ impl SurfaceDistributions {
 /// The stations of every case as CSV: a header, then one row per station of the upper and the
 /// lower surface (stagnation point → trailing edge) and of the wake, for each `(label,
 /// solution)` case, at free-stream Mach number `mach`. Columns: `case, alpha, surface, s, x, y,
-/// ue, cp, dstar, theta, cf, h, hk, n_or_ctau, turbulent` (`cf` free-stream based).
+/// ue, cp, dstar, theta, cf, h, hk, n_or_ctau, turbulent` (`cf` free-stream based). Written by
+/// the `csv` crate: a label holding a comma or a quote is quoted.
 pub fn write_distributions_csv(
     cases: &[(&str, &ViscousSolution)],
     mach: f64,
     w: &mut dyn Write,
 ) -> io::Result<()> {
-    writeln!(
-        w,
-        "case,alpha,surface,s,x,y,ue,cp,dstar,theta,cf,h,hk,n_or_ctau,turbulent"
-    )?;
+    let mut out = csv::Writer::from_writer(w);
+    out.write_record([
+        "case",
+        "alpha",
+        "surface",
+        "s",
+        "x",
+        "y",
+        "ue",
+        "cp",
+        "dstar",
+        "theta",
+        "cf",
+        "h",
+        "hk",
+        "n_or_ctau",
+        "turbulent",
+    ])?;
     for (label, sol) in cases {
         for (surface, stations) in [
             ("upper", &sol.upper),
@@ -71,27 +86,33 @@ pub fn write_distributions_csv(
             ("wake", &sol.wake),
         ] {
             for s in stations.iter() {
-                writeln!(
-                    w,
-                    "{label},{},{surface},{},{},{},{},{},{},{},{},{},{},{},{}",
-                    sol.point.alpha,
-                    s.s,
-                    s.x,
-                    s.y,
-                    s.ue,
-                    pressure_coefficient(s.ue, mach),
-                    s.dstar,
-                    s.theta,
-                    s.cf_inf,
-                    s.h,
-                    s.hk,
-                    s.n_or_ctau,
-                    s.turbulent
-                )?;
+                let mut record = vec![
+                    label.to_string(),
+                    sol.point.alpha.to_string(),
+                    surface.to_string(),
+                ];
+                record.extend(
+                    [
+                        s.s,
+                        s.x,
+                        s.y,
+                        s.ue,
+                        pressure_coefficient(s.ue, mach),
+                        s.dstar,
+                        s.theta,
+                        s.cf_inf,
+                        s.h,
+                        s.hk,
+                        s.n_or_ctau,
+                    ]
+                    .map(|v| v.to_string()),
+                );
+                record.push(s.turbulent.to_string());
+                out.write_record(record)?;
             }
         }
     }
-    Ok(())
+    out.flush()
 }
 
 /// [`write_distributions_csv`] to the file `path`, written atomically, or to standard output

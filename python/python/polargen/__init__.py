@@ -14,7 +14,8 @@ NumPy arrays in and out.
 * :func:`polar` — one polar (:class:`Polar`: NumPy columns, ``to_pandas()``).
 * :func:`point` — one operating point at α or at a target Cl with its surface and wake
   distributions (:class:`Point`).
-* :func:`table` — a Re × M × α table (:class:`Table`) with a progress callback;
+* :func:`table` — a Re × M × α table (:class:`Table`) with progress (plain lines on stderr
+  by default, :class:`PlainProgress`, or a callback);
   :meth:`Table.read`, :meth:`Table.write` in every CLI format; :meth:`Table.lookup`
   vectorised, with the clamping/bridging/post-stall flags and the 360° extension.
 * :mod:`polargen.rotor` — the gyroplane: ``Aircraft.read``, ``trim``, ``takeoff`` with the
@@ -29,7 +30,9 @@ computation finds no solution. The solver runs with the GIL released.
 from __future__ import annotations
 
 import os
-from typing import Callable, Optional, Sequence, Tuple, Union
+import sys
+import time
+from typing import Callable, Optional, Sequence, TextIO, Tuple, Union
 
 import numpy as np
 
@@ -43,6 +46,7 @@ __all__ = [
     "Distribution",
     "Lookup",
     "NotConvergedError",
+    "PlainProgress",
     "Point",
     "Polar",
     "Table",
@@ -74,7 +78,7 @@ DEFAULT_PANELS: int = _polargen.DEFAULT_PANELS
 AirfoilLike = Union[Airfoil, str, "os.PathLike[str]"]
 AlphaLike = Union[str, float, Sequence[float], np.ndarray]
 Transition = Union[float, Tuple[float, float]]
-Progress = Union[Callable[[int, int], object], object, None]
+Progress = Union[Callable[[int, int], object], object, str, None]
 
 
 def alpha_range(text: str) -> np.ndarray:
@@ -116,10 +120,64 @@ def _transition(xtr: Transition) -> Tuple[float, float]:
     return float(xtr), float(xtr)
 
 
-def _progress(progress: Progress) -> Optional[Callable[[int, int], object]]:
-    """A callback ``(done, total)``, or one made for a tqdm-like object (``update(n)``)."""
+class PlainProgress:
+    """Progress as plain lines on a stream (``sys.stderr``), as the command-line tools print it
+    when stderr is not a terminal: the work and an estimate when it starts, then
+    ``done/total points, elapsed …, about … left`` at most every ``interval`` seconds. The
+    default ``progress`` of :func:`table`; call it with ``(done, total)``."""
+
+    def __init__(self, what: str, polars: int, threads: int = 0, interval: float = 15.0,
+                 stream: Optional[TextIO] = None) -> None:
+        self.what, self.polars, self.threads, self.interval = what, polars, threads, interval
+        self.stream = stream
+        self.start: Optional[float] = None
+        self.last = 0.0
+
+    def _say(self, text: str) -> None:
+        stream = self.stream if self.stream is not None else sys.stderr
+        try:
+            print(f"polargen: {text}", file=stream, flush=True)
+        except (OSError, ValueError):
+            pass  # progress is best-effort: a closed or full stream costs no result
+
+    def __call__(self, done: int, total: int) -> None:
+        now = time.monotonic()
+        if self.start is None:
+            self.start = self.last = now
+            estimate = _polargen.estimate_seconds(total, self.polars, self.threads)
+            about = "under 1 s" if estimate < 1.0 else f"about {_duration(estimate)}"
+            self._say(f"{self.what}: {total} points, {about}")
+            return
+        if done < total and now - self.last >= self.interval:
+            self.last = now
+            elapsed = now - self.start
+            line = f"{done}/{total} points, elapsed {_duration(elapsed)}"
+            if done > 0:
+                line += f", about {_duration(elapsed * (total - done) / done)} left"
+            self._say(line)
+
+
+def _duration(seconds: float) -> str:
+    """A duration in words, as the command-line tools write it: ``12 s``, ``3 min 05 s``."""
+    s = int(round(max(seconds, 0.0)))
+    if s < 60:
+        return f"{s} s"
+    if s < 3600:
+        return f"{s // 60} min {s % 60:02d} s"
+    return f"{s // 3600} h {(s % 3600) // 60:02d} min"
+
+
+def _progress(progress: Progress, what: str = "table", polars: int = 1,
+              threads: int = 0) -> Optional[Callable[[int, int], object]]:
+    """A callback ``(done, total)``: ``"lines"`` makes a :class:`PlainProgress`; a
+    tqdm-like object (``update(n)``) gets one made for it; ``None`` reports nothing."""
     if progress is None:
         return None
+    if isinstance(progress, str):
+        if progress != "lines":
+            raise ValueError(f"progress: expected \"lines\", None, a callable or a tqdm-like "
+                             f"object, got {progress!r}")
+        return PlainProgress(what, polars, threads)
     update = getattr(progress, "update", None)
     if callable(update):
         last = [0]
@@ -230,21 +288,27 @@ def table(
     panels: int = DEFAULT_PANELS,
     tolerance: float = DEFAULT_TOLERANCE,
     threads: int = 0,
-    progress: Progress = None,
+    progress: Progress = "lines",
 ) -> Table:
     """A Re × M × α table (default: the rotor grid of ``polargen`` without ``--re``/``--mach``).
 
     The polars are solved in parallel with the GIL released; other Python threads run
     meanwhile. ``progress`` is a callable ``progress(done_points, total_points)`` or a
-    tqdm-like object (its ``update(n)`` is called), called on the calling thread as polars
-    finish. Ctrl-C (or an exception from ``progress``) stops the build once the polars under
-    way have finished.
+    tqdm-like object (its ``update(n)`` is called), called on the calling thread when the
+    build starts (``done`` 0) and as polars finish; the default ``"lines"`` prints the work
+    with an estimate, then a line every 15 s on ``sys.stderr`` (:class:`PlainProgress`);
+    ``None`` prints nothing. Ctrl-C (or an exception from ``progress``) stops the build once
+    the polars under way have finished.
     """
     top, bot = _transition(xtr)
+    foil = _airfoil(airfoil)
+    res, machs = _axis("re", re), _axis("mach", mach)
+    polars = len(res) * len(machs)
+    what = f"{polars} polar{'' if polars == 1 else 's'} of {foil.name}"
     result = _polargen.table(
-        _airfoil(airfoil), _axis("re", re), _axis("mach", mach), _alphas(alpha), top, bot,
+        foil, res, machs, _alphas(alpha), top, bot,
         _ncrit(ncrit, ncrit_top, ncrit_bot), int(panels), float(tolerance), int(threads),
-        _progress(progress),
+        _progress(progress, what, polars, int(threads)),
     )
     return Table(result)
 

@@ -133,6 +133,9 @@ class Rotor:
 def alpha_range(text: str) -> npt.NDArray[np.float64]:
     """The α values of the range text ``A0:A1:DA`` (or one value), as the CLI's ``--alpha``."""
 
+def estimate_seconds(points: int, polars: int, threads: int) -> float:
+    """Estimated time to solve a table of ``points`` points in ``polars`` polars, in seconds."""
+
 def table(
     airfoil: Airfoil, re: List[float], mach: List[float], alpha: List[float], xtr_top: float,
     xtr_bot: float, ncrit: Tuple[float, Optional[float], Optional[float]], panels: int, tolerance: float, threads: int,

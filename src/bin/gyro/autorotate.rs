@@ -1,26 +1,29 @@
 //! `gyro autorotate`: the isolated rotor in a wind tunnel ([`polargen::rotor::autorotate`]);
 //! parse, run, print.
 
-use anyhow::{bail, Context, Result};
+use anyhow::{bail, Result};
 use clap::Args;
+use polargen::arguments::ArgumentError;
+use polargen::cli::values;
+use polargen::report::{console as print, ShippedInputs, SHIPPED_TABLE};
 use polargen::rotor::{
-    autorotate_outcomes, cases_csv, check_altitude_m, read_tunnel_cases, tunnel_case, Atmosphere,
-    Rotor, RotorPreset, TrimParams, MAX_ISA_ALTITUDE_M,
+    autorotate_outcomes, cases_csv, read_tunnel_cases, tunnel_case, Atmosphere, Rotor, TrimParams,
+    MAX_ISA_ALTITUDE_M,
 };
-use polargen::{report::console as print, table::read_lookup_table};
 use std::path::PathBuf;
 
 /// `gyro autorotate` options.
 #[derive(Args)]
 #[command(group(clap::ArgGroup::new("wind").required(true).args(["speed_m_s", "mu", "cases"])))]
 pub struct AutorotateArgs {
-    /// Aircraft or rotor preset (TOML); only its [rotor] is read.
+    /// Aircraft or rotor preset (TOML); only its [rotor] is read [default:
+    /// aircraft/mtosport.toml, built in when absent].
     #[arg(long)]
-    aircraft: PathBuf,
+    aircraft: Option<PathBuf>,
     /// Section polar table: polargen CSV or JSON, XFOIL .pol, C81, or a CSV of one polar with
-    /// columns alpha, cl, cd[, cm].
+    /// columns alpha, cl, cd[, cm] [default: polars/naca8h12_free.csv, built in when absent].
     #[arg(long)]
-    table: PathBuf,
+    table: Option<PathBuf>,
     /// Rotor angle of attack in degrees: the wind against the plane normal to the shaft,
     /// positive with the disc tilted back.
     #[arg(long, allow_hyphen_values = true, required_unless_present = "cases")]
@@ -41,7 +44,7 @@ pub struct AutorotateArgs {
     /// Blade pitch setting in degrees, in place of the preset's rotor.incidence_deg.
     #[arg(long, allow_hyphen_values = true)]
     pitch_deg: Option<f64>,
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true,
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = values::altitude_m,
           help = format!("ISA altitude in metres, 0 to {MAX_ISA_ALTITUDE_M}"))]
     altitude_m: f64,
     /// Print JSON (an array with --cases) instead of text (CSV with --cases).
@@ -51,11 +54,12 @@ pub struct AutorotateArgs {
 
 /// Runs `gyro autorotate`, appending its standard output to `buf`; `say` prints a note.
 pub fn run(args: AutorotateArgs, buf: &mut String, say: impl Fn(&str)) -> Result<()> {
-    check_altitude_m("--altitude-m", args.altitude_m)?;
-    let mut preset = RotorPreset::from_toml_file(&args.aircraft)?;
+    let mut shipped = ShippedInputs::default();
+    let mut preset = shipped.rotor_preset(&args.aircraft)?;
     if let Some(pitch) = args.pitch_deg {
         preset.rotor.incidence_deg = pitch;
-        preset.rotor.validate().context("--pitch-deg")?;
+        let bad_pitch = |e| ArgumentError::new("--pitch-deg", pitch, format!("{e}"));
+        preset.rotor.validate().map_err(bad_pitch)?;
     }
     let cases = match &args.cases {
         Some(path) => read_tunnel_cases(path)?,
@@ -67,7 +71,8 @@ pub fn run(args: AutorotateArgs, buf: &mut String, say: impl Fn(&str)) -> Result
             ["--alpha-deg", "--speed-m-s", "--mu", "--reference-rpm"],
         )?],
     };
-    let section = read_lookup_table(&args.table)?;
+    let section = shipped.table(&args.table, SHIPPED_TABLE)?;
+    shipped.note().into_iter().for_each(|n| say(&n));
     let rotor = Rotor::from_params(&preset.rotor);
     let atm = Atmosphere::isa(args.altitude_m);
     let outcomes = autorotate_outcomes(&rotor, &section, &cases, &atm, &TrimParams::default());

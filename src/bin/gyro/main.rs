@@ -10,34 +10,23 @@ mod study;
 
 use anyhow::{Context, Result};
 use clap::{Args, CommandFactory, Parser, Subcommand};
-use polargen::cli::{self, Tool};
-use polargen::output::{check_output_path, write_output, OutputError};
+use polargen::cli::{self, values, Tool};
+use polargen::output::{check_output_path, is_stdout, write_output, write_stdout, OutputError};
+use polargen::report::{self as paper, check_report_paths, write_report, ReportInputs};
 use polargen::report::{
-    check_report_paths, write_report, ReportInputs, SHIPPED_AIRCRAFT, SHIPPED_POLARS,
+    ShippedInputs, SHIPPED_AIRCRAFT, SHIPPED_CONTAMINATED_TABLE, SHIPPED_POLARS,
 };
 use polargen::rotor::{
-    check_altitude_m, check_azimuth_samples, check_blade_radius, check_mass_kg, check_speed_kt,
-    checked_sweep_speeds, cruise_blade_alpha, simulate_takeoff, trim_aircraft, Aircraft,
-    TrimParams, MAX_ISA_ALTITUDE_M,
+    check_blade_radius, checked_sweep_speeds, cruise_blade_alpha, simulate_takeoff, trim_aircraft,
+    Aircraft, TrimParams, MAX_ISA_ALTITUDE_M,
 };
 use polargen::studies::paper::{paper_runs, SpeedSweep};
-use polargen::table::read_lookup_table;
-use std::path::{Path, PathBuf};
+use polargen::table::PolarTable;
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// This tool's name and error prefix.
 static TOOL: Tool = Tool::new("gyro");
-
-/// Appends one formatted line to an output `String` (writing to a `String` cannot fail).
-macro_rules! outln {
-    ($buf:expr) => {
-        $buf.push('\n')
-    };
-    ($buf:expr, $($arg:tt)*) => {{
-        use std::fmt::Write as _;
-        let _ = writeln!($buf, $($arg)*);
-    }};
-}
 
 #[derive(Parser)]
 #[command(
@@ -62,12 +51,12 @@ enum Command {
         #[command(flatten)]
         inputs: Inputs,
         /// Airspeed in knots.
-        #[arg(long, default_value_t = 60.0, allow_hyphen_values = true)]
+        #[arg(long, default_value_t = 60.0, allow_hyphen_values = true, value_parser = values::speed_kt)]
         speed_kt: f64,
         /// Mass in kg (default: the preset's).
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(long, allow_hyphen_values = true, value_parser = values::mass_kg)]
         mass: Option<f64>,
-        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true,
+        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = values::altitude_m,
               help = format!("ISA altitude in metres, 0 to {MAX_ISA_ALTITUDE_M}"))]
         altitude_m: f64,
         /// Print JSON instead of text.
@@ -79,26 +68,29 @@ enum Command {
         #[command(flatten)]
         inputs: Inputs,
         /// Mass in kg (default: the preset's).
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(long, allow_hyphen_values = true, value_parser = values::mass_kg)]
         mass: Option<f64>,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
-        /// Write the time history (t, x, h, v, rotor_rpm, alpha_r_deg, beta_deg) to this CSV.
-        #[arg(long)]
+        /// Write the time history (t, x, h, v, rotor_rpm, alpha_r_deg, beta_deg) to this CSV;
+        /// with - (standard output) the summary goes to stderr.
+        #[arg(long, value_name = "FILE|-")]
         history: Option<PathBuf>,
     },
     /// Clean versus contaminated rotor: paper Tables 3 and 4 side by side with ours.
     Compare {
-        /// Aircraft preset (TOML).
+        /// Aircraft preset (TOML) [default: aircraft/mtosport.toml, built in when absent].
         #[arg(long)]
-        aircraft: PathBuf,
-        /// Table of the clean blade section (any format --table reads).
+        aircraft: Option<PathBuf>,
+        /// Table of the clean blade section (any format --table reads) [default:
+        /// polars/naca8h12_free.csv, built in when absent].
         #[arg(long)]
-        clean: PathBuf,
-        /// Table of the contaminated blade section (any format --table reads).
+        clean: Option<PathBuf>,
+        /// Table of the contaminated blade section [default: polars/naca8h12_xtr0.07.csv,
+        /// built in when absent].
         #[arg(long)]
-        contaminated: PathBuf,
+        contaminated: Option<PathBuf>,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
@@ -110,7 +102,7 @@ enum Command {
         #[command(flatten)]
         speeds: SpeedRange,
         /// Mass in kg (default: the preset's).
-        #[arg(long, allow_hyphen_values = true)]
+        #[arg(long, allow_hyphen_values = true, value_parser = values::mass_kg)]
         mass: Option<f64>,
         /// Print JSON instead of text.
         #[arg(long)]
@@ -121,13 +113,13 @@ enum Command {
         #[command(flatten)]
         inputs: Inputs,
         /// Airspeed in knots.
-        #[arg(long, default_value_t = 60.0, allow_hyphen_values = true)]
+        #[arg(long, default_value_t = 60.0, allow_hyphen_values = true, value_parser = values::speed_kt)]
         speed_kt: f64,
         /// Radius as a fraction of R.
-        #[arg(long, default_value_t = 0.9, allow_hyphen_values = true)]
+        #[arg(long, default_value_t = 0.9, allow_hyphen_values = true, value_parser = values::fraction)]
         radius: f64,
         /// Azimuth samples per revolution.
-        #[arg(long, default_value_t = 36, allow_hyphen_values = true)]
+        #[arg(long, default_value_t = 36, allow_hyphen_values = true, value_parser = values::azimuth_samples)]
         samples: usize,
     },
     /// Isolated rotor in a wind tunnel: autorotative rpm, C_L, C_D, L/D, coning and flapping.
@@ -143,8 +135,9 @@ enum Command {
     /// Shell completion script on standard output (e.g. `gyro completions bash >
     /// ~/.local/share/bash-completion/completions/gyro`).
     Completions(cli::CompletionsArgs),
-    /// Man page (roff) on standard output (`gyro man > gyro.1; man ./gyro.1`).
-    Man,
+    /// Man pages (roff): the tool's or a subcommand's on standard output (`gyro man study
+    /// wing > gyro-study-wing.1`), or all of them with --out DIR.
+    Man(cli::ManArgs),
     /// What-if studies beyond the paper (section tables solved and cached).
     Study {
         #[command(subcommand)]
@@ -155,13 +148,40 @@ enum Command {
 /// The aircraft and the blade section of a single-section command.
 #[derive(Args)]
 struct Inputs {
-    /// Aircraft preset (TOML).
+    /// Aircraft preset (TOML) [default: aircraft/mtosport.toml, built in when absent].
     #[arg(long)]
-    aircraft: PathBuf,
+    aircraft: Option<PathBuf>,
     /// Section polar table: polargen CSV or JSON, XFOIL .pol, C81, or a CSV of one polar with
-    /// columns alpha, cl, cd[, cm].
+    /// columns alpha, cl, cd[, cm] [default: polars/naca8h12_free.csv, built in when absent].
     #[arg(long)]
-    table: PathBuf,
+    table: Option<PathBuf>,
+}
+
+/// The note naming the shipped inputs `used` in place of those not given, if any.
+fn note_shipped(used: ShippedInputs) {
+    used.note().into_iter().for_each(|n| TOOL.say(n));
+}
+
+/// The aircraft (at `mass`, else its own), what `check` makes of it (flags checked against it
+/// before the table is read) and the table of a single-section command; the shipped ones
+/// when not given.
+fn load<T>(
+    inputs: &Inputs,
+    mass: Option<f64>,
+    check: impl FnOnce(&Aircraft) -> Result<T>,
+) -> Result<(Aircraft, T, PolarTable)> {
+    let mut shipped = ShippedInputs::default();
+    let mut ac = shipped.aircraft(&inputs.aircraft)?;
+    ac.mass_kg = mass.unwrap_or(ac.mass_kg);
+    let checked = check(&ac)?;
+    let table = shipped.table(&inputs.table, paper::SHIPPED_TABLE)?;
+    note_shipped(shipped);
+    Ok((ac, checked, table))
+}
+
+/// `value` as pretty JSON with a final newline.
+fn json<T: serde::Serialize>(value: &T) -> Result<String> {
+    Ok(serde_json::to_string_pretty(value)? + "\n")
 }
 
 /// `gyro report` options.
@@ -187,20 +207,6 @@ pub struct ReportArgs {
     studies: bool,
 }
 
-fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
-    let mut ac = Aircraft::from_toml_file(path)?;
-    if let Some(m) = mass {
-        check_mass_kg("--mass", m)?;
-        ac.mass_kg = m;
-    }
-    Ok(ac)
-}
-
-/// An airspeed flag ([`check_speed_kt`]).
-fn check_speed(flag: &str, kt: f64) -> Result<()> {
-    Ok(check_speed_kt(&format!("--{flag}"), kt)?)
-}
-
 /// The notes of a speed sweep on stderr, then an error if no speed trimmed.
 fn report_sweep(sweep: &SpeedSweep) -> Result<()> {
     for note in sweep.notes() {
@@ -213,25 +219,25 @@ fn report_sweep(sweep: &SpeedSweep) -> Result<()> {
 #[derive(Args, Debug, Clone, Copy)]
 pub struct SpeedRange {
     /// Lowest airspeed in knots.
-    #[arg(long, default_value_t = 30.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 30.0, allow_hyphen_values = true, value_parser = values::speed_kt)]
     pub from_kt: f64,
     /// Highest airspeed in knots.
-    #[arg(long, default_value_t = 90.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 90.0, allow_hyphen_values = true, value_parser = values::speed_kt)]
     pub to_kt: f64,
     /// Speed step in knots.
-    #[arg(long, default_value_t = 5.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 5.0, allow_hyphen_values = true, value_parser = values::positive)]
     pub step_kt: f64,
 }
 
 impl SpeedRange {
     /// The speeds of the sweep \[kt\] for `aircraft`, checked ([`checked_sweep_speeds`]).
     fn checked(&self, aircraft: &Aircraft) -> Result<Vec<f64>> {
-        let cells = aircraft.rotor.cells();
+        let (from, to, step) = (self.from_kt, self.to_kt, self.step_kt);
         Ok(checked_sweep_speeds(
-            self.from_kt,
-            self.to_kt,
-            self.step_kt,
-            cells,
+            from,
+            to,
+            step,
+            aircraft.rotor.cells(),
         )?)
     }
 }
@@ -240,33 +246,23 @@ impl SpeedRange {
 fn run(cli: Cli, buf: &mut String) -> Result<()> {
     match cli.command {
         Command::Trim {
-            inputs: Inputs { aircraft, table },
+            inputs,
             speed_kt,
             mass,
             altitude_m,
             json,
         } => {
-            check_speed("speed-kt", speed_kt)?;
-            check_altitude_m("--altitude-m", altitude_m)?;
-            let ac = load_aircraft(&aircraft, mass)?;
-            let section = read_lookup_table(&table)?;
-            let t = trim_aircraft(
-                &ac,
-                &section,
-                speed_kt,
-                ac.mass_kg,
-                altitude_m,
-                &TrimParams::default(),
-            )?;
+            let (ac, (), section) = load(&inputs, mass, |_| Ok(()))?;
+            let params = TrimParams::default();
+            let t = trim_aircraft(&ac, &section, speed_kt, ac.mass_kg, altitude_m, &params)?;
             t.notes().iter().for_each(|n| TOOL.say(n));
-            if json {
-                outln!(buf, "{}", serde_json::to_string_pretty(&t)?);
-            } else {
-                print::trim(buf, &t);
+            match json {
+                true => *buf += &self::json(&t)?,
+                false => print::trim(buf, &t),
             }
         }
         Command::Takeoff {
-            inputs: Inputs { aircraft, table },
+            inputs,
             mass,
             json,
             history,
@@ -274,20 +270,24 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             if let Some(path) = &history {
                 check_output_path(path).context("--history")?;
             }
-            let ac = load_aircraft(&aircraft, mass)?;
-            let section = read_lookup_table(&table)?;
+            let (ac, (), section) = load(&inputs, mass, |_| Ok(()))?;
             let t = simulate_takeoff(&ac, &section)?;
-            if let Some(path) = history {
-                write_output(&path, |w| {
+            // The history is data: when it takes standard output, the summary goes to stderr.
+            let mut summary = String::new();
+            match json {
+                true => summary = self::json(&t)?,
+                false => print::takeoff(&mut summary, &t),
+            }
+            if let Some(path) = &history {
+                write_output(path, |w| {
                     t.write_history_csv(w)
-                        .map_err(|e| OutputError::io(&path, e.into()))
+                        .map_err(|e| OutputError::io(path, e.into()))
                 })
                 .context("--history")?;
             }
-            if json {
-                outln!(buf, "{}", serde_json::to_string_pretty(&t)?);
-            } else {
-                print::takeoff(buf, &t);
+            match history.as_deref().is_some_and(is_stdout) {
+                true => TOOL.say_text(&summary),
+                false => buf.push_str(&summary),
             }
         }
         Command::Compare {
@@ -296,9 +296,11 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             contaminated,
             json,
         } => {
-            let ac = load_aircraft(&aircraft, None)?;
-            let c = read_lookup_table(&clean)?;
-            let d = read_lookup_table(&contaminated)?;
+            let mut shipped = ShippedInputs::default();
+            let ac = shipped.aircraft(&aircraft)?;
+            let c = shipped.table(&clean, paper::SHIPPED_TABLE)?;
+            let d = shipped.table(&contaminated, SHIPPED_CONTAMINATED_TABLE)?;
+            note_shipped(shipped);
             let runs = paper_runs(&ac, &c, &d)?;
             if json {
                 print::compare_json(buf, &runs)?;
@@ -307,45 +309,32 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             }
         }
         Command::Sweep {
-            inputs: Inputs { aircraft, table },
+            inputs,
             speeds,
             mass,
             json,
         } => {
-            let ac = load_aircraft(&aircraft, mass)?;
-            let speeds = speeds.checked(&ac)?;
-            let section = read_lookup_table(&table)?;
+            let (ac, speeds, section) = load(&inputs, mass, |ac| speeds.checked(ac))?;
             let sweep = SpeedSweep::run(&ac, &section, &speeds, None);
             report_sweep(&sweep)?;
-            if json {
-                outln!(buf, "{}", serde_json::to_string_pretty(&sweep.trims)?);
-            } else {
-                print::sweep(buf, &sweep.trims);
+            match json {
+                true => *buf += &self::json(&sweep.trims)?,
+                false => print::sweep(buf, &sweep.trims),
             }
         }
         Command::Alpha {
-            inputs: Inputs { aircraft, table },
+            inputs,
             speed_kt,
             radius,
             samples,
         } => {
-            check_speed("speed-kt", speed_kt)?;
-            check_azimuth_samples("--samples", samples)?;
-            let ac = load_aircraft(&aircraft, None)?;
-            check_blade_radius("--radius", radius, &ac)?;
-            let section = read_lookup_table(&table)?;
-            let curve = cruise_blade_alpha(
-                &ac,
-                &section,
-                speed_kt,
-                0.0,
-                radius,
-                samples,
-                &TrimParams::default(),
-            )?;
-            outln!(buf, "psi_deg,alpha_deg");
+            let check = |ac: &Aircraft| Ok(check_blade_radius("--radius", radius, ac)?);
+            let (ac, (), section) = load(&inputs, None, check)?;
+            let params = TrimParams::default();
+            let curve = cruise_blade_alpha(&ac, &section, speed_kt, 0.0, radius, samples, &params)?;
+            *buf += "psi_deg,alpha_deg\n";
             for (psi, a) in curve {
-                outln!(buf, "{psi:.1},{a:.3}");
+                *buf += &format!("{psi:.1},{a:.3}\n");
             }
         }
         Command::Autorotate(args) => autorotate::run(args, buf, |n| TOOL.say(n))?,
@@ -354,18 +343,26 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             let script = cli::completions(Cli::command(), args.shell);
             buf.push_str(&String::from_utf8_lossy(&script));
         }
-        Command::Man => buf.push_str(&String::from_utf8_lossy(&cli::man_page(Cli::command())?)),
+        Command::Man(args) => {
+            let page = cli::man(Cli::command(), &args)?;
+            buf.push_str(&String::from_utf8_lossy(&page));
+        }
         Command::Study { study } => {
-            let outcome = study::request(study).run(&polargen::studies::Progress::on_terminal())?;
+            let mut shipped = ShippedInputs::default();
+            let request = study::request(study, &mut shipped)?;
+            request.check()?;
+            note_shipped(shipped);
+            let outcome = request.run(&TOOL.progress())?;
+            buf.push_str(&outcome.stdout);
+            flush_stdout(buf)?;
             outcome.notes.iter().for_each(|n| TOOL.say(n));
             for p in &outcome.written {
                 TOOL.say(format!("wrote {}", p.display()));
             }
-            buf.push_str(&outcome.stdout);
         }
         Command::Report(args) => {
             check_report_paths(&args.out).context("--out")?;
-            let outcome = write_report(&ReportInputs {
+            let inputs = ReportInputs {
                 aircraft: args.aircraft,
                 polars: args.polars,
                 out: args.out,
@@ -373,14 +370,24 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
                     args.cache
                         .unwrap_or_else(polargen::studies::default_cache_dir)
                 }),
-            })?;
-            for note in &outcome.notes {
-                TOOL.say(note);
-            }
+            };
+            let outcome = write_report(&inputs, &TOOL.progress())?;
             for path in &outcome.written {
-                outln!(buf, "wrote {}", path.display());
+                *buf += &format!("wrote {}\n", path.display());
             }
+            flush_stdout(buf)?;
+            outcome.notes.iter().for_each(|n| TOOL.say(n));
         }
+    }
+    Ok(())
+}
+
+/// Writes `buf` to standard output and empties it: the result goes out before the notes and
+/// summaries that follow it on stderr (a result that cannot be written is an error).
+fn flush_stdout(buf: &mut String) -> Result<()> {
+    if !buf.is_empty() {
+        write_stdout(buf.as_bytes()).context("cannot write output")?;
+        buf.clear();
     }
     Ok(())
 }
@@ -392,14 +399,7 @@ fn main() -> ExitCode {
         Err(code) => return code,
     };
     let mut buf = String::new();
-    let result = run(cli, &mut buf).and_then(|()| {
-        let stdout = Path::new("-");
-        write_output(stdout, |w| {
-            w.write_all(buf.as_bytes())
-                .map_err(|e| OutputError::io(stdout, e))
-        })
-        .context("cannot write output")
-    });
+    let result = run(cli, &mut buf).and_then(|()| flush_stdout(&mut buf));
     TOOL.finish(result)
 }
 

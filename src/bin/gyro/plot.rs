@@ -5,11 +5,12 @@
 
 use anyhow::{Context, Result};
 use clap::{Args, Subcommand};
+use polargen::cli::values;
 use polargen::plot::rotor_plots::{alpha_figure, power_plot, takeoff_plot};
 use polargen::plot::{check_image_path, render_with_legend_room};
 use polargen::rotor::{TakeoffResult, TrimResult};
 use polargen::studies::paper::{blade_alpha_cases, sweep_cases, takeoff_cases, CASE_LABELS};
-use polargen::table::{read_lookup_table, PolarTable};
+use polargen::table::PolarTable;
 use std::path::PathBuf;
 
 /// The rotor figures `gyro plot` draws.
@@ -20,13 +21,13 @@ pub enum PlotKind {
         #[command(flatten)]
         cases: CaseArgs,
         /// Airspeed in knots.
-        #[arg(long, default_value_t = 60.0, allow_hyphen_values = true)]
+        #[arg(long, default_value_t = 60.0, allow_hyphen_values = true, value_parser = values::speed_kt)]
         speed_kt: f64,
         /// Radius as a fraction of R.
-        #[arg(long, default_value_t = 0.9, allow_hyphen_values = true)]
+        #[arg(long, default_value_t = 0.9, allow_hyphen_values = true, value_parser = values::fraction)]
         radius: f64,
         /// Azimuth samples per revolution.
-        #[arg(long, default_value_t = 360, allow_hyphen_values = true)]
+        #[arg(long, default_value_t = 360, allow_hyphen_values = true, value_parser = values::azimuth_samples)]
         samples: usize,
     },
     /// Takeoff time histories: speed, height, rotor rpm, flapping (paper Fig. 11).
@@ -46,13 +47,13 @@ pub enum PlotKind {
 /// Inputs shared by all rotor plots.
 #[derive(Args)]
 pub struct CaseArgs {
-    /// Aircraft preset (TOML).
+    /// Aircraft preset (TOML) [default: aircraft/mtosport.toml, built in when absent].
     #[arg(long)]
-    aircraft: PathBuf,
+    aircraft: Option<PathBuf>,
     /// Polar table of the clean blade section (polargen CSV or JSON, XFOIL .pol, C81, or a
-    /// CSV of one polar).
+    /// CSV of one polar) [default: polars/naca8h12_free.csv, built in when absent].
     #[arg(long)]
-    clean: PathBuf,
+    clean: Option<PathBuf>,
     /// Polar table of the contaminated blade section (optional: without it only the clean
     /// rotor is drawn).
     #[arg(long)]
@@ -73,11 +74,14 @@ pub fn run(kind: PlotKind) -> Result<()> {
         | PlotKind::Power { cases, .. } => cases,
     };
     check_image_path(&cases.out).context("--out")?;
-    let aircraft = crate::load_aircraft(&cases.aircraft, None)?;
-    let mut tables: Vec<PolarTable> = vec![read_lookup_table(&cases.clean)?];
-    if let Some(path) = &cases.contaminated {
-        tables.push(read_lookup_table(path)?);
+    let mut shipped = polargen::report::ShippedInputs::default();
+    let aircraft = shipped.aircraft(&cases.aircraft)?;
+    let mut tables: Vec<PolarTable> =
+        vec![shipped.table(&cases.clean, polargen::report::SHIPPED_TABLE)?];
+    if cases.contaminated.is_some() {
+        tables.push(shipped.table(&cases.contaminated, "")?);
     }
+    crate::note_shipped(shipped);
     let sections: Vec<&PolarTable> = tables.iter().collect();
     let labels = &CASE_LABELS[..sections.len()];
     let subject = format!("{}, {}", aircraft.name, tables[0].meta().airfoil);
@@ -90,9 +94,7 @@ pub fn run(kind: PlotKind) -> Result<()> {
             ..
         } => {
             let (speed_kt, radius, samples) = (*speed_kt, *radius, *samples);
-            crate::check_speed("speed-kt", speed_kt)?;
             polargen::rotor::check_blade_radius("--radius", radius, &aircraft)?;
-            polargen::rotor::check_azimuth_samples("--samples", samples)?;
             let curves =
                 blade_alpha_cases(&aircraft, &sections, labels, speed_kt, radius, samples)?;
             let refs: Vec<(&str, &[(f64, f64)])> = labels

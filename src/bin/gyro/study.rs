@@ -1,6 +1,8 @@
 //! `gyro study …`: what-if studies of [`polargen::studies`]; parse, run, print.
 
 use clap::{Args, Subcommand};
+use polargen::cli::values;
+use polargen::report::ShippedInputs;
 use polargen::studies::{contamination::ContaminationOptions, wing::WingOptions};
 use polargen::studies::{StudyKind, StudyRequest};
 use std::path::PathBuf;
@@ -8,9 +10,9 @@ use std::path::PathBuf;
 /// Options every study shares.
 #[derive(Args)]
 pub struct Common {
-    /// Aircraft preset (TOML).
+    /// Aircraft preset (TOML) [default: aircraft/mtosport.toml, built in when absent].
     #[arg(long)]
-    aircraft: PathBuf,
+    aircraft: Option<PathBuf>,
     /// Print JSON records (one per setting) instead of the text table.
     #[arg(long)]
     json: bool,
@@ -33,27 +35,30 @@ pub enum Study {
         #[arg(long, default_value = "naca8h12")]
         airfoil: String,
         /// Trip locations x/c on both surfaces.
-        #[arg(
-            long,
-            value_delimiter = ',',
-            default_value = "0.02,0.05,0.07,0.1,0.2,0.3,0.5"
-        )]
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true, default_value = "0.02,0.05,0.07,0.1,0.2,0.3,0.5",
+              value_parser = values::transition)]
         trips: Vec<f64>,
         /// N_crit values of free transition besides the clean 9.
-        #[arg(long, value_delimiter = ',', default_value = "6,3,1")]
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true, default_value = "6,3,1", value_parser = values::ncrit)]
         ncrits: Vec<f64>,
         /// Radii r/R outboard of which the blade is tripped at 7 % chord.
-        #[arg(long, value_delimiter = ',', default_value = "0.25,0.5,0.75")]
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true, default_value = "0.25,0.5,0.75",
+              value_parser = values::unit_interval)]
         outboard: Vec<f64>,
         /// Radii r/R inboard of which the blade is tripped at 7 % chord.
-        #[arg(long, value_delimiter = ',', default_value = "0.5")]
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true, default_value = "0.5", value_parser = values::unit_interval)]
         inboard: Vec<f64>,
     },
     /// The rotor with each airfoil (names or coordinate files), clean and tripped at 7 % chord.
     Airfoil {
         #[command(flatten)]
         common: Common,
-        #[arg(long, value_delimiter = ',', default_value = "naca8h12,naca23012")]
+        #[arg(
+            long,
+            value_delimiter = ',',
+            allow_hyphen_values = true,
+            default_value = "naca8h12,naca23012"
+        )]
         airfoils: Vec<String>,
     },
     /// Contamination penalty against airspeed.
@@ -64,27 +69,44 @@ pub enum Study {
         #[arg(long, default_value = "naca8h12")]
         airfoil: String,
         /// Trip location x/c on both surfaces.
-        #[arg(long, default_value_t = 0.07)]
+        #[arg(long, default_value_t = 0.07, allow_hyphen_values = true, value_parser = values::transition)]
         xtr: f64,
         /// Airspeeds in knots.
-        #[arg(
-            long,
-            value_delimiter = ',',
-            default_value = "30,35,40,45,50,55,60,65,70,75,80,85,90"
-        )]
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true, default_value = "30,35,40,45,50,55,60,65,70,75,80,85,90",
+              value_parser = values::speed_kt)]
         speeds: Vec<f64>,
     },
     /// What a fixed wing buys: the aircraft's [wing] scaled to each area, trimmed at each speed.
     Wing {
         #[command(flatten)]
         common: Common,
-        #[command(flatten)]
-        options: WingOptions,
+        /// Rotor airfoil name or coordinate file.
+        #[arg(long, default_value_t = WingOptions::default().airfoil)]
+        airfoil: String,
+        /// Wing areas in m² (0 = no wing): the aircraft's [wing] at its span, incidence and
+        /// section.
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = values::number,
+              default_value = comma_list(WingOptions::default().areas_m2))]
+        areas: Vec<f64>,
+        /// Airspeeds in knots.
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = values::speed_kt,
+              default_value = comma_list(WingOptions::default().speeds_kt))]
+        speeds: Vec<f64>,
+        /// Trip location x/c on both surfaces of a contaminated rotor [default: the clean rotor].
+        #[arg(long, allow_hyphen_values = true, value_parser = values::transition)]
+        xtr: Option<f64>,
     },
 }
 
-/// The library's request for a parsed `gyro study` command line.
-pub fn request(study: Study) -> StudyRequest {
+/// `values` as a flag's comma-separated list (a default shown in the help).
+fn comma_list(values: Vec<f64>) -> String {
+    let text: Vec<String> = values.iter().map(f64::to_string).collect();
+    text.join(",")
+}
+
+/// The library's request for a parsed `gyro study` command line (the aircraft loaded by
+/// `shipped` when not given).
+pub fn request(study: Study, shipped: &mut ShippedInputs) -> anyhow::Result<StudyRequest> {
     let (common, kind) = match study {
         Study::Contamination {
             common,
@@ -103,7 +125,21 @@ pub fn request(study: Study) -> StudyRequest {
             (common, StudyKind::Contamination { airfoil, options })
         }
         Study::Airfoil { common, airfoils } => (common, StudyKind::Airfoil { airfoils }),
-        Study::Wing { common, options } => (common, StudyKind::Wing(options)),
+        Study::Wing {
+            common,
+            airfoil,
+            areas,
+            speeds,
+            xtr,
+        } => {
+            let options = WingOptions {
+                airfoil,
+                areas_m2: areas,
+                speeds_kt: speeds,
+                xtr,
+            };
+            (common, StudyKind::Wing(options))
+        }
         Study::Speed {
             common,
             airfoil,
@@ -121,11 +157,11 @@ pub fn request(study: Study) -> StudyRequest {
             )
         }
     };
-    StudyRequest {
+    Ok(StudyRequest {
         kind,
-        aircraft: common.aircraft,
+        aircraft: shipped.aircraft(&common.aircraft)?,
         out: common.out,
         cache: common.cache,
         json: common.json,
-    }
+    })
 }

@@ -1,6 +1,9 @@
 //! `polargen`'s command line: the main job (polars and tables) and its subcommands.
 
+use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Args, Parser, Subcommand};
+use polargen::cli::values::{self, Alphas};
+use polargen::table::TableFormat;
 use polargen::viscous::ViscousParams;
 use std::path::PathBuf;
 
@@ -11,7 +14,8 @@ use std::path::PathBuf;
     version,
     about,
     args_conflicts_with_subcommands = true,
-    subcommand_negates_reqs = true
+    subcommand_negates_reqs = true,
+    arg_required_else_help = true
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -51,8 +55,9 @@ pub enum Command {
     /// Shell completion script on standard output (e.g. `polargen completions bash >
     /// ~/.local/share/bash-completion/completions/polargen`).
     Completions(polargen::cli::CompletionsArgs),
-    /// Man page (roff) on standard output (`polargen man > polargen.1; man ./polargen.1`).
-    Man,
+    /// Man pages (roff): the tool's or a subcommand's on standard output (`polargen man
+    /// batch > polargen-batch.1; man ./polargen-batch.1`), or all of them with --out DIR.
+    Man(polargen::cli::ManArgs),
 }
 
 /// `polargen plot-point` options.
@@ -86,11 +91,11 @@ pub struct PointCase {
     pub shape: Shape,
 
     /// Chord Reynolds number.
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = values::reynolds)]
     pub re: f64,
 
     /// Mach number, 0 ≤ M < 1.
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = values::mach)]
     pub mach: f64,
 
     /// Angle of attack in degrees.
@@ -98,12 +103,13 @@ pub struct PointCase {
         long,
         allow_hyphen_values = true,
         required_unless_present = "cl",
-        conflicts_with = "cl"
+        conflicts_with = "cl",
+        value_parser = values::number
     )]
     pub alpha: Option<f64>,
 
     /// Lift coefficient instead of α: each case is solved at the α giving this Cl.
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = values::number)]
     pub cl: Option<f64>,
 
     /// Transition settings, one case each (overlaid by plot-point): comma-separated x/c on
@@ -112,15 +118,17 @@ pub struct PointCase {
         long,
         value_name = "LIST",
         default_value = "1",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_delimiter = ',',
+        value_parser = values::transition
     )]
-    pub xtr: String,
+    pub xtr: Vec<f64>,
 
     #[command(flatten)]
     pub ncrit: Ncrit,
 
     /// Number of panel nodes.
-    #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES, allow_hyphen_values = true, value_parser = values::panels)]
     pub panels: usize,
 
     #[command(flatten)]
@@ -141,12 +149,11 @@ pub struct ConvertArgs {
     #[arg(long, value_name = "FILE|-")]
     pub out: PathBuf,
 
-    /// Output format: csv, json, xfoil, c81 or aerodyn (OpenFAST AirfoilInfo file, one
-    /// table per Re, one file per Mach number, InclUAdata False: OpenFAST then derives the
-    /// unsteady-aero parameters from the table itself; UA is switched off only by UA_Mod = 0
-    /// in the AeroDyn input file).
-    #[arg(long)]
-    pub format: Option<String>,
+    /// Output format (aerodyn: OpenFAST AirfoilInfo file, InclUAdata False: OpenFAST then
+    /// derives the unsteady-aero parameters from the table itself; UA is switched off only by
+    /// UA_Mod = 0 in the AeroDyn input file).
+    #[arg(long, value_enum)]
+    pub format: Option<TableFormat>,
 
     #[command(flatten)]
     pub extension: Extension,
@@ -158,7 +165,7 @@ pub struct Extension {
     /// Post-stall drag coefficient broadside to the flow (α = ±90°, the flat-plate normal
     /// force) of the 360° extension (Viterna–Corrigan, then a flat plate); default 2.0
     /// (Hoerner's 2-D plate); for a finite blade Viterna–Corrigan give 1.11 + 0.018·AR.
-    #[arg(long, value_name = "CD", allow_hyphen_values = true)]
+    #[arg(long, value_name = "CD", allow_hyphen_values = true, value_parser = values::positive)]
     pub cd_max: Option<f64>,
 }
 
@@ -175,11 +182,11 @@ pub struct PlotArgs {
     pub out: PathBuf,
 
     /// Reynolds number of the polar to draw from a grid table (nearest node).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = values::reynolds)]
     pub re: Option<f64>,
 
     /// Mach number of the polar to draw from a grid table (nearest node).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = values::mach)]
     pub mach: Option<f64>,
 
     /// Figure title (default: airfoils and the Re, M drawn).
@@ -217,12 +224,9 @@ pub struct RunArgs {
     #[command(flatten)]
     pub grid: GridArgs,
 
-    /// Output format: csv, json, xfoil (one .pol per Re, M), c81 (one file per Re) or
-    /// aerodyn (OpenFAST AirfoilInfo file, one file per Mach number, a table per Re,
-    /// InclUAdata False: OpenFAST derives the unsteady-aero parameters from the table; see
-    /// convert --help); default: from --out's extension, else csv.
-    #[arg(long)]
-    pub format: Option<String>,
+    /// Output format; default: from --out's extension, else csv (see convert --help).
+    #[arg(long, value_enum)]
+    pub format: Option<TableFormat>,
 
     /// Output file; standard output when absent or - (csv and json only).
     #[arg(long, value_name = "FILE|-")]
@@ -246,8 +250,9 @@ pub struct BatchArgs {
     pub out: PathBuf,
 
     /// Table format: csv or json.
-    #[arg(long, default_value = "csv")]
-    pub format: polargen::table::TableFormat,
+    #[arg(long, default_value = "csv", value_parser = PossibleValuesParser::new(["csv", "json"])
+        .map(|f| if f == "json" { TableFormat::Json } else { TableFormat::Csv }))]
+    pub format: TableFormat,
 
     /// Only every N-th airfoil of the list sorted by name, from the K-th (1 ≤ K ≤ N).
     #[arg(long, value_name = "K/N")]
@@ -259,7 +264,7 @@ pub struct BatchArgs {
     pub resume: bool,
 
     /// Airfoils solved at the same time, each on --threads workers (0 = one per core).
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = values::count)]
     pub jobs: usize,
 
     #[command(flatten)]
@@ -274,35 +279,35 @@ pub struct GridArgs {
 
     /// Chord Reynolds numbers, comma-separated. Without --re and --mach: the rotor grid of
     /// 8 Re 1e5…3e6 × 8 M 0…0.65; --re alone runs at M 0 (as XFOIL).
-    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
-    pub re: Option<String>,
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true, value_delimiter = ',', value_parser = values::reynolds)]
+    pub re: Option<Vec<f64>>,
 
     /// Mach numbers, comma-separated, 0 ≤ M < 1 (needs --re; inviscid: one value, default 0).
-    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
-    pub mach: Option<String>,
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true, value_delimiter = ',', value_parser = values::mach)]
+    pub mach: Option<Vec<f64>>,
 
     /// Angles of attack in degrees: A0:A1:DA (inclusive) or one value (default −10:20:0.5).
-    #[arg(long, allow_hyphen_values = true)]
-    pub alpha: Option<String>,
+    #[arg(long, allow_hyphen_values = true, value_parser = values::alpha_range)]
+    pub alpha: Option<Alphas>,
 
     /// Forced transition x/c on both surfaces, along the chord line from the leading edge
     /// (0 = leading edge, 1 = free transition, e^n).
-    #[arg(long, value_name = "X", allow_hyphen_values = true, conflicts_with_all = ["xtr_top", "xtr_bot"])]
+    #[arg(long, value_name = "X", allow_hyphen_values = true, conflicts_with_all = ["xtr_top", "xtr_bot"], value_parser = values::transition)]
     pub xtr: Option<f64>,
 
     /// Forced transition x/c on the upper surface (0 = leading edge, 1 = free).
-    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    #[arg(long, value_name = "X", allow_hyphen_values = true, value_parser = values::transition)]
     pub xtr_top: Option<f64>,
 
     /// Forced transition x/c on the lower surface (0 = leading edge, 1 = free).
-    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    #[arg(long, value_name = "X", allow_hyphen_values = true, value_parser = values::transition)]
     pub xtr_bot: Option<f64>,
 
     #[command(flatten)]
     pub ncrit: Ncrit,
 
     /// Number of panel nodes after curvature-based repaneling (XFOIL PANE).
-    #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = polargen::geometry::DEFAULT_PANEL_NODES, allow_hyphen_values = true, value_parser = values::panels)]
     pub panels: usize,
 
     #[command(flatten)]
@@ -310,7 +315,7 @@ pub struct GridArgs {
 
     /// Worker threads (0 = all cores); a polar's two α branches run in parallel, so more
     /// than two threads per polar are not started.
-    #[arg(long, default_value_t = 0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 0, allow_hyphen_values = true, value_parser = values::count)]
     pub threads: usize,
 }
 
@@ -318,13 +323,13 @@ pub struct GridArgs {
 #[derive(Args, Debug)]
 pub struct Ncrit {
     /// Critical amplification ratio N of the e^n transition criterion, both surfaces.
-    #[arg(long, default_value_t = 9.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 9.0, allow_hyphen_values = true, value_parser = values::ncrit)]
     pub ncrit: f64,
     /// N_crit on the upper surface (default: --ncrit).
-    #[arg(long, value_name = "N", allow_hyphen_values = true)]
+    #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = values::ncrit)]
     pub ncrit_top: Option<f64>,
     /// N_crit on the lower surface and the wake (default: --ncrit).
-    #[arg(long, value_name = "N", allow_hyphen_values = true)]
+    #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = values::ncrit)]
     pub ncrit_bot: Option<f64>,
 }
 
@@ -333,7 +338,7 @@ pub struct Ncrit {
 pub struct Newton {
     /// Newton convergence threshold on the RMS relative change of the boundary-layer
     /// variables (XFOIL uses 1e-4).
-    #[arg(long, default_value_t = ViscousParams::default().tolerance, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = ViscousParams::default().tolerance, allow_hyphen_values = true, value_parser = values::tolerance)]
     pub tolerance: f64,
 }
 

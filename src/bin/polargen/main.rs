@@ -11,7 +11,6 @@
 
 mod args;
 
-use std::io::IsTerminal;
 use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -23,16 +22,18 @@ use args::{
 };
 use clap::CommandFactory;
 
-use polargen::arguments::{self, TransitionArgs};
+use polargen::arguments::{self, ArgumentError, TransitionArgs};
 use polargen::cli::{self, Tool};
 use polargen::geometry::{solver_airfoil, Airfoil};
-use polargen::inviscid::PanelSystem;
-use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError, STDOUT_PATH};
+use polargen::inviscid::{inviscid_polar_csv, PanelSystem};
+use polargen::output::{check_output_path, write_output, write_stdout, OutputError, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
 use polargen::plot::table_plots::{table_overlay_figure, TableOverlay};
 use polargen::plot::{check_image_path, render};
 use polargen::polar::{parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams};
+use polargen::progress::Progress;
 use polargen::section::{Transition, FREE_XTR};
+use polargen::table::check_table_output;
 use polargen::table::{
     build_table, read_table, with_cd_max, write_table, Batch, BatchSettings, GridSpec, TableFormat,
     DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
@@ -56,40 +57,34 @@ fn main() -> ExitCode {
         Some(Command::Batch(args)) => run_batch(args),
         Some(Command::Point { case, csv }) => point(case, csv),
         Some(Command::Completions(args)) => {
-            to_stdout(&cli::completions(Cli::command(), args.shell))
+            write_stdout(&cli::completions(Cli::command(), args.shell)).map_err(Into::into)
         }
-        Some(Command::Man) => cli::man_page(Cli::command())
-            .map_err(Into::into)
-            .and_then(|page| to_stdout(&page)),
+        Some(Command::Man(args)) => {
+            cli::man(Cli::command(), args).and_then(|page| Ok(write_stdout(&page)?))
+        }
         None if cli.run.inviscid => run_inviscid(&cli.run),
         None => run_viscous(&cli.run),
     })
 }
 
-/// Write `bytes` to standard output.
-fn to_stdout(bytes: &[u8]) -> Result<()> {
-    let path = Path::new(STDOUT_PATH);
-    write_output(path, |w| {
-        w.write_all(bytes).map_err(|e| OutputError::io(path, e))
-    })?;
-    Ok(())
-}
-
-/// Mach numbers from `--mach` (or `default`), each checked to lie in [0, 1).
+/// Mach numbers from `--mach` (each checked by its parser), or `default`; none twice.
 fn mach_list(cli: &GridArgs, default: &[f64]) -> Result<Vec<f64>> {
-    let list = match &cli.mach {
-        Some(t) => arguments::number_list("--mach", t)?,
-        None => default.to_vec(),
-    };
-    list.iter()
-        .try_for_each(|&m| arguments::mach("--mach", m))?;
+    let list = cli.mach.clone().unwrap_or_else(|| default.to_vec());
+    arguments::distinct("--mach", &list)?;
     Ok(list)
 }
 
-/// Check the panel count, load the airfoil and prepare it for the solver
-/// ([`solver_airfoil`]); say on stderr what was changed.
+/// The α of `--alpha`, or the default range.
+fn alphas(cli: &GridArgs) -> Result<Vec<f64>> {
+    match &cli.alpha {
+        Some(a) => Ok(a.0.clone()),
+        None => Ok(parse_alpha_range(DEFAULT_ALPHA)?),
+    }
+}
+
+/// Load the airfoil and prepare it for the solver ([`solver_airfoil`]); say on stderr what
+/// was changed.
 fn load_airfoil(spec: Option<&str>, panels: usize, shape: &Shape) -> Result<Airfoil> {
-    arguments::panels("--panels", panels)?;
     let spec = spec.context("--airfoil is required")?;
     let (foil, notes) = solver_airfoil(spec, panels, shape.derotate).context("--airfoil")?;
     notes.iter().for_each(|n| TOOL.say(format!("note: {n}")));
@@ -100,39 +95,16 @@ fn load_airfoil(spec: Option<&str>, panels: usize, shape: &Shape) -> Result<Airf
 fn run_inviscid(cli: &RunArgs) -> Result<()> {
     let mach = match mach_list(&cli.grid, &[0.0])?.as_slice() {
         [m] => *m,
-        _ => bail!("--mach: --inviscid takes one Mach number"),
+        _ => Err(usage("--mach", "--inviscid takes one Mach number"))?,
     };
-    let alphas =
-        parse_alpha_range(cli.grid.alpha.as_deref().unwrap_or(DEFAULT_ALPHA)).context("--alpha")?;
+    let alphas = alphas(&cli.grid)?;
     if let Some(path) = &cli.out {
         check_output_path(path).context("--out")?;
     }
     let foil = load_airfoil(cli.airfoil.as_deref(), cli.grid.panels, &cli.grid.shape)?;
     let system = PanelSystem::new(&foil).context("panel system")?;
-    let mut csv = String::from("alpha,cl,cd,cm,converged\n");
-    let mut supercritical: Vec<f64> = Vec::new();
-    for &alpha in &alphas {
-        let sol = system
-            .solve(alpha, mach)
-            .with_context(|| format!("alpha {alpha}"))?;
-        if sol.supercritical {
-            supercritical.push(alpha);
-        }
-        csv.push_str(&format!(
-            "{alpha},{},0,{},true\n",
-            fixed_decimals(sol.cl, 6),
-            fixed_decimals(sol.cm, 6)
-        ));
-    }
-    if let (Some(first), Some(last)) = (supercritical.first(), supercritical.last()) {
-        TOOL.say(format!(
-            "note: M {mach}: {} of {} points supercritical (alpha {first} … {last}): the \
-             minimum Cp is below the sonic Cp*, beyond the validity of the Karman-Tsien \
-             correction; those Cl and Cm are only indicative",
-            supercritical.len(),
-            alphas.len()
-        ));
-    }
+    let (csv, note) = inviscid_polar_csv(&system, &alphas, mach)?;
+    note.into_iter().for_each(|n| TOOL.say(n));
     let path = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
     write_output(path, |w| {
         w.write_all(csv.as_bytes())
@@ -151,27 +123,28 @@ fn grid_transition(cli: &GridArgs) -> Result<Transition> {
     transition(&cli.ncrit, sides)
 }
 
-/// The grid and solver settings of the grid flags, checked.
+/// A usage error of `flag` (exit 2) that is not one bad value.
+fn usage(flag: &str, rule: impl Into<String>) -> ArgumentError {
+    ArgumentError::with_text(flag, "", rule.into())
+}
+
+/// The grid and solver settings of the grid flags (each value checked by its parser).
 fn grid_request(cli: &GridArgs) -> Result<(GridSpec, ViscousParams)> {
     // The default grid only when neither axis is given; Re alone runs at M 0, as XFOIL.
     let (reynolds, mach_default): (Vec<f64>, &[f64]) = match (&cli.re, &cli.mach) {
-        (Some(t), _) => (arguments::number_list("--re", t)?, &[0.0]),
+        (Some(re), _) => (re.clone(), &[0.0]),
         (None, None) => (DEFAULT_RE.to_vec(), &DEFAULT_MACH),
-        (None, Some(_)) => bail!("--mach: give the Reynolds numbers with --re too"),
+        (None, Some(_)) => Err(usage("--mach", "give the Reynolds numbers with --re too"))?,
     };
-    reynolds
-        .iter()
-        .try_for_each(|&r| arguments::reynolds("--re", r))?;
+    arguments::distinct("--re", &reynolds)?;
     let grid = GridSpec {
         reynolds,
         mach: mach_list(cli, mach_default)?,
-        alpha_deg: parse_alpha_range(cli.alpha.as_deref().unwrap_or(DEFAULT_ALPHA))
-            .context("--alpha")?,
+        alpha_deg: alphas(cli)?,
     };
-    grid.check_size()?;
+    grid.check_size()
+        .map_err(|e| usage("--re, --mach, --alpha", e.to_string()))?;
     let transition = grid_transition(cli)?;
-    arguments::tolerance("--tolerance", cli.newton.tolerance)?;
-    arguments::panels("--panels", cli.panels)?;
     let base = ViscousParams {
         transition,
         tolerance: cli.newton.tolerance,
@@ -183,13 +156,13 @@ fn grid_request(cli: &GridArgs) -> Result<(GridSpec, ViscousParams)> {
 /// The viscous polar(s) or table.
 fn run_viscous(cli: &RunArgs) -> Result<()> {
     let (grid, base) = grid_request(&cli.grid)?;
-    if let Some(path) = &cli.out {
-        check_output_path(path).context("--out")?;
-    }
-    let format = TableFormat::for_output(cli.format.as_deref(), cli.out.as_deref())
-        .context("--format/--out")?;
+    let format =
+        TableFormat::for_output(cli.format, cli.out.as_deref()).context("--format/--out")?;
+    let path = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
+    check_table_output(path, format, &grid.reynolds, &grid.mach).context("--out")?;
     let foil = load_airfoil(cli.airfoil.as_deref(), cli.grid.panels, &cli.grid.shape)?;
-    let bar = progress_bar(grid.point_count() as u64);
+    let progress = TOOL.progress();
+    progress.start(&grid.work(&foil.name, cli.grid.threads));
     let start = Instant::now();
     let table = build_table(
         &foil,
@@ -197,20 +170,20 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         &grid,
         &base,
         cli.grid.threads,
-        |n| bar.iter().for_each(|b| b.inc(n as u64)),
+        |n| progress.advance(n),
     )?;
-    bar.iter().for_each(|b| b.finish_and_clear());
+    progress.finish();
     let census = table.census();
+    if census.converged == 0 {
+        bail!("{census}: no point converged; no table written");
+    }
+    let table = with_cd_max(table, cli.extension.cd_max).context("--cd-max")?;
+    // The result first: a summary that cannot be shown must not cost it.
+    let files = write_table(&table, path, Some(format))?;
     TOOL.say(format!(
         "{census} in {:.1} s",
         start.elapsed().as_secs_f64()
     ));
-    if census.converged == 0 {
-        bail!("no point converged; no table written");
-    }
-    let table = with_cd_max(table, cli.extension.cd_max).context("--cd-max")?;
-    let path = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
-    let files = write_table(&table, path, Some(format))?;
     if files.len() > 1 {
         TOOL.say(format!("wrote {} files", files.len()));
     }
@@ -236,9 +209,10 @@ fn run_batch(args: &BatchArgs) -> Result<()> {
         .notes()
         .iter()
         .for_each(|n| TOOL.say(format!("note: {n}")));
-    let bar = progress_bar(batch.point_count() as u64);
-    let summary = batch.run(|n| bar.iter().for_each(|b| b.inc(n as u64)))?;
-    bar.iter().for_each(|b| b.finish_and_clear());
+    let progress = TOOL.progress();
+    progress.start(&batch.work());
+    let summary = batch.run(|n| progress.advance(n))?;
+    progress.finish();
     TOOL.say(&summary);
     match summary.failed.as_slice() {
         [] => Ok(()),
@@ -275,10 +249,10 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
 
 /// `polargen convert`: read a table and write it in another format.
 fn convert_table(args: &ConvertArgs) -> Result<()> {
+    let format = TableFormat::for_output(args.format, Some(&args.out)).context("--format/--out")?;
     check_output_path(&args.out).context("--out")?;
-    let format = TableFormat::for_output(args.format.as_deref(), Some(&args.out))
-        .context("--format/--out")?;
     let table = with_cd_max(read_table(&args.table)?, args.extension.cd_max).context("--cd-max")?;
+    check_table_output(&args.out, format, table.re(), table.mach()).context("--out")?;
     let files = write_table(&table, &args.out, Some(format))?;
     if files.len() > 1 {
         TOOL.say(format!("wrote {} files", files.len()));
@@ -321,13 +295,12 @@ fn point(case: &PointCase, csv: &Path) -> Result<()> {
 /// Solve each transition setting at the α (or Cl) asked for: the airfoil and one labelled
 /// solution per setting.
 fn solve_cases(args: &PointCase) -> Result<(Airfoil, Vec<(String, ViscousSolution)>)> {
-    arguments::reynolds("--re", args.re)?;
-    arguments::mach("--mach", args.mach)?;
-    let settings = arguments::number_list("--xtr", &args.xtr)?
-        .into_iter()
-        .map(|x| transition(&args.ncrit, [("--xtr", x); 2]))
+    arguments::distinct("--xtr", &args.xtr)?;
+    let settings = args
+        .xtr
+        .iter()
+        .map(|&x| transition(&args.ncrit, [("--xtr", x); 2]))
         .collect::<Result<Vec<_>>>()?;
-    arguments::tolerance("--tolerance", args.newton.tolerance)?;
     let foil = load_airfoil(Some(&args.airfoil), args.panels, &args.shape)?;
     let mut runs: Vec<(String, ViscousSolution)> = Vec::new();
     for transition in settings {
@@ -356,20 +329,6 @@ fn solve_cases(args: &PointCase) -> Result<(Airfoil, Vec<(String, ViscousSolutio
         runs.push((label, solution));
     }
     Ok((foil, runs))
-}
-
-/// A progress bar on stderr when stderr is a terminal; nothing otherwise.
-fn progress_bar(total: u64) -> Option<indicatif::ProgressBar> {
-    if !std::io::stderr().is_terminal() {
-        return None;
-    }
-    let bar = indicatif::ProgressBar::new(total);
-    if let Ok(style) =
-        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} points, eta {eta}")
-    {
-        bar.set_style(style);
-    }
-    Some(bar)
 }
 
 #[cfg(test)]

@@ -389,6 +389,20 @@ impl Aircraft {
             (0.0, MAX_ISA_ALTITUDE_M),
             format!("must be within the ISA troposphere, 0 to {MAX_ISA_ALTITUDE_M} m"),
         )?;
+        // A prerotation whose blade tip reaches the speed of sound at the field is beyond the
+        // subsonic section tables and the blade-element model (and any real prerotator).
+        let sound = super::atmosphere::Atmosphere::isa(t.field_altitude_m).speed_of_sound;
+        let max_prerotation_rpm = sound / r.radius_m * 60.0 / std::f64::consts::TAU;
+        in_range(
+            "takeoff.prerotation_rpm",
+            t.prerotation_rpm,
+            (0.0, max_prerotation_rpm),
+            format!(
+                "must keep the blade tip below the speed of sound: at most \
+                 {max_prerotation_rpm:.0} rpm for the {} m rotor",
+                r.radius_m
+            ),
+        )?;
         in_range(
             "takeoff.time_step_s",
             t.time_step_s,

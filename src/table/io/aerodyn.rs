@@ -151,6 +151,16 @@ pub fn write_aerodyn_to(
     w.write_all(s.as_bytes()).map_err(TableError::Write)
 }
 
+/// The file of the Mach number `mach` of a table of `count` Mach numbers written to `path`:
+/// `path` itself for one, else `<stem>_M<mach>.<ext>` beside it.
+pub(super) fn mach_path(path: &Path, count: usize, mach: f64) -> PathBuf {
+    if count == 1 {
+        return path.to_path_buf();
+    }
+    let (stem, ext) = (stem_or(path, "airfoil"), extension_or(path, "dat"));
+    path.with_file_name(format!("{stem}_M{mach}.{ext}"))
+}
+
 /// Write AeroDyn files: `path` for a one-Mach table, else one per Mach number
 /// (`<stem>_M<mach>.<ext>` next to `path`), all together or none. Returns the files written.
 pub fn write_aerodyn(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf>, TableError> {
@@ -160,10 +170,9 @@ pub fn write_aerodyn(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf>, Ta
         })?;
         return Ok(vec![path.to_path_buf()]);
     }
-    let (stem, ext) = (stem_or(path, "airfoil"), extension_or(path, "dat"));
     let mut set = OutputSet::new();
     for (i_mach, &mach) in table.mach().iter().enumerate() {
-        let file = path.with_file_name(format!("{stem}_M{mach}.{ext}"));
+        let file = mach_path(path, table.mach().len(), mach);
         set.write(&file, |w| {
             write_aerodyn_to(table, i_mach, w).map_err(|e| e.in_output(&file))
         })?;

@@ -300,19 +300,24 @@ pub fn write_c81(
         })?;
         return Ok(vec![path.to_path_buf()]);
     }
-    let (stem, ext) = (stem_or(path, "table"), extension_or(path, "c81"));
     let mut set = OutputSet::new();
     for &re in table.re() {
-        let file = if table.re().len() == 1 {
-            path.to_path_buf()
-        } else {
-            path.with_file_name(format!("{stem}_Re{}.{ext}", re_label(re)))
-        };
+        let file = re_path(path, table.re().len(), re);
         set.write(&file, |w| {
             write_c81_to(table, re, options.outer_step_deg, w).map_err(|e| e.in_output(&file))
         })?;
     }
     Ok(set.commit()?)
+}
+
+/// The file of the deck at `re` of a table of `count` Reynolds numbers written to `path`:
+/// `path` itself for one, else `<stem>_Re<re>.<ext>` beside it.
+pub(super) fn re_path(path: &Path, count: usize, re: f64) -> PathBuf {
+    if count == 1 {
+        return path.to_path_buf();
+    }
+    let (stem, ext) = (stem_or(path, "table"), extension_or(path, "c81"));
+    path.with_file_name(format!("{stem}_Re{}.{ext}", re_label(re)))
 }
 
 /// The 7-character fields of a C81 data line from field `first` on: at most `count` numbers,

@@ -21,19 +21,23 @@ use std::str::FromStr;
 pub use self::aerodyn::write_aerodyn;
 pub use self::c81::{parse_c81, write_c81, C81Options};
 
-/// A table file format.
+/// A table file format (with the `cli` feature also a clap value enum: `--format` lists and
+/// completes these names).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 pub enum TableFormat {
     /// Long-form CSV (`.csv`), readable.
     Csv,
     /// Serde JSON (`.json`), readable.
     Json,
     /// XFOIL polar text, one file per (Re, M) (`.pol`); readable as a one-polar table.
+    #[cfg_attr(feature = "cli", value(name = "xfoil", alias = "pol", alias = "polar"))]
     XfoilPolar,
     /// C81 rotorcraft airfoil table, one file per Re (`.c81`); readable as a one-Re table.
     C81,
     /// OpenFAST AeroDyn airfoil file, one table per Re, one file per Mach number (chosen
     /// with `--format aerodyn`; written only).
+    #[cfg_attr(feature = "cli", value(name = "aerodyn"))]
     AeroDyn,
 }
 
@@ -54,13 +58,13 @@ impl TableFormat {
         }
     }
 
-    /// The format a table is written in: `format` (a command-line name) when given, else the
-    /// extension of `out`; CSV for standard output (`out` absent or `-`). XFOIL polars and
-    /// C81 write one file per polar or per Re and need a file name.
-    pub fn for_output(format: Option<&str>, out: Option<&Path>) -> Result<Self, TableError> {
-        let stdout = out.map_or(true, |p| p.as_os_str() == crate::output::STDOUT_PATH);
+    /// The format a table is written in: `format` when given, else the extension of `out`;
+    /// CSV for standard output (`out` absent or `-`). XFOIL polars and C81 write one file
+    /// per polar or per Re and need a file name.
+    pub fn for_output(format: Option<Self>, out: Option<&Path>) -> Result<Self, TableError> {
+        let stdout = out.is_none_or(|p| p.as_os_str() == crate::output::STDOUT_PATH);
         let chosen = match (format, out) {
-            (Some(f), _) => f.parse()?,
+            (Some(f), _) => f,
             (None, Some(path)) if !stdout => Self::from_path(path)?,
             (None, _) => Self::Csv,
         };
@@ -145,6 +149,10 @@ pub fn write_table(
         Some(f) => f,
         None => TableFormat::from_path(path)?,
     };
+    require_file_name(
+        path,
+        table_files(path, format, table.re(), table.mach()).len(),
+    )?;
     check_readable_size(table, format)?;
     match format {
         TableFormat::Csv => csv::write_csv(table, path).map(|()| vec![path.to_path_buf()]),
@@ -197,6 +205,57 @@ impl std::io::Write for SizeLimit {
     fn flush(&mut self) -> std::io::Result<()> {
         Ok(())
     }
+}
+
+/// The files [`write_table`] writes for a table of Reynolds numbers `re` × Mach numbers
+/// `mach` in `format` at `path` (with the default [`C81Options`]).
+pub fn table_files(path: &Path, format: TableFormat, re: &[f64], mach: &[f64]) -> Vec<PathBuf> {
+    match format {
+        TableFormat::Csv | TableFormat::Json => vec![path.to_path_buf()],
+        TableFormat::XfoilPolar => re
+            .iter()
+            .flat_map(|&r| {
+                mach.iter()
+                    .map(move |&m| xfoil_polar::polar_path(path, re.len() * mach.len(), r, m))
+            })
+            .collect(),
+        TableFormat::C81 => re
+            .iter()
+            .map(|&r| c81::re_path(path, re.len(), r))
+            .collect(),
+        TableFormat::AeroDyn => mach
+            .iter()
+            .map(|&m| aerodyn::mach_path(path, mach.len(), m))
+            .collect(),
+    }
+}
+
+/// Checks, before a table is solved, that every file [`table_files`] names can be written
+/// ([`check_output_path`](crate::output::check_output_path)): a name too long for the file
+/// system, a folder in the way or a folder that takes no files is found before the work.
+pub fn check_table_output(
+    path: &Path,
+    format: TableFormat,
+    re: &[f64],
+    mach: &[f64],
+) -> Result<(), crate::output::OutputError> {
+    let files = table_files(path, format, re, mach);
+    require_file_name(path, files.len())?;
+    files
+        .iter()
+        .try_for_each(|f| crate::output::check_output_path(f))
+}
+
+/// A set of `count` files is named after `path`: refused when `path` is a stream or a device
+/// (`/dev/null` would name files `/dev/null_Re1e6_M0.pol` beside the device).
+fn require_file_name(path: &Path, count: usize) -> Result<(), crate::output::OutputError> {
+    if count > 1 && !crate::output::names_a_file(path) {
+        return Err(crate::output::OutputError::BadPath {
+            path: path.to_path_buf(),
+            reason: "is a stream or device: a set of files needs a file name to be named after",
+        });
+    }
+    Ok(())
 }
 
 /// Read a table file, once, recognising its layout from its extension and first line: a polargen CSV or
@@ -260,15 +319,43 @@ pub fn with_cd_max(table: PolarTable, cd_max: Option<f64>) -> Result<PolarTable,
     }
 }
 
+/// The α range \[deg\] a table read for lookups must cover: a rotor blade, a propeller blade
+/// or a wing works from about zero lift (α ≈ 0° for a cambered section, slightly above for
+/// the 8-H-12's reflexed camber) up towards stall; at 10° a 12 % section gives Cl ≈ 1.1, the
+/// order of the retreating blade's working lift coefficient (6·C_T/σ ≈ 0.6–0.8 on average for
+/// a gyroplane, more on the retreating side). Below or above the table the 360° extension
+/// (Viterna–Corrigan, a flat plate) takes over, which stands in for massive separation, not
+/// for the attached-flow lift curve: a table that ends inside this range (α −2…2°, or α in
+/// radians) would make the rotor's trim fail or mislead, so it is refused on reading.
+pub const LOOKUP_ALPHA_COVER_DEG: (f64, f64) = (0.0, 10.0);
+
 /// [`read_table`], for a consumer that looks coefficients up (the rotor model): a table
-/// without two converged points in any polar is refused ([`PolarTable::require_lookup`]).
+/// without two converged points in any polar is refused ([`PolarTable::require_lookup`]),
+/// and so is one whose α range does not cover [`LOOKUP_ALPHA_COVER_DEG`].
 pub fn read_lookup_table(path: &Path) -> Result<PolarTable, TableError> {
     let table = read_table(path)?;
-    table.require_lookup().map_err(|e| TableError::File {
+    check_lookup_table(&table).map_err(|e| TableError::File {
         path: path.to_path_buf(),
         source: Box::new(e),
     })?;
     Ok(table)
+}
+
+/// The checks of [`read_lookup_table`] on a table already read.
+pub fn check_lookup_table(table: &PolarTable) -> Result<(), TableError> {
+    table.require_lookup()?;
+    let alphas = table
+        .polars()
+        .flat_map(|(_, points)| points.iter().map(|p| p.alpha));
+    let (low, high) = alphas.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), a| {
+        (lo.min(a), hi.max(a))
+    });
+    let (need_low, need_high) = LOOKUP_ALPHA_COVER_DEG;
+    if low <= need_low && high >= need_high {
+        Ok(())
+    } else {
+        Err(TableError::AlphaCover { low, high })
+    }
 }
 
 /// How a table file is laid out, as far as reading it is concerned.

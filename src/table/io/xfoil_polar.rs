@@ -165,21 +165,25 @@ pub fn re_label(re: f64) -> String {
 /// ([`OutputSet`]). Two α that the F8.3 field would merge are refused. Returns the files
 /// written.
 pub fn write_xfoil_polars(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf>, TableError> {
-    let single = table.re().len() * table.mach().len() == 1;
-    let stem = stem_or(path, "polar");
+    let polars = table.re().len() * table.mach().len();
     let mut set = OutputSet::new();
     for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
         check_alpha_resolution(re, mach, points)?;
-        let file = if single {
-            path.to_path_buf()
-        } else {
-            path.with_file_name(polar_file_name(&stem, re, mach))
-        };
+        let file = polar_path(path, polars, re, mach);
         set.write(&file, |w| {
             write_polar_to(table.meta(), re, mach, points, w).map_err(|e| e.in_output(&file))
         })?;
     }
     Ok(set.commit()?)
+}
+
+/// The file of the polar at (`re`, `mach`) of a table of `polars` polars written to `path`:
+/// `path` itself for one polar, else [`polar_file_name`] beside it.
+pub(super) fn polar_path(path: &Path, polars: usize, re: f64, mach: f64) -> PathBuf {
+    if polars == 1 {
+        return path.to_path_buf();
+    }
+    path.with_file_name(polar_file_name(&stem_or(path, "polar"), re, mach))
 }
 
 /// The α of converged points must stay distinct in the F8.3 field, or reading the file back
