@@ -110,6 +110,9 @@ impl Table {
         d.set_item("xtr_bot_set", m.xtr_bot_set)?;
         d.set_item("panels", m.panels)?;
         d.set_item("solver", &m.solver)?;
+        let ops: Vec<String> = m.geometry.iter().map(ToString::to_string).collect();
+        d.set_item("geometry", ops)?;
+        d.set_item("flap_deg", m.flap_deg())?;
         Ok(d)
     }
 

@@ -184,6 +184,7 @@ pub(crate) fn table_meta(foil: &Airfoil, panels: usize, base: &ViscousParams) ->
         xtr_bot_set: base.xtr_bot,
         panels,
         solver: format!("polargen {}", env!("CARGO_PKG_VERSION")),
+        geometry: Vec::new(),
     }
 }
 

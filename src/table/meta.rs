@@ -1,5 +1,6 @@
 //! [`TableMeta`]: how a table was made, and its serde form.
 
+use crate::geometry::{flap_deg, ShapeOp};
 use serde::{Deserialize, Serialize};
 
 /// How a table was made: the airfoil and the solver settings shared by all its polars.
@@ -20,6 +21,9 @@ pub struct TableMeta {
     pub panels: usize,
     /// Solver name and version that produced the polars.
     pub solver: String,
+    /// Geometry operations applied to the airfoil before it was solved, in order (empty: the
+    /// section as given; tables written before operations existed read as empty).
+    pub geometry: Vec<ShapeOp>,
 }
 
 impl TableMeta {
@@ -35,6 +39,13 @@ impl TableMeta {
             Some(n) => n.to_string(),
             None => format!("{} (top) {} (bottom)", self.ncrit_top, self.ncrit_bot),
         }
+    }
+
+    /// The flap deflection \[deg\, positive trailing edge down\] of the section when a flap
+    /// operation made it: the parameter of a flap sweep, one table per deflection (OpenFAST
+    /// AeroDyn's `UserProp`).
+    pub fn flap_deg(&self) -> Option<f64> {
+        flap_deg(&self.geometry)
     }
 }
 
@@ -53,6 +64,8 @@ struct MetaRecord {
     xtr_bot_set: f64,
     panels: usize,
     solver: String,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    geometry: Vec<ShapeOp>,
 }
 
 impl From<TableMeta> for MetaRecord {
@@ -68,6 +81,7 @@ impl From<TableMeta> for MetaRecord {
             xtr_bot_set: m.xtr_bot_set,
             panels: m.panels,
             solver: m.solver,
+            geometry: m.geometry,
         }
     }
 }
@@ -89,6 +103,7 @@ impl TryFrom<MetaRecord> for TableMeta {
             xtr_bot_set: r.xtr_bot_set,
             panels: r.panels,
             solver: r.solver,
+            geometry: r.geometry,
         })
     }
 }

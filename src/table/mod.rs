@@ -35,6 +35,7 @@
 //!     xtr_bot_set: 1.0,
 //!     panels: 160,
 //!     solver: "example".into(),
+//!     geometry: Vec::new(),
 //! };
 //! let polar = |re: f64| -> Vec<PolarPoint> {
 //!     (-5..=10)
@@ -74,6 +75,7 @@ mod build;
 mod census;
 mod error;
 mod fixed_condition;
+mod flap_sweep;
 mod grid;
 mod io;
 mod lookup;
@@ -91,6 +93,7 @@ pub use build::{
 pub use census::TableCensus;
 pub use error::TableError;
 pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
+pub use flap_sweep::flap_sweep;
 pub use grid::PolarTable;
 pub use io::{
     parse_c81, parse_table, read_lookup_table, read_table, with_cd_max, write_aerodyn, write_c81,

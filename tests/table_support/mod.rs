@@ -14,6 +14,7 @@ pub fn meta(name: &str) -> TableMeta {
         xtr_bot_set: 1.0,
         panels: 160,
         solver: "polargen 0.1.0".to_string(),
+        geometry: Vec::new(),
     }
 }
 

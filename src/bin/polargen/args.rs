@@ -1,6 +1,7 @@
 //! `polargen`'s command line: the main job (polars and tables) and its subcommands.
 
 use clap::{Args, Parser, Subcommand};
+use polargen::geometry::ShapeOp;
 use polargen::viscous::ViscousParams;
 use std::path::PathBuf;
 
@@ -53,6 +54,18 @@ pub enum Command {
     Completions(polargen::cli::CompletionsArgs),
     /// Man page (roff) on standard output (`polargen man > polargen.1; man ./polargen.1`).
     Man,
+    /// The airfoil in chord units after the geometry operations (Selig), with its measured
+    /// thickness and camber on stderr.
+    Geometry {
+        /// Airfoil: a name, a coordinate file or - for standard input.
+        #[arg(value_name = "NAME|PATH|-")]
+        airfoil: String,
+        #[command(flatten)]
+        shape: Shape,
+        /// Output coordinate file, or - for standard output.
+        #[arg(long, value_name = "FILE|-")]
+        out: PathBuf,
+    },
 }
 
 /// `polargen plot-point` options.
@@ -230,6 +243,16 @@ pub struct RunArgs {
 
     #[command(flatten)]
     pub extension: Extension,
+
+    /// Flap sweep: one table per deflection [deg], comma-separated, about the hinge of --flap
+    /// X:Y; each file named <stem>_flap<DEG><ext> (the deflection is the table's flap_deg).
+    #[arg(
+        long,
+        value_name = "LIST",
+        allow_hyphen_values = true,
+        requires = "flap"
+    )]
+    pub flap_deg: Option<String>,
 }
 
 /// `polargen batch` options (the grid flags as the main job's).
@@ -336,7 +359,8 @@ pub struct Newton {
     pub tolerance: f64,
 }
 
-/// How a coordinate file's shape is taken.
+/// How a coordinate file's shape is taken, and the geometry operations on it (XFOIL GDES;
+/// applied in chord units in the order blend, thickness and camber, te-gap, flap).
 #[derive(Args, Debug)]
 pub struct Shape {
     /// Rotate the coordinates so that the chord line (leading edge to trailing-edge midpoint)
@@ -344,4 +368,36 @@ pub struct Shape {
     /// axis of the file (a contour not in chord units is only scaled and translated).
     #[arg(long)]
     pub derotate: bool,
+    /// Maximum thickness, chord units (XFOIL TSET: thickness line scaled, camber kept).
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = |s: &str| ShapeOp::thickness(s).map_err(|e| e.rule))]
+    pub thickness: Option<ShapeOp>,
+    /// Maximum camber, chord units, signed (XFOIL TSET: camber line scaled, thickness kept).
+    #[arg(long, value_name = "C", allow_hyphen_values = true, value_parser = |s: &str| ShapeOp::camber(s).map_err(|e| e.rule))]
+    pub camber: Option<ShapeOp>,
+    /// Trailing-edge gap G, blended over BLEND (0…1, default 1) of the chord (XFOIL TGAP).
+    #[arg(long, value_name = "G[:BLEND]", allow_hyphen_values = true, value_parser = |s: &str| ShapeOp::te_gap(s).map_err(|e| e.rule))]
+    pub te_gap: Option<ShapeOp>,
+    /// Plain flap, hinge x/c X, y/c Y, deflection DEG, + down (XFOIL FLAP; α, Cm unflapped).
+    #[arg(long, value_name = "X:Y[:DEG]", allow_hyphen_values = true, value_parser = |s: &str| ShapeOp::flap(s).map_err(|e| e.rule))]
+    pub flap: Option<ShapeOp>,
+    /// Blend: F of airfoil OTHER, 1 − F of this one, paired by chord station (XFOIL INTX).
+    #[arg(long, value_name = "OTHER:F", value_parser = |s: &str| ShapeOp::blend(s).map_err(|e| e.rule))]
+    pub blend: Option<ShapeOp>,
+}
+
+impl Shape {
+    /// The operations, in the order they are applied.
+    pub fn ops(&self) -> Vec<ShapeOp> {
+        [
+            &self.blend,
+            &self.thickness,
+            &self.camber,
+            &self.te_gap,
+            &self.flap,
+        ]
+        .into_iter()
+        .flatten()
+        .cloned()
+        .collect()
+    }
 }

@@ -25,7 +25,7 @@ use clap::CommandFactory;
 
 use polargen::arguments;
 use polargen::cli::{self, Tool};
-use polargen::geometry::{solver_airfoil, Airfoil};
+use polargen::geometry::{shaped_airfoil, solver_airfoil, to_selig_string, Airfoil, ShapeOp};
 use polargen::inviscid::PanelSystem;
 use polargen::output::{check_output_path, fixed_decimals, write_output, OutputError, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
@@ -34,8 +34,8 @@ use polargen::plot::table_plots::{table_overlay_figure, TableOverlay};
 use polargen::plot::{check_image_path, render};
 use polargen::polar::{parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams};
 use polargen::table::{
-    build_table, read_table, with_cd_max, write_table, Batch, BatchSettings, GridSpec, TableFormat,
-    DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
+    build_table, flap_sweep, read_table, with_cd_max, write_table, Batch, BatchSettings, GridSpec,
+    TableFormat, DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
 };
 use polargen::viscous::distributions::write_distributions_file;
 use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};
@@ -58,6 +58,11 @@ fn main() -> ExitCode {
         Some(Command::Completions(args)) => {
             to_stdout(&cli::completions(Cli::command(), args.shell))
         }
+        Some(Command::Geometry {
+            airfoil,
+            shape,
+            out,
+        }) => write_geometry(airfoil, shape, out),
         Some(Command::Man) => cli::man_page(Cli::command())
             .map_err(Into::into)
             .and_then(|page| to_stdout(&page)),
@@ -68,7 +73,11 @@ fn main() -> ExitCode {
 
 /// Write `bytes` to standard output.
 fn to_stdout(bytes: &[u8]) -> Result<()> {
-    let path = Path::new(STDOUT_PATH);
+    to_file(Path::new(STDOUT_PATH), bytes)
+}
+
+/// Write `bytes` to `path` (- for standard output).
+fn to_file(path: &Path, bytes: &[u8]) -> Result<()> {
     write_output(path, |w| {
         w.write_all(bytes).map_err(|e| OutputError::io(path, e))
     })?;
@@ -86,14 +95,26 @@ fn mach_list(cli: &GridArgs, default: &[f64]) -> Result<Vec<f64>> {
     Ok(list)
 }
 
-/// Check the panel count, load the airfoil and prepare it for the solver
+/// Check the panel count, load the airfoil, apply `ops` and prepare it for the solver
 /// ([`solver_airfoil`]); say on stderr what was changed.
-fn load_airfoil(spec: Option<&str>, panels: usize, shape: &Shape) -> Result<Airfoil> {
+fn load_airfoil(spec: Option<&str>, panels: usize, rot: bool, ops: &[ShapeOp]) -> Result<Airfoil> {
     arguments::panels("--panels", panels)?;
     let spec = spec.context("--airfoil is required")?;
-    let (foil, notes) = solver_airfoil(spec, panels, shape.derotate).context("--airfoil")?;
+    let (foil, notes) = solver_airfoil(spec, panels, rot, ops).context("--airfoil")?;
     notes.iter().for_each(|n| TOOL.say(format!("note: {n}")));
     Ok(foil)
+}
+
+/// `polargen geometry`: the shaped airfoil as a Selig file, its thickness and camber said.
+fn write_geometry(spec: &str, shape: &Shape, out: &Path) -> Result<()> {
+    check_output_path(out).context("--out")?;
+    let (foil, notes) =
+        shaped_airfoil(spec, shape.derotate, &shape.ops()).context(spec.to_string())?;
+    notes.iter().for_each(|n| TOOL.say(format!("note: {n}")));
+    let gap = foil.te_gap();
+    let measured = foil.thickness_camber()?;
+    TOOL.say(format!("{}: {measured}, TE gap {gap:.5}", foil.name));
+    to_file(out, to_selig_string(&foil).as_bytes())
 }
 
 /// `--inviscid`: the panel solution at one Mach number.
@@ -107,7 +128,8 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
     if let Some(path) = &cli.out {
         check_output_path(path).context("--out")?;
     }
-    let foil = load_airfoil(cli.airfoil.as_deref(), cli.grid.panels, &cli.grid.shape)?;
+    let (spec, g) = (cli.airfoil.as_deref(), &cli.grid);
+    let foil = load_airfoil(spec, g.panels, g.shape.derotate, &g.shape.ops())?;
     let system = PanelSystem::new(&foil).context("panel system")?;
     let mut csv = String::from("alpha,cl,cd,cm,converged\n");
     let mut supercritical: Vec<f64> = Vec::new();
@@ -187,25 +209,40 @@ fn grid_request(cli: &GridArgs) -> Result<(GridSpec, ViscousParams)> {
     Ok((grid, base))
 }
 
-/// The viscous polar(s) or table.
+/// The viscous polar(s) or table; with `--flap-deg` one table per flap deflection.
 fn run_viscous(cli: &RunArgs) -> Result<()> {
     let (grid, base) = grid_request(&cli.grid)?;
-    if let Some(path) = &cli.out {
-        check_output_path(path).context("--out")?;
-    }
+    let out = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
+    check_output_path(out).context("--out")?;
     let format = TableFormat::for_output(cli.format.as_deref(), cli.out.as_deref())
         .context("--format/--out")?;
-    let foil = load_airfoil(cli.airfoil.as_deref(), cli.grid.panels, &cli.grid.shape)?;
+    let ops = cli.grid.shape.ops();
+    let tables = match &cli.flap_deg {
+        Some(list) => flap_sweep(&ops, list, out)?,
+        None => vec![(ops, out.to_path_buf())],
+    };
+    for (ops, path) in &tables {
+        solve_table(cli, &grid, &base, ops, format, path)?;
+    }
+    Ok(())
+}
+
+/// One table of the section shaped by `ops`, written to `path`.
+fn solve_table(
+    cli: &RunArgs,
+    grid: &GridSpec,
+    base: &ViscousParams,
+    ops: &[ShapeOp],
+    format: TableFormat,
+    path: &Path,
+) -> Result<()> {
+    let (spec, g) = (cli.airfoil.as_deref(), &cli.grid);
+    let foil = load_airfoil(spec, g.panels, g.shape.derotate, ops)?;
     let bar = progress_bar(grid.point_count() as u64);
     let start = Instant::now();
-    let table = build_table(
-        &foil,
-        cli.grid.panels,
-        &grid,
-        &base,
-        cli.grid.threads,
-        |n| bar.iter().for_each(|b| b.inc(n as u64)),
-    )?;
+    let table = build_table(&foil, cli.grid.panels, grid, base, cli.grid.threads, |n| {
+        bar.iter().for_each(|b| b.inc(n as u64))
+    })?;
     bar.iter().for_each(|b| b.finish_and_clear());
     let census = table.census();
     TOOL.say(format!(
@@ -215,8 +252,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     if census.converged == 0 {
         bail!("no point converged; no table written");
     }
-    let table = with_cd_max(table, cli.extension.cd_max).context("--cd-max")?;
-    let path = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
+    let table = with_cd_max(table.with_geometry(ops), cli.extension.cd_max).context("--cd-max")?;
     let files = write_table(&table, path, Some(format))?;
     if files.len() > 1 {
         TOOL.say(format!("wrote {} files", files.len()));
@@ -232,6 +268,7 @@ fn run_batch(args: &BatchArgs) -> Result<()> {
         base,
         panels: args.grid.panels,
         derotate: args.grid.shape.derotate,
+        geometry: args.grid.shape.ops(),
         format: args.format,
         shard: args.shard,
         resume: args.resume,
@@ -334,7 +371,8 @@ fn solve_cases(args: &PointCase) -> Result<(Airfoil, Vec<(String, ViscousSolutio
     let xtrs = arguments::number_list("--xtr", &args.xtr)?;
     xtrs.iter()
         .try_for_each(|&x| arguments::transition("--xtr", x))?;
-    let foil = load_airfoil(Some(&args.airfoil), args.panels, &args.shape)?;
+    let (spec, shape) = (Some(args.airfoil.as_str()), &args.shape);
+    let foil = load_airfoil(spec, args.panels, shape.derotate, &shape.ops())?;
     let mut runs: Vec<(String, ViscousSolution)> = Vec::new();
     for &xtr in &xtrs {
         let params = ViscousParams {

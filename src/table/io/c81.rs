@@ -536,6 +536,7 @@ pub fn parse_c81(text: &str, stem: &str) -> Result<PolarTable, TableError> {
         xtr_bot_set: 1.0,
         panels: 0,
         solver: "C81 file".to_string(),
+        geometry: Vec::new(),
     };
     PolarTable::new(meta, vec![re], mach, polars)
 }

@@ -308,6 +308,7 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
         xtr_bot_set: xb,
         panels: 0,
         solver,
+        geometry: Vec::new(),
     };
     PolarTable::new(meta, vec![re], vec![mach], vec![points])
 }
