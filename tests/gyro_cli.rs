@@ -48,6 +48,8 @@ fn trim_json_keys_and_values() {
         "static_thrust_n",
         "table_clamped_fraction",
         "table_supercritical_fraction",
+        "static_thrust_post_stall_fraction",
+        "static_thrust_supercritical_fraction",
     ] {
         assert!(v[key].is_number(), "{key} missing: {v}");
     }

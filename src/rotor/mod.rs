@@ -45,7 +45,7 @@ mod trim;
 pub use aircraft::{
     check_altitude_m, check_azimuth_samples, check_blade_radius, check_mass_kg, check_speed_kt,
     Aircraft, AircraftError, BladeGeometry, EngineParams, PropellerParams, RotorParams,
-    TakeoffParams, WingError, WingLoads, WingParams, MAX_MASS_KG, MAX_SPEED_KT,
+    SectionFile, TakeoffParams, WingError, WingLoads, WingParams, MAX_MASS_KG, MAX_SPEED_KT,
 };
 pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};
@@ -55,7 +55,10 @@ pub use engine::Engine;
 pub use flapping::Teeter;
 pub use inflow::{InflowModel, TipLoss, YawedFlow};
 pub use inflow_flapping::{RotorError, RotorSolution, RotorSolverParams};
-pub use propeller::{FullThrottle, Powerplant, Propeller, PropellerError, PropellerPoint};
+pub use propeller::{
+    FullThrottle, Powerplant, Propeller, PropellerError, PropellerPoint, PropellerSections,
+    SectionsError, SharedSection,
+};
 pub use spanwise::{BladeSection, SpanBand, SpanwiseSection};
 pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
 pub use trim::{autorotation, trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
