@@ -2,27 +2,9 @@
 //! the main job, `point` and `batch`, a flap sweep (`--flap-deg`), the operations recorded in
 //! the tables, and the usage errors of bad values.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
+mod cli_support;
 
-fn polargen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_polargen"))
-        .args(args)
-        .output()
-        .expect("run polargen")
-}
-
-fn ok(o: Output) -> String {
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    String::from_utf8(o.stdout).unwrap()
-}
-
-fn scratch(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("polargen-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
+use cli_support::{assert_one_line_error, ok, polargen, scratch, stderr};
 
 /// The value of column `name` in the first data row of a CSV table.
 fn first_row_field(csv: &str, name: &str) -> String {
@@ -47,7 +29,7 @@ fn geometry_writes_the_shaped_contour_and_says_its_thickness() {
         "--out",
         "-",
     ]);
-    let stderr = String::from_utf8_lossy(&o.stderr).to_string();
+    let said = stderr(&o);
     let text = ok(o);
     let mut lines = text.lines();
     assert_eq!(
@@ -56,8 +38,8 @@ fn geometry_writes_the_shaped_contour_and_says_its_thickness() {
     );
     assert_eq!(lines.count(), 245);
     assert!(
-        stderr.contains("thickness 0.15000") && stderr.contains("camber 0.03000"),
-        "{stderr}"
+        said.contains("thickness 0.15000") && said.contains("camber 0.03000"),
+        "{said}"
     );
     // The file reads back as a coordinate file (here: from standard input).
     let dir = scratch("geometry-out");
@@ -88,10 +70,8 @@ fn bad_values_are_usage_errors() {
         &["--blend", "naca0012:-0.1"],
     ] {
         let o = polargen(&[&["geometry", "naca2412", "--out", "-"], args].concat());
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
-        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
-        assert!(err.starts_with("polargen: error: invalid value"), "{err}");
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert_one_line_error("polargen", &o, "error: invalid value");
     }
     // --flap-deg needs the hinge.
     let o = polargen(&["--airfoil", "naca0012", "--re", "1e6", "--flap-deg", "5"]);
@@ -162,7 +142,7 @@ fn a_flap_sweep_writes_one_table_per_deflection() {
         "-5,5",
     ]);
     assert_eq!(o.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("--out FILE"));
+    assert_one_line_error("polargen", &o, "--out FILE");
 }
 
 /// The operation flags on the main job, `point` and `batch` give the same section: the

@@ -163,12 +163,13 @@ fn zero_thrust_j(points: &[(f64, f64)]) -> f64 {
 }
 
 /// The chart of NACA Report 594 propeller D against ours (run with `--nocapture` to see every
-/// point). The bars, and what is measured:
+/// point). The acceptance bars set for the thickness-interpolated sections, and what is
+/// measured:
 /// * C_T/C_P^(2/3) (the thrust level at constant power) within 10 % for J ≤ 0.35: met at 15°
-///   (+6.5 … +8.9 %; +11 % with one 11.7 % Clark Y table along the blade) and at 45° (−0.3 …
-///   +1.9 %; was +6 %); **not met at 30°: +14.4 … +19.6 %** (was +33 %);
-/// * static C_P at 30° and 45° within 15 %: **not met: −36.8 % and −28.3 %** (was −41 % and
-///   −30 %). The thick inboard sections add drag and torque at rest, but at these blade
+///   (+6.5 … +8.9 %) and at 45° (−0.3 … +1.9 %); **not met at 30°: +14.4 … +19.6 %** (with
+///   one 11.7 % Clark Y table along the blade: +11 %, +33 %, +6 %);
+/// * static C_P at 30° and 45° within 15 %: **not met: −36.8 % and −28.3 %** (one table:
+///   −41 % and −30 %). The thick inboard sections add drag and torque at rest, but at these blade
 ///   angles most of the inboard blade is stalled beyond the tables' computed α range, where
 ///   the two-dimensional 360° extension lacks the rotational stall delay of a real
 ///   propeller's inboard sections; the static C_T is low as well (−12 % and −18 %). Static

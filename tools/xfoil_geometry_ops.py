@@ -10,18 +10,18 @@ nodes) and computes the inviscid CL and CM at alpha 0, 4 and 8 degrees (OPER, PA
 
 writes, per case, <case>.dat (XFOIL's ordinates) and <case>_inviscid.csv (alpha,cl,cm), plus
 the inputs (naca0012.dat, naca2412.dat, naca4412.dat, clarky.dat) and cases.csv (case, input,
-operation as given to XFOIL). Needs `xfoil` and `gcc` on PATH: the Debian build traps
-floating-point exceptions and dies on its first operating point, so a two-line LD_PRELOAD
-library that makes `_gfortran_set_fpe` a no-op is compiled into a temporary folder.
+operation as given to XFOIL). Needs `xfoil` and `gcc` on PATH; XFOIL runs through
+tools/xfoil_reference.py's runner (its floating-point-trap shim included).
 """
 import argparse
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import xfoil_reference  # noqa: E402  (the repository's XFOIL runner, beside this script)
 
 # Inputs: name in the output folder -> (XFOIL name line, source).
 #   "naca DDDD" sources are XFOIL's own NACA buffer airfoil (NACA DDDD, PCOP, SAVE);
@@ -56,25 +56,9 @@ CASES = [
 ALPHAS = [0.0, 4.0, 8.0]
 
 
-def no_fpe_library():
-    """A shared library whose _gfortran_set_fpe does nothing (compiled once)."""
-    folder = os.path.join(tempfile.gettempdir(), "polargen-xfoil-nofpe")
-    lib = os.path.join(folder, "nofpe.so")
-    if not os.path.exists(lib):
-        os.makedirs(folder, exist_ok=True)
-        source = os.path.join(folder, "nofpe.c")
-        with open(source, "w") as f:
-            f.write("void _gfortran_set_fpe(int mask) { (void)mask; }\n")
-        subprocess.run(["gcc", "-shared", "-fPIC", "-o", lib, source], check=True)
-    return lib
-
-
 def xfoil(commands, work):
     """Run XFOIL in `work` on `commands`; its console output."""
-    env = dict(os.environ, LD_PRELOAD=no_fpe_library())
-    run = subprocess.run(["xfoil"], input="\n".join(commands) + "\n", text=True, cwd=work,
-                         env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=600)
-    return run.stdout
+    return xfoil_reference.run_xfoil(commands + [""], work, "xfoil", None).stdout
 
 
 def make_input(name, out):
