@@ -262,3 +262,28 @@ fn powerplant_reproduces_its_calibration_point_and_is_consistent() {
         p.efficiency()
     );
 }
+
+/// The calibration's blade-angle scan passes over the smallest angles at which an outer
+/// annulus has no solution (deep negative α, a windmilling stalled tip): with the propeller
+/// chord × 1.15 (a case of the report's sensitivity table) the scan's 0° and 1° fail there,
+/// and the calibration still finds its blade angle.
+#[test]
+fn calibration_passes_over_unsolvable_small_blade_angles() {
+    let text = preset_text();
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("chord_over_diameter = ["))
+        .unwrap();
+    let wider: Vec<String> = line["chord_over_diameter = [".len()..line.len() - 1]
+        .split(',')
+        .map(|v| format!("{}", 1.15 * v.trim().parse::<f64>().unwrap()))
+        .collect();
+    let text = text.replace(
+        line,
+        &format!("chord_over_diameter = [{}]", wider.join(", ")),
+    );
+    let ac = Aircraft::from_toml_str(&text, &preset_path()).unwrap();
+    let pp = Powerplant::from_aircraft(&ac).unwrap();
+    let pitch = pp.propeller.pitch_075.to_degrees();
+    assert!((15.0..30.0).contains(&pitch), "{pitch}");
+}

@@ -326,7 +326,8 @@ impl Propeller {
     /// The blade angle at 0.75 R \[rad\] at which the propeller gives `thrust` \[N\] at airspeed
     /// `v` and `rev_per_s` in `air`: the smallest one, found by a scan upwards in 2° steps and
     /// refined (thrust rises with the blade angle until the blade stalls, so the smallest
-    /// solution is the attached-flow one).
+    /// solution is the attached-flow one). Blade angles at the bottom of the scan at which an
+    /// annulus has no solution are passed over.
     pub fn pitch_for_thrust(
         &self,
         air: &Atmosphere,
@@ -344,24 +345,37 @@ impl Propeller {
             Ok(e)
         };
         let (lo, hi) = CALIBRATION_PITCH_RANGE_DEG;
-        let mut below = (lo.to_radians(), excess(lo.to_radians())?);
+        let mut below: Option<(f64, f64)> = None;
         let mut deg = lo;
-        while below.1 < 0.0 {
-            deg += CALIBRATION_PITCH_STEP_DEG;
-            if deg > hi {
-                return Err(PropellerError::Calibration(
-                    "no blade angle between 0° and 60° gives the calibration thrust",
-                ));
-            }
+        while deg <= hi {
             let pitch = deg.to_radians();
-            let above = (pitch, excess(pitch)?);
-            if above.1 >= 0.0 {
-                return bracketed_root(excess, below, above, PITCH_TOLERANCE, MAX_SOLVE_ITERATIONS);
+            match excess(pitch) {
+                Ok(e) if e < 0.0 => below = Some((pitch, e)),
+                Ok(e) => {
+                    let Some(below) = below else {
+                        return Err(PropellerError::Calibration(
+                            "the propeller gives the calibration thrust already at the \
+                             smallest blade angle it can be solved at",
+                        ));
+                    };
+                    return bracketed_root(
+                        excess,
+                        below,
+                        (pitch, e),
+                        PITCH_TOLERANCE,
+                        MAX_SOLVE_ITERATIONS,
+                    );
+                }
+                // The smallest blade angles put the outer annuli deep into negative α, where
+                // an annulus may have no momentum solution (a windmilling, stalled tip): far
+                // below the calibration thrust, so the scan goes on upwards.
+                Err(PropellerError::NotConverged { .. }) if below.is_none() => {}
+                Err(e) => return Err(e),
             }
-            below = above;
+            deg += CALIBRATION_PITCH_STEP_DEG;
         }
         Err(PropellerError::Calibration(
-            "the propeller gives the calibration thrust already at 0° blade angle",
+            "no blade angle between 0° and 60° gives the calibration thrust",
         ))
     }
 }
