@@ -54,8 +54,7 @@ pub enum Command {
     Completions(polargen::cli::CompletionsArgs),
     /// Man page (roff) on standard output (`polargen man > polargen.1; man ./polargen.1`).
     Man,
-    /// The airfoil in chord units after the geometry operations (Selig), with its measured
-    /// thickness and camber on stderr.
+    /// The airfoil in chord units after the geometry operations (Selig); thickness on stderr.
     Geometry {
         /// Airfoil: a name, a coordinate file or - for standard input.
         #[arg(value_name = "NAME|PATH|-")]
@@ -388,16 +387,13 @@ pub struct Shape {
 impl Shape {
     /// The operations, in the order they are applied.
     pub fn ops(&self) -> Vec<ShapeOp> {
-        [
+        let all = [
             &self.blend,
             &self.thickness,
             &self.camber,
             &self.te_gap,
             &self.flap,
-        ]
-        .into_iter()
-        .flatten()
-        .cloned()
-        .collect()
+        ];
+        all.into_iter().flatten().cloned().collect()
     }
 }

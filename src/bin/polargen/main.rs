@@ -55,9 +55,10 @@ fn main() -> ExitCode {
         Some(Command::PlotPoint(args)) => plot_point(args),
         Some(Command::Batch(args)) => run_batch(args),
         Some(Command::Point { case, csv }) => point(case, csv),
-        Some(Command::Completions(args)) => {
-            to_stdout(&cli::completions(Cli::command(), args.shell))
-        }
+        Some(Command::Completions(args)) => to_file(
+            Path::new(STDOUT_PATH),
+            &cli::completions(Cli::command(), args.shell),
+        ),
         Some(Command::Geometry {
             airfoil,
             shape,
@@ -65,15 +66,10 @@ fn main() -> ExitCode {
         }) => write_geometry(airfoil, shape, out),
         Some(Command::Man) => cli::man_page(Cli::command())
             .map_err(Into::into)
-            .and_then(|page| to_stdout(&page)),
+            .and_then(|page| to_file(Path::new(STDOUT_PATH), &page)),
         None if cli.run.inviscid => run_inviscid(&cli.run),
         None => run_viscous(&cli.run),
     })
-}
-
-/// Write `bytes` to standard output.
-fn to_stdout(bytes: &[u8]) -> Result<()> {
-    to_file(Path::new(STDOUT_PATH), bytes)
 }
 
 /// Write `bytes` to `path` (- for standard output).
@@ -221,41 +217,29 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         Some(list) => flap_sweep(&ops, list, out)?,
         None => vec![(ops, out.to_path_buf())],
     };
-    for (ops, path) in &tables {
-        solve_table(cli, &grid, &base, ops, format, path)?;
-    }
-    Ok(())
-}
-
-/// One table of the section shaped by `ops`, written to `path`.
-fn solve_table(
-    cli: &RunArgs,
-    grid: &GridSpec,
-    base: &ViscousParams,
-    ops: &[ShapeOp],
-    format: TableFormat,
-    path: &Path,
-) -> Result<()> {
     let (spec, g) = (cli.airfoil.as_deref(), &cli.grid);
-    let foil = load_airfoil(spec, g.panels, g.shape.derotate, ops)?;
-    let bar = progress_bar(grid.point_count() as u64);
-    let start = Instant::now();
-    let table = build_table(&foil, cli.grid.panels, grid, base, cli.grid.threads, |n| {
-        bar.iter().for_each(|b| b.inc(n as u64))
-    })?;
-    bar.iter().for_each(|b| b.finish_and_clear());
-    let census = table.census();
-    TOOL.say(format!(
-        "{census} in {:.1} s",
-        start.elapsed().as_secs_f64()
-    ));
-    if census.converged == 0 {
-        bail!("no point converged; no table written");
-    }
-    let table = with_cd_max(table.with_geometry(ops), cli.extension.cd_max).context("--cd-max")?;
-    let files = write_table(&table, path, Some(format))?;
-    if files.len() > 1 {
-        TOOL.say(format!("wrote {} files", files.len()));
+    for (ops, path) in &tables {
+        let foil = load_airfoil(spec, g.panels, g.shape.derotate, ops)?;
+        let bar = progress_bar(grid.point_count() as u64);
+        let start = Instant::now();
+        let table = build_table(&foil, g.panels, &grid, &base, g.threads, |n| {
+            bar.iter().for_each(|b| b.inc(n as u64))
+        })?;
+        bar.iter().for_each(|b| b.finish_and_clear());
+        let census = table.census();
+        TOOL.say(format!(
+            "{census} in {:.1} s",
+            start.elapsed().as_secs_f64()
+        ));
+        if census.converged == 0 {
+            bail!("no point converged; no table written");
+        }
+        let table =
+            with_cd_max(table.with_geometry(ops), cli.extension.cd_max).context("--cd-max")?;
+        let files = write_table(&table, path, Some(format))?;
+        if files.len() > 1 {
+            TOOL.say(format!("wrote {} files", files.len()));
+        }
     }
     Ok(())
 }
