@@ -64,6 +64,7 @@
 //! | task | API |
 //! |---|---|
 //! | load and panel an airfoil | [`geometry::airfoil_by_name_or_path`], [`geometry::Airfoil`] |
+//! | thickness, camber, trailing-edge gap, flap, blend | [`geometry::ShapeOp`], [`geometry::apply_shape_ops`], [`geometry::solver_airfoil`] |
 //! | solve one viscous point or a sweep | [`viscous::ViscousSolver`] (a [`polar::WarmStartSolver`] for [`polar::sweep`]) |
 //! | build, read, write a table | [`table::build_table`], [`table::read_table`], [`table::write_table`] |
 //! | one table per airfoil of many, sharded | [`table::Batch`] |

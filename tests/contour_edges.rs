@@ -24,7 +24,7 @@ fn data(name: &str) -> String {
 
 /// The solver's nodes of `spec` (as `polargen --airfoil` prepares them) and the notes.
 fn nodes(spec: &str) -> (Airfoil, Vec<String>) {
-    solver_airfoil(spec, 160, false).unwrap()
+    solver_airfoil(spec, 160, false, &[]).unwrap()
 }
 
 /// Fresh viscous solutions at Re 10⁶, free transition.

@@ -49,6 +49,8 @@ fn trim_json_keys_and_values() {
         "table_clamped_fraction",
         "table_supercritical_fraction",
         "table_separated_fraction",
+        "static_thrust_post_stall_fraction",
+        "static_thrust_supercritical_fraction",
     ] {
         assert!(v[key].is_number(), "{key} missing: {v}");
     }

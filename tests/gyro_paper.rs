@@ -5,22 +5,26 @@
 //! at 7 % chord).
 //!
 //! The project's acceptance bands that the model meets are asserted as set: clean
-//! rotor rpm 350 ± 15 (ours 359.7), Δ engine rpm clean → contaminated +200 ± 60 (ours +255,
-//! from 4308 to 4563; the paper's model +195). Those it does not meet are stated here with
-//! their numbers and asserted as the measured values within a stated guard, not tuned:
-//! * static full-throttle thrust 2000 N ± 10 % (paper Table 1): ours 2290 N (+14.5 %) at 5227
-//!   engine rpm. 40 % of the propeller's annuli are stalled at rest, and a two-dimensional
-//!   polar without rotational stall delay under-predicts a propeller's static power (NACA
-//!   Report 594 propeller D at 30°: −41 %, `tests/rotor_propeller.rs`), so the engine turns
-//!   too fast at rest;
+//! rotor rpm 350 ± 15 (ours 359.7), static full-throttle thrust 2000 N ± 10 %
+//! (paper Table 1; ours 1946 N with the propeller's own thickness-interpolated sections, 2290
+//! N with one 11.7 % Clark Y table; at rest 40 % of its annuli lie beyond their table's
+//! computed α range and 70 % lean on supercritical points, and a two-dimensional polar without
+//! rotational stall delay still under-predicts a propeller's static power: NACA Report 594
+//! propeller D at 30°: −37 %, `tests/rotor_propeller.rs`). Those it does not meet are stated
+//! here with their numbers and asserted as the measured values within a stated guard, not
+//! tuned:
+//! * Δ engine rpm clean → contaminated +200 ± 60 (the paper's model +195): ours +262 (4307 →
+//!   4568), just outside; +255 (4308 → 4563) with one 11.7 % Clark Y table along the
+//!   propeller blade. The thinner outboard sections of the blade's own family need a little
+//!   more rpm for the contaminated rotor's extra thrust;
 //! * at most 2 % of the 60 kt lookups clamped: ours 3.1 % (clean), all in the innermost strip
 //!   at ψ 220…320°, where the blade meets the air at under 7 m/s (Re < 10⁵): the reverse-flow
 //!   circle (1.9 %) and its edge;
 //! * ΔF_prop (paper +14 %): ours +20.6 %; clean D_R 397 N (paper 478 N) and clean α_R 5.14°
 //!   (paper 6.2°): our clean rotor is less draggy than the paper's while the contaminated one
 //!   is close (D_R 598 N, paper 624 N), so the relative rise is larger;
-//! * takeoff: s_15 304 m clean (paper 218 m) and the s_TO rise +31 % (paper +19 %): the
-//!   propeller's thrust falls from 2290 N at rest to 1680 N at 25 m/s, because its power
+//! * takeoff: s_15 313 m clean (paper 218 m) and the s_TO rise +30 % (paper +19 %): the
+//!   propeller's thrust falls quickly from its static value with speed, because its power
 //!   coefficient rises with J at low J where NACA 594 shows it flat or falling (the same stall
 //!   modelling).
 
@@ -88,7 +92,12 @@ fn shipped_tables_against_the_flight_test_and_the_paper() {
         "{rc} {rd}"
     );
     let (ec, ed) = row(&v, "trim", "engine rpm");
-    assert!((ed - ec - 200.0).abs() <= 60.0, "Δ engine rpm {}", ed - ec);
+    // Band +200 ± 60 narrowly not met: +262 (module doc). Guard: +230 … +290.
+    assert!(
+        (230.0..=290.0).contains(&(ed - ec)),
+        "Δ engine rpm {}",
+        ed - ec
+    );
     // The drag-equivalent rotor angle (the paper's α_R): contaminated 8.1 ± 1.2°; clean ~5.2°
     // against 6.2° (module doc).
     let (ac, ad) = row(&v, "trim", "rotor AoA");
@@ -111,11 +120,20 @@ fn shipped_tables_against_the_flight_test_and_the_paper() {
     };
     let (tc, td) = (trim("free"), trim("xtr0.07"));
     let static_thrust = tc["static_thrust_n"].as_f64().unwrap();
-    // Band 2000 N ± 10 % not met: ~2290 N (module doc). Guard: +10 … +20 %.
+    // Band 2000 N ± 10 % (module doc): ~1946 N.
     assert!(
-        (2200.0..2400.0).contains(&static_thrust),
+        (1800.0..=2200.0).contains(&static_thrust),
         "static thrust {static_thrust}"
     );
+    // The static point's validity shares (module doc): ~40 % beyond the computed α range,
+    // ~70 % supercritical.
+    let share = |k: &str| 100.0 * tc[k].as_f64().unwrap();
+    let (beyond, supercritical) = (
+        share("static_thrust_post_stall_fraction"),
+        share("static_thrust_supercritical_fraction"),
+    );
+    assert!((30.0..=50.0).contains(&beyond), "{beyond} %");
+    assert!((55.0..=85.0).contains(&supercritical), "{supercritical} %");
     assert_eq!(static_thrust, td["static_thrust_n"].as_f64().unwrap());
     for t in [&tc, &td] {
         let clamped = t["table_clamped_fraction"].as_f64().unwrap();

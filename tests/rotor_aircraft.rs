@@ -165,7 +165,7 @@ fn unknown_field_and_bad_values_are_rejected() {
     let text = preset_text().replace("induced_power_factor = 1.15\n", "");
     let ac = Aircraft::from_toml_str(&text, &preset_path()).unwrap();
     assert_eq!(ac.rotor.induced_power_factor, 1.0);
-    // The propeller's section table is read relative to the preset's folder, and a missing
+    // The propeller's section tables are read relative to the preset's folder, and a missing
     // one is named.
     let err = Aircraft::from_toml_str(&preset_text(), "elsewhere/t.toml").unwrap_err();
     assert!(
@@ -174,10 +174,37 @@ fn unknown_field_and_bad_values_are_rejected() {
                 .source()
                 .unwrap()
                 .to_string()
-                .contains("clarky_free.csv"),
+                .contains("clarky_t0.08_free.csv"),
         "{err}: {:?}",
         err.source().map(|s| s.to_string())
     );
+    // Sections by thickness need the blade's thickness ratios, in increasing order, and
+    // exclude one section_table.
+    let field = |text: String| match Aircraft::from_toml_str(&text, &preset_path()) {
+        Err(AircraftError::Invalid { field, .. }) => field,
+        other => panic!("{:?}", other.map(|a| a.name)),
+    };
+    let full = preset_text();
+    let no_ratios: Vec<&str> = full
+        .lines()
+        .filter(|l| !l.starts_with("thickness_ratio = ["))
+        .collect();
+    assert_eq!(
+        field(no_ratios.join("\n")),
+        "propeller.blade.thickness_ratio"
+    );
+    let text = preset_text().replace(
+        "thickness_ratio = [0.4407",
+        "thickness_ratio = [0.4407, 0.3",
+    );
+    assert_eq!(field(text), "propeller.blade.thickness_ratio");
+    let text = preset_text().replace("thickness_ratio = 0.18\n", "thickness_ratio = 0.5\n");
+    assert_eq!(field(text), "propeller.sections.thickness_ratio");
+    let both = preset_text().replace(
+        "calib_speed_kt = 60.0",
+        "section_table = \"../polars/clarky_free.csv\"\ncalib_speed_kt = 60.0",
+    );
+    assert_eq!(field(both), "propeller.section_table");
     let err = Aircraft::from_toml_file(std::path::Path::new("/nonexistent/x.toml")).unwrap_err();
     assert!(
         err.to_string().starts_with("cannot read aircraft file"),
@@ -234,4 +261,29 @@ fn powerplant_reproduces_its_calibration_point_and_is_consistent() {
         "{}",
         p.efficiency()
     );
+}
+
+/// The calibration's blade-angle scan passes over the smallest angles at which an outer
+/// annulus has no solution (deep negative α, a windmilling stalled tip): with the propeller
+/// chord × 1.15 (a case of the report's sensitivity table) the scan's 0° and 1° fail there,
+/// and the calibration still finds its blade angle.
+#[test]
+fn calibration_passes_over_unsolvable_small_blade_angles() {
+    let text = preset_text();
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("chord_over_diameter = ["))
+        .unwrap();
+    let wider: Vec<String> = line["chord_over_diameter = [".len()..line.len() - 1]
+        .split(',')
+        .map(|v| format!("{}", 1.15 * v.trim().parse::<f64>().unwrap()))
+        .collect();
+    let text = text.replace(
+        line,
+        &format!("chord_over_diameter = [{}]", wider.join(", ")),
+    );
+    let ac = Aircraft::from_toml_str(&text, &preset_path()).unwrap();
+    let pp = Powerplant::from_aircraft(&ac).unwrap();
+    let pitch = pp.propeller.pitch_075.to_degrees();
+    assert!((15.0..30.0).contains(&pitch), "{pitch}");
 }

@@ -44,6 +44,27 @@ fn default_grid_shape_and_convergence() {
     }
 }
 
+/// The Clark Y family of the propeller (polars/README.md): the default grid, and a converged
+/// share that falls with thickness (99.5 % at 8 %, 81.5 % at 44 %: the thick sections separate
+/// at smaller |α|).
+#[test]
+fn propeller_family_grid_and_convergence() {
+    for (name, least) in [
+        ("clarky_t0.08_free.csv", 0.99),
+        ("clarky_t0.18_free.csv", 0.97),
+        ("clarky_t0.24_free.csv", 0.92),
+        ("clarky_t0.36_free.csv", 0.80),
+        ("clarky_t0.44_free.csv", 0.78),
+    ] {
+        let t = shipped(name);
+        assert_eq!(t.point_count(), 3904, "{name}");
+        assert_eq!(t.re().len() * t.mach().len(), 64, "{name}");
+        let frac = t.converged_count() as f64 / t.point_count() as f64;
+        assert!(frac >= least, "{name}: {frac}");
+        assert!(t.meta().geometry.len() == 2 && t.meta().flap_deg().is_none());
+    }
+}
+
 #[test]
 fn lookup_is_exact_on_nodes() {
     let t = shipped("naca8h12_free.csv");

@@ -19,7 +19,7 @@ const AIRCRAFT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/aircraft/mtosport.t
 /// A fresh solution (no warm start) of `foil` (as `polargen --airfoil` prepares it) at Re 10⁶
 /// with transition forced at `xtr` on both surfaces.
 fn solve(foil: &str, xtr: f64, alpha: f64) -> PolarPoint {
-    let (nodes, _) = solver_airfoil(foil, 160, false).unwrap();
+    let (nodes, _) = solver_airfoil(foil, 160, false, &[]).unwrap();
     let mut solver = ViscousSolver::new(&nodes, ViscousParams::at(1e6, 0.0, xtr)).unwrap();
     solver.solve(alpha).point
 }
@@ -123,13 +123,14 @@ fn every_layer_takes_the_same_transition_range() {
     // One rule: the library's solver parameters, table metadata and the argument checks
     // accept exactly the x/c in [0, 1] and the positive N_crit (before: the studies refused 0
     // and the solver took x/c > 1).
-    let (nodes, _) = solver_airfoil("naca0012", 60, false).unwrap();
+    let (nodes, _) = solver_airfoil("naca0012", 60, false, &[]).unwrap();
     let table = |t: Transition| {
         let meta = TableMeta {
             airfoil: "t".into(),
             transition: t,
             panels: 60,
             solver: "test".into(),
+            geometry: Vec::new(),
         };
         PolarTable::new(
             meta,

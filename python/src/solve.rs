@@ -284,7 +284,7 @@ pub fn table(
     };
     let settings = Settings::checked(xtr_top, xtr_bot, ncrit, tolerance)?;
     let table = build(py, airfoil, grid, &settings, panels, threads, progress)?;
-    Ok(Table::from(table))
+    Ok(Table::from(table.with_geometry(&airfoil.ops)))
 }
 
 /// One operating point at `alpha` or at lift coefficient `cl` (as `polargen plot-point`

@@ -115,6 +115,9 @@ impl Table {
         d.set_item("xtr_bot_set", t.xtr_bot)?;
         d.set_item("panels", m.panels)?;
         d.set_item("solver", &m.solver)?;
+        let ops: Vec<String> = m.geometry.iter().map(ToString::to_string).collect();
+        d.set_item("geometry", ops)?;
+        d.set_item("flap_deg", m.flap_deg())?;
         Ok(d)
     }
 

@@ -313,6 +313,17 @@ pub enum GeometryError {
         /// The name as given.
         name: String,
     },
+    /// A geometry operation (thickness, camber, trailing-edge gap, flap, blend) cannot be
+    /// applied to the section.
+    #[error("{op} on {airfoil}: {reason}")]
+    Operation {
+        /// The operation.
+        op: &'static str,
+        /// Airfoil name.
+        airfoil: String,
+        /// Why not.
+        reason: String,
+    },
     /// A spline could not be built or evaluated.
     #[error("spline: {0}")]
     Spline(String),

@@ -12,6 +12,7 @@
 mod coordinates;
 mod error;
 mod naca;
+mod ops;
 mod paneling;
 mod registry;
 mod spline;
@@ -23,8 +24,15 @@ pub use coordinates::{
 };
 pub use error::GeometryError;
 pub use naca::{naca, NacaOptions, NacaSection, TrailingEdge};
+pub use ops::{
+    apply_shape_ops, flap_deflection, flap_deg, parse_shape_ops, shape_ops_text,
+    with_flap_deflection, LineMaximum, ShapeOp, ThicknessCamber, DEFAULT_TE_GAP_BLEND, MAX_CAMBER,
+    MAX_FLAP_DEG, MAX_HINGE_Y, MAX_TE_GAP, MAX_THICKNESS,
+};
 pub use paneling::{PaneledAirfoil, PanelingParams, DEFAULT_PANEL_NODES};
-pub use registry::{airfoil_by_name_or_path, airfoil_key, naca8h12, solver_airfoil};
+pub use registry::{
+    airfoil_by_name_or_path, airfoil_key, naca8h12, shaped_airfoil, solver_airfoil,
+};
 pub use spline::{ContourSpline, CubicSpline, EndCondition, MEAN_LINE_STEPS};
 pub use validation::{
     MAX_REVERSE_TURNING_DEG, MAX_REVERSE_TURN_DEG, MAX_TE_GAP_RATIO, MAX_TURNING_DEG,
@@ -304,9 +312,18 @@ impl Airfoil {
         let (raw, normalised) = self
             .in_chord_units()
             .map_err(step("locating the chord of"))?;
-        let nodes = raw
-            .repanel(panels, &PanelingParams::default())
-            .map_err(step("paneling"))?;
-        Ok((nodes, normalised))
+        Ok((raw.prepared_nodes(panels)?, normalised))
+    }
+
+    /// The nodes the solvers work on for a contour already in chord units (a shaped section,
+    /// [`apply_shape_ops`]): repaneled to `panels` nodes with the default [`PanelingParams`],
+    /// not normalised. Errors name the step and the airfoil ([`GeometryError::Preparing`]).
+    pub fn prepared_nodes(&self, panels: usize) -> Result<Airfoil, GeometryError> {
+        self.repanel(panels, &PanelingParams::default())
+            .map_err(|source| GeometryError::Preparing {
+                step: "paneling",
+                airfoil: self.name.clone(),
+                source: Box::new(source),
+            })
     }
 }

@@ -6,6 +6,7 @@ use std::path::Path;
 use super::coordinates::{parse_airfoil_text, read_airfoil_file};
 use super::error::GeometryError;
 use super::naca::{naca, NacaOptions};
+use super::ops::{apply_shape_ops, ShapeOp};
 use super::Airfoil;
 use crate::input;
 
@@ -73,24 +74,26 @@ pub fn airfoil_by_name_or_path(s: &str) -> Result<Airfoil, GeometryError> {
     })
 }
 
-/// The airfoil the solvers get from a user's `spec` (as [`airfoil_by_name_or_path`]):
-/// rotated so that the chord line lies along x when `derotate` is set, then in chord units
-/// and repaneled to `panels` nodes ([`Airfoil::solver_nodes`]); with the notes a user should
-/// read about what was changed (rotation, an inclined chord kept, normalisation), each
-/// starting with `spec`.
-pub fn solver_airfoil(
+/// The section a user's `spec` (as [`airfoil_by_name_or_path`]) and operations describe:
+/// rotated so that the chord line lies along x when `derotate` is set, in chord units
+/// ([`Airfoil::in_chord_units`]), then shaped by `ops` ([`apply_shape_ops`]; the partner of a
+/// blend is loaded and prepared the same way); with the notes a user should read about what
+/// was changed (rotation, an inclined chord kept, normalisation), each starting with `spec`.
+pub fn shaped_airfoil(
     spec: &str,
-    panels: usize,
     derotate: bool,
+    ops: &[ShapeOp],
 ) -> Result<(Airfoil, Vec<String>), GeometryError> {
     let mut given = airfoil_by_name_or_path(spec)?;
-    let angle = given
-        .chord_angle_deg()
-        .map_err(|source| GeometryError::Preparing {
+    let locating = |airfoil: &Airfoil| {
+        let name = airfoil.name.clone();
+        move |source| GeometryError::Preparing {
             step: "locating the chord of",
-            airfoil: given.name.clone(),
+            airfoil: name,
             source: Box::new(source),
-        })?;
+        }
+    };
+    let angle = given.chord_angle_deg().map_err(locating(&given))?;
     let mut notes = Vec::new();
     if derotate {
         given = given.derotated()?;
@@ -106,9 +109,28 @@ pub fn solver_airfoil(
              chord line)"
         ));
     }
-    let (foil, normalisation) = given.solver_nodes(panels)?;
+    let (base, normalisation) = given.in_chord_units().map_err(locating(&given))?;
     if let Some(n) = normalisation {
         notes.push(n.note(spec));
     }
-    Ok((foil, notes))
+    let partner = |other: &str| {
+        let foil = airfoil_by_name_or_path(other)?;
+        let foil = if derotate { foil.derotated()? } else { foil };
+        Ok(foil.in_chord_units()?.0)
+    };
+    Ok((apply_shape_ops(&base, ops, &partner)?, notes))
+}
+
+/// The airfoil the solvers get from a user's `spec` and operations: the
+/// [`shaped_airfoil`] repaneled to `panels` nodes ([`Airfoil::prepared_nodes`]; it is not
+/// normalised again after the operations: a deflected flap moves the trailing edge, and α and
+/// the moment reference stay those of the section before the operations), with its notes.
+pub fn solver_airfoil(
+    spec: &str,
+    panels: usize,
+    derotate: bool,
+    ops: &[ShapeOp],
+) -> Result<(Airfoil, Vec<String>), GeometryError> {
+    let (foil, notes) = shaped_airfoil(spec, derotate, ops)?;
+    Ok((foil.prepared_nodes(panels)?, notes))
 }

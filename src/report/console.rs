@@ -46,7 +46,14 @@ pub fn trim(buf: &mut String, t: &TrimResult) {
     outln!(buf, "  prop thrust F_prop [N] {:8.1}", t.prop_thrust_n);
     outln!(buf, "  L/D                    {:8.2}", t.lift_to_drag);
     outln!(buf, "  power required [kW]    {:8.1}", t.power_required_kw);
-    outln!(buf, "  static thrust [N]      {:8.1}", t.static_thrust_n);
+    outln!(
+        buf,
+        "  static thrust [N]      {:8.1}   (annuli beyond the computed alpha range {:.0} %, \
+         supercritical {:.0} %)",
+        t.static_thrust_n,
+        100.0 * t.static_thrust_post_stall_fraction,
+        100.0 * t.static_thrust_supercritical_fraction
+    );
     outln!(
         buf,
         "  flapping b1c, b1s [deg]{:8.2} {:.2}",

@@ -189,18 +189,23 @@ pub(super) fn flight_test_section(o: &mut String, ac: &Aircraft, rotor: &RotorRe
     outln!(
         o,
         "A blade-element–momentum propeller (Prandtl tip loss, swirl) of the preset's blade \
-         (NACA Report 594 propeller D blade form, 3 blades, 1.72 m) with our own Clark Y table, \
-         driven by the Rotax 912 ULS full-throttle torque curve through the 2.43 gear; its \
-         chart is checked against NACA Report 594 in `tests/rotor_propeller.rs`. Full-throttle \
-         static thrust, predicted: **{} N** at {} engine rpm{}, against ≈ {TABLE1_STATIC_THRUST_N} \
-         N in the paper's Table 1 ({}); {:.0} % of its annuli are stalled there (beyond the \
-         table's computed α range), where a two-dimensional polar without rotational stall \
-         delay under-predicts a propeller's static power (NACA 594 at 30°: −41 %), so the \
-         engine turns too fast and the static thrust is likely over-predicted. The same \
-         stall modelling makes the power coefficient rise with the advance ratio at low J, \
-         where NACA 594 shows it flat or falling: at {LIFTOFF_SPEED_MS} m/s the full-throttle \
-         rpm has fallen to {} and the thrust to {} N ({}), a faster thrust lapse than a real \
-         fixed-pitch propeller's, which lengthens the takeoff (Table 4).",
+         (NACA Report 594 propeller D blade form, 3 blades, 1.72 m) with the blade's own \
+         sections: our tables of the Clark Y family at its thickness ratios (8 % at the tip to \
+         44 % at the shank, each annulus interpolating in t/c), driven by the Rotax 912 ULS \
+         full-throttle torque curve through the 2.43 gear; its chart is checked against NACA \
+         Report 594 in `tests/rotor_propeller.rs`. Full-throttle static thrust, predicted: \
+         **{} N** at {} engine rpm{}, against ≈ {TABLE1_STATIC_THRUST_N} N in the paper's \
+         Table 1 ({}). There {:.0} % of its annuli are stalled beyond their table's computed α \
+         range (their data from the tables' 360° extension: Viterna & Corrigan to 90°, then a \
+         flat plate of broadside drag 2.0, Hoerner) and {:.0} % lean on supercritical table \
+         points (locally supersonic, outside the section method's validity): the static point \
+         is where the propeller model is least sure. A two-dimensional polar without rotational \
+         stall delay under-predicts a propeller's static power (NACA 594 at 30°: −37 %, at 45°: \
+         −28 %), so the engine may turn too fast and the static thrust be over-predicted. The \
+         same stall modelling makes the power coefficient rise with the advance ratio at low \
+         J, where NACA 594 shows it flat or falling: at {LIFTOFF_SPEED_MS} m/s the \
+         full-throttle rpm has fallen to {} and the thrust to {} N ({}), a faster thrust lapse \
+         than a real fixed-pitch propeller's, which lengthens the takeoff (Table 4).",
         num(st.propeller.thrust, 0),
         num(st.engine_rpm, 0),
         if st.rpm_limited {
@@ -210,6 +215,7 @@ pub(super) fn flight_test_section(o: &mut String, ac: &Aircraft, rotor: &RotorRe
         },
         pct(rel(TABLE1_STATIC_THRUST_N, st.propeller.thrust)),
         100.0 * st.propeller.post_stall_fraction,
+        100.0 * st.propeller.supercritical_fraction,
         num(p.rolling.engine_rpm, 0),
         num(p.rolling.propeller.thrust, 0),
         pct(rel(st.propeller.thrust, p.rolling.propeller.thrust)),

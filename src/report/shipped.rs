@@ -1,5 +1,5 @@
 //! The shipped report inputs, built into the program so that `gyro report` runs from any
-//! folder: the MTOsport preset with its propeller's Clark Y table, the four default-grid
+//! folder: the MTOsport preset with its propeller's Clark Y family tables, the four default-grid
 //! tables of `polars/`, and the PCA-2 rotor preset with its two Göttingen 429 tables. They are
 //! used
 //! when the default path is asked for and nothing exists there; a file that exists (in a
@@ -31,14 +31,40 @@ pub const SHIPPED_CONTAMINATED_TABLE: &str = "polars/naca8h12_xtr0.07.csv";
 /// The MTOsport preset as shipped.
 const AIRCRAFT_TOML: &str = include_str!("../../aircraft/mtosport.toml");
 
+/// The preset's propeller section tables (its `propeller.sections`) as shipped: file name,
+/// content.
+const PROPELLER_TABLES: [(&str, &str); 6] = [
+    (
+        "clarky_t0.08_free.csv",
+        include_str!("../../polars/clarky_t0.08_free.csv"),
+    ),
+    (
+        "clarky_free.csv",
+        include_str!("../../polars/clarky_free.csv"),
+    ),
+    (
+        "clarky_t0.18_free.csv",
+        include_str!("../../polars/clarky_t0.18_free.csv"),
+    ),
+    (
+        "clarky_t0.24_free.csv",
+        include_str!("../../polars/clarky_t0.24_free.csv"),
+    ),
+    (
+        "clarky_t0.36_free.csv",
+        include_str!("../../polars/clarky_t0.36_free.csv"),
+    ),
+    (
+        "clarky_t0.44_free.csv",
+        include_str!("../../polars/clarky_t0.44_free.csv"),
+    ),
+];
+
 /// The PCA-2 rotor preset beside the default aircraft preset.
 pub const SHIPPED_PCA2: &str = "aircraft/pca2.toml";
 
 /// The PCA-2 rotor preset as shipped.
 const PCA2_TOML: &str = include_str!("../../aircraft/pca2.toml");
-
-/// The preset's propeller section table (its `section_table`) as shipped.
-const PROPELLER_TABLE: &str = include_str!("../../polars/clarky_free.csv");
 
 /// The shipped tables: file name, content.
 const TABLES: [(&str, &str); 6] = [
@@ -71,15 +97,31 @@ const TABLES: [(&str, &str); 6] = [
 /// The aircraft at `path`, or the built-in preset when `path` is the default and absent.
 pub(super) fn aircraft(path: &Path) -> Result<Aircraft, AircraftError> {
     if path == Path::new(SHIPPED_AIRCRAFT) && !exists(path) {
-        let section = parse_table(PROPELLER_TABLE.as_bytes(), TableFormat::Csv)
-            .and_then(|t| check_lookup_table(&t).map(|()| t))
-            .map_err(|source| AircraftError::PropellerSection {
-                path: SHIPPED_AIRCRAFT.to_string(),
-                source,
-            })?;
-        return Ok(
-            Aircraft::parse_toml(AIRCRAFT_TOML, SHIPPED_AIRCRAFT)?.with_propeller_section(section)
-        );
+        let aircraft = Aircraft::parse_toml(AIRCRAFT_TOML, SHIPPED_AIRCRAFT)?;
+        let fail = |source| AircraftError::PropellerSection {
+            path: SHIPPED_AIRCRAFT.to_string(),
+            source,
+        };
+        let embedded = |file: &Path| {
+            let name = file.file_name().and_then(|n| n.to_str()).unwrap_or("");
+            let (_, text) = PROPELLER_TABLES
+                .iter()
+                .find(|(n, _)| *n == name)
+                .ok_or_else(|| AircraftError::Invalid {
+                    field: "propeller.sections.table",
+                    value: f64::NAN,
+                    reason: format!("{name}: not a table built into the program").into(),
+                })?;
+            parse_table(text.as_bytes(), TableFormat::Csv)
+                .and_then(|t| check_lookup_table(&t).map(|()| t))
+                .map_err(fail)
+        };
+        let sections = aircraft.propeller.sections.clone().unwrap_or_default();
+        let tables = sections
+            .iter()
+            .map(|s| Ok((s.thickness_ratio, embedded(&s.table)?)))
+            .collect::<Result<Vec<_>, AircraftError>>()?;
+        return Ok(aircraft.with_propeller_sections(tables));
     }
     Aircraft::from_toml_file(path)
 }

@@ -54,8 +54,8 @@ mod tunnel;
 pub use aircraft::{
     check_altitude_m, check_azimuth_samples, check_blade_radius, check_mass_kg, check_speed_kt,
     Aircraft, AircraftError, BladeGeometry, BladeParams, EngineParams, HubParams, PropellerParams,
-    RotorParams, RotorPreset, TakeoffParams, WingError, WingLoads, WingParams, MAX_BLADES,
-    MAX_MASS_KG, MAX_SPEED_KT,
+    RotorParams, RotorPreset, SectionFile, TakeoffParams, WingError, WingLoads, WingParams,
+    MAX_BLADES, MAX_MASS_KG, MAX_SPEED_KT,
 };
 pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};
@@ -66,7 +66,10 @@ pub use flapping::{FlapHinge, Flapping, Hub};
 pub use inflow::{InflowModel, TipLoss, YawedFlow};
 pub use inflow_flapping::RotorError;
 pub use planform::{Planform, PlanformStation};
-pub use propeller::{FullThrottle, Powerplant, Propeller, PropellerError, PropellerPoint};
+pub use propeller::{
+    FullThrottle, Powerplant, Propeller, PropellerError, PropellerPoint, PropellerSections,
+    SectionsError, SharedSection,
+};
 pub use solution::{RotorSolution, RotorWarmStart};
 pub use spanwise::{BladeSection, SpanBand, SpanwiseSection};
 pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};

@@ -189,6 +189,12 @@ pub struct TrimResult {
     /// The propeller's full-throttle static thrust at the trim's altitude \[N\], predicted by
     /// the calibrated blade-element propeller (the paper's Table 1 quotes ≈ 2000 N).
     pub static_thrust_n: f64,
+    /// Share of the propeller's annuli at that static point beyond their section table's
+    /// computed α range (their data from the 360° extension: stalled).
+    pub static_thrust_post_stall_fraction: f64,
+    /// Share of the propeller's annuli at that static point whose section data lean on
+    /// supercritical table points (locally supersonic, outside the method's validity).
+    pub static_thrust_supercritical_fraction: f64,
 }
 
 impl TrimResult {
@@ -411,7 +417,7 @@ pub fn trim_aircraft<S: BladeSection + ?Sized>(
         Err(PropellerError::Unavailable { .. }) => None,
         Err(e) => return Err(e.into()),
     };
-    let static_thrust = powerplant.full_throttle(&atm, 0.0, None)?.propeller.thrust;
+    let at_rest = powerplant.full_throttle(&atm, 0.0, None)?.propeller;
     Ok(TrimResult {
         airspeed_ms: v,
         airspeed_kt: speed_kt,
@@ -435,6 +441,8 @@ pub fn trim_aircraft<S: BladeSection + ?Sized>(
         table_clamped_fraction: s.table_clamped_fraction,
         table_supercritical_fraction: s.table_supercritical_fraction,
         table_separated_fraction: s.table_separated_fraction,
-        static_thrust_n: static_thrust,
+        static_thrust_n: at_rest.thrust,
+        static_thrust_post_stall_fraction: at_rest.post_stall_fraction,
+        static_thrust_supercritical_fraction: at_rest.supercritical_fraction,
     })
 }

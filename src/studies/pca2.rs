@@ -67,6 +67,7 @@ pub fn report_487_section() -> Result<PolarTable, TableError> {
         transition: Transition::default(),
         panels: 0,
         solver: "analytic".to_string(),
+        geometry: Vec::new(),
     };
     PolarTable::new(meta, vec![3e6], vec![0.0], vec![points])
 }

@@ -19,7 +19,8 @@
 //!   of the shard with [`IndexRow`]s; it is written before the first solve and rewritten after
 //!   each table, the two files together ([`OutputSet`](crate::output::OutputSet)).
 //! * Resuming keeps a table that reads back and was made for the same grid and settings: its
-//!   metadata (airfoil name, N_crit, forced transition, panel count, solver name and version)
+//!   metadata (airfoil name, N_crit, forced transition, panel count, solver name and version,
+//!   geometry operations)
 //!   equal those of the request, and its Re and Mach axes and every polar's α list equal the
 //!   requested ones. A truncated, foreign or differently made table is solved again. The
 //!   Newton threshold and the chord rotation are not recorded in a table and so not compared.
@@ -33,7 +34,7 @@ pub use index::{IndexRow, TableStatus};
 use super::build::table_meta;
 use super::{build_table, read_table, write_table, GridSpec, TableError, TableFormat, TableMeta};
 use crate::diagnostics::error_line;
-use crate::geometry::{solver_airfoil, Airfoil, GeometryError};
+use crate::geometry::{solver_airfoil, Airfoil, GeometryError, ShapeOp};
 use crate::output::{check_output_path, OutputError};
 use crate::progress::Work;
 use crate::viscous::ViscousParams;
@@ -165,6 +166,8 @@ pub struct BatchSettings {
     pub panels: usize,
     /// Rotate each contour so that its chord lies along x.
     pub derotate: bool,
+    /// Geometry operations applied to every airfoil (recorded in its table).
+    pub geometry: Vec<ShapeOp>,
     /// Table format: [`TableFormat::Csv`] or [`TableFormat::Json`].
     pub format: TableFormat,
     /// This run's shard, or all airfoils.
@@ -243,13 +246,16 @@ impl Batch {
         check_output_path(&out.join(format!("{}.csv", index::index_stem(shard_pair(&settings)))))?;
         let mut airfoils = Vec::with_capacity(chosen.len());
         for (name, spec) in chosen {
-            let (foil, more) =
-                solver_airfoil(&spec, settings.panels, settings.derotate).map_err(|source| {
-                    BatchError::Airfoil {
-                        spec: spec.clone(),
-                        source,
-                    }
-                })?;
+            let (foil, more) = solver_airfoil(
+                &spec,
+                settings.panels,
+                settings.derotate,
+                &settings.geometry,
+            )
+            .map_err(|source| BatchError::Airfoil {
+                spec: spec.clone(),
+                source,
+            })?;
             notes.extend(more);
             airfoils.push((name, spec, foil));
         }
@@ -382,7 +388,10 @@ impl Batch {
             seconds,
             status,
         };
-        let meta = table_meta(foil, s.panels, &s.base);
+        let meta = TableMeta {
+            geometry: s.geometry.clone(),
+            ..table_meta(foil, s.panels, &s.base)
+        };
         if let Some((points, converged)) =
             s.resume.then(|| finished(&path, &meta, &s.grid)).flatten()
         {
@@ -390,7 +399,8 @@ impl Batch {
             return Ok(row(points, converged, 0.0, TableStatus::Kept));
         }
         let start = Instant::now();
-        let built = build_table(foil, s.panels, &s.grid, &s.base, s.threads, on_points);
+        let built = build_table(foil, s.panels, &s.grid, &s.base, s.threads, on_points)
+            .map(|t| t.with_geometry(&s.geometry));
         let seconds = (start.elapsed().as_secs_f64() * 100.0).round() / 100.0;
         let why = match built {
             Ok(table) if table.census().converged > 0 => {

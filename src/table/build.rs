@@ -226,6 +226,7 @@ pub(crate) fn table_meta(foil: &Airfoil, panels: usize, base: &ViscousParams) ->
         transition: base.transition,
         panels,
         solver: format!("polargen {}", env!("CARGO_PKG_VERSION")),
+        geometry: Vec::new(),
     }
 }
 

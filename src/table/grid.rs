@@ -5,6 +5,7 @@ use super::lookup::{bracket, AlphaCurve};
 use super::meta::TableMeta;
 use super::post_stall::PostStallParams;
 use super::validation::{check_axis, check_meta, check_polar, check_shared_alphas, check_size};
+use crate::geometry::ShapeOp;
 use crate::limits::MAX_RE;
 use crate::section::{massive_separation, FlowCondition, PolarPoint};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
@@ -216,6 +217,13 @@ impl PolarTable {
     /// The same table with other 360°-extension parameters.
     pub fn with_post_stall(self, params: PostStallParams) -> Result<Self, TableError> {
         Self::with_params(self.meta, self.re, self.mach, self.polars, params)
+    }
+
+    /// The same table recording `ops` as the geometry operations its section was made with
+    /// ([`TableMeta::geometry`]).
+    pub fn with_geometry(mut self, ops: &[ShapeOp]) -> Self {
+        self.meta.geometry = ops.to_vec();
+        self
     }
 
     /// Metadata.

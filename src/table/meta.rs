@@ -1,5 +1,6 @@
 //! [`TableMeta`]: how a table was made, and its serde form.
 
+use crate::geometry::{flap_deg, ShapeOp};
 use crate::section::Transition;
 use serde::{Deserialize, Serialize};
 
@@ -16,6 +17,18 @@ pub struct TableMeta {
     pub panels: usize,
     /// Solver name and version that produced the polars.
     pub solver: String,
+    /// Geometry operations applied to the airfoil before it was solved, in order (empty: the
+    /// section as given; tables written before operations existed read as empty).
+    pub geometry: Vec<ShapeOp>,
+}
+
+impl TableMeta {
+    /// The flap deflection \[deg\, positive trailing edge down\] of the section when a flap
+    /// operation made it: the parameter of a flap sweep, one table per deflection (OpenFAST
+    /// AeroDyn's `UserProp`).
+    pub fn flap_deg(&self) -> Option<f64> {
+        flap_deg(&self.geometry)
+    }
 }
 
 /// The serde form of [`TableMeta`] (the JSON table format): `ncrit` when both surfaces have the
@@ -33,6 +46,8 @@ struct MetaRecord {
     xtr_bot_set: f64,
     panels: usize,
     solver: String,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    geometry: Vec<ShapeOp>,
 }
 
 impl From<TableMeta> for MetaRecord {
@@ -49,6 +64,7 @@ impl From<TableMeta> for MetaRecord {
             xtr_bot_set: t.xtr_bot,
             panels: m.panels,
             solver: m.solver,
+            geometry: m.geometry,
         }
     }
 }
@@ -67,6 +83,7 @@ impl TryFrom<MetaRecord> for TableMeta {
             transition: Transition::sides(ncrit_top, ncrit_bot, r.xtr_top_set, r.xtr_bot_set),
             panels: r.panels,
             solver: r.solver,
+            geometry: r.geometry,
         })
     }
 }

@@ -32,6 +32,7 @@
 //!     transition: Transition::default(),
 //!     panels: 160,
 //!     solver: "example".into(),
+//!     geometry: Vec::new(),
 //! };
 //! let polar = |re: f64| -> Vec<PolarPoint> {
 //!     (-5..=10)
@@ -74,6 +75,7 @@ mod build;
 mod census;
 mod error;
 mod fixed_condition;
+mod flap_sweep;
 mod grid;
 mod io;
 mod lookup;
@@ -92,6 +94,7 @@ pub use build::{
 pub use census::TableCensus;
 pub use error::TableError;
 pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
+pub use flap_sweep::flap_sweep;
 pub use grid::PolarTable;
 pub use io::{
     check_lookup_table, check_table_output, parse_c81, parse_table, read_lookup_table, read_table,

@@ -20,6 +20,7 @@ pub fn meta(name: &str) -> TableMeta {
         transition: Transition::default(),
         panels: 160,
         solver: "polargen 0.1.0".to_string(),
+        geometry: Vec::new(),
     }
 }
 

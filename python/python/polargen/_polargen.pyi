@@ -56,6 +56,27 @@ class Airfoil:
         (XFOIL PANE), as ``polar``, ``point`` and ``table`` prepare the airfoil."""
     def to_selig(self) -> str:
         """The contour as Selig-format text (name line, then x y per line)."""
+    def with_thickness(self, thickness: float) -> "Airfoil":
+        """The section with maximum thickness ``thickness`` (chord units; XFOIL GDES TSET:
+        the thickness line scaled, the camber line kept), as ``--thickness``."""
+    def with_camber(self, camber: float) -> "Airfoil":
+        """The section with maximum camber ``camber`` (chord units, signed; TSET scales the
+        camber line and cannot create one), as ``--camber``."""
+    def with_te_gap(self, gap: float, blend: float = 1.0) -> "Airfoil":
+        """The section with trailing-edge gap ``gap`` (chord units), the change blended over
+        ``blend`` of the chord (0…1; XFOIL TGAP), as ``--te-gap``."""
+    def with_flap(self, x: float, y: float, deg: float) -> "Airfoil":
+        """The section with a plain flap hinged at (``x``, ``y``) in chord units, deflected by
+        ``deg`` degrees, positive trailing edge down (XFOIL FLAP), as ``--flap X:Y:DEG``."""
+    def blended(self, other: "Airfoil", fraction: float) -> "Airfoil":
+        """``1 - fraction`` of this section and ``fraction`` of ``other``, points paired by
+        chordwise station on each surface (XFOIL INTX, as XFLR5), as ``--blend``."""
+    def thickness_camber(self) -> Dict[str, float]:
+        """Maximum thickness and camber and their chordwise positions, as XFOIL's GDES
+        measures them: ``{"thickness", "x_thickness", "camber", "x_camber"}``."""
+    @property
+    def operations(self) -> List[str]:
+        """The geometry operations that made this section, in their text form."""
     def __len__(self) -> int: ...
 
 class PolarTable:

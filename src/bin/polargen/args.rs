@@ -3,6 +3,7 @@
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Args, Parser, Subcommand};
 use polargen::cli::values::{self, Alphas};
+use polargen::geometry::ShapeOp;
 use polargen::table::TableFormat;
 use polargen::viscous::ViscousParams;
 use std::path::PathBuf;
@@ -58,6 +59,17 @@ pub enum Command {
     /// Man pages (roff): the tool's or a subcommand's on standard output (`polargen man
     /// batch > polargen-batch.1; man ./polargen-batch.1`), or all of them with --out DIR.
     Man(polargen::cli::ManArgs),
+    /// The airfoil in chord units after the geometry operations (Selig); thickness on stderr.
+    Geometry {
+        /// Airfoil: a name, a coordinate file or - for standard input.
+        #[arg(value_name = "NAME|PATH|-")]
+        airfoil: String,
+        #[command(flatten)]
+        shape: Shape,
+        /// Output coordinate file, or - for standard output.
+        #[arg(long, value_name = "FILE|-")]
+        out: PathBuf,
+    },
 }
 
 /// `polargen plot-point` options.
@@ -234,6 +246,16 @@ pub struct RunArgs {
 
     #[command(flatten)]
     pub extension: Extension,
+
+    /// Flap sweep: one table per deflection [deg], comma-separated, about the hinge of --flap
+    /// X:Y; each file named <stem>_flap<DEG><ext> (the deflection is the table's flap_deg).
+    #[arg(
+        long,
+        value_name = "LIST",
+        allow_hyphen_values = true,
+        requires = "flap"
+    )]
+    pub flap_deg: Option<String>,
 }
 
 /// `polargen batch` options (the grid flags as the main job's).
@@ -342,7 +364,8 @@ pub struct Newton {
     pub tolerance: f64,
 }
 
-/// How a coordinate file's shape is taken.
+/// How a coordinate file's shape is taken, and the geometry operations on it (XFOIL GDES;
+/// applied in chord units in the order blend, thickness and camber, te-gap, flap).
 #[derive(Args, Debug)]
 pub struct Shape {
     /// Rotate the coordinates so that the chord line (leading edge to trailing-edge midpoint)
@@ -350,4 +373,33 @@ pub struct Shape {
     /// axis of the file (a contour not in chord units is only scaled and translated).
     #[arg(long)]
     pub derotate: bool,
+    /// Maximum thickness, chord units (XFOIL TSET: thickness line scaled, camber kept).
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = |s: &str| ShapeOp::thickness(s).map_err(|e| e.rule))]
+    pub thickness: Option<ShapeOp>,
+    /// Maximum camber, chord units, signed (XFOIL TSET: camber line scaled, thickness kept).
+    #[arg(long, value_name = "C", allow_hyphen_values = true, value_parser = |s: &str| ShapeOp::camber(s).map_err(|e| e.rule))]
+    pub camber: Option<ShapeOp>,
+    /// Trailing-edge gap G, blended over BLEND (0…1, default 1) of the chord (XFOIL TGAP).
+    #[arg(long, value_name = "G[:BLEND]", allow_hyphen_values = true, value_parser = |s: &str| ShapeOp::te_gap(s).map_err(|e| e.rule))]
+    pub te_gap: Option<ShapeOp>,
+    /// Plain flap, hinge x/c X, y/c Y, deflection DEG, + down (XFOIL FLAP; α, Cm unflapped).
+    #[arg(long, value_name = "X:Y[:DEG]", allow_hyphen_values = true, value_parser = |s: &str| ShapeOp::flap(s).map_err(|e| e.rule))]
+    pub flap: Option<ShapeOp>,
+    /// Blend: F of airfoil OTHER, 1 − F of this one, paired by chord station (XFOIL INTX).
+    #[arg(long, value_name = "OTHER:F", value_parser = |s: &str| ShapeOp::blend(s).map_err(|e| e.rule))]
+    pub blend: Option<ShapeOp>,
+}
+
+impl Shape {
+    /// The operations, in the order they are applied.
+    pub fn ops(&self) -> Vec<ShapeOp> {
+        let all = [
+            &self.blend,
+            &self.thickness,
+            &self.camber,
+            &self.te_gap,
+            &self.flap,
+        ];
+        all.into_iter().flatten().cloned().collect()
+    }
 }

@@ -24,7 +24,7 @@ use clap::CommandFactory;
 
 use polargen::arguments::{self, ArgumentError, TransitionArgs};
 use polargen::cli::{self, Tool};
-use polargen::geometry::{solver_airfoil, Airfoil};
+use polargen::geometry::{shaped_airfoil, solver_airfoil, to_selig_string, Airfoil, ShapeOp};
 use polargen::inviscid::{inviscid_polar_csv, PanelSystem};
 use polargen::output::{check_output_path, write_output, write_stdout, OutputError, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
@@ -35,8 +35,8 @@ use polargen::progress::Progress;
 use polargen::section::{Transition, FREE_XTR};
 use polargen::table::check_table_output;
 use polargen::table::{
-    build_table, read_table, with_cd_max, write_table, Batch, BatchSettings, GridSpec, TableFormat,
-    DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
+    build_table, flap_sweep, read_table, with_cd_max, write_table, Batch, BatchSettings, GridSpec,
+    TableFormat, DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
 };
 use polargen::viscous::distributions::write_distributions_file;
 use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};
@@ -62,6 +62,11 @@ fn main() -> ExitCode {
         Some(Command::Man(args)) => {
             cli::man(Cli::command(), args).and_then(|page| Ok(write_stdout(&page)?))
         }
+        Some(Command::Geometry {
+            airfoil,
+            shape,
+            out,
+        }) => write_geometry(airfoil, shape, out),
         None if cli.run.inviscid => run_inviscid(&cli.run),
         None => run_viscous(&cli.run),
     })
@@ -82,13 +87,29 @@ fn alphas(cli: &GridArgs) -> Result<Vec<f64>> {
     }
 }
 
-/// Load the airfoil and prepare it for the solver ([`solver_airfoil`]); say on stderr what
-/// was changed.
-fn load_airfoil(spec: Option<&str>, panels: usize, shape: &Shape) -> Result<Airfoil> {
+/// Load the airfoil, apply `ops` and prepare it for the solver ([`solver_airfoil`]); say on
+/// stderr what was changed.
+fn load_airfoil(spec: Option<&str>, panels: usize, rot: bool, ops: &[ShapeOp]) -> Result<Airfoil> {
     let spec = spec.context("--airfoil is required")?;
-    let (foil, notes) = solver_airfoil(spec, panels, shape.derotate).context("--airfoil")?;
+    let (foil, notes) = solver_airfoil(spec, panels, rot, ops).context("--airfoil")?;
     notes.iter().for_each(|n| TOOL.say(format!("note: {n}")));
     Ok(foil)
+}
+
+/// `polargen geometry`: the shaped airfoil as a Selig file, its thickness and camber said.
+fn write_geometry(spec: &str, shape: &Shape, out: &Path) -> Result<()> {
+    check_output_path(out).context("--out")?;
+    let (foil, notes) =
+        shaped_airfoil(spec, shape.derotate, &shape.ops()).context(spec.to_string())?;
+    notes.iter().for_each(|n| TOOL.say(format!("note: {n}")));
+    let gap = foil.te_gap();
+    let measured = foil.thickness_camber()?;
+    TOOL.say(format!("{}: {measured}, TE gap {gap:.5}", foil.name));
+    write_output(out, |w| {
+        w.write_all(to_selig_string(&foil).as_bytes())
+            .map_err(|e| OutputError::io(out, e))
+    })?;
+    Ok(())
 }
 
 /// `--inviscid`: the panel solution at one Mach number.
@@ -101,7 +122,8 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
     if let Some(path) = &cli.out {
         check_output_path(path).context("--out")?;
     }
-    let foil = load_airfoil(cli.airfoil.as_deref(), cli.grid.panels, &cli.grid.shape)?;
+    let (spec, g) = (cli.airfoil.as_deref(), &cli.grid);
+    let foil = load_airfoil(spec, g.panels, g.shape.derotate, &g.shape.ops())?;
     let system = PanelSystem::new(&foil).context("panel system")?;
     let (csv, note) = inviscid_polar_csv(&system, &alphas, mach)?;
     note.into_iter().for_each(|n| TOOL.say(n));
@@ -153,39 +175,45 @@ fn grid_request(cli: &GridArgs) -> Result<(GridSpec, ViscousParams)> {
     Ok((grid, base))
 }
 
-/// The viscous polar(s) or table.
+/// The viscous polar(s) or table; with `--flap-deg` one table per flap deflection.
 fn run_viscous(cli: &RunArgs) -> Result<()> {
     let (grid, base) = grid_request(&cli.grid)?;
     let format =
         TableFormat::for_output(cli.format, cli.out.as_deref()).context("--format/--out")?;
-    let path = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
-    check_table_output(path, format, &grid.reynolds, &grid.mach).context("--out")?;
-    let foil = load_airfoil(cli.airfoil.as_deref(), cli.grid.panels, &cli.grid.shape)?;
-    let progress = TOOL.progress();
-    progress.start(&grid.work(&foil.name, cli.grid.threads));
-    let start = Instant::now();
-    let table = build_table(
-        &foil,
-        cli.grid.panels,
-        &grid,
-        &base,
-        cli.grid.threads,
-        |n| progress.advance(n),
-    )?;
-    progress.finish();
-    let census = table.census();
-    if census.converged == 0 {
-        bail!("{census}: no point converged; no table written");
+    let out = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
+    let ops = cli.grid.shape.ops();
+    let tables = match &cli.flap_deg {
+        Some(list) => flap_sweep(&ops, list, out)?,
+        None => vec![(ops, out.to_path_buf())],
+    };
+    for (_, path) in &tables {
+        check_table_output(path, format, &grid.reynolds, &grid.mach).context("--out")?;
     }
-    let table = with_cd_max(table, cli.extension.cd_max).context("--cd-max")?;
-    // The result first: a summary that cannot be shown must not cost it.
-    let files = write_table(&table, path, Some(format))?;
-    TOOL.say(format!(
-        "{census} in {:.1} s",
-        start.elapsed().as_secs_f64()
-    ));
-    if files.len() > 1 {
-        TOOL.say(format!("wrote {} files", files.len()));
+    let (spec, g) = (cli.airfoil.as_deref(), &cli.grid);
+    for (ops, path) in &tables {
+        let foil = load_airfoil(spec, g.panels, g.shape.derotate, ops)?;
+        let progress = TOOL.progress();
+        progress.start(&grid.work(&foil.name, g.threads));
+        let start = Instant::now();
+        let table = build_table(&foil, g.panels, &grid, &base, g.threads, |n| {
+            progress.advance(n)
+        })?;
+        progress.finish();
+        let census = table.census();
+        if census.converged == 0 {
+            bail!("{census}: no point converged; no table written");
+        }
+        let table =
+            with_cd_max(table.with_geometry(ops), cli.extension.cd_max).context("--cd-max")?;
+        // The result first: a summary that cannot be shown must not cost it.
+        let files = write_table(&table, path, Some(format))?;
+        TOOL.say(format!(
+            "{census} in {:.1} s",
+            start.elapsed().as_secs_f64()
+        ));
+        if files.len() > 1 {
+            TOOL.say(format!("wrote {} files", files.len()));
+        }
     }
     Ok(())
 }
@@ -198,6 +226,7 @@ fn run_batch(args: &BatchArgs) -> Result<()> {
         base,
         panels: args.grid.panels,
         derotate: args.grid.shape.derotate,
+        geometry: args.grid.shape.ops(),
         format: args.format,
         shard: args.shard,
         resume: args.resume,
@@ -301,7 +330,8 @@ fn solve_cases(args: &PointCase) -> Result<(Airfoil, Vec<(String, ViscousSolutio
         .iter()
         .map(|&x| transition(&args.ncrit, [("--xtr", x); 2]))
         .collect::<Result<Vec<_>>>()?;
-    let foil = load_airfoil(Some(&args.airfoil), args.panels, &args.shape)?;
+    let (spec, shape) = (Some(args.airfoil.as_str()), &args.shape);
+    let foil = load_airfoil(spec, args.panels, shape.derotate, &shape.ops())?;
     let mut runs: Vec<(String, ViscousSolution)> = Vec::new();
     for transition in settings {
         let params = ViscousParams {

@@ -3,6 +3,7 @@
 //! read with it.
 
 use super::atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
+use super::propeller::{PropellerSections, SharedSection};
 use crate::arguments::ArgumentError;
 use crate::input::{read_input, InputError};
 use crate::section::SectionAero;
@@ -18,7 +19,7 @@ mod powerplant;
 mod rotor_params;
 mod wing;
 
-pub use powerplant::{BladeGeometry, EngineParams, PropellerParams};
+pub use powerplant::{BladeGeometry, EngineParams, PropellerParams, SectionFile};
 pub use rotor_params::{BladeParams, HubParams, RotorParams, RotorPreset, MAX_BLADES};
 pub use wing::{WingError, WingLoads, WingParams};
 
@@ -189,9 +190,10 @@ pub struct Aircraft {
     /// Fixed wing (none, or zero area, = a pure gyroplane).
     #[serde(default)]
     pub wing: Option<WingParams>,
-    /// The propeller's section table, read with the preset.
+    /// The propeller's section tables with their thickness ratios (NaN for the one table of
+    /// `section_table`), read with the preset.
     #[serde(skip)]
-    propeller_section: Option<Arc<PolarTable>>,
+    propeller_sections: Vec<(f64, Arc<PolarTable>)>,
     /// The wing's section table, read with the preset when its `[wing]` names one.
     #[serde(skip)]
     wing_section: Option<Arc<PolarTable>>,
@@ -243,12 +245,23 @@ impl Aircraft {
     pub fn from_toml_str(text: &str, origin: &str) -> Result<Self, AircraftError> {
         let mut aircraft = Self::parse_toml(text, origin)?;
         let folder = Path::new(origin).parent().unwrap_or(Path::new(""));
-        let table = read_lookup_table(&folder.join(&aircraft.propeller.section_table)).map_err(
-            |source| AircraftError::PropellerSection {
-                path: origin.to_string(),
-                source,
-            },
-        )?;
+        let read = |file: &Path| {
+            read_lookup_table(&folder.join(file)).map_err(|source| {
+                AircraftError::PropellerSection {
+                    path: origin.to_string(),
+                    source,
+                }
+            })
+        };
+        let p = &aircraft.propeller;
+        let sections = match (&p.section_table, &p.sections) {
+            (Some(file), _) => vec![(f64::NAN, Arc::new(read(file)?))],
+            (None, Some(list)) => list
+                .iter()
+                .map(|s| Ok((s.thickness_ratio, Arc::new(read(&s.table)?))))
+                .collect::<Result<_, AircraftError>>()?,
+            (None, None) => Vec::new(),
+        };
         if let Some(path) = aircraft
             .wing
             .as_ref()
@@ -262,11 +275,13 @@ impl Aircraft {
             })?;
             aircraft.wing_section = Some(Arc::new(wing));
         }
-        Ok(aircraft.with_propeller_section(table))
+        aircraft.propeller_sections = sections;
+        Ok(aircraft)
     }
 
     /// Parses and checks a TOML preset held in memory without reading its propeller section
-    /// table (give it with [`Aircraft::with_propeller_section`]); `origin` names it in errors.
+    /// tables (give them with [`Aircraft::with_propeller_section`] or
+    /// [`Aircraft::with_propeller_sections`]); `origin` names it in errors.
     pub fn parse_toml(text: &str, origin: &str) -> Result<Self, AircraftError> {
         let aircraft: Aircraft = toml::from_str(text).map_err(|e| {
             let rotor_only = toml::from_str::<toml::Table>(text).is_ok_and(|t| {
@@ -289,17 +304,37 @@ impl Aircraft {
         Ok(aircraft)
     }
 
-    /// The preset with `table` as its propeller section.
+    /// The preset with `table` as its propeller section along the whole blade.
     pub fn with_propeller_section(mut self, table: PolarTable) -> Self {
-        self.propeller_section = Some(Arc::new(table));
+        self.propeller_sections = vec![(f64::NAN, Arc::new(table))];
         self
     }
 
-    /// The propeller's section, read with the preset.
-    pub fn propeller_section(&self) -> Option<Arc<dyn SectionAero + Send + Sync>> {
-        self.propeller_section
-            .clone()
-            .map(|t| t as Arc<dyn SectionAero + Send + Sync>)
+    /// The preset with `tables` as its propeller's sections by thickness ratio
+    /// (`(t/c, table)`), in the order of the preset's `propeller.sections`.
+    pub fn with_propeller_sections(mut self, tables: Vec<(f64, PolarTable)>) -> Self {
+        self.propeller_sections = tables.into_iter().map(|(t, s)| (t, Arc::new(s))).collect();
+        self
+    }
+
+    /// The propeller's sections, read with the preset (`None` before they are given).
+    pub fn propeller_sections(&self) -> Option<PropellerSections> {
+        let members = &self.propeller_sections;
+        let shared = |t: &Arc<PolarTable>| Arc::clone(t) as SharedSection;
+        match members.as_slice() {
+            [] => None,
+            [(t, table)] if t.is_nan() => Some(PropellerSections::single(shared(table))),
+            _ => PropellerSections::by_thickness(
+                members.iter().map(|(t, s)| (*t, shared(s))).collect(),
+            )
+            .ok(),
+        }
+    }
+
+    /// The propeller's section tables with their thickness ratios (NaN for one table along
+    /// the whole blade).
+    pub fn propeller_tables(&self) -> &[(f64, Arc<PolarTable>)] {
+        &self.propeller_sections
     }
 
     /// The preset with its wing's area set to `area_m2` at the same span, incidence and

@@ -11,8 +11,14 @@ use std::path::PathBuf;
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PropellerParams {
-    /// Polar table of the blade section, a path relative to the preset's folder.
-    pub section_table: PathBuf,
+    /// Polar table of the blade section along the whole blade, a path relative to the
+    /// preset's folder (or `sections`, not both).
+    #[serde(default)]
+    pub section_table: Option<PathBuf>,
+    /// The blade's sections by thickness ratio, interpolated along the blade in
+    /// `blade.thickness_ratio` (or `section_table`, not both).
+    #[serde(default)]
+    pub sections: Option<Vec<SectionFile>>,
     /// Calibration point: airspeed \[kt\] …
     pub calib_speed_kt: f64,
     /// … thrust there \[N\] …
@@ -21,6 +27,16 @@ pub struct PropellerParams {
     pub calib_engine_rpm: f64,
     /// Blade geometry.
     pub blade: BladeGeometry,
+}
+
+/// One member of a family of propeller sections: its thickness ratio and polar table.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SectionFile {
+    /// Thickness ratio t/c of the section.
+    pub thickness_ratio: f64,
+    /// Its polar table, a path relative to the preset's folder.
+    pub table: PathBuf,
 }
 
 /// Blade geometry of a propeller: the chord and twist distributions along the radius.
@@ -37,6 +53,10 @@ pub struct BladeGeometry {
     pub chord_over_diameter: Vec<f64>,
     /// Blade angle at each station relative to the one at 0.75 R \[deg\] (the twist).
     pub twist_deg: Vec<f64>,
+    /// Thickness ratio t/c at each station: which sections of the family each annulus reads
+    /// (needed with `propeller.sections`).
+    #[serde(default)]
+    pub thickness_ratio: Option<Vec<f64>>,
     /// Number of equal annuli from the first station to the tip.
     pub annuli: usize,
 }
@@ -67,6 +87,45 @@ impl PropellerParams {
             "must be above 0 and at most 300 kt",
         )?;
         positive("propeller.calib_thrust_n", self.calib_thrust_n)?;
+        match (
+            &self.section_table,
+            &self.sections,
+            &self.blade.thickness_ratio,
+        ) {
+            (Some(_), None, _) => {}
+            (None, Some(list), Some(t)) if !list.is_empty() => {
+                let field = "propeller.sections.thickness_ratio";
+                let ratios: Vec<f64> = list.iter().map(|s| s.thickness_ratio).collect();
+                each(field, &ratios, |v| v > 0.0 && v < 1.0, "must be in (0, 1)")?;
+                increasing(field, &ratios)?;
+                same_length(
+                    "propeller.blade.thickness_ratio",
+                    t,
+                    self.blade.r_over_r.len(),
+                    "r_over_r",
+                )?;
+                each(
+                    "propeller.blade.thickness_ratio",
+                    t,
+                    |v| v > 0.0 && v < 1.0,
+                    "must be in (0, 1)",
+                )?;
+            }
+            (None, Some(list), _) if !list.is_empty() => {
+                return Err(AircraftError::Invalid {
+                    field: "propeller.blade.thickness_ratio",
+                    value: 0.0,
+                    reason: "entries: needed with propeller.sections".into(),
+                })
+            }
+            _ => {
+                return Err(AircraftError::Invalid {
+                    field: "propeller.section_table",
+                    value: 0.0,
+                    reason: "entries: give either section_table or sections (one or more)".into(),
+                })
+            }
+        }
         positive("propeller.calib_engine_rpm", self.calib_engine_rpm)?;
         let b = &self.blade;
         positive("propeller.blade.diameter_m", b.diameter_m)?;

@@ -20,15 +20,16 @@
 //! speeds, the full-throttle rpm, the static thrust — is predicted.
 
 mod annulus;
+mod sections;
 
 use super::aircraft::{Aircraft, BladeGeometry};
 use super::atmosphere::Atmosphere;
 use super::engine::Engine;
 use super::KT_TO_MS;
 use crate::numerics::roots::bracketed_root;
-use crate::section::SectionAero;
 use annulus::{AnnulusFlow, SectionSample};
-use std::sync::Arc;
+use sections::StationSection;
+pub use sections::{PropellerSections, SectionsError, SharedSection};
 
 /// Errors of the propeller and powerplant models.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -100,6 +101,8 @@ struct Station {
     chord: f64,
     /// Blade angle relative to the one at 0.75 R \[rad\].
     twist: f64,
+    /// The annulus's section (its place in a family by thickness ratio).
+    section: StationSection,
 }
 
 /// A fixed-pitch propeller: blade geometry, section and blade angle.
@@ -112,7 +115,7 @@ pub struct Propeller {
     /// Blade angle of the section chord line at 0.75 R from the plane of rotation \[rad\].
     pub pitch_075: f64,
     stations: Vec<Station>,
-    section: Arc<dyn SectionAero + Send + Sync>,
+    sections: PropellerSections,
 }
 
 impl std::fmt::Debug for Propeller {
@@ -152,6 +155,8 @@ pub struct PropellerPoint {
     /// Share of the annuli at whose α the table's points are in massive separation (the 360°
     /// extension stands in for them; counted in `post_stall_fraction` too).
     pub separated_fraction: f64,
+    /// Share of the annuli whose section lookup bridged unconverged table points.
+    pub bridged_fraction: f64,
     /// ψ of each annulus (the warm start of a neighbouring point).
     psi: Vec<f64>,
 }
@@ -180,15 +185,13 @@ fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
 }
 
 impl Propeller {
-    /// The propeller of blade `geometry` with `section` at blade angle `pitch_075` \[rad\] at
+    /// The propeller of blade `geometry` with `sections` at blade angle `pitch_075` \[rad\] at
     /// 0.75 R. The blade runs from the first station to the tip in `geometry.annuli` equal
-    /// annuli; chord and twist are linear between stations, the last interval continued to
-    /// the tip.
-    pub fn new(
-        geometry: &BladeGeometry,
-        section: Arc<dyn SectionAero + Send + Sync>,
-        pitch_075: f64,
-    ) -> Self {
+    /// annuli; chord, twist and thickness ratio are linear between stations, the last
+    /// interval continued to the tip; each annulus reads the sections at its thickness ratio
+    /// ([`PropellerSections`]; a blade without thickness ratios, or one section, reads the
+    /// thinnest everywhere).
+    pub fn new(geometry: &BladeGeometry, sections: PropellerSections, pitch_075: f64) -> Self {
         let (x, c, tw) = (
             &geometry.r_over_r,
             &geometry.chord_over_diameter,
@@ -202,11 +205,16 @@ impl Propeller {
         let stations = (0..n)
             .map(|k| {
                 let xc = root + (k as f64 + 0.5) * dx;
+                let thickness = geometry
+                    .thickness_ratio
+                    .as_ref()
+                    .map_or(f64::NAN, |t| interpolate(x, t, xc));
                 Station {
                     x: xc,
                     dr: dx * radius,
                     chord: interpolate(x, c, xc).max(0.0) * geometry.diameter_m,
                     twist: (interpolate(x, tw, xc) - twist_075).to_radians(),
+                    section: sections.at(thickness),
                 }
             })
             .collect();
@@ -215,7 +223,7 @@ impl Propeller {
             blades: geometry.blades,
             pitch_075,
             stations,
-            section,
+            sections,
         }
     }
 
@@ -251,8 +259,9 @@ impl Propeller {
         let (mut thrust, mut torque) = (0.0, 0.0);
         let (mut clamped, mut stalled, mut supercritical) = (0usize, 0usize, 0usize);
         let mut separated = 0usize;
+        let mut bridged = 0usize;
         let mut psis = Vec::with_capacity(self.stations.len());
-        let section = self.section.as_ref();
+        let sections = &self.sections;
         for (k, s) in self.stations.iter().enumerate() {
             let r = s.x * radius;
             let flow = AnnulusFlow {
@@ -266,7 +275,8 @@ impl Propeller {
             };
             let re_per_speed = air.density * s.chord / air.viscosity;
             let lookup = |alpha: f64, w: f64| {
-                section.lookup(alpha.to_degrees(), re_per_speed * w, w / air.speed_of_sound)
+                let (re, mach) = (re_per_speed * w, w / air.speed_of_sound);
+                sections.lookup(&s.section, alpha.to_degrees(), re, mach)
             };
             let sample_at = |alpha: f64, w: f64| {
                 let l = lookup(alpha, w);
@@ -291,6 +301,7 @@ impl Propeller {
             stalled += usize::from(l.post_stall);
             supercritical += usize::from(l.supercritical);
             separated += usize::from(l.massive_separation);
+            bridged += usize::from(l.bridged);
             // Blade-element loads per unit radius of all blades (Kutta–Joukowski with the
             // converged circulation): ½ρW²Bc(c_l cos φ − c_d sin φ) and ×r for the torque.
             let q = 0.5 * air.density * t.w * t.w * blades * s.chord * s.dr;
@@ -313,6 +324,7 @@ impl Propeller {
             post_stall_fraction: stalled as f64 / count,
             supercritical_fraction: supercritical as f64 / count,
             separated_fraction: separated as f64 / count,
+            bridged_fraction: bridged as f64 / count,
             psi: psis,
         })
     }
@@ -320,7 +332,8 @@ impl Propeller {
     /// The blade angle at 0.75 R \[rad\] at which the propeller gives `thrust` \[N\] at airspeed
     /// `v` and `rev_per_s` in `air`: the smallest one, found by a scan upwards in 2° steps and
     /// refined (thrust rises with the blade angle until the blade stalls, so the smallest
-    /// solution is the attached-flow one).
+    /// solution is the attached-flow one). Blade angles at the bottom of the scan at which an
+    /// annulus has no solution are passed over.
     pub fn pitch_for_thrust(
         &self,
         air: &Atmosphere,
@@ -338,24 +351,37 @@ impl Propeller {
             Ok(e)
         };
         let (lo, hi) = CALIBRATION_PITCH_RANGE_DEG;
-        let mut below = (lo.to_radians(), excess(lo.to_radians())?);
+        let mut below: Option<(f64, f64)> = None;
         let mut deg = lo;
-        while below.1 < 0.0 {
-            deg += CALIBRATION_PITCH_STEP_DEG;
-            if deg > hi {
-                return Err(PropellerError::Calibration(
-                    "no blade angle between 0° and 60° gives the calibration thrust",
-                ));
-            }
+        while deg <= hi {
             let pitch = deg.to_radians();
-            let above = (pitch, excess(pitch)?);
-            if above.1 >= 0.0 {
-                return bracketed_root(excess, below, above, PITCH_TOLERANCE, MAX_SOLVE_ITERATIONS);
+            match excess(pitch) {
+                Ok(e) if e < 0.0 => below = Some((pitch, e)),
+                Ok(e) => {
+                    let Some(below) = below else {
+                        return Err(PropellerError::Calibration(
+                            "the propeller gives the calibration thrust already at the \
+                             smallest blade angle it can be solved at",
+                        ));
+                    };
+                    return bracketed_root(
+                        excess,
+                        below,
+                        (pitch, e),
+                        PITCH_TOLERANCE,
+                        MAX_SOLVE_ITERATIONS,
+                    );
+                }
+                // The smallest blade angles put the outer annuli deep into negative α, where
+                // an annulus may have no momentum solution (a windmilling, stalled tip): far
+                // below the calibration thrust, so the scan goes on upwards.
+                Err(PropellerError::NotConverged { .. }) if below.is_none() => {}
+                Err(e) => return Err(e),
             }
-            below = above;
+            deg += CALIBRATION_PITCH_STEP_DEG;
         }
         Err(PropellerError::Calibration(
-            "the propeller gives the calibration thrust already at 0° blade angle",
+            "no blade angle between 0° and 60° gives the calibration thrust",
         ))
     }
 }
@@ -388,11 +414,11 @@ impl Powerplant {
     /// (thrust at airspeed and engine rpm, ISA sea level).
     pub fn from_aircraft(aircraft: &Aircraft) -> Result<Self, PropellerError> {
         let p = &aircraft.propeller;
-        let section = aircraft
-            .propeller_section()
+        let sections = aircraft
+            .propeller_sections()
             .ok_or(PropellerError::NoSection)?;
         let engine = Engine::from_params(&aircraft.engine);
-        let propeller = Propeller::new(&p.blade, section, 0.0);
+        let propeller = Propeller::new(&p.blade, sections, 0.0);
         let pitch = propeller.pitch_for_thrust(
             &Atmosphere::isa(0.0),
             p.calib_speed_kt * KT_TO_MS,

@@ -541,6 +541,7 @@ pub fn parse_c81(text: &str, stem: &str) -> Result<PolarTable, TableError> {
         transition: Transition::default(),
         panels: 0,
         solver: "C81 file".to_string(),
+        geometry: Vec::new(),
     };
     PolarTable::new(meta, vec![re], mach, polars)
 }

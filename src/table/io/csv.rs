@@ -12,9 +12,14 @@
 //! the Mach number (Cp_min < Cp*), unknown (empty field, `None`) when `cpmin` is; likewise
 //! `xsep_top`, `xsep_bot` (NaN when absent) and `massive_separation`, which follows from them
 //! when absent ([`massive_separation`]). A (Re, M) node without rows cannot be represented and
-//! reads back as a ragged grid.
+//! reads back as a ragged grid. A table whose section was made by geometry operations has two
+//! more columns at the end: `geometry`, the operations in their text form (`thickness 0.24;
+//! flap 0.75:0:10`, read back into the metadata), and `flap_deg`, the flap deflection when a
+//! flap is among them (empty otherwise), so that the tables of a flap sweep are told apart by
+//! one number.
 
 use super::supercritical_from_cpmin;
+use crate::geometry::{parse_shape_ops, shape_ops_text};
 use crate::output::write_output;
 use crate::section::{massive_separation, FlowCondition, PolarPoint, Transition};
 use crate::table::{PolarTable, TableError, TableMeta};
@@ -53,6 +58,9 @@ pub const COLUMNS: [&str; 24] = [
 /// Columns a CSV file must have.
 pub const REQUIRED: usize = 14;
 
+/// Columns after [`COLUMNS`] of a table whose section was made by geometry operations.
+pub const SHAPE_COLUMNS: [&str; 2] = ["geometry", "flap_deg"];
+
 /// Index of `ncrit` in [`COLUMNS`], and the per-side columns that replace it.
 const NCRIT: usize = 3;
 const NCRIT_SIDES: [&str; 2] = ["ncrit_top", "ncrit_bot"];
@@ -84,8 +92,16 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
         ),
     };
     let mut out = csv::Writer::from_writer(w);
-    out.write_record(with_ncrit(COLUMNS, &ncrit_names))
-        .map_err(werr)?;
+    // The geometry columns, only for a section made by geometry operations.
+    let (shape_names, shape): (&[&str], Vec<String>) = if m.geometry.is_empty() {
+        (&[], Vec::new())
+    } else {
+        let flap = m.flap_deg().map_or(String::new(), |d| d.to_string());
+        (&SHAPE_COLUMNS, vec![shape_ops_text(&m.geometry), flap])
+    };
+    let mut header = with_ncrit(COLUMNS, &ncrit_names);
+    header.extend(shape_names);
+    out.write_record(header).map_err(werr)?;
     let panels = m.panels.to_string();
     let (xt, xb) = (t.xtr_top.to_string(), t.xtr_bot.to_string());
     for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
@@ -117,7 +133,9 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
                 &p.xsep_bot.to_string(),
                 flag_field(p.massive_separation),
             ];
-            out.write_record(with_ncrit(fields, &ncrit)).map_err(werr)?;
+            let mut record = with_ncrit(fields, &ncrit);
+            record.extend(shape.iter().map(String::as_str));
+            out.write_record(record).map_err(werr)?;
         }
     }
     out.flush().map_err(TableError::Write)
@@ -172,6 +190,7 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
         [Some(top), Some(bot)] => Some([top, bot]),
         _ => return Err(TableError::MissingColumn(COLUMNS[NCRIT].to_string())),
     };
+    let geometry_col = header.iter().position(|h| h == SHAPE_COLUMNS[0]);
     let mut meta: Option<(TableMeta, u64)> = None;
     let mut index: HashMap<(u64, u64), usize> = HashMap::new();
     let mut polars: Vec<(FlowCondition, Vec<PolarPoint>)> = Vec::new();
@@ -195,6 +214,13 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
             transition: Transition::sides(ncrit_top, ncrit_bot, row.num(4)?, row.num(5)?),
             panels: row.opt_int(17)?.unwrap_or(0) as usize,
             solver: row.opt_text(18).unwrap_or("").to_string(),
+            geometry: match geometry_col.and_then(|i| rec.get(i)) {
+                Some(text) => parse_shape_ops(text).map_err(|e| TableError::Csv {
+                    line,
+                    message: e.to_string(),
+                })?,
+                None => Vec::new(),
+            },
         };
         match &meta {
             None => meta = Some((this, line)),
@@ -330,6 +356,7 @@ pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableErr
         transition: Transition::default(),
         panels: 0,
         solver: "XFOIL polar file".to_string(),
+        geometry: Vec::new(),
     };
     PolarTable::new(
         meta,
@@ -355,6 +382,8 @@ fn meta_difference(a: &TableMeta, b: &TableMeta) -> Option<&'static str> {
         Some("panels")
     } else if a.solver != b.solver {
         Some("solver")
+    } else if a.geometry != b.geometry {
+        Some("geometry")
     } else {
         None
     }

@@ -331,6 +331,7 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
         transition: Transition::sides(ncrit_top, ncrit_bot, xt, xb),
         panels: 0,
         solver,
+        geometry: Vec::new(),
     };
     PolarTable::new(meta, vec![re], vec![mach], vec![points])
 }

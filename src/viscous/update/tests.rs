@@ -16,7 +16,7 @@ const ALPHA: f64 = 2.0;
 
 /// The layout and the marched state, with the closures.
 fn marched() -> (StationLayout, BlState, crate::boundary_layer::BlModel) {
-    let (foil, _) = solver_airfoil("naca0012", 160, false).unwrap();
+    let (foil, _) = solver_airfoil("naca0012", 160, false, &[]).unwrap();
     let system = PanelSystem::new(&foil).unwrap();
     let model = PanelModel::at_alpha(&system, ALPHA).unwrap();
     let q = model.speeds(ALPHA);
