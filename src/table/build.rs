@@ -182,6 +182,12 @@ pub(crate) fn table_meta(foil: &Airfoil, panels: usize, base: &ViscousParams) ->
         ncrit_bot: base.ncrit_bot,
         xtr_top_set: base.xtr_top,
         xtr_bot_set: base.xtr_bot,
+        // Unknown only for a contour the spline cannot take, which the solver refuses anyway.
+        thickness: foil
+            .max_thickness()
+            .ok()
+            .filter(|t| *t > 0.0 && *t < 1.0)
+            .unwrap_or(f64::NAN),
         panels,
         solver: format!("polargen {}", env!("CARGO_PKG_VERSION")),
     }

@@ -41,8 +41,9 @@ pub const XTR_SLACK: f64 = 1e-3;
 /// A value beyond is not a section coefficient (`Cl 1e300` at a converged point).
 pub const COEFFICIENT_BOUNDS: [(&str, f64); 3] = [("cl", MAX_SECTION_CL), ("cd", 4.0), ("cm", 4.0)];
 
-/// Check the metadata: a finite, positive N_crit, transition settings in [0, 1], names
-/// without control characters (they head text files).
+/// Check the metadata: a finite, positive N_crit, transition settings in [0, 1], a thickness
+/// in (0, 1) — each may be NaN, unknown —, names without control characters (they head text
+/// files).
 pub(super) fn check_meta(meta: &TableMeta) -> Result<(), TableError> {
     let bad = |field, value: f64, rule| TableError::BadMeta {
         field,
@@ -54,7 +55,7 @@ pub(super) fn check_meta(meta: &TableMeta) -> Result<(), TableError> {
         None => vec![("ncrit_top", meta.ncrit_top), ("ncrit_bot", meta.ncrit_bot)],
     };
     for (field, n) in ncrit {
-        if !(n.is_finite() && n > 0.0) {
+        if !(n.is_nan() || (n.is_finite() && n > 0.0)) {
             return Err(bad(field, n, "a positive number"));
         }
     }
@@ -62,9 +63,13 @@ pub(super) fn check_meta(meta: &TableMeta) -> Result<(), TableError> {
         ("xtr_top_set", meta.xtr_top_set),
         ("xtr_bot_set", meta.xtr_bot_set),
     ] {
-        if !(0.0..=1.0).contains(&x) {
+        if !(x.is_nan() || (0.0..=1.0).contains(&x)) {
             return Err(bad(field, x, "in [0, 1]"));
         }
+    }
+    let t = meta.thickness;
+    if !(t.is_nan() || (t > 0.0 && t < 1.0)) {
+        return Err(bad("thickness", t, "in (0, 1)"));
     }
     for (field, text) in [("airfoil", &meta.airfoil), ("solver", &meta.solver)] {
         if text.chars().any(char::is_control) {

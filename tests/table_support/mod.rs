@@ -12,6 +12,7 @@ pub fn meta(name: &str) -> TableMeta {
         ncrit_bot: 9.0,
         xtr_top_set: 1.0,
         xtr_bot_set: 1.0,
+        thickness: 0.12,
         panels: 160,
         solver: "polargen 0.1.0".to_string(),
     }

@@ -20,7 +20,7 @@ use polargen::rotor::{
     checked_sweep_speeds, cruise_blade_alpha, simulate_takeoff, trim_aircraft, Aircraft,
     TrimParams, MAX_ISA_ALTITUDE_M,
 };
-use polargen::table::read_lookup_table;
+use polargen::table::{read_lookup_table_with, PolarTable, ReadOptions};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -155,8 +155,8 @@ struct Inputs {
     /// Aircraft preset (TOML).
     #[arg(long)]
     aircraft: PathBuf,
-    /// Section polar table: polargen CSV or JSON, XFOIL .pol, C81, or a CSV of one polar with
-    /// columns alpha, cl, cd[, cm].
+    /// Section polar table: any format polargen convert reads (CSV, JSON, XFOIL .pol, C81,
+    /// AeroDyn, a CSV of one polar with columns alpha, cl, cd[, cm]).
     #[arg(long)]
     table: PathBuf,
 }
@@ -191,6 +191,16 @@ fn load_aircraft(path: &Path, mass: Option<f64>) -> Result<Aircraft> {
         ac.mass_kg = m;
     }
     Ok(ac)
+}
+
+/// A section table (any format `polargen convert` reads), saying on stderr what the reader
+/// assumed (the Reynolds number of a C81 deck, the Mach number of an AeroDyn file).
+pub(crate) fn read_section(path: &Path) -> Result<PolarTable> {
+    let read = read_lookup_table_with(path, &ReadOptions::default())?;
+    read.notes
+        .iter()
+        .for_each(|n| TOOL.say(format!("note: {n}")));
+    Ok(read.table)
 }
 
 /// An airspeed flag ([`check_speed_kt`]).
@@ -246,7 +256,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             check_speed("speed-kt", speed_kt)?;
             check_altitude_m("--altitude-m", altitude_m)?;
             let ac = load_aircraft(&aircraft, mass)?;
-            let section = read_lookup_table(&table)?;
+            let section = read_section(&table)?;
             let t = trim_aircraft(
                 &ac,
                 &section,
@@ -272,7 +282,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
                 check_output_path(path).context("--history")?;
             }
             let ac = load_aircraft(&aircraft, mass)?;
-            let section = read_lookup_table(&table)?;
+            let section = read_section(&table)?;
             let t = simulate_takeoff(&ac, &section)?;
             if let Some(path) = history {
                 write_output(&path, |w| {
@@ -294,8 +304,8 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             json,
         } => {
             let ac = load_aircraft(&aircraft, None)?;
-            let c = read_lookup_table(&clean)?;
-            let d = read_lookup_table(&contaminated)?;
+            let c = read_section(&clean)?;
+            let d = read_section(&contaminated)?;
             let runs = paper_runs(&ac, &c, &d)?;
             if json {
                 print::compare_json(buf, &runs)?;
@@ -311,7 +321,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
         } => {
             let ac = load_aircraft(&aircraft, mass)?;
             let speeds = speeds.checked(&ac)?;
-            let section = read_lookup_table(&table)?;
+            let section = read_section(&table)?;
             let sweep = SpeedSweep::run(&ac, &section, &speeds, None);
             report_sweep(&sweep)?;
             if json {
@@ -330,7 +340,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             check_azimuth_samples("--samples", samples)?;
             let ac = load_aircraft(&aircraft, None)?;
             check_blade_radius("--radius", radius, &ac)?;
-            let section = read_lookup_table(&table)?;
+            let section = read_section(&table)?;
             let curve = cruise_blade_alpha(
                 &ac,
                 &section,

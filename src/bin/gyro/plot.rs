@@ -9,7 +9,7 @@ use polargen::plot::rotor_plots::{alpha_figure, power_plot, takeoff_plot};
 use polargen::plot::{check_image_path, render_with_legend_room};
 use polargen::rotor::study::{blade_alpha_cases, sweep_cases, takeoff_cases, CASE_LABELS};
 use polargen::rotor::{TakeoffResult, TrimResult};
-use polargen::table::{read_lookup_table, PolarTable};
+use polargen::table::PolarTable;
 use std::path::PathBuf;
 
 /// The rotor figures `gyro plot` draws.
@@ -49,8 +49,7 @@ pub struct CaseArgs {
     /// Aircraft preset (TOML).
     #[arg(long)]
     aircraft: PathBuf,
-    /// Polar table of the clean blade section (polargen CSV or JSON, XFOIL .pol, C81, or a
-    /// CSV of one polar).
+    /// Polar table of the clean blade section (any format polargen convert reads).
     #[arg(long)]
     clean: PathBuf,
     /// Polar table of the contaminated blade section (optional: without it only the clean
@@ -74,9 +73,9 @@ pub fn run(kind: PlotKind) -> Result<()> {
     };
     check_image_path(&cases.out).context("--out")?;
     let aircraft = crate::load_aircraft(&cases.aircraft, None)?;
-    let mut tables: Vec<PolarTable> = vec![read_lookup_table(&cases.clean)?];
+    let mut tables: Vec<PolarTable> = vec![crate::read_section(&cases.clean)?];
     if let Some(path) = &cases.contaminated {
-        tables.push(read_lookup_table(path)?);
+        tables.push(crate::read_section(path)?);
     }
     let sections: Vec<&PolarTable> = tables.iter().collect();
     let labels = &CASE_LABELS[..sections.len()];

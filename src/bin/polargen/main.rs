@@ -19,7 +19,7 @@ use std::time::Instant;
 use anyhow::{bail, Context, Result};
 use args::{
     BatchArgs, Cli, Command, ConvertArgs, GridArgs, Ncrit, PlotArgs, PlotPointArgs, PointCase,
-    RunArgs, Shape,
+    ReadArgs, RunArgs, Shape, SummaryArgs,
 };
 use clap::CommandFactory;
 
@@ -34,7 +34,8 @@ use polargen::plot::table_plots::{table_overlay_figure, TableOverlay};
 use polargen::plot::{check_image_path, render};
 use polargen::polar::{parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams};
 use polargen::table::{
-    build_table, read_table, with_cd_max, write_table, Batch, BatchSettings, GridSpec, TableFormat,
+    build_table, read_table_with, summary_csv, summary_json, summary_text, with_cd_max,
+    write_table, Batch, BatchSettings, GridSpec, PolarTable, ReadOptions, TableFormat,
     DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
 };
 use polargen::viscous::distributions::write_distributions_file;
@@ -52,6 +53,7 @@ fn main() -> ExitCode {
     TOOL.finish(match &cli.command {
         Some(Command::Plot(args)) => plot_tables(args),
         Some(Command::Convert(args)) => convert_table(args),
+        Some(Command::Summary(args)) => summary(args),
         Some(Command::PlotPoint(args)) => plot_point(args),
         Some(Command::Batch(args)) => run_batch(args),
         Some(Command::Point { case, csv }) => point(case, csv),
@@ -274,6 +276,7 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
         mach: args.mach,
         title: args.title.as_deref(),
         cd_axis: args.cd_axis,
+        read: read_options(&args.read)?,
     })?;
     render(&figure, &args.out)?;
     Ok(())
@@ -284,12 +287,46 @@ fn convert_table(args: &ConvertArgs) -> Result<()> {
     check_output_path(&args.out).context("--out")?;
     let format = TableFormat::for_output(args.format.as_deref(), Some(&args.out))
         .context("--format/--out")?;
-    let table = with_cd_max(read_table(&args.table)?, args.extension.cd_max).context("--cd-max")?;
+    let table =
+        with_cd_max(read(&args.table, &args.read)?, args.extension.cd_max).context("--cd-max")?;
     let files = write_table(&table, &args.out, Some(format))?;
     if files.len() > 1 {
         TOOL.say(format!("wrote {} files", files.len()));
     }
     Ok(())
+}
+
+/// `--assume-re`, `--assume-mach`, `--user-prop`, checked.
+fn read_options(r: &ReadArgs) -> Result<ReadOptions> {
+    r.assume_re
+        .map_or(Ok(()), |re| arguments::reynolds("--assume-re", re))?;
+    r.assume_mach
+        .map_or(Ok(()), |m| arguments::mach("--assume-mach", m))?;
+    Ok(ReadOptions {
+        re: r.assume_re,
+        mach: r.assume_mach,
+        user_prop: r.user_prop,
+    })
+}
+
+/// Read a table file, saying on stderr what the reader assumed.
+fn read(path: &Path, r: &ReadArgs) -> Result<PolarTable> {
+    let read = read_table_with(path, &read_options(r)?)?;
+    read.notes
+        .iter()
+        .for_each(|n| TOOL.say(format!("note: {n}")));
+    Ok(read.table)
+}
+
+/// `polargen summary`: per-polar numbers as text, CSV or JSON on standard output.
+fn summary(args: &SummaryArgs) -> Result<()> {
+    let rows = read(&args.table, &args.read)?.summaries();
+    let text = match (args.json, args.csv) {
+        (true, _) => summary_json(&rows),
+        (_, true) => summary_csv(&rows),
+        _ => summary_text(&rows),
+    };
+    to_stdout(text.as_bytes())
 }
 
 /// `polargen plot-point`: Cp and the boundary-layer distributions of both surfaces.

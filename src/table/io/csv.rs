@@ -1,12 +1,14 @@
 //! CSV, long form: one row per point, the table's metadata repeated on every row.
 //!
 //! Columns: `airfoil,re,mach,ncrit,xtr_top_set,xtr_bot_set,alpha,cl,cd,cdp,cm,xtr_top,xtr_bot,
-//! converged,cdf,iterations,residual,panels,solver,cpmin,supercritical`; a table whose
+//! converged,cdf,iterations,residual,panels,solver,cpmin,supercritical,thickness`; a table whose
 //! surfaces have different N_crit has the two columns `ncrit_top,ncrit_bot` in place of
 //! `ncrit`. Floats are written with Rust's shortest round-trip formatting (`NaN`, `-inf`
 //! where not finite), so reading a file back gives the identical table. The reader needs the
 //! first fourteen columns (any order; `ncrit` or both `ncrit_top` and `ncrit_bot`); `cdf` (default cd − cdp), `iterations`, `residual`, `panels` (default 0), `solver`
-//! (default empty), `cpmin` and `supercritical` are optional. A file without `cpmin` reads as
+//! (default empty), `cpmin`, `supercritical` and `thickness` (the airfoil's t/c, default
+//! NaN: unknown) are optional. Unknown metadata (a table converted from a C81 deck has no
+//! N_crit) is written `NaN`. A file without `cpmin` reads as
 //! minimum pressure unknown (NaN); without `supercritical` the flag follows from `cpmin` and
 //! the Mach number (Cp_min < Cp*), unknown (empty field, `None`) when `cpmin` is. A (Re, M)
 //! node without rows cannot be represented and reads back as a ragged grid.
@@ -20,7 +22,7 @@ use std::io::{Read, Write};
 use std::path::Path;
 
 /// Column names written, in order.
-pub const COLUMNS: [&str; 21] = [
+pub const COLUMNS: [&str; 22] = [
     "airfoil",
     "re",
     "mach",
@@ -42,6 +44,7 @@ pub const COLUMNS: [&str; 21] = [
     "solver",
     "cpmin",
     "supercritical",
+    "thickness",
 ];
 
 /// Columns a CSV file must have.
@@ -58,16 +61,12 @@ fn with_ncrit<'a>(fields: [&'a str; COLUMNS.len()], ncrit: &'a [String]) -> Vec<
     out
 }
 
-/// Write `table` as long-form CSV to `w`.
-pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableError> {
-    // Records of text fields fail only in the stream below.
-    let werr = |e: csv::Error| {
-        let text = e.to_string();
-        match e.into_kind() {
-            csv::ErrorKind::Io(io) => TableError::Write(io),
-            _ => TableError::Write(std::io::Error::other(text)),
-        }
-    };
+/// Call `record` with the header (the column names) and then each point's fields, as the CSV
+/// writes them: the one definition of the columns, shared with JSON Lines.
+pub(super) fn for_each_record<E>(
+    table: &PolarTable,
+    mut record: impl FnMut(&[&str]) -> Result<(), E>,
+) -> Result<(), E> {
     let m = table.meta();
     let (ncrit, ncrit_names) = match m.common_ncrit() {
         Some(n) => (vec![n.to_string()], vec![COLUMNS[NCRIT].to_string()]),
@@ -76,10 +75,9 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
             NCRIT_SIDES.map(str::to_string).to_vec(),
         ),
     };
-    let mut out = csv::Writer::from_writer(w);
-    out.write_record(with_ncrit(COLUMNS, &ncrit_names))
-        .map_err(werr)?;
+    record(&with_ncrit(COLUMNS, &ncrit_names))?;
     let panels = m.panels.to_string();
+    let thickness = m.thickness.to_string();
     let (xt, xb) = (m.xtr_top_set.to_string(), m.xtr_bot_set.to_string());
     for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
         let (re, mach) = (re.to_string(), mach.to_string());
@@ -110,10 +108,26 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
                     Some(false) => "false",
                     None => "",
                 },
+                &thickness,
             ];
-            out.write_record(with_ncrit(fields, &ncrit)).map_err(werr)?;
+            record(&with_ncrit(fields, &ncrit))?;
         }
     }
+    Ok(())
+}
+
+/// Write `table` as long-form CSV to `w`.
+pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableError> {
+    // Records of text fields fail only in the stream below.
+    let werr = |e: csv::Error| {
+        let text = e.to_string();
+        match e.into_kind() {
+            csv::ErrorKind::Io(io) => TableError::Write(io),
+            _ => TableError::Write(std::io::Error::other(text)),
+        }
+    };
+    let mut out = csv::Writer::from_writer(w);
+    for_each_record(table, |fields| out.write_record(fields).map_err(werr))?;
     out.flush().map_err(TableError::Write)
 }
 
@@ -181,6 +195,7 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
             ncrit_bot,
             xtr_top_set: row.num(4)?,
             xtr_bot_set: row.num(5)?,
+            thickness: row.opt_num(21)?.unwrap_or(f64::NAN),
             panels: row.opt_int(17)?.unwrap_or(0) as usize,
             solver: row.opt_text(18).unwrap_or("").to_string(),
         };
@@ -305,15 +320,8 @@ pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableErr
         stem.split('_')
             .find_map(|part| part.strip_prefix(key).and_then(|v| v.parse::<f64>().ok()))
     };
-    let meta = TableMeta {
-        airfoil: stem.split('_').next().unwrap_or("polar").to_string(),
-        ncrit_top: 9.0,
-        ncrit_bot: 9.0,
-        xtr_top_set: 1.0,
-        xtr_bot_set: 1.0,
-        panels: 0,
-        solver: "XFOIL polar file".to_string(),
-    };
+    // The file gives no N_crit or transition setting: unknown.
+    let meta = TableMeta::unknown(stem.split('_').next().unwrap_or("polar"), "polar CSV");
     PolarTable::new(
         meta,
         vec![stem_number("Re").unwrap_or(1e6)],
@@ -334,6 +342,8 @@ fn meta_difference(a: &TableMeta, b: &TableMeta) -> Option<&'static str> {
         Some("xtr_top_set")
     } else if a.xtr_bot_set.to_bits() != b.xtr_bot_set.to_bits() {
         Some("xtr_bot_set")
+    } else if a.thickness.to_bits() != b.thickness.to_bits() {
+        Some("thickness")
     } else if a.panels != b.panels {
         Some("panels")
     } else if a.solver != b.solver {

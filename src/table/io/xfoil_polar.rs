@@ -306,6 +306,7 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
         ncrit_bot,
         xtr_top_set: xt,
         xtr_bot_set: xb,
+        thickness: f64::NAN,
         panels: 0,
         solver,
     };
