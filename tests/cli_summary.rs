@@ -164,6 +164,9 @@ fn aerodyn_and_c81_convert_by_content() {
         .trim_start()
         .starts_with("2.5e6"));
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(err.contains("Re 2500000 assumed") && !err.contains("--assume-re"), "{err}");
+    assert!(
+        err.contains("Re 2500000 assumed") && !err.contains("--assume-re"),
+        "{err}"
+    );
     std::fs::remove_dir_all(dir).unwrap();
 }

@@ -123,7 +123,11 @@ fn mbdyn_deck_reads_each_block_on_its_own_lists() {
         },
     );
     assert_eq!(at_re.table.re(), &[3e6]);
-    assert!(at_re.notes[1].ends_with("Re 3000000 assumed"), "{:?}", at_re.notes);
+    assert!(
+        at_re.notes[1].ends_with("Re 3000000 assumed"),
+        "{:?}",
+        at_re.notes
+    );
 }
 
 /// The VR-8 deck of c81utils: CL at 12 Mach numbers, CD at 14, CM at 13. A CD value at a
