@@ -100,6 +100,19 @@ def test_ua_block_reads_in_openfast_io_and_weio(grid_files):
     assert len(g.toDataFrame()) == g["NumAlf"]
 
 
+def test_rel_thickness_from_the_geometry(tmp_path):
+    """A table solved from a contour carries its t/c into the AeroDyn file (UA_Mod 7 needs it);
+    a table that does not know it (read from a C81 deck) leaves the line out."""
+    path = tmp_path / "n0012.dat"
+    run("--airfoil", "naca0012", "--re", "1e6", "--alpha", "-4:8:1", "--format", "aerodyn",
+        "--out", path)
+    (table,) = openfast_tables(path)
+    assert table["RelThickness"] == pytest.approx(0.12, abs=6e-4)
+    deck = tmp_path / "deck.dat"
+    run("convert", FOREIGN / "c81utils_vr8.c81", "--format", "aerodyn", "--out", deck)
+    assert "RelThickness" not in deck.with_name("deck_M0.dat").read_text()
+
+
 def test_c_nalpha_of_the_free_table_is_the_attached_flow_slope(grid_files):
     """On the shipped free-transition 8-H-12 (M 0.4, the 8 Re tables), C_nalpha is within 10 %
     of the attached-flow lift slope — that of the tripped table at the same (Re, M), which has

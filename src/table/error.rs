@@ -236,6 +236,16 @@ pub enum TableError {
         /// What each file holds (`polar`, `Re`, `Mach number`).
         per: &'static str,
     },
+    /// A format's header needs a number the table does not know.
+    #[error(
+        "{field} is unknown (the table was read from a file without it): {format} needs a number"
+    )]
+    UnknownInHeader {
+        /// The metadata field.
+        field: &'static str,
+        /// The format, as in a sentence.
+        format: &'static str,
+    },
     /// An AeroDyn airfoil file does not follow the format.
     #[error("AeroDyn line {line}: {message}")]
     AeroDyn {

@@ -298,15 +298,9 @@ fn convert_table(args: &ConvertArgs) -> Result<()> {
 
 /// `--assume-re`, `--assume-mach`, `--user-prop`, checked.
 fn read_options(r: &ReadArgs) -> Result<ReadOptions> {
-    r.assume_re
-        .map_or(Ok(()), |re| arguments::reynolds("--assume-re", re))?;
-    r.assume_mach
-        .map_or(Ok(()), |m| arguments::mach("--assume-mach", m))?;
-    Ok(ReadOptions {
-        re: r.assume_re,
-        mach: r.assume_mach,
-        user_prop: r.user_prop,
-    })
+    let (re, mach) = (r.assume_re, r.assume_mach);
+    let names = ["--assume-re", "--assume-mach"];
+    Ok(ReadOptions::checked(names, re, mach, r.user_prop)?)
 }
 
 /// Read a table file, saying on stderr what the reader assumed.

@@ -36,6 +36,26 @@ pub struct ReadOptions {
     pub user_prop: Option<f64>,
 }
 
+impl ReadOptions {
+    /// The options, `re` and `mach` checked as the command-line checks a Reynolds and a Mach
+    /// number; errors name the argument by `names` (`--assume-re`, `--assume-mach` for the
+    /// CLI).
+    pub fn checked(
+        names: [&str; 2],
+        re: Option<f64>,
+        mach: Option<f64>,
+        user_prop: Option<f64>,
+    ) -> Result<Self, crate::arguments::ArgumentError> {
+        re.map_or(Ok(()), |re| crate::arguments::reynolds(names[0], re))?;
+        mach.map_or(Ok(()), |m| crate::arguments::mach(names[1], m))?;
+        Ok(Self {
+            re,
+            mach,
+            user_prop,
+        })
+    }
+}
+
 /// A table read from a file, with what the reader assumed (one line each).
 #[derive(Clone, Debug)]
 pub struct TableRead {

@@ -39,7 +39,8 @@ const POLAR_FIELDS: [(usize, usize); 8] = [
 const CPMIN_FIELD: usize = 7;
 
 /// Write one polar in XFOIL's polar-file layout to `w`; a value wider than its field is
-/// refused ([`TableError::FieldOverflow`]).
+/// refused ([`TableError::FieldOverflow`]), and so is metadata the header needs but the table
+/// does not know (N_crit and the trips of a table read from a C81 deck).
 pub fn write_polar_to(
     meta: &TableMeta,
     re: f64,
@@ -47,6 +48,18 @@ pub fn write_polar_to(
     points: &[PolarPoint],
     w: &mut dyn Write,
 ) -> Result<(), TableError> {
+    let header = [
+        ("ncrit_top", meta.ncrit_top),
+        ("ncrit_bot", meta.ncrit_bot),
+        ("xtr_top_set", meta.xtr_top_set),
+        ("xtr_bot_set", meta.xtr_bot_set),
+    ];
+    if let Some((field, _)) = header.iter().find(|(_, v)| v.is_nan()) {
+        return Err(TableError::UnknownInHeader {
+            field,
+            format: "an XFOIL polar file",
+        });
+    }
     let solver = if meta.solver.is_empty() {
         "polargen"
     } else {

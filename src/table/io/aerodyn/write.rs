@@ -78,13 +78,20 @@ pub fn write_aerodyn_to(
         "! ------------ AirfoilInfo v1.01 input file written by polargen {} ------------",
         env!("CARGO_PKG_VERSION")
     );
+    let xtr = |x: f64| {
+        if x.is_nan() {
+            "unknown".to_string()
+        } else {
+            x.to_string()
+        }
+    };
     let _ = writeln!(
         s,
         "! {}: Mach {mach}, Ncrit {}, forced transition x/c {} (top) {} (bottom), {}",
         meta.airfoil,
         meta.ncrit_text(),
-        meta.xtr_top_set,
-        meta.xtr_bot_set,
+        xtr(meta.xtr_top_set),
+        xtr(meta.xtr_bot_set),
         if meta.solver.is_empty() {
             "solver not recorded"
         } else {
