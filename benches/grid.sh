@@ -6,12 +6,12 @@
 #
 # The machine is shared and its speed drifts by up to 1.6x from hour to hour. With XFOIL
 # installed (apt-get install -y xfoil gcc) each round also times XFOIL on the paper's free sweep
-# (8-H-12, Re 1.9e6, M 0.41, alpha -4..12 step 0.5, through ../shared/tools/xfoil_reference.py)
+# (8-H-12, Re 1.9e6, M 0.41, alpha -4..12 step 0.5, through tools/xfoil_reference.py)
 # as a yardstick of the machine's speed in that round; XFOIL=0 skips it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROUNDS=${ROUNDS:-3}
-XFREF=${XFREF:-../shared/tools/xfoil_reference.py}
+XFREF=${XFREF:-tools/xfoil_reference.py}
 cargo build --release --quiet --bin polargen
 PG=${CARGO_TARGET_DIR:-target}/release/polargen
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -22,7 +22,7 @@ tables=(naca8h12_free naca8h12_xtr0.07 naca23012_free naca23012_xtr0.07)
 for r in $(seq "$ROUNDS"); do
   if [ "$yardstick" = 1 ]; then
     t0=$(date +%s.%N)
-    python3 "$XFREF" --airfoil geometry/naca8h12.dat --re 1.9e6 --mach 0.41 --xtr 1.0 \
+    python3 "$XFREF" polar --airfoil geometry/naca8h12.dat --re 1.9e6 --mach 0.41 --xtr 1.0 \
       --alpha -4 12 0.5 --out "$tmp/xf.csv" >/dev/null
     t1=$(date +%s.%N)
     printf 'round %d  xfoil paper sweep  %.2f s\n' "$r" "$(awk "BEGIN{print $t1 - $t0}")"

@@ -7,11 +7,11 @@
 # CPU-time ratio (user + system, XFOIL's Python driver included) is the steadier one.
 # PG=path times that polargen binary instead of building this tree's.
 #
-# Needs XFOIL: apt-get install -y xfoil gcc   (driven by ../shared/tools/xfoil_reference.py)
+# Needs XFOIL: apt-get install -y xfoil gcc   (driven by tools/xfoil_reference.py)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROUNDS=${ROUNDS:-5}
-XFREF=${XFREF:-../shared/tools/xfoil_reference.py}
+XFREF=${XFREF:-tools/xfoil_reference.py}
 command -v xfoil >/dev/null || { echo "xfoil not found: apt-get install -y xfoil gcc" >&2; exit 1; }
 [ -f "$XFREF" ] || { echo "missing $XFREF" >&2; exit 1; }
 ITER=${ITER:-200}
@@ -28,7 +28,7 @@ t_xf=0; t_pg=0
 for r in $(seq "$ROUNDS"); do
   for xtr in 1.0 0.07; do
     t0=$(now)
-    cpu "$tmp/cpu_xf" python3 "$XFREF" --airfoil geometry/naca8h12.dat --re 1.9e6 --mach 0.41 --xtr $xtr \
+    cpu "$tmp/cpu_xf" python3 "$XFREF" polar --airfoil geometry/naca8h12.dat --re 1.9e6 --mach 0.41 --xtr $xtr \
       --alpha -4 12 0.5 --iter "$ITER" --out "$tmp/xf_$xtr.csv" >/dev/null
     t1=$(now)
     cpu "$tmp/cpu_pg" "$PG" --airfoil naca8h12 --re 1.9e6 --mach 0.41 --xtr $xtr --alpha -4:12:0.5 \

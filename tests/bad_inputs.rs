@@ -1,22 +1,17 @@
-//! A set of hostile inputs of the kinds found by the reliability review (special files,
-//! oversized files, odd line ends, absurd magnitudes, stray points, contours listed several
-//! times, tables that cannot round-trip, limits that mean minutes, outputs that cannot be
-//! written, numbers echoed back), each new: every one must end quickly with a clean one-line
-//! error and a non-zero exit, or with a correct result.
+//! Hostile inputs to both binaries (special files, oversized files, odd line ends, absurd
+//! magnitudes, stray points, contours listed several times, tables that cannot round-trip,
+//! limits that mean minutes, outputs that cannot be written, numbers echoed back): every one
+//! must end quickly with a clean one-line error and a non-zero exit, or with a correct result.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
 use std::time::{Duration, Instant};
 
+mod cli_support;
+use cli_support::scratch;
+
 /// No case may take longer than this (every refusal is meant to come before any solve).
 const TIME_LIMIT: Duration = Duration::from_secs(20);
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("polargen-bad-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 fn run(tool: &str, args: &[&str]) -> (Output, Duration) {
     let exe = match tool {
@@ -99,7 +94,7 @@ fn mkfifo(path: &Path) -> bool {
 }
 
 const AIRCRAFT: &str = "aircraft/mtosport.toml";
-const TABLE: &str = "tests/data/rotor/naca8h12_Re1.9e6_M0.41_free.csv";
+const TABLE: &str = "tests/data/xfoil/naca8h12_Re1.9e6_M0.41_free.csv";
 
 #[test]
 fn special_and_oversized_files_are_refused_at_once() {

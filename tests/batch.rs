@@ -7,6 +7,9 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+mod cli_support;
+use cli_support::stderr;
+
 /// A tiny grid: one Re, one Mach number, three α.
 const GRID: [&str; 4] = ["--re", "1e6", "--alpha", "0:4:2"];
 
@@ -20,19 +23,15 @@ fn batch(args: &[&str]) -> Output {
         .expect("run polargen")
 }
 
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).to_string()
-}
-
 /// A folder of three coordinate files from tests/data and a file that is not `*.dat`.
 fn airfoil_folder(root: &Path) -> PathBuf {
     let dir = root.join("foils");
     fs::create_dir_all(&dir).unwrap();
-    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/geometry");
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
     for (from, to) in [
-        ("naca2412_xfoil_buffer.dat", "n2412.dat"),
-        ("naca23012_xfoil_buffer.dat", "n23012.dat"),
-        ("lednicer_naca8h12.dat", "n8h12.DAT"),
+        ("xfoil/naca2412_buffer.dat", "n2412.dat"),
+        ("xfoil/naca23012_buffer.dat", "n23012.dat"),
+        ("geometry/lednicer_naca8h12.dat", "n8h12.DAT"),
     ] {
         fs::copy(data.join(from), dir.join(to)).unwrap();
     }

@@ -1,40 +1,27 @@
 //! `polargen convert`: shipped tables to JSON (round trip) and C81 (structure), and its errors.
 
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
 use polargen::table::{read_table, write_table, TableFormat};
 
-fn polargen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_polargen"))
-        .args(args)
-        .output()
-        .expect("run polargen")
-}
+mod cli_support;
+use cli_support::{polargen, polars, scratch};
 
 fn shipped(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("polars")
-        .join(name)
+    PathBuf::from(polars(name))
 }
 
 /// The long-form CSV text of the table in `path`.
 fn csv_text(path: &std::path::Path) -> String {
-    let out = out_dir("csv-text").join("t.csv");
+    let out = scratch("csv-text").join("t.csv");
     write_table(&read_table(path).unwrap(), &out, Some(TableFormat::Csv)).unwrap();
     std::fs::read_to_string(out).unwrap()
-}
-
-fn out_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("polargen-convert-{tag}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
 }
 
 #[test]
 fn csv_to_json_round_trip_and_c81_per_re() {
     let src = shipped("naca8h12_xtr0.07.csv");
-    let dir = out_dir("ok");
+    let dir = scratch("ok");
     let json = dir.join("t.json");
     let o = polargen(&[
         "convert",
@@ -72,7 +59,7 @@ fn csv_to_json_round_trip_and_c81_per_re() {
 
 #[test]
 fn errors_are_one_line() {
-    let dir = out_dir("err");
+    let dir = scratch("err");
     let src = shipped("naca8h12_free.csv");
     let cases: [(Vec<String>, &str); 3] = [
         (

@@ -1,29 +1,11 @@
 //! `polargen plot`: polars from the shipped tables overlaid in SVG and PNG, and its errors.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn polargen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_polargen"))
-        .args(args)
-        .output()
-        .expect("run polargen")
-}
-
-fn polars(name: &str) -> String {
-    format!("{}/polars/{name}", env!("CARGO_MANIFEST_DIR"))
-}
-
-/// A scratch folder of its own for each test (tests run concurrently and each removes its folder).
-fn out_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("polargen-plot-{tag}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
+mod cli_support;
+use cli_support::{polargen, polars, scratch};
 
 #[test]
 fn overlay_svg_and_png() {
-    let dir = out_dir("overlay");
+    let dir = scratch("overlay");
     let (free_table, trip_table) = (polars("naca8h12_free.csv"), polars("naca8h12_xtr0.07.csv"));
     let svg = dir.join("p.svg");
     let png = dir.join("p.png");
@@ -101,7 +83,7 @@ fn overlay_svg_and_png() {
 
 #[test]
 fn point_distributions_clean_vs_trip() {
-    let dir = out_dir("point");
+    let dir = scratch("point");
     let svg = dir.join("p.svg");
     let csv = dir.join("p.csv");
     let args = [
@@ -170,7 +152,7 @@ fn point_distributions_clean_vs_trip() {
 
 #[test]
 fn errors_are_one_line() {
-    let dir = out_dir("errors");
+    let dir = scratch("errors");
     let out = dir.join("e.svg");
     let out = out.to_str().unwrap();
     let free = polars("naca8h12_free.csv");

@@ -6,6 +6,9 @@ use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
+mod cli_support;
+use cli_support::scratch;
+
 const POLARGEN: &str = env!("CARGO_BIN_EXE_polargen");
 const GYRO: &str = env!("CARGO_BIN_EXE_gyro");
 
@@ -33,13 +36,6 @@ fn data(rel: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/data")
         .join(rel)
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("polargen-plumbing-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 #[test]
@@ -70,7 +66,7 @@ fn out_dash_is_standard_output_for_tables_only() {
     );
     assert!(o.status.success(), "{}", text(&o.stderr));
     assert!(text(&o.stdout).starts_with("alpha,cl,cd,cm,converged\n"));
-    let table = data("table/naca8h12_Re1.9e6_M0.41_free.csv");
+    let table = data("xfoil/naca8h12_Re1.9e6_M0.41_free.csv");
     let json = run(
         POLARGEN,
         &[

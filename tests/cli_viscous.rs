@@ -1,25 +1,9 @@
 //! The `polargen` binary in viscous mode: single polars, small grids, formats, thread-count
 //! determinism and input errors.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn polargen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_polargen"))
-        .args(args)
-        .output()
-        .expect("run polargen")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).to_string()
-}
-
-fn temp_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("polargen-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    d
-}
+mod cli_support;
+mod xfoil_support;
+use cli_support::{polargen, scratch, stderr};
 
 /// Column index by name in a CSV header.
 fn col(header: &str, name: &str) -> usize {
@@ -69,13 +53,18 @@ fn single_polar_matches_xfoil_and_has_required_columns() {
         col(h, c);
     }
     assert_eq!(lines.len(), 4);
-    // XFOIL 6.99, NACA 0012, Re 1e6, M 0, α = 4°: CL 0.4278, CD 0.00728 (tests/data/viscous).
+    // Against XFOIL 6.99 at α = 4° (its own paneling; ours differs by < 1e-6 c): measured
+    // |ΔCl| 2.5e-5 and |ΔCd|/Cd 1.6e-4; limits about three times that, not below XFOIL's
+    // rounding (5e-5 in Cl, 5e-6 in Cd: 6.9e-4 of it).
     let row: Vec<&str> = lines[3].split(',').collect();
     let cl: f64 = row[col(h, "cl")].parse().unwrap();
     let cd: f64 = row[col(h, "cd")].parse().unwrap();
     assert_eq!(row[col(h, "converged")], "true");
-    assert!((cl - 0.4278).abs() < 0.01, "cl {cl}");
-    assert!((cd / 0.00728 - 1.0).abs() < 0.05, "cd {cd}");
+    let xfoil = xfoil_support::polar("naca0012_Re1e6_M0_free.csv");
+    let r = xfoil_support::at_alpha(&xfoil, 4.0).unwrap();
+    eprintln!("cl {cl} vs {}, cd {cd} vs {}", r.cl, r.cd);
+    assert!((cl - r.cl).abs() <= 8e-5, "cl {cl} vs XFOIL {}", r.cl);
+    assert!((cd / r.cd - 1.0).abs() <= 7e-4, "cd {cd} vs XFOIL {}", r.cd);
 }
 
 /// `--tolerance` sets the Newton threshold: every point's last RMS change (the `residual`
@@ -174,7 +163,7 @@ fn grid_output_is_identical_for_any_thread_count() {
 
 #[test]
 fn formats_by_extension_and_flag() {
-    let dir = temp_dir("formats");
+    let dir = scratch("formats");
     let common = [
         "--airfoil",
         "naca0012",
@@ -230,8 +219,7 @@ fn formats_by_extension_and_flag() {
 /// exit, before any solving.
 #[test]
 fn errors_name_the_flag() {
-    let dir = temp_dir("flag-errors");
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch("flag-errors");
     let file = dir.join("plain");
     std::fs::write(&file, "x").unwrap();
     let not_under_a_folder = file.join("t.csv").to_str().unwrap().to_string();
@@ -298,7 +286,7 @@ fn errors_name_the_flag() {
 /// A run in which no point converges writes no table (not even a folder) and fails.
 #[test]
 fn no_converged_point_writes_nothing() {
-    let dir = temp_dir("none-converged");
+    let dir = scratch("none-converged").join("out");
     let out = dir.join("t.csv");
     let o = polargen(&[
         "--airfoil",

@@ -7,6 +7,8 @@ use polargen::geometry::{
 };
 use std::path::{Path, PathBuf};
 
+mod xfoil_support;
+
 fn data(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/data/geometry")
@@ -69,15 +71,15 @@ fn clockwise_comma_separated_selig_is_reversed() {
 #[test]
 fn plain_file_with_fortran_e_notation() {
     // XFOIL PSAV output: no name line, values like 0.1260000E-02.
-    let (a, fmt) = read(&data("naca0012_xfoil_paneled.dat"));
+    let (a, fmt) = read(&xfoil_support::path("naca0012_paneled.dat"));
     assert_eq!(fmt, CoordinateFormat::Plain);
     assert_eq!(a.name, "fallback");
     assert_eq!(a.x.len(), 160);
     assert_eq!((a.x[0], a.y[0]), (1.0, 0.1260000E-02));
     assert_eq!((a.x[1], a.y[1]), (0.9916796, 0.2421450E-02));
     // Name from the file stem when read from disk.
-    let b = read_airfoil_file(&data("naca0012_xfoil_paneled.dat")).unwrap();
-    assert_eq!(b.name, "naca0012_xfoil_paneled");
+    let b = read_airfoil_file(&xfoil_support::path("naca0012_paneled.dat")).unwrap();
+    assert_eq!(b.name, "naca0012_paneled");
 }
 
 #[test]

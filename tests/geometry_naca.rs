@@ -3,17 +3,11 @@
 //! theory.
 
 use polargen::geometry::{
-    naca, read_airfoil_file, CubicSpline, EndCondition, GeometryError, NacaOptions, NacaSection,
-    TrailingEdge,
+    naca, CubicSpline, EndCondition, GeometryError, NacaOptions, NacaSection, TrailingEdge,
 };
 use std::f64::consts::PI;
-use std::path::Path;
 
-fn data(name: &str) -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/geometry")
-        .join(name)
-}
+mod xfoil_support;
 
 /// Upper and lower surface y(x) splines of a generated contour, using only points with
 /// x > x_min where both surfaces are single-valued in x.
@@ -143,16 +137,18 @@ fn naca23012_mean_line_matches_naca456() {
 
 #[test]
 fn default_generator_reproduces_xfoil_buffer_airfoil() {
-    // XFOIL 6.99: `NACA dddd`, `PCOP`, `PSAV` (245 points, written with 7 digits).
+    // XFOIL 6.99: `NACA dddd`, `PCOP`, `PSAV` (245 points, written with 7 digits); measured
+    // 5.0e-8 for each (XFOIL's rounding), limit about three times that.
     for f in ["0012", "2412", "23012"] {
         let g = naca(f, &NacaOptions::default()).unwrap();
-        let r = read_airfoil_file(&data(&format!("naca{f}_xfoil_buffer.dat"))).unwrap();
+        let r = xfoil_support::nodes(&format!("naca{f}_buffer.dat"));
         assert_eq!(g.x.len(), 245);
         assert_eq!(r.x.len(), 245);
         let dmax = (0..245)
             .map(|i| (g.x[i] - r.x[i]).hypot(g.y[i] - r.y[i]))
             .fold(0.0, f64::max);
-        assert!(dmax < 2e-7, "NACA {f}: max point distance {dmax:e}");
+        eprintln!("NACA {f}: max point distance {dmax:.2e}");
+        assert!(dmax < 1.5e-7, "NACA {f}: max point distance {dmax:e}");
     }
 }
 

@@ -3,25 +3,19 @@
 //! parameter errors.
 
 use polargen::geometry::{
-    airfoil_by_name_or_path, naca, read_airfoil_file, Airfoil, GeometryError, NacaOptions,
-    PanelingParams, DEFAULT_PANEL_NODES,
+    airfoil_by_name_or_path, naca, Airfoil, GeometryError, NacaOptions, PanelingParams,
+    DEFAULT_PANEL_NODES,
 };
-use std::path::Path;
 
-fn data(name: &str) -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/geometry")
-        .join(name)
-}
+mod xfoil_support;
 
-/// Max distance between our 160 nodes and XFOIL's (`<foil>_xfoil_paneled.dat`: XFOIL 6.99,
-/// `NACA dddd` or `LOAD naca8h12.dat`, then `PPAR N 160`, `PANE`, `PSAV`).
+/// Max distance between our 160 nodes and XFOIL's (`<foil>_paneled.dat` of tests/data/xfoil).
 fn max_node_distance(foil: &str) -> f64 {
     let a = airfoil_by_name_or_path(foil).unwrap();
     let p = a
         .repanel(DEFAULT_PANEL_NODES, &PanelingParams::default())
         .unwrap();
-    let r = read_airfoil_file(&data(&format!("{foil}_xfoil_paneled.dat"))).unwrap();
+    let r = xfoil_support::paneled(foil);
     assert_eq!(p.x.len(), 160);
     assert_eq!(r.x.len(), 160);
     (0..160)
@@ -31,17 +25,21 @@ fn max_node_distance(foil: &str) -> f64 {
 
 #[test]
 fn nodes_match_xfoil_pangen_for_naca_sections() {
-    // XFOIL writes 7 significant digits; measured max distance ≈ 5e-8 c.
+    // XFOIL writes 7 significant digits; measured max distance 4.9e-8, 4.9e-8, 5.0e-8 c (its
+    // rounding); limit about three times that.
     for foil in ["naca0012", "naca2412", "naca23012"] {
         let d = max_node_distance(foil);
-        assert!(d < 1e-6, "{foil}: max node distance {d:e}");
+        eprintln!("{foil}: max node distance {d:.2e}");
+        assert!(d < 1.5e-7, "{foil}: max node distance {d:e}");
     }
 }
 
 #[test]
 fn nodes_match_xfoil_pangen_for_sparse_naca8h12() {
+    // measured 5.0e-8 c
     let d = max_node_distance("naca8h12");
-    assert!(d < 1e-6, "naca8h12: max node distance {d:e}");
+    eprintln!("naca8h12: max node distance {d:.2e}");
+    assert!(d < 1.5e-7, "naca8h12: max node distance {d:e}");
 }
 
 #[test]

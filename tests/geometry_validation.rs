@@ -157,7 +157,7 @@ fn every_naca_section_and_test_airfoil_passes() {
     }
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
     let mut files = 0;
-    for sub in ["geometry", "inviscid"] {
+    for sub in ["geometry", "xfoil"] {
         for entry in std::fs::read_dir(dir.join(sub)).unwrap() {
             let path = entry.unwrap().path();
             let name = path.file_name().unwrap().to_string_lossy().into_owned();

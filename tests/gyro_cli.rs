@@ -1,15 +1,15 @@
 //! The `gyro` binary: JSON keys, history file, comparison tables and one-line errors.
 
-mod gyro_support;
+mod cli_support;
 
-use gyro_support::{aircraft, assert_ok, assert_one_line_error, gyro, root};
+use cli_support::{aircraft, assert_ok, assert_one_line_error, gyro, root};
 use std::process::Output;
 
 /// XFOIL 6.99 polars of the NACA 8-H-12 at Re 1.9e6, M 0.41 (free transition / xtr 0.07).
 fn table(kind: &str) -> String {
     root()
         .join(format!(
-            "tests/data/rotor/naca8h12_Re1.9e6_M0.41_{kind}.csv"
+            "tests/data/xfoil/naca8h12_Re1.9e6_M0.41_{kind}.csv"
         ))
         .display()
         .to_string()
@@ -189,10 +189,12 @@ fn alpha_distribution_csv() {
 fn errors_are_one_line() {
     let t = table("free");
     assert_one_line_error(
+        "gyro",
         &gyro(&["trim", "--aircraft", "/nonexistent.toml", "--table", &t]),
         "cannot read aircraft file",
     );
     assert_one_line_error(
+        "gyro",
         &gyro(&[
             "trim",
             "--aircraft",
@@ -203,6 +205,7 @@ fn errors_are_one_line() {
         "cannot read table",
     );
     assert_one_line_error(
+        "gyro",
         &gyro(&[
             "trim",
             "--aircraft",
@@ -213,8 +216,13 @@ fn errors_are_one_line() {
         ]),
         "--speed-kt",
     );
-    assert_one_line_error(&gyro(&["trim", "--aircraft", &aircraft()]), "--table");
     assert_one_line_error(
+        "gyro",
+        &gyro(&["trim", "--aircraft", &aircraft()]),
+        "--table",
+    );
+    assert_one_line_error(
+        "gyro",
         &gyro(&[
             "trim",
             "--aircraft",
@@ -227,6 +235,7 @@ fn errors_are_one_line() {
         "fast",
     );
     assert_one_line_error(
+        "gyro",
         &gyro(&[
             "trim",
             "--aircraft",
@@ -239,6 +248,7 @@ fn errors_are_one_line() {
         "--mass",
     );
     assert_one_line_error(
+        "gyro",
         &gyro(&[
             "trim",
             "--aircraft",
@@ -254,6 +264,7 @@ fn errors_are_one_line() {
     let bad = std::env::temp_dir().join(format!("gyro_bad_{}.csv", std::process::id()));
     std::fs::write(&bad, "a,b\n1,2\n").unwrap();
     assert_one_line_error(
+        "gyro",
         &gyro(&[
             "trim",
             "--aircraft",
@@ -268,6 +279,7 @@ fn errors_are_one_line() {
     let bad = std::env::temp_dir().join(format!("gyro_bad_{}.toml", std::process::id()));
     std::fs::write(&bad, "name = \"x\"\n").unwrap();
     assert_one_line_error(
+        "gyro",
         &gyro(&[
             "trim",
             "--aircraft",
@@ -288,6 +300,7 @@ fn errors_are_one_line() {
     )
     .unwrap();
     assert_one_line_error(
+        "gyro",
         &gyro(&[
             "trim",
             "--aircraft",
@@ -371,11 +384,12 @@ fn bad_values_and_paths_are_refused_up_front() {
         ),
     ];
     for (out, needle) in &cases {
-        assert_one_line_error(out, needle);
+        assert_one_line_error("gyro", out, needle);
     }
     // A bad history path is refused before the takeoff is simulated (no ~3 s of work).
     let start = std::time::Instant::now();
     assert_one_line_error(
+        "gyro",
         &gyro(&[
             "takeoff",
             "--aircraft",
@@ -400,7 +414,11 @@ fn bad_values_and_paths_are_refused_up_front() {
     let out = trim(&[]);
     assert_ok(&out);
     let out = gyro(&["trim", "--aircraft", &a, "--table", neg.to_str().unwrap()]);
-    assert_one_line_error(&out, "cd -0.01 < 0 at alpha 0 in polar Re 1000000, M 0");
+    assert_one_line_error(
+        "gyro",
+        &out,
+        "cd -0.01 < 0 at alpha 0 in polar Re 1000000, M 0",
+    );
     assert!(!String::from_utf8_lossy(&out.stderr).contains("XFOIL"));
     std::fs::remove_dir_all(dir).unwrap();
 }

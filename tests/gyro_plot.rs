@@ -2,24 +2,12 @@
 //! their series and axis labels, PNGs are real images, the report's tables hold the values
 //! `gyro trim/takeoff/alpha --json` compute for the same inputs, and errors are one line.
 
-mod gyro_support;
+mod cli_support;
 
-use gyro_support::{aircraft, assert_ok, assert_one_line_error, gyro, root};
+use cli_support::{aircraft, assert_ok, assert_one_line_error, gyro, polars, root, scratch};
 use polargen::table::alpha_at_cl;
 use polargen::table::read_table;
-use std::path::{Path, PathBuf};
-
-/// A shipped default-grid table, e.g. `polars("naca8h12_free.csv")`.
-fn polars(name: &str) -> String {
-    root().join("polars").join(name).display().to_string()
-}
-
-/// A scratch folder of its own for each test (tests run concurrently and each removes its own).
-fn out_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("gyro-plot-{tag}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
+use std::path::Path;
 
 /// Runs `gyro plot <kind> … --out` once to SVG and once to PNG, checks the PNG is a real image
 /// of at least `min_png` bytes and returns the SVG text.
@@ -61,7 +49,7 @@ fn assert_contains(svg: &str, needles: &[&str]) {
 
 #[test]
 fn alpha_plot_has_both_cases_and_azimuth_axis() {
-    let dir = out_dir("alpha");
+    let dir = scratch("alpha");
     let (c, d) = (polars("naca8h12_free.csv"), polars("naca8h12_xtr0.07.csv"));
     let svg = plot_both(
         "alpha",
@@ -88,7 +76,7 @@ fn alpha_plot_has_both_cases_and_azimuth_axis() {
 
 #[test]
 fn takeoff_plot_has_four_histories_and_lift_off() {
-    let dir = out_dir("takeoff");
+    let dir = scratch("takeoff");
     let (c, d) = (polars("naca8h12_free.csv"), polars("naca8h12_xtr0.07.csv"));
     let svg = plot_both(
         "takeoff",
@@ -122,7 +110,7 @@ fn takeoff_plot_has_four_histories_and_lift_off() {
 
 #[test]
 fn power_plot_has_power_and_thrust_curves() {
-    let dir = out_dir("power");
+    let dir = scratch("power");
     let c = polars("naca8h12_free.csv");
     let svg = plot_both(
         "power",
@@ -183,7 +171,7 @@ fn json_of(args: &[&str]) -> serde_json::Value {
 
 #[test]
 fn report_tables_match_the_single_commands() {
-    let dir = out_dir("report");
+    let dir = scratch("report");
     let ac = aircraft();
     let polar_dir = root().join("polars").display().to_string();
     let out = gyro(&[
@@ -348,7 +336,7 @@ fn report_tables_match_the_single_commands() {
 
 #[test]
 fn errors_are_one_line() {
-    let dir = out_dir("errors");
+    let dir = scratch("errors");
     let svg = dir.join("e.svg").display().to_string();
     let ac = aircraft();
     let c = polars("naca8h12_free.csv");
@@ -358,18 +346,21 @@ fn errors_are_one_line() {
         gyro(&args)
     };
     assert_one_line_error(
+        "gyro",
         &plot(&["--clean", "/nonexistent.csv", "--out", &svg]),
         "cannot read table /nonexistent.csv",
     );
     let bad = dir.join("bad.csv");
     std::fs::write(&bad, "alpha,cl,cd\n0,0.1,zero\n").unwrap();
     assert_one_line_error(
+        "gyro",
         &plot(&["--clean", bad.to_str().unwrap(), "--out", &svg]),
         "bad.csv",
     );
     // An output under a regular file: refused before any computation.
     let under_file = format!("{}/a.svg", bad.display());
     assert_one_line_error(
+        "gyro",
         &plot(&["--clean", &c, "--out", &under_file]),
         &format!(
             "--out: cannot write plot {under_file}: {}: is not a folder",
@@ -377,15 +368,18 @@ fn errors_are_one_line() {
         ),
     );
     assert_one_line_error(
+        "gyro",
         &plot(&["--clean", &c, "--out", dir.join("a.pdf").to_str().unwrap()]),
         "unknown file extension",
     );
-    assert_one_line_error(&plot(&["--clean", &c]), "--out");
+    assert_one_line_error("gyro", &plot(&["--clean", &c]), "--out");
     assert_one_line_error(
+        "gyro",
         &plot(&["--clean", &c, "--radius", "1.5", "--out", &svg]),
         "--radius",
     );
     assert_one_line_error(
+        "gyro",
         &gyro(&[
             "plot",
             "power",
@@ -414,7 +408,7 @@ fn errors_are_one_line() {
             dir.join("r").to_str().unwrap(),
         ])
     };
-    assert_one_line_error(&report(&dir), "naca8h12_free.csv");
+    assert_one_line_error("gyro", &report(&dir), "naca8h12_free.csv");
     assert!(!dir.join("e.svg").exists() && !dir.join("r").exists());
     // A misnamed table (the 23012 under the 8-H-12's name) is refused, not reported on.
     let polars_dir = dir.join("polars");
@@ -431,7 +425,7 @@ fn errors_are_one_line() {
         polars_dir.join("naca8h12_free.csv"),
     )
     .unwrap();
-    assert_one_line_error(
+    assert_one_line_error("gyro", 
         &report(&polars_dir),
         "naca8h12_free.csv: holds NACA 23012 with transition at 1/1 (upper/lower), expected naca8h12 at 1",
     );

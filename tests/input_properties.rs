@@ -155,8 +155,8 @@ fn repo(path: &str) -> PathBuf {
 const COORDINATE_SEEDS: [&str; 5] = [
     "geometry/naca8h12.dat",
     "tests/data/geometry/lednicer_naca8h12.dat",
-    "tests/data/geometry/naca2412_xfoil_buffer.dat",
-    "tests/data/geometry/naca23012_xfoil_buffer.dat",
+    "tests/data/xfoil/naca2412_buffer.dat",
+    "tests/data/xfoil/naca23012_buffer.dat",
     "tests/data/geometry/selig_clockwise_naca8h12.dat",
 ];
 
@@ -224,7 +224,7 @@ fn table_seeds(dir: &Path) -> Vec<(String, String)> {
             std::fs::read_to_string(&written[0]).unwrap(),
         ));
     }
-    let polar = std::fs::read_to_string(repo("tests/data/table/naca8h12_Re1.9e6_M0.41_free.csv"));
+    let polar = std::fs::read_to_string(repo("tests/data/xfoil/naca8h12_Re1.9e6_M0.41_free.csv"));
     seeds.push(("csv".to_string(), polar.unwrap()));
     seeds
 }

@@ -1,11 +1,11 @@
 //! Karman–Tsien correction (XFOIL CPCALC/CLCALC): formula values, the Prandtl–Glauert
 //! limit, behaviour towards the critical Mach number and input errors.
 
-mod inviscid_support;
+mod xfoil_support;
 
-use inviscid_support::xfoil_nodes;
 use polargen::compressibility::{KarmanTsien, MachOutOfRange};
 use polargen::inviscid::{InviscidError, PanelSystem};
+use xfoil_support::paneled;
 
 /// Cp_c = Cp/(β + λ(1+β)Cp/2) with λ = M²/(1+β)², checked at M = 0.5, Cp = −1 against the
 /// hand-evaluated value −1.251505; small Cp tends to Prandtl–Glauert Cp/β.
@@ -35,7 +35,7 @@ fn karman_tsien_values() {
 /// because suction peaks are amplified more (measured +8 % at M = 0.6, α = 2°).
 #[test]
 fn lift_grows_with_mach() {
-    let sys = PanelSystem::new(&xfoil_nodes("naca0012")).unwrap();
+    let sys = PanelSystem::new(&paneled("naca0012")).unwrap();
     let cl0 = sys.solve(2.0, 0.0).unwrap().cl;
     let mut prev = cl0;
     for m in [0.2, 0.4, 0.6] {
@@ -54,7 +54,7 @@ fn lift_grows_with_mach() {
 /// Doenhoff Fig. 4.8 region); it drops with α, and the `supercritical` flag switches there.
 #[test]
 fn critical_mach_behaviour() {
-    let sys = PanelSystem::new(&xfoil_nodes("naca0012")).unwrap();
+    let sys = PanelSystem::new(&paneled("naca0012")).unwrap();
     let mcr0 = sys.critical_mach(0.0).unwrap();
     let mcr4 = sys.critical_mach(4.0).unwrap();
     println!("NACA 0012 critical Mach: {mcr0:.4} at 0 deg, {mcr4:.4} at 4 deg");
@@ -71,7 +71,7 @@ fn critical_mach_behaviour() {
 /// Mach outside [0, 1), non-finite α and a breakdown of the correction are errors.
 #[test]
 fn invalid_inputs_are_errors() {
-    let sys = PanelSystem::new(&xfoil_nodes("naca2412")).unwrap();
+    let sys = PanelSystem::new(&paneled("naca2412")).unwrap();
     assert_eq!(
         sys.solve(2.0, 1.0).unwrap_err(),
         InviscidError::InvalidMach(MachOutOfRange(1.0))

@@ -1,10 +1,10 @@
 //! Bad contours are rejected with errors, never panics; sharp/blunt TE detection.
 
-mod inviscid_support;
+mod xfoil_support;
 
-use inviscid_support::xfoil_nodes;
 use polargen::geometry::Airfoil;
 use polargen::inviscid::{InviscidError, PanelSystem};
+use xfoil_support::paneled;
 
 fn foil(x: Vec<f64>, y: Vec<f64>) -> Airfoil {
     Airfoil {
@@ -21,20 +21,20 @@ fn bad_contours_are_errors() {
     let e = PanelSystem::new(&foil(vec![0.0; 6], vec![0.0; 5])).unwrap_err();
     assert_eq!(e, InviscidError::LengthMismatch { x: 6, y: 5 });
 
-    let mut a = xfoil_nodes("naca0012");
+    let mut a = paneled("naca0012");
     a.y[7] = f64::NAN;
     assert_eq!(
         PanelSystem::new(&a).unwrap_err(),
         InviscidError::NonFiniteNode(7)
     );
-    let mut a = xfoil_nodes("naca0012");
+    let mut a = paneled("naca0012");
     a.x.reverse();
     a.y.reverse();
     assert_eq!(
         PanelSystem::new(&a).unwrap_err(),
         InviscidError::ClockwiseContour
     );
-    let mut a = xfoil_nodes("naca0012");
+    let mut a = paneled("naca0012");
     a.x[11] = a.x[10];
     a.y[11] = a.y[10];
     assert_eq!(
@@ -47,14 +47,14 @@ fn bad_contours_are_errors() {
 /// (1, 0) (sharp, TE panel dropped). Chord comes out as ≈ 1 from the spline leading edge.
 #[test]
 fn trailing_edge_classification() {
-    let blunt = PanelSystem::new(&xfoil_nodes("naca0012")).unwrap();
+    let blunt = PanelSystem::new(&paneled("naca0012")).unwrap();
     let te = blunt.geometry().te;
     assert!(!te.sharp && !te.closed);
     assert!((te.gap - 0.00252).abs() < 1e-6, "gap {}", te.gap);
     assert!((blunt.geometry().chord - 1.0).abs() < 1e-5);
     assert!(blunt.bisector().is_none());
 
-    let sharp = PanelSystem::new(&xfoil_nodes("naca8h12")).unwrap();
+    let sharp = PanelSystem::new(&paneled("naca8h12")).unwrap();
     let te = sharp.geometry().te;
     assert!(te.sharp && te.closed);
     assert!(sharp.bisector().is_some());
@@ -73,7 +73,7 @@ fn panel_system_is_send_and_sync() {
 #[test]
 fn kutta_condition_holds() {
     for name in ["naca2412", "naca8h12"] {
-        let sys = PanelSystem::new(&xfoil_nodes(name)).unwrap();
+        let sys = PanelSystem::new(&paneled(name)).unwrap();
         let n = sys.n_nodes();
         for k in 0..2 {
             let g = sys.gamma_unit(k);
@@ -84,9 +84,9 @@ fn kutta_condition_holds() {
 
 #[test]
 fn irregular_contours_never_give_absurd_coefficients() {
-    // Contours that used to pass and give |Cl| up to 1e10 with converged = true: a contour
-    // listed twice (the second pass 0.1 % smaller), one stray point, a fold of the lower
-    // surface; each is refused, and no solution of them is returned.
+    // Contours that give |Cl| up to 1e10 when solved: a contour listed twice (the second pass
+    // 0.1 % smaller), one stray point, a fold of the lower surface; each is refused, and no
+    // solution of them is returned.
     let p = polargen::geometry::naca("0012", &Default::default())
         .unwrap()
         .repanel(160, &polargen::geometry::PanelingParams::default())

@@ -1,7 +1,7 @@
 //! Domain figures (polars, point distributions, rotor results) rendered to SVG and PNG.
 //!
 //! Inputs: XFOIL 6.99 reference polars and BL/Cp dumps of the NACA 8-H-12 at Re 1.9e6,
-//! M 0.41, free and fixed (x/c = 0.07) transition, α = 4° (`tests/data/plot/`); rotor inputs
+//! M 0.41, free and fixed (x/c = 0.07) transition, α = 4° (tests/data/xfoil); rotor inputs
 //! are synthetic but shaped like the study's results (no rotor model is needed to test plots).
 //! Each figure is checked as SVG (size, title, labels, series text, series colours) and as PNG
 //! (signature, IHDR size, decoded pixels: series colours present, dark text in the title strip).
@@ -24,7 +24,9 @@ use polargen::plot::rotor_plots::{
 use polargen::plot::{render, AxisRange, Figure, Line, Style};
 use polargen::section::PolarPoint;
 
-const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/plot");
+mod table_support;
+use table_support::xfoil_reference as read_polar;
+use table_support::xfoil_support;
 
 /// Directory for this test run's images (kept, so they can be inspected).
 fn out_dir() -> PathBuf {
@@ -33,47 +35,11 @@ fn out_dir() -> PathBuf {
     dir
 }
 
-/// Reads an XFOIL reference polar CSV (alpha,cl,cd,cdp,cm,xtr_top,xtr_bot).
-fn read_polar(name: &str) -> Vec<PolarPoint> {
-    let text = std::fs::read_to_string(format!("{DATA}/{name}")).expect("polar csv");
-    text.lines()
-        .skip(1)
-        .map(|line| {
-            let v: Vec<f64> = line
-                .split(',')
-                .map(|f| f.parse().expect("number"))
-                .collect();
-            PolarPoint {
-                alpha: v[0],
-                cl: v[1],
-                cd: v[2],
-                cdp: v[3],
-                cdf: v[2] - v[3],
-                cm: v[4],
-                xtr_top: v[5],
-                xtr_bot: v[6],
-                converged: true,
-                iterations: 0,
-                residual: 0.0,
-                cpmin: f64::NAN,
-                supercritical: None,
-            }
-        })
-        .collect()
-}
-
-/// Upper-surface distributions from an XFOIL BL dump: (x, Cf, H), LE → TE.
+/// Upper-surface distributions from an XFOIL BL dump: (x, Cf, Hk), LE → TE.
 fn read_bl_upper(name: &str) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
-    let text = std::fs::read_to_string(format!("{DATA}/{name}")).expect("bl dump");
-    let rows: Vec<Vec<f64>> = text
-        .lines()
-        .filter(|l| !l.trim_start().starts_with('#'))
-        .map(|l| {
-            l.split_whitespace()
-                .map(|f| f.parse().expect("number"))
-                .collect()
-        })
-        .filter(|r: &Vec<f64>| r.len() == 12)
+    let rows: Vec<Vec<f64>> = xfoil_support::dump(name)
+        .into_iter()
+        .filter(|r| r.len() == 12)
         .collect();
     // Upper surface runs TE → LE: up to the first minimum of x.
     let le = (1..rows.len())
@@ -90,17 +56,7 @@ fn read_bl_upper(name: &str) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
 
 /// Cp(x) from an XFOIL CPWR dump.
 fn read_cp(name: &str) -> (Vec<f64>, Vec<f64>) {
-    let text = std::fs::read_to_string(format!("{DATA}/{name}")).expect("cp dump");
-    text.lines()
-        .filter(|l| !l.trim_start().starts_with('#'))
-        .map(|l| {
-            let v: Vec<f64> = l
-                .split_whitespace()
-                .map(|f| f.parse().expect("number"))
-                .collect();
-            (v[0], v[1])
-        })
-        .unzip()
+    xfoil_support::cp(name).into_iter().unzip()
 }
 
 /// (opening tag, trimmed content) of every `<text>` element of an SVG document.
@@ -391,7 +347,7 @@ fn sparse_polars_get_point_symbols() {
 
 #[test]
 fn airfoil_contour_under_the_pressure_distribution() {
-    let (x_cp, cp) = read_cp("naca8h12_free_cp_a4.txt");
+    let (x_cp, cp) = read_cp("naca8h12_Re1.9e6_M0.41_free_cp_a4.txt");
     let case = PointCase {
         label: "free transition",
         style: Style::solid(0),
@@ -414,10 +370,10 @@ fn airfoil_contour_under_the_pressure_distribution() {
 
 #[test]
 fn pressure_and_boundary_layer_distributions() {
-    let (x_cp_free, cp_free) = read_cp("naca8h12_free_cp_a4.txt");
-    let (x_cp_fixed, cp_fixed) = read_cp("naca8h12_xtr0.07_cp_a4.txt");
-    let (x_free, cf_free, h_free) = read_bl_upper("naca8h12_free_bl_a4.txt");
-    let (x_fixed, cf_fixed, h_fixed) = read_bl_upper("naca8h12_xtr0.07_bl_a4.txt");
+    let (x_cp_free, cp_free) = read_cp("naca8h12_Re1.9e6_M0.41_free_cp_a4.txt");
+    let (x_cp_fixed, cp_fixed) = read_cp("naca8h12_Re1.9e6_M0.41_xtr0.07_cp_a4.txt");
+    let (x_free, cf_free, h_free) = read_bl_upper("naca8h12_Re1.9e6_M0.41_free_bl_a4.txt");
+    let (x_fixed, cf_fixed, h_fixed) = read_bl_upper("naca8h12_Re1.9e6_M0.41_xtr0.07_bl_a4.txt");
     // The reference polar gives xtr_top = 0.3989 at α = 4° (free); the trip is at 0.07.
     let xtr_free = read_polar("naca8h12_Re1.9e6_M0.41_free.csv")
         .iter()

@@ -6,6 +6,8 @@ use polargen::table::read_table;
 use polargen::table::PolarTable;
 use std::path::Path;
 
+mod xfoil_support;
+
 fn shipped(name: &str) -> PolarTable {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("polars")
@@ -54,39 +56,40 @@ fn lookup_is_exact_on_nodes() {
 }
 
 /// At the paper's condition (Re 1.9e6, M 0.41, between grid nodes) the interpolated table stays
-/// close to XFOIL's polar there (tests/data/viscous). Measured: |ΔCd| ≤ 0.2 %, |ΔCl| ≤ 0.0015 —
-/// the interpolation error in ln Re (1.5–2.0e6) and M (0.4–0.5) plus XFOIL's rounding; the
-/// tolerances (2 %, 0.005) leave room for solver updates, not for a broken table or lookup.
+/// close to XFOIL's polar there: what is left is the interpolation in ln Re (1.5–2.0e6) and M
+/// (0.4–0.5) and XFOIL's rounding. Limits (|ΔCl|, |ΔCd|/Cd over α 0° and 4°): about three times
+/// the deviations measured (in the comments).
 #[test]
 fn interpolated_values_at_the_paper_condition() {
-    let cases = [
+    for (name, reference, limits) in [
+        // measured 1.4e-3, 6.5e-4
         (
             "naca8h12_free.csv",
-            [(0.0, 0.1311, 0.00726), (4.0, 0.7402, 0.00597)],
+            "naca8h12_Re1.9e6_M0.41_free.csv",
+            [4.2e-3, 2e-3],
         ),
+        // measured 8.8e-4, 1.3e-3
         (
             "naca8h12_xtr0.07.csv",
-            [(0.0, 0.1353, 0.00966), (4.0, 0.6433, 0.0109)],
+            "naca8h12_Re1.9e6_M0.41_xtr0.07.csv",
+            [2.7e-3, 4e-3],
         ),
-    ];
-    for (name, points) in cases {
+    ] {
         let t = shipped(name);
-        for (alpha, cl, cd) in points {
+        let xfoil = xfoil_support::polar(reference);
+        let (mut dcl, mut dcd) = (0.0_f64, 0.0_f64);
+        for alpha in [0.0, 4.0] {
+            let r = xfoil_support::at_alpha(&xfoil, alpha).unwrap();
             let l = t.lookup(alpha, 1.9e6, 0.41);
             println!(
-                "{name} α {alpha}: cl {:.4} ({cl}), cd {:.5} ({cd})",
-                l.cl, l.cd
+                "{name} α {alpha}: cl {:.4} ({}), cd {:.5} ({})",
+                l.cl, r.cl, l.cd, r.cd
             );
-            assert!(
-                (l.cl - cl).abs() < 0.005,
-                "{name} α {alpha}: cl {} vs {cl}",
-                l.cl
-            );
-            assert!(
-                (l.cd / cd - 1.0).abs() < 0.02,
-                "{name} α {alpha}: cd {} vs {cd}",
-                l.cd
-            );
+            dcl = dcl.max((l.cl - r.cl).abs());
+            dcd = dcd.max((l.cd / r.cd - 1.0).abs());
         }
+        println!("{name}: max |dCl| {dcl:.1e}, |dCd|/Cd {dcd:.1e}");
+        assert!(dcl <= limits[0], "{name}: max |dCl| {dcl}");
+        assert!(dcd <= limits[1], "{name}: max |dCd|/Cd {dcd}");
     }
 }

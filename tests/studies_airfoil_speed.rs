@@ -1,10 +1,12 @@
 //! The airfoil and speed studies on the shipped 8-H-12 tables: each record's penalty is the
-//! difference of its own runs, the speed study's 60 kt point is the contamination study's.
+//! difference of its own runs, the speed study's 60 kt point is the contamination study's, and
+//! the CSV columns are the records' JSON keys in the documented order (docs/studies.md).
 
 use polargen::rotor::study::paper_runs;
 use polargen::rotor::Aircraft;
-use polargen::studies::airfoil::run_airfoils;
-use polargen::studies::speed::run_speeds;
+use polargen::studies::airfoil::{run_airfoils, AirfoilStudy};
+use polargen::studies::speed::{run_speeds, SpeedStudy};
+use polargen::studies::Transition;
 use polargen::table::read_lookup_table;
 use std::path::Path;
 
@@ -32,8 +34,8 @@ fn airfoil_and_speed_studies_pair_their_runs() {
         names,
         [("a", false), ("a", true), ("b", false), ("b", true)]
     );
-    assert_eq!(records[0].performance.prop_thrust_n, thrust[0]);
-    assert_eq!(records[1].performance.prop_thrust_n, thrust[1]);
+    assert_eq!(records[0].trim.prop_thrust_n, thrust[0]);
+    assert_eq!(records[1].trim.prop_thrust_n, thrust[1]);
     assert_eq!(records[1].penalty.delta_prop_thrust_pct, delta_f);
     assert_eq!(records[2].prop_thrust_vs_first_pct, delta_f);
     assert_eq!(records[3].penalty.delta_prop_thrust_pct, 0.0);
@@ -48,6 +50,14 @@ fn airfoil_and_speed_studies_pair_their_runs() {
     ] {
         assert!(json[0].get(key).is_some(), "missing {key}");
     }
+    let study = AirfoilStudy { records };
+    assert_eq!(
+        header(&study.files().unwrap().csv),
+        "airfoil,contaminated,rotor_rpm,rotor_aoa_deg,rotor_aoa_drag_equivalent_deg,\
+         rotor_drag_n,prop_thrust_n,engine_rpm,delta_prop_thrust_pct,delta_engine_rpm,\
+         prop_thrust_vs_first_pct,takeoff_roll_m,distance_15m_m,max_flapping_deg,\
+         table_clamped_fraction"
+    );
 
     let (speeds, notes) = run_speeds(&ac, &clean, &dirty, &[45.0, 60.0, 75.0]);
     assert!(notes.is_empty(), "{notes:?}");
@@ -66,4 +76,20 @@ fn airfoil_and_speed_studies_pair_their_runs() {
     ] {
         assert!(json[0].get(key).is_some(), "missing {key}");
     }
+    let study = SpeedStudy {
+        airfoil: "NACA 8-H-12".into(),
+        trip: Transition::tripped(0.07),
+        records: speeds,
+        notes,
+    };
+    assert_eq!(
+        header(&study.files().unwrap().csv),
+        "speed_kt,clean_rotor_rpm,rotor_rpm,clean_prop_thrust_n,prop_thrust_n,\
+         clean_engine_rpm,engine_rpm,delta_prop_thrust_pct,delta_engine_rpm,power_required_kw"
+    );
+}
+
+/// The first line of a CSV text.
+fn header(csv: &str) -> &str {
+    csv.lines().next().unwrap()
 }

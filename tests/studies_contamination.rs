@@ -53,21 +53,23 @@ fn paper_setting_reproduces_compare_coverage_reaches_both_ends_and_keys_hold() {
     let records = run_contamination(&ac, &settings, &sections, &|| {}).unwrap();
     let compare = paper_runs(&ac, &clean, &dirty).unwrap();
     for (record, run) in [(&records[0], &compare[0]), (&records[1], &compare[1])] {
-        let p = &record.performance;
+        let (p, t) = (&record.trim, &record.takeoff);
         assert_eq!(p.rotor_rpm, run.trim.rotor_rpm);
         assert_eq!(p.rotor_aoa_deg, run.trim.rotor_aoa_deg);
         assert_eq!(p.rotor_drag_n, run.trim.rotor_drag_n);
         assert_eq!(p.prop_thrust_n, run.trim.prop_thrust_n);
         assert_eq!(p.engine_rpm, run.trim.engine_rpm);
-        assert_eq!(p.takeoff_roll_m, run.takeoff.takeoff_roll_m);
-        assert_eq!(p.distance_15m_m, run.takeoff.distance_15m_m);
-        assert_eq!(p.max_flapping_deg, run.takeoff.max_flapping_deg);
+        assert_eq!(t.takeoff_roll_m, run.takeoff.takeoff_roll_m);
+        assert_eq!(t.distance_15m_m, run.takeoff.distance_15m_m);
+        assert_eq!(t.max_flapping_deg, run.takeoff.max_flapping_deg);
     }
     let delta_f = 100.0 * (compare[1].trim.prop_thrust_n / compare[0].trim.prop_thrust_n - 1.0);
     assert_eq!(records[1].penalty.delta_prop_thrust_pct, delta_f);
     // Coverage 0 is the clean rotor, coverage 1 the fully tripped one, exactly.
-    assert_eq!(records[2].performance, records[0].performance);
-    assert_eq!(records[3].performance, records[1].performance);
+    assert_eq!(records[2].trim, records[0].trim);
+    assert_eq!(records[2].takeoff, records[0].takeoff);
+    assert_eq!(records[3].trim, records[1].trim);
+    assert_eq!(records[3].takeoff, records[1].takeoff);
     assert_eq!(records[0].penalty.delta_engine_rpm, Some(0.0));
 
     // The records carry the keys scripts rely on.
@@ -94,10 +96,13 @@ fn paper_setting_reproduces_compare_coverage_reaches_both_ends_and_keys_hold() {
     assert_eq!(record["ncrit"], 9.0);
     let csv = polargen::studies::contamination::csv(&records).unwrap();
     let mut lines = csv.lines();
-    assert!(lines
-        .next()
-        .unwrap()
-        .starts_with("setting,group,xtr_top,xtr_bot,ncrit,"));
+    assert_eq!(
+        lines.next().unwrap(),
+        "setting,group,xtr_top,xtr_bot,ncrit,coverage_inner_r_over_r,coverage_outer_r_over_r,\
+         rotor_rpm,rotor_aoa_deg,rotor_aoa_drag_equivalent_deg,rotor_drag_n,prop_thrust_n,\
+         engine_rpm,delta_prop_thrust_pct,delta_engine_rpm,takeoff_roll_m,distance_15m_m,\
+         max_flapping_deg,table_clamped_fraction"
+    );
     assert!(lines
         .next()
         .unwrap()

@@ -1,31 +1,25 @@
-//! Convergence of warm-started sweeps at points that used to converge slowly or not at all.
-//! The NACA 8-H-12 is paneled as `polargen --airfoil naca8h12` does it (160 nodes), and the
-//! sweeps run through the same `polar::sweep` as the CLI.
+//! Convergence of warm-started sweeps at conditions that are hard for the Newton iteration,
+//! through the same `polar::sweep` as the command line, with the NACA 8-H-12 paneled as
+//! `polargen --airfoil naca8h12` does it (160 nodes). Guards that
 //!
-//! * Fixed cycles near transition (both also cycle in XFOIL 6.99): Re 1.5e6, M 0.2, α −0.5°
-//!   after −0.25° (the lower-surface transition point just upstream of a station, the re-march
-//!   undid every Newton step: RMS change 6.9e-3 repeated to the iteration cap), and Re 2e6,
-//!   M 0, α 7° after 6.5° (transition inside the onset ramp of the amplification rate, the
-//!   station's local iteration flipped between two states).
-//! * Negative stall follows XFOIL's branch: the sweeps down from 0° must land on the solution
-//!   XFOIL 6.99 finds (references made with `../shared/tools/xfoil_reference.py`, same α steps,
-//!   copied to `tests/data/viscous/*_negative.csv`), not on the lower-drag branches a damped
-//!   re-march of separated stations or a negative-form-drag state led to.
-//! * Warm-start stagnation point (XFOIL VISCAL: the stagnation point of a warm start comes from
-//!   the previous viscous solution): the paper's free sweep needed 315 Newton iterations in its
-//!   final attempts when the stagnation point was taken from the new inviscid speed, 275 with
-//!   it, 179 with the default Newton tolerance of 1e-3 instead of XFOIL's 1e-4, and 181 with
-//!   the re-march changes of a later session (carried corrections, fallback chains).
-//! * The default tolerance gives the same polar as a tight one (1e-8), and so does the
-//!   re-march with or without the carried corrections.
+//! * a transition point just upstream of a station, or inside the onset ramp of the
+//!   amplification rate (both cycle in XFOIL 6.99 too), converges in a few iterations
+//!   instead of cycling to the iteration cap;
+//! * the paper's sweep needs few Newton iterations in total (the warm start takes the
+//!   stagnation point from the previous viscous solution, as XFOIL's VISCAL does);
+//! * the default Newton tolerance and the re-march's carried corrections change the path of
+//!   the iterations, not the polar;
+//! * sweeps from 0° down stay on the branch XFOIL 6.99 finds (in negative stall too), through a
+//!   near-singular first step and a chain of re-march fallbacks, within about three times the
+//!   deviation from XFOIL measured when the limits were set (references in tests/data/xfoil).
 
 use polargen::geometry::{airfoil_by_name_or_path, Airfoil, PanelingParams};
 use polargen::polar::{sweep, SweepParams};
 use polargen::section::PolarPoint;
 use polargen::viscous::{ViscousParams, ViscousSolver};
-use std::collections::HashMap;
 
-const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/viscous/");
+mod xfoil_support;
+use xfoil_support::{at_alpha, polar};
 
 fn naca8h12() -> Airfoil {
     paneled("naca8h12")
@@ -205,27 +199,36 @@ fn carried_correction_moves_only_the_start() {
     assert!(iterations[0] <= iterations[1], "{iterations:?}");
 }
 
-/// XFOIL's converged points of a reference CSV (alpha, cl, cd, …), keyed by α in hundredths.
-fn xfoil_points(file: &str) -> HashMap<i64, (f64, f64)> {
-    let text = std::fs::read_to_string(format!("{DATA}{file}")).unwrap();
-    text.lines()
-        .skip(1)
-        .map(|l| {
-            let v: Vec<f64> = l.split(',').map(|t| t.parse().unwrap()).collect();
-            ((v[0] * 100.0).round() as i64, (v[1], v[2]))
-        })
-        .collect()
+/// Largest |ΔCl| and |ΔCd|/Cd of the converged `points` against XFOIL's polar `file`, and the
+/// number of points compared.
+fn deviation_from_xfoil(points: &[PolarPoint], file: &str) -> (f64, f64, usize) {
+    let reference = polar(file);
+    let (mut dcl, mut dcd, mut compared) = (0.0_f64, 0.0_f64, 0);
+    for p in points.iter().filter(|p| p.converged) {
+        if let Some(r) = at_alpha(&reference, p.alpha) {
+            dcl = dcl.max((p.cl - r.cl).abs());
+            dcd = dcd.max((p.cd / r.cd - 1.0).abs());
+            compared += 1;
+        }
+    }
+    eprintln!("{file}: max |dCl| {dcl:.1e}, |dCd|/Cd {dcd:.1e} over {compared} points");
+    (dcl, dcd, compared)
 }
 
+/// Sweeps from 0° to −10°: no converged point with negative form drag beyond round-off, and
+/// every converged point on XFOIL's branch (the other branches a damped re-march of separated
+/// stations or a negative-form-drag state led to differ by 0.01–0.05 in Cl and 10–50 % in Cd).
+/// Limits (|ΔCl|, |ΔCd|/Cd): about three times the measured (in the comments).
 #[test]
 fn negative_stall_follows_xfoils_branch() {
-    for (name, re, mach, xtr, file) in [
+    for (name, re, mach, xtr, file, limits) in [
         (
             "naca23012",
             5e5,
             0.4,
             0.07,
             "naca23012_Re5e5_M0.4_xtr0.07_negative.csv",
+            [1.5e-4, 1.1e-3], // measured 4.9e-5, 3.7e-4
         ),
         (
             "naca8h12",
@@ -233,13 +236,11 @@ fn negative_stall_follows_xfoils_branch() {
             0.4,
             1.0,
             "naca8h12_Re2.5e6_M0.4_free_negative.csv",
+            [1.5e-4, 2.1e-3], // measured 4.9e-5, 6.9e-4
         ),
     ] {
-        let reference = xfoil_points(file);
         let points = run_foil(&paneled(name), re, mach, xtr, &range(-10.0, 0.0, 0.5), true);
-        let mut compared = 0;
         for p in points.iter().filter(|p| p.converged) {
-            // No converged point has negative form drag beyond round-off.
             assert!(
                 p.cd - p.cdf >= -2e-4,
                 "{name} alpha {}: cd {} cdf {}",
@@ -247,20 +248,13 @@ fn negative_stall_follows_xfoils_branch() {
                 p.cd,
                 p.cdf
             );
-            if let Some(&(cl, cd)) = reference.get(&((p.alpha * 100.0).round() as i64)) {
-                // XFOIL prints 4 decimals of Cl and 5 of Cd; the other branches differ by
-                // 0.01-0.05 in Cl and 10-50 % in Cd.
-                assert!(
-                    (p.cl - cl).abs() <= 1e-3 && (p.cd / cd - 1.0).abs() <= 0.01,
-                    "{name} alpha {}: cl {} cd {} vs XFOIL {cl} {cd}",
-                    p.alpha,
-                    p.cl,
-                    p.cd
-                );
-                compared += 1;
-            }
         }
+        let (dcl, dcd, compared) = deviation_from_xfoil(&points, file);
         assert!(compared >= 10, "{name}: only {compared} points compared");
+        assert!(
+            dcl <= limits[0] && dcd <= limits[1],
+            "{name}: {dcl:.2e} {dcd:.2e}"
+        );
     }
 }
 
@@ -301,16 +295,14 @@ fn step_from_a_near_singular_system_is_not_repeated() {
     // the node interval from a node, the first Newton step comes out of a near-singular system
     // (relative changes ≈ 1e23), and with the stagnation-point terms in every iteration the
     // point failed in all retries. The iteration after such a step goes without those terms.
-    // XFOIL 6.99 at −3°: Cl −0.2494, Cd 0.00816.
+    // Every point against XFOIL 6.99's sweep: measured |ΔCl| 4.0e-5, |ΔCd|/Cd 5.8e-4, limits
+    // about three times that.
     let points = run(2.5e6, 0.3, &range(-3.5, 0.0, 0.5), true);
     assert!(points.iter().all(|p| p.converged), "{points:?}");
-    let p = points.iter().find(|p| p.alpha == -3.0).unwrap();
-    assert!(
-        (p.cl + 0.2494).abs() <= 1e-3 && (p.cd / 0.00816 - 1.0).abs() <= 0.01,
-        "cl {} cd {} vs XFOIL -0.2494 0.00816",
-        p.cl,
-        p.cd
-    );
+    let (dcl, dcd, compared) =
+        deviation_from_xfoil(&points, "naca8h12_Re2.5e6_M0.3_free_negative.csv");
+    assert_eq!(compared, 8);
+    assert!(dcl <= 1.2e-4 && dcd <= 1.8e-3, "{dcl:.2e} {dcd:.2e}");
 }
 
 #[test]
@@ -319,20 +311,18 @@ fn fallback_chain_does_not_explode_the_newton_step() {
     // by one node in the first iteration, a laminar bubble near the leading edge on the lower
     // surface then transitions one station earlier in the re-march, the next station cannot
     // follow from H ≈ 9.6 and falls back, and with XFOIL's fallback (extrapolation from the
-    // extrapolated neighbour) all 63 stations after it did too. The Newton step at that state
-    // exploded (RMS change 1e47) and the point took 18–20 iterations, −3.5° 14. With the
-    // stations of such a chain keeping the Newton step's state: 5 and 6. XFOIL 6.99, same α
-    // path: Cl −0.1735 / Cd 0.00988 at −2.5°, −0.2916 / 0.01116 at −3.5°.
+    // extrapolated neighbour) all 63 stations after it would too; the Newton step at that
+    // state explodes (RMS change 1e47, 18–20 iterations). The stations of such a chain keep the
+    // Newton step's state instead: 5 and 6 iterations. The converged points against XFOIL
+    // 6.99's sweep: measured |ΔCl| 4.4e-5, |ΔCd|/Cd 4.2e-4, limits about three times that.
     let points = run(1e6, 0.3, &range(-3.5, 0.0, 0.5), false);
-    for (alpha, cl, cd) in [(-2.5, -0.1735, 0.00988), (-3.5, -0.2916, 0.01116)] {
+    for alpha in [-2.5, -3.5] {
         let p = points.iter().find(|p| p.alpha == alpha).unwrap();
         assert!(p.converged, "{alpha}: not converged");
         assert!(p.iterations <= 8, "{alpha}: {} iterations", p.iterations);
-        assert!(
-            (p.cl - cl).abs() <= 1e-3 && (p.cd / cd - 1.0).abs() <= 0.01,
-            "{alpha}: cl {} cd {} vs XFOIL {cl} {cd}",
-            p.cl,
-            p.cd
-        );
     }
+    let (dcl, dcd, compared) =
+        deviation_from_xfoil(&points, "naca8h12_Re1e6_M0.3_free_negative.csv");
+    assert!(compared >= 6, "{compared}");
+    assert!(dcl <= 1.3e-4 && dcd <= 1.3e-3, "{dcl:.2e} {dcd:.2e}");
 }

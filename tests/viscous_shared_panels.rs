@@ -11,7 +11,7 @@ use polargen::viscous::{SharedPanels, ViscousParams, ViscousSolver};
 fn paneled() -> Airfoil {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/viscous/naca23012_xfoil_paneled.dat"
+        "/tests/data/xfoil/naca23012_paneled.dat"
     );
     polargen::geometry::read_airfoil_file(std::path::Path::new(path)).unwrap()
 }

@@ -1,6 +1,10 @@
 //! Operating point at a prescribed Cl (`polar::solve_at_cl`) against XFOIL 6.99: the paper's
 //! Table 5 condition, NACA 8-H-12 at Re 1.9e6, M 0.41, Cl = 0.8, free and xtr 0.07, on XFOIL's
-//! own 160 nodes. α and Cd are compared with XFOIL's polar interpolated linearly in Cl.
+//! own 160 nodes, α and Cd compared with XFOIL's polar interpolated linearly in Cl. Guards the
+//! target-Cl search and its errors; the agreement within about three times the deviation
+//! measured when the limits were set (in the comments).
+
+mod xfoil_support;
 
 use polargen::polar::{
     solve_at_cl, solve_operating_point, OperatingPoint, OperatingPointError, TargetClError,
@@ -8,32 +12,21 @@ use polargen::polar::{
 };
 use polargen::viscous::{ViscousParams, ViscousSolver};
 
-const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/viscous/");
-
 fn solver(xtr: f64) -> ViscousSolver {
-    let path = format!("{DATA}naca8h12_xfoil_paneled.dat");
-    let foil = polargen::geometry::read_airfoil_file(std::path::Path::new(&path)).unwrap();
+    let foil = xfoil_support::paneled("naca8h12");
     let params = ViscousParams::at(1.9e6, 0.41, xtr);
     ViscousSolver::new(&foil, params).unwrap()
 }
 
 /// (α, Cd) of the XFOIL reference polar at `cl`, linear in Cl between converged rows.
 fn xfoil_at_cl(file: &str, cl: f64) -> (f64, f64) {
-    let text = std::fs::read_to_string(format!("{DATA}{file}")).unwrap();
-    let rows: Vec<[f64; 3]> = text
-        .lines()
-        .skip(1)
-        .filter_map(|l| {
-            let v: Vec<f64> = l.split(',').filter_map(|t| t.parse().ok()).collect();
-            (v.len() >= 3).then(|| [v[0], v[1], v[2]])
-        })
-        .collect();
+    let rows = xfoil_support::polar(file);
     for w in rows.windows(2) {
-        if w[0][1] <= cl && cl < w[1][1] {
-            let f = (cl - w[0][1]) / (w[1][1] - w[0][1]);
+        if w[0].cl <= cl && cl < w[1].cl {
+            let f = (cl - w[0].cl) / (w[1].cl - w[0].cl);
             return (
-                w[0][0] + f * (w[1][0] - w[0][0]),
-                w[0][2] + f * (w[1][2] - w[0][2]),
+                w[0].alpha + f * (w[1].alpha - w[0].alpha),
+                w[0].cd + f * (w[1].cd - w[0].cd),
             );
         }
     }
@@ -42,27 +35,29 @@ fn xfoil_at_cl(file: &str, cl: f64) -> (f64, f64) {
 
 #[test]
 fn paper_table5_points_match_xfoil() {
-    for (xtr, file) in [
-        (1.0, "naca8h12_Re1.9e6_M0.41_free.csv"),
-        (0.07, "naca8h12_Re1.9e6_M0.41_xtr0.07.csv"),
+    // Limits (|Δα| [deg], |ΔCd|/Cd): measured 5.8e-4, 3.1e-3 (free) and 1.1e-3, 1.3e-3 (xtr).
+    for (xtr, file, limits) in [
+        (1.0, "naca8h12_Re1.9e6_M0.41_free.csv", [1.8e-3, 9.5e-3]),
+        (0.07, "naca8h12_Re1.9e6_M0.41_xtr0.07.csv", [3.4e-3, 4e-3]),
     ] {
         let sol = solve_at_cl(&mut solver(xtr), 0.8, &TargetClParams::default()).unwrap();
         let p = sol.point;
         let (alpha_ref, cd_ref) = xfoil_at_cl(file, 0.8);
         assert!(p.converged);
         assert!((p.cl - 0.8).abs() <= 1e-4, "{file}: cl {}", p.cl);
-        // XFOIL's polar is tabulated every 0.25-0.5 deg: linear interpolation in Cl is good
-        // to a few hundredths of a degree and ~0.5 % in Cd; our solver agrees to ~0.1 % in Cd.
+        // XFOIL's polar is tabulated every 0.5°: the interpolation in Cl, not the solver,
+        // makes most of the difference.
+        let (dalpha, dcd) = ((p.alpha - alpha_ref).abs(), (p.cd / cd_ref - 1.0).abs());
+        eprintln!(
+            "{file}: alpha {} vs {alpha_ref}: {dalpha:.1e}; cd {} vs {cd_ref}: {dcd:.1e}",
+            p.alpha, p.cd
+        );
         assert!(
-            (p.alpha - alpha_ref).abs() <= 0.05,
+            dalpha <= limits[0],
             "{file}: alpha {} vs {alpha_ref}",
             p.alpha
         );
-        assert!(
-            (p.cd / cd_ref - 1.0).abs() <= 0.02,
-            "{file}: cd {} vs {cd_ref}",
-            p.cd
-        );
+        assert!(dcd <= limits[1], "{file}: cd {} vs {cd_ref}", p.cd);
     }
 }
 

@@ -17,7 +17,7 @@ fn invalid_inputs_are_errors_not_panics() {
     ));
     let text = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/viscous/naca0012_xfoil_paneled.dat"
+        "/tests/data/xfoil/naca0012_paneled.dat"
     ))
     .unwrap();
     let (mut x, mut y) = (Vec::new(), Vec::new());

@@ -17,7 +17,7 @@ import pytest
 FAST_reader = pytest.importorskip("openfast_io.FAST_reader")
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-TABLE = ROOT / "tests" / "data" / "table" / "naca8h12_Re1.9e6_M0.41_free.csv"
+TABLE = ROOT / "tests" / "data" / "xfoil" / "naca8h12_Re1.9e6_M0.41_free.csv"
 GRID = ROOT / "polars" / "naca8h12_free.csv"
 
 

@@ -76,7 +76,7 @@ def test_per_side_ncrit_equals_the_cli(cli, tmp_path):
 
 
 def test_coordinate_file_and_arrays_give_the_cli_polar(cli, repo, tmp_path):
-    path = repo / "tests" / "data" / "geometry" / "naca2412_xfoil_buffer.dat"
+    path = repo / "tests" / "data" / "xfoil" / "naca2412_buffer.dat"
     text = cli_polar_csv(cli, tmp_path, "--airfoil", str(path), "--re", "1e6", "--mach", "0",
                          "--alpha",
                          "0:4:2")

@@ -22,7 +22,7 @@ pub struct PointCase<'a> {
     pub style: Style,
     /// Pressure coefficient Cp(x/c).
     pub cp: (&'a [f64], &'a [f64]),
-    /// Kinematic shape factor H = δ*/θ.
+    /// Shape factor H = δ*/θ (as [`SurfaceDistributions::h`]).
     pub h: (&'a [f64], &'a [f64]),
     /// Skin-friction coefficient as given by the solver (XFOIL normalises τw by ½ ρ V∞²).
     pub cf: (&'a [f64], &'a [f64]),

@@ -108,7 +108,7 @@ impl Beyond {
         let mut o = String::new();
         let recs = &self.contamination.records;
         let rpm = |r: &ContaminationRecord| signed(r.penalty.delta_engine_rpm);
-        let clean_rpm = recs.first().map_or(0.0, |r| r.performance.rotor_rpm);
+        let clean_rpm = recs.first().map_or(0.0, |r| r.trim.rotor_rpm);
         let (band, tol) = FLIGHT_TEST_DELTA_ENGINE_RPM;
         outln!(o, "## Beyond the paper");
         outln!(o);
@@ -150,7 +150,7 @@ impl Beyond {
             }
             v.iter()
                 .map(|r| {
-                    let dn = r.performance.rotor_rpm - clean_rpm;
+                    let dn = r.trim.rotor_rpm - clean_rpm;
                     format!("{} ({} engine rpm, rotor {dn:+.1} rpm)", r.setting, rpm(r))
                 })
                 .collect::<Vec<_>>()
@@ -159,7 +159,7 @@ impl Beyond {
         let steady: Vec<&ContaminationRecord> = in_band
             .iter()
             .copied()
-            .filter(|r| (r.performance.rotor_rpm - clean_rpm).abs() <= ROTOR_RPM_UNCHANGED)
+            .filter(|r| (r.trim.rotor_rpm - clean_rpm).abs() <= ROTOR_RPM_UNCHANGED)
             .collect();
         let paper = recs
             .iter()
@@ -236,7 +236,7 @@ impl Beyond {
             100.0
                 * recs
                     .first()
-                    .map_or(0.0, |r| r.performance.table_clamped_fraction)
+                    .map_or(0.0, |r| r.takeoff.table_clamped_fraction)
         );
         outln!(o);
         o

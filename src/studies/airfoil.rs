@@ -5,7 +5,7 @@
 use super::files::records_csv;
 use super::{
     cell, load_study_airfoil, Penalty, Performance, Progress, StudiesError, StudyFiles, TableCache,
-    Transition, PAPER_TRIP_XTR,
+    TakeoffFigures, Transition, TrimFigures, PAPER_TRIP_XTR,
 };
 use crate::plot::{Figure, Panel, Series, Style};
 use crate::rotor::study::{paper_run, PAPER_TRIM_SPEED_KT};
@@ -21,34 +21,18 @@ pub struct AirfoilRecord {
     pub airfoil: String,
     /// Transition fixed at the paper's 7 % chord on both surfaces (else free, N_crit 9).
     pub contaminated: bool,
-    /// Trim and takeoff.
+    /// Trim.
     #[serde(flatten)]
-    pub performance: Performance,
+    pub trim: TrimFigures,
     /// Against the same airfoil clean (zero for the clean record).
     #[serde(flatten)]
     pub penalty: Penalty,
     /// F_prop against the first airfoil in the same state \[%\].
     pub prop_thrust_vs_first_pct: f64,
+    /// Takeoff.
+    #[serde(flatten)]
+    pub takeoff: TakeoffFigures,
 }
-
-/// Columns of the CSV file, in order (the JSON keys).
-pub const CSV_COLUMNS: [&str; 15] = [
-    "airfoil",
-    "contaminated",
-    "rotor_rpm",
-    "rotor_aoa_deg",
-    "rotor_aoa_drag_equivalent_deg",
-    "rotor_drag_n",
-    "prop_thrust_n",
-    "engine_rpm",
-    "delta_prop_thrust_pct",
-    "delta_engine_rpm",
-    "prop_thrust_vs_first_pct",
-    "takeoff_roll_m",
-    "distance_15m_m",
-    "max_flapping_deg",
-    "table_clamped_fraction",
-];
 
 /// Trim at the paper's speed and takeoff of each `(name, clean, contaminated)` airfoil, all
 /// runs in parallel; clean and contaminated record of each airfoil in turn.
@@ -79,10 +63,11 @@ pub fn run_airfoils<S: SectionAero + Sync + ?Sized>(
             AirfoilRecord {
                 airfoil: name.to_string(),
                 contaminated: dirty,
-                penalty: Penalty::between(own_clean, &runs[k]),
+                trim: runs[k].trim.clone(),
+                penalty: Penalty::between(&own_clean.trim, &runs[k].trim),
                 prop_thrust_vs_first_pct: 100.0
-                    * (runs[k].prop_thrust_n / first.prop_thrust_n - 1.0),
-                performance: runs[k].clone(),
+                    * (runs[k].trim.prop_thrust_n / first.trim.prop_thrust_n - 1.0),
+                takeoff: runs[k].takeoff.clone(),
             }
         })
         .collect())
@@ -147,7 +132,7 @@ impl AirfoilStudy {
             "b_max"
         );
         for r in &self.records {
-            let p = &r.performance;
+            let (p, t) = (&r.trim, &r.takeoff);
             s.push_str(&format!(
                 "{:<22} {:<5} {:>6.1} {:>7.1} {:>6} {:>+7.1} {:>6} {:>+7.1} {:>6.1} {:>6.1} {:>5.2}\n",
                 r.airfoil,
@@ -158,9 +143,9 @@ impl AirfoilStudy {
                 r.penalty.delta_prop_thrust_pct,
                 cell(r.penalty.delta_engine_rpm.map(f64::round), 0),
                 r.prop_thrust_vs_first_pct,
-                p.takeoff_roll_m,
-                p.distance_15m_m,
-                p.max_flapping_deg
+                t.takeoff_roll_m,
+                t.distance_15m_m,
+                t.max_flapping_deg
             ));
         }
         s
@@ -198,11 +183,11 @@ impl AirfoilStudy {
             "Rotor with each airfoil at 60 kt: {}",
             names.join(", ")
         ))
-        .with_panel(panel("F_prop [N]", &|r| Some(r.performance.prop_thrust_n)))
-        .with_panel(panel("engine rpm", &|r| r.performance.engine_rpm));
+        .with_panel(panel("F_prop [N]", &|r| Some(r.trim.prop_thrust_n)))
+        .with_panel(panel("engine rpm", &|r| r.trim.engine_rpm));
         Ok(StudyFiles {
             csv_stem: CSV_STEM.to_string(),
-            csv: records_csv(&CSV_COLUMNS, &self.records)?,
+            csv: records_csv(&self.records)?,
             figures: vec![(FIGURE_STEMS[0].to_string(), fig)],
         })
     }

@@ -11,7 +11,7 @@
 use super::files::{band_markers, records_csv};
 use super::{
     cell, load_study_airfoil, sections, study_tables, Penalty, Performance, Progress, Sections,
-    StudiesError, StudyFiles, TableCache, Transition, PAPER_TRIP_XTR,
+    StudiesError, StudyFiles, TableCache, TakeoffFigures, Transition, TrimFigures, PAPER_TRIP_XTR,
 };
 use crate::plot::{Figure, Marker, Panel, Series, Style};
 use crate::rotor::study::{paper_run, PAPER_TRIM_SPEED_KT};
@@ -73,7 +73,7 @@ impl Setting {
     }
 }
 
-/// What to compute; [`Default`] is the set of issue 24.
+/// What to compute; [`Default`] is the set listed in `docs/studies.md`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ContaminationOptions {
     /// Trip locations x/c on both surfaces.
@@ -151,7 +151,7 @@ impl ContaminationOptions {
     }
 }
 
-/// The result of one setting. JSON keys as in issue 24.
+/// The result of one setting; its field names are the `--json` keys of `gyro study contamination`.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ContaminationRecord {
     /// Label of the setting.
@@ -168,36 +168,16 @@ pub struct ContaminationRecord {
     pub coverage_inner_r_over_r: f64,
     /// Outer edge r/R of the contaminated band.
     pub coverage_outer_r_over_r: f64,
-    /// Trim and takeoff.
+    /// Trim.
     #[serde(flatten)]
-    pub performance: Performance,
+    pub trim: TrimFigures,
     /// Against the clean rotor.
     #[serde(flatten)]
     pub penalty: Penalty,
+    /// Takeoff.
+    #[serde(flatten)]
+    pub takeoff: TakeoffFigures,
 }
-
-/// Columns of the CSV file, in order (the JSON keys).
-pub const CSV_COLUMNS: [&str; 19] = [
-    "setting",
-    "group",
-    "xtr_top",
-    "xtr_bot",
-    "ncrit",
-    "coverage_inner_r_over_r",
-    "coverage_outer_r_over_r",
-    "rotor_rpm",
-    "rotor_aoa_deg",
-    "rotor_aoa_drag_equivalent_deg",
-    "rotor_drag_n",
-    "prop_thrust_n",
-    "engine_rpm",
-    "delta_prop_thrust_pct",
-    "delta_engine_rpm",
-    "takeoff_roll_m",
-    "distance_15m_m",
-    "max_flapping_deg",
-    "table_clamped_fraction",
-];
 
 /// The transition settings whose tables `settings` need (the clean one first).
 pub fn transitions(settings: &[Setting]) -> Vec<Transition> {
@@ -244,8 +224,9 @@ pub fn run_contamination<S: SectionAero + Sync + ?Sized>(
             ncrit: s.transition.ncrit,
             coverage_inner_r_over_r: s.inner,
             coverage_outer_r_over_r: s.outer,
-            penalty: Penalty::between(&reference, &performance),
-            performance,
+            penalty: Penalty::between(&reference.trim, &performance.trim),
+            trim: performance.trim,
+            takeoff: performance.takeoff,
         })
         .collect())
 }
@@ -260,7 +241,7 @@ pub fn text_table(records: &[ContaminationRecord], airfoil: &str, speed_kt: f64)
         "s_TO", "s_15", "b_max"
     );
     for r in records {
-        let p = &r.performance;
+        let (p, t) = (&r.trim, &r.takeoff);
         s.push_str(&format!(
             "{:<22} {:>6.1} {:>6.2} {:>6.2} {:>6.1} {:>7.1} {:>6} {:>+7.1} {:>6} {:>6.1} {:>6.1} {:>5.2}\n",
             r.setting,
@@ -272,9 +253,9 @@ pub fn text_table(records: &[ContaminationRecord], airfoil: &str, speed_kt: f64)
             cell(p.engine_rpm, 0),
             r.penalty.delta_prop_thrust_pct,
             cell(r.penalty.delta_engine_rpm.map(|d| d.round()), 0),
-            p.takeoff_roll_m,
-            p.distance_15m_m,
-            p.max_flapping_deg
+            t.takeoff_roll_m,
+            t.distance_15m_m,
+            t.max_flapping_deg
         ));
     }
     let (band, tol) = FLIGHT_TEST_DELTA_ENGINE_RPM;
@@ -300,7 +281,7 @@ pub fn text_table(records: &[ContaminationRecord], airfoil: &str, speed_kt: f64)
 
 /// The CSV file of the records.
 pub fn csv(records: &[ContaminationRecord]) -> Result<String, StudiesError> {
-    records_csv(&CSV_COLUMNS, records)
+    records_csv(records)
 }
 
 /// Δ engine rpm and ΔF_prop of `records` of the groups `line` (a curve over `x`) and `marks`

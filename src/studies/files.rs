@@ -4,7 +4,8 @@
 use super::StudiesError;
 use crate::output::{check_output_path, OutputError, OutputSet};
 use crate::plot::{render_into_set, Figure, Marker, Panel};
-use serde::Serialize;
+use serde::de::{Deserializer, MapAccess, Visitor};
+use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
 /// Image formats of every study figure.
@@ -78,31 +79,72 @@ pub fn check_study_out(dir: &Path, csv_stem: &str, figures: &[&str]) -> Result<(
     Ok(())
 }
 
-/// `records` as CSV with `columns` (their serde keys; nested records flattened), `null` as an
-/// empty field.
-pub(crate) fn records_csv<T: Serialize>(
-    columns: &[&str],
-    records: &[T],
-) -> Result<String, StudiesError> {
+/// `records` as CSV: one column per serde key of the record type, in the order the record
+/// serializes them (the JSON key order, flattened parts in place), so that the columns and the
+/// JSON keys cannot differ. `null` is an empty field; no records give an empty text.
+pub(crate) fn records_csv<T: Serialize>(records: &[T]) -> Result<String, StudiesError> {
     let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record(columns).map_err(StudiesError::Csv)?;
+    let mut header: Option<Vec<String>> = None;
     for r in records {
-        let value = serde_json::to_value(r)
-            .map_err(|e| StudiesError::BadSetting(format!("record: {e}")))?;
-        let fields: Vec<String> = columns
-            .iter()
-            .map(|c| match value.get(*c) {
-                Some(serde_json::Value::String(s)) => s.clone(),
-                Some(serde_json::Value::Null) | None => String::new(),
-                Some(v) => v.to_string(),
-            })
-            .collect();
-        w.write_record(&fields).map_err(StudiesError::Csv)?;
+        let fields = fields_in_order(r)?;
+        let keys: Vec<&str> = fields.iter().map(|(k, _)| k.as_str()).collect();
+        match &header {
+            None => {
+                w.write_record(&keys).map_err(StudiesError::Csv)?;
+                header = Some(keys.iter().map(|k| k.to_string()).collect());
+            }
+            Some(h) if *h != keys => {
+                return Err(StudiesError::BadSetting(format!(
+                    "record keys {keys:?} differ from the header {h:?}"
+                )))
+            }
+            Some(_) => {}
+        }
+        let cells = fields.iter().map(|(_, v)| match v {
+            serde_json::Value::String(s) => s.clone(),
+            serde_json::Value::Null => String::new(),
+            v => v.to_string(),
+        });
+        w.write_record(cells).map_err(StudiesError::Csv)?;
     }
     let bytes = w
         .into_inner()
         .map_err(|e| StudiesError::Csv(csv::Error::from(e.into_error())))?;
     Ok(String::from_utf8_lossy(&bytes).into_owned())
+}
+
+/// The serde keys and values of `record` in the order it serializes them: its JSON text read
+/// back entry by entry (a `serde_json::Map` would sort the keys).
+fn fields_in_order<T: Serialize>(
+    record: &T,
+) -> Result<Vec<(String, serde_json::Value)>, StudiesError> {
+    let bad = |e: serde_json::Error| StudiesError::BadSetting(format!("record: {e}"));
+    let text = serde_json::to_string(record).map_err(bad)?;
+    let InOrder(fields) = serde_json::from_str(&text).map_err(bad)?;
+    Ok(fields)
+}
+
+/// The entries of a JSON object in their order.
+struct InOrder(Vec<(String, serde_json::Value)>);
+
+impl<'de> Deserialize<'de> for InOrder {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Entries;
+        impl<'de> Visitor<'de> for Entries {
+            type Value = InOrder;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a record (a JSON object)")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<InOrder, A::Error> {
+                let mut entries = Vec::new();
+                while let Some(entry) = map.next_entry()? {
+                    entries.push(entry);
+                }
+                Ok(InOrder(entries))
+            }
+        }
+        deserializer.deserialize_map(Entries)
+    }
 }
 
 /// The flight-test band `(centre, half width)` as three horizontal lines on `panel`.
@@ -111,4 +153,48 @@ pub(crate) fn band_markers(panel: Panel, (centre, half): (f64, f64)) -> Panel {
         .with_marker(Marker::hline(centre, format!("flight test +{centre}"), 1))
         .with_marker(Marker::hline(centre - half, format!("± {half}"), 7))
         .with_marker(Marker::hline(centre + half, "", 7))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[derive(Serialize)]
+    struct Inner {
+        b: f64,
+        c: Option<f64>,
+    }
+
+    #[derive(Serialize)]
+    struct Record {
+        z: String,
+        #[serde(flatten)]
+        inner: Inner,
+        a: bool,
+    }
+
+    /// Columns in declaration order (not sorted), the flattened part in place, `null` empty.
+    #[test]
+    fn columns_follow_the_record() {
+        let records = [
+            Record {
+                z: "x, y".into(),
+                inner: Inner { b: 1.0, c: None },
+                a: true,
+            },
+            Record {
+                z: "w".into(),
+                inner: Inner {
+                    b: 0.1 + 0.2,
+                    c: Some(-2.5e-7),
+                },
+                a: false,
+            },
+        ];
+        assert_eq!(
+            records_csv(&records).unwrap(),
+            "z,b,c,a\n\"x, y\",1.0,,true\nw,0.30000000000000004,-2.5e-7,false\n"
+        );
+        assert_eq!(records_csv::<Record>(&[]).unwrap(), "");
+    }
 }

@@ -169,9 +169,10 @@ impl<'a, S: ?Sized> Sections<'a, S> {
     }
 }
 
-/// The trim and takeoff quantities every study record carries (flattened into its JSON).
+/// The trim quantities every study record carries (flattened into its JSON and CSV, ahead of
+/// the record's deltas).
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Performance {
+pub struct TrimFigures {
     /// Rotor speed at the trim \[rpm\].
     pub rotor_rpm: f64,
     /// Tip-path-plane angle of attack \[deg\].
@@ -184,6 +185,12 @@ pub struct Performance {
     pub prop_thrust_n: f64,
     /// Engine speed \[rpm\]; `null` above the engine's maximum.
     pub engine_rpm: Option<f64>,
+}
+
+/// The takeoff quantities every study record carries and the trim's use of the table
+/// (flattened into its JSON and CSV, after the record's deltas).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct TakeoffFigures {
     /// Takeoff roll s_TO \[m\].
     pub takeoff_roll_m: f64,
     /// Distance to 15 m s_15 \[m\].
@@ -194,20 +201,33 @@ pub struct Performance {
     pub table_clamped_fraction: f64,
 }
 
+/// The trim and takeoff of one study case.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Performance {
+    /// The trim.
+    pub trim: TrimFigures,
+    /// The takeoff (and the trim's clamped lookups).
+    pub takeoff: TakeoffFigures,
+}
+
 impl Performance {
     /// The quantities of a trim and a takeoff.
     pub fn new(trim: &TrimResult, takeoff: &TakeoffResult) -> Self {
         Self {
-            rotor_rpm: trim.rotor_rpm,
-            rotor_aoa_deg: trim.rotor_aoa_deg,
-            rotor_aoa_drag_equivalent_deg: trim.rotor_aoa_drag_equivalent_deg,
-            rotor_drag_n: trim.rotor_drag_n,
-            prop_thrust_n: trim.prop_thrust_n,
-            engine_rpm: trim.engine_rpm,
-            takeoff_roll_m: takeoff.takeoff_roll_m,
-            distance_15m_m: takeoff.distance_15m_m,
-            max_flapping_deg: takeoff.max_flapping_deg,
-            table_clamped_fraction: trim.table_clamped_fraction,
+            trim: TrimFigures {
+                rotor_rpm: trim.rotor_rpm,
+                rotor_aoa_deg: trim.rotor_aoa_deg,
+                rotor_aoa_drag_equivalent_deg: trim.rotor_aoa_drag_equivalent_deg,
+                rotor_drag_n: trim.rotor_drag_n,
+                prop_thrust_n: trim.prop_thrust_n,
+                engine_rpm: trim.engine_rpm,
+            },
+            takeoff: TakeoffFigures {
+                takeoff_roll_m: takeoff.takeoff_roll_m,
+                distance_15m_m: takeoff.distance_15m_m,
+                max_flapping_deg: takeoff.max_flapping_deg,
+                table_clamped_fraction: trim.table_clamped_fraction,
+            },
         }
     }
 }
@@ -223,7 +243,7 @@ pub struct Penalty {
 
 impl Penalty {
     /// `case` against `clean`.
-    pub fn between(clean: &Performance, case: &Performance) -> Self {
+    pub fn between(clean: &TrimFigures, case: &TrimFigures) -> Self {
         Self {
             delta_prop_thrust_pct: 100.0 * (case.prop_thrust_n / clean.prop_thrust_n - 1.0),
             delta_engine_rpm: case.engine_rpm.zip(clean.engine_rpm).map(|(c, r)| c - r),

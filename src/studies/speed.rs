@@ -43,20 +43,6 @@ pub struct SpeedRecord {
     pub power_required_kw: f64,
 }
 
-/// Columns of the CSV file (the JSON keys).
-pub const CSV_COLUMNS: [&str; 10] = [
-    "speed_kt",
-    "clean_rotor_rpm",
-    "rotor_rpm",
-    "clean_prop_thrust_n",
-    "prop_thrust_n",
-    "clean_engine_rpm",
-    "engine_rpm",
-    "delta_prop_thrust_pct",
-    "delta_engine_rpm",
-    "power_required_kw",
-];
-
 /// Trim with `clean` and `dirty` at each of `speeds_kt` (in parallel). Returns the records of
 /// the speeds where both trimmed, and one note per speed where either did not.
 pub fn run_speeds<S: SectionAero + Sync + ?Sized>(
@@ -197,7 +183,7 @@ impl SpeedStudy {
     pub fn files(&self) -> Result<StudyFiles, StudiesError> {
         Ok(StudyFiles {
             csv_stem: CSV_STEM.to_string(),
-            csv: records_csv(&CSV_COLUMNS, &self.records)?,
+            csv: records_csv(&self.records)?,
             figures: vec![(FIGURE_STEMS[0].to_string(), self.figure())],
         })
     }

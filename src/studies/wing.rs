@@ -51,23 +51,6 @@ pub struct WingRecord {
     pub note: String,
 }
 
-/// Columns of the CSV file (the JSON keys).
-pub const CSV_COLUMNS: [&str; 13] = [
-    "wing_area_m2",
-    "speed_kt",
-    "converged",
-    "rotor_rpm",
-    "prop_thrust_n",
-    "delta_prop_thrust_pct",
-    "power_required_kw",
-    "engine_rpm",
-    "rotor_lift_share",
-    "rotor_drag_n",
-    "wing_drag_n",
-    "wing_lift_coefficient",
-    "note",
-];
-
 /// The settings of a wing study (also `gyro study wing`'s flags), checked before any work.
 /// The default areas are none and about 0.6, 1 and 1.5 times the 1.7 m² wing of the paper's
 /// §6.
@@ -322,7 +305,7 @@ impl WingStudy {
     pub fn files(&self) -> Result<StudyFiles, StudiesError> {
         Ok(StudyFiles {
             csv_stem: CSV_STEM.to_string(),
-            csv: records_csv(&CSV_COLUMNS, &self.records)?,
+            csv: records_csv(&self.records)?,
             figures: vec![(FIGURE_STEMS[0].to_string(), self.figure())],
         })
     }

@@ -23,7 +23,8 @@ pub struct SurfaceDistributions {
     pub x: Vec<f64>,
     /// Pressure coefficient ([`pressure_coefficient`]).
     pub cp: Vec<f64>,
-    /// Kinematic shape factor H = δ*/θ.
+    /// Shape factor H = δ*/θ of the compressible thicknesses (not the kinematic Hk of the
+    /// closures, which XFOIL's `DUMP` prints in its "H" column; the two differ when M > 0).
     pub h: Vec<f64>,
     /// Skin-friction coefficient τw/(½ρV∞²).
     pub cf: Vec<f64>,

@@ -1,7 +1,10 @@
 //! Shared by the boundary-layer tests: the BL model at given conditions, XFOIL 6.99 DUMP files
-//! (tests/data/bl) split into surfaces at the stagnation point, and the inverse Karman–Tsien
+//! (tests/data/xfoil) split into surfaces at the stagnation point, and the inverse Karman–Tsien
 //! relation that turns XFOIL's dumped (compressible) edge speeds back into panel speeds.
 #![allow(dead_code)]
+
+#[path = "../xfoil_support/mod.rs"]
+pub mod xfoil_support;
 
 use polargen::boundary_layer::{BlConditions, BlModel, BlParams};
 
@@ -59,17 +62,11 @@ pub struct Dump {
     pub wake: Vec<(f64, Row)>,
 }
 
-/// Read `tests/data/bl/<name>`: airfoil rows have 12 or more columns, wake rows fewer.
+/// The dump `name` of tests/data/xfoil: airfoil rows have 12 columns, wake rows 8.
 pub fn load_dump(name: &str) -> Dump {
-    let path = format!("{}/tests/data/bl/{name}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).expect("dump file present");
     let mut airfoil = Vec::new();
     let mut wake = Vec::new();
-    for line in text.lines().filter(|l| !l.trim_start().starts_with('#')) {
-        let v: Vec<f64> = line
-            .split_whitespace()
-            .map(|t| t.parse().expect("number"))
-            .collect();
+    for v in xfoil_support::dump(name) {
         let row = Row {
             s: v[0],
             x: v[1],

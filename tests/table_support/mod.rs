@@ -1,6 +1,15 @@
 //! Shared builders for the table tests: analytic polars and the XFOIL reference polars.
 #![allow(dead_code)]
 
+#[path = "../xfoil_support/mod.rs"]
+pub mod xfoil_support;
+
+#[path = "../cli_support/mod.rs"]
+mod cli_support;
+/// A fresh, empty scratch folder (the CLI tests' one; not every table test uses it).
+#[allow(unused_imports)]
+pub use cli_support::scratch;
+
 use polargen::section::PolarPoint;
 use polargen::table::{PolarTable, TableMeta};
 
@@ -99,30 +108,17 @@ pub fn analytic_table() -> PolarTable {
     PolarTable::new(meta("analytic"), re, mach, polars).expect("valid analytic table")
 }
 
-/// The XFOIL 6.99 reference polar (alpha,cl,cd,cdp,cm,xtr_top,xtr_bot) from tests/data/table.
-/// α values XFOIL did not converge at are absent from the file.
+/// The XFOIL 6.99 reference polar `file` of tests/data/xfoil as converged points (α values XFOIL
+/// did not converge at are absent from the file).
 pub fn xfoil_reference(file: &str) -> Vec<PolarPoint> {
-    let path = format!("{}/tests/data/table/{file}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(path).expect("reference polar present");
-    text.lines()
-        .skip(1)
-        .map(|l| {
-            let v: Vec<f64> = l.split(',').map(|f| f.parse().expect("number")).collect();
-            PolarPoint {
-                alpha: v[0],
-                cl: v[1],
-                cd: v[2],
-                cdp: v[3],
-                cdf: v[2] - v[3],
-                cm: v[4],
-                xtr_top: v[5],
-                xtr_bot: v[6],
-                converged: true,
-                iterations: 0,
-                residual: 0.0,
-                cpmin: f64::NAN,
-                supercritical: None,
-            }
+    xfoil_support::polar(file)
+        .into_iter()
+        .map(|r| PolarPoint {
+            cdp: r.cdp,
+            cdf: r.cd - r.cdp,
+            xtr_top: r.xtr_top,
+            xtr_bot: r.xtr_bot,
+            ..PolarPoint::from_coefficients(r.alpha, r.cl, r.cd, r.cm)
         })
         .collect()
 }
@@ -153,14 +149,6 @@ pub fn same_bits(a: &PolarTable, b: &PolarTable) -> bool {
                         && p.supercritical == q.supercritical
                 })
         })
-}
-
-/// A fresh, empty scratch folder in the system temporary directory.
-pub fn scratch(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("polargen_test_{name}_{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 /// The names of the entries of `dir`, sorted.

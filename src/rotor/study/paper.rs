@@ -249,7 +249,7 @@ pub struct Table5Row {
     /// Paper Table 5 (XFOIL 6.94), Cd at Cl = 0.8; the paper prints three decimals.
     pub paper_cd: TransitionValues,
     /// XFOIL 6.99 at Re 1.9e6, M 0.41 (160 panels, Ncrit 9; the reference polars of
-    /// `tests/data/viscous/`), Cd at Cl = 0.8 by linear interpolation between its converged
+    /// `tests/data/xfoil/`), Cd at Cl = 0.8 by linear interpolation between its converged
     /// points.
     pub xfoil_cd: TransitionValues,
     /// α \[deg\] at Cl = 0.8 in the same XFOIL 6.99 polars.

@@ -157,9 +157,6 @@ impl FromStr for TableFormat {
     }
 }
 
-/// The supercritical flag a point's minimum pressure `cpmin` implies at free-stream Mach
-/// number `mach` (Cp_min < Cp*, see
-/// [`MinimumPressure`](crate::compressibility::MinimumPressure)); `None` when `cpmin` is
 /// The file name stem of `path` (the name of a file set's members is built on it), or
 /// `default` when `path` has none.
 pub(crate) fn stem_or(path: &Path, default: &str) -> String {
@@ -173,6 +170,9 @@ pub(crate) fn extension_or(path: &Path, default: &str) -> String {
         .map_or_else(|| default.to_string(), |e| e.to_string_lossy().into_owned())
 }
 
+/// The supercritical flag a point's minimum pressure `cpmin` implies at free-stream Mach
+/// number `mach` (Cp_min < Cp*, see
+/// [`MinimumPressure`](crate::compressibility::MinimumPressure)); `None` when `cpmin` is
 /// unknown (NaN) or the Mach number is outside the subsonic range.
 pub(crate) fn supercritical_from_cpmin(cpmin: f64, mach: f64) -> Option<bool> {
     if cpmin.is_nan() {

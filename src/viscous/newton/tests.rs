@@ -19,7 +19,7 @@ const ALPHA: f64 = 2.0;
 fn paneled() -> Airfoil {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/viscous/naca0012_xfoil_paneled.dat"
+        "/tests/data/xfoil/naca0012_paneled.dat"
     );
     crate::geometry::read_airfoil_file(std::path::Path::new(path)).unwrap()
 }

@@ -9,7 +9,7 @@ use crate::geometry::read_airfoil_file;
 fn solver(xtr: f64) -> ViscousSolver {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/viscous/naca0012_xfoil_paneled.dat"
+        "/tests/data/xfoil/naca0012_paneled.dat"
     );
     let foil = read_airfoil_file(std::path::Path::new(path)).unwrap();
     ViscousSolver::new(&foil, ViscousParams::at(3e6, 0.3, xtr)).unwrap()

@@ -1,0 +1,79 @@
+//! Shared by the tests that run the binaries: paths of the repository's inputs, running
+//! `polargen` and `gyro`, the checks every CLI test makes (success, one-line errors) and scratch
+//! folders.
+#![allow(dead_code)]
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+/// The repository root.
+pub fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The path of the repository file `relative` as a string (for an argument list).
+pub fn repo(relative: &str) -> String {
+    root().join(relative).display().to_string()
+}
+
+/// The shipped table `polars/<name>`.
+pub fn polars(name: &str) -> String {
+    repo(&format!("polars/{name}"))
+}
+
+/// The MTOsport preset.
+pub fn aircraft() -> String {
+    repo("aircraft/mtosport.toml")
+}
+
+/// Runs `polargen` with `args`.
+pub fn polargen(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_polargen"))
+        .args(args)
+        .output()
+        .expect("polargen runs")
+}
+
+/// Runs `gyro` with `args`.
+pub fn gyro(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gyro"))
+        .args(args)
+        .output()
+        .expect("gyro runs")
+}
+
+/// The run's standard error as text.
+pub fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+/// The run succeeded (stderr shown otherwise).
+pub fn assert_ok(out: &Output) {
+    assert!(out.status.success(), "stderr: {}", stderr(out));
+}
+
+/// The standard output of a run that must succeed.
+pub fn ok(out: Output) -> String {
+    assert_ok(&out);
+    String::from_utf8(out.stdout).expect("UTF-8 output")
+}
+
+/// The run of `tool` (the binary's name) failed with one line on stderr that starts with
+/// `<tool>: ` and contains `needle`, and did not panic.
+pub fn assert_one_line_error(tool: &str, out: &Output, needle: &str) {
+    let err = stderr(out);
+    assert!(!out.status.success(), "succeeded: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(err.starts_with(&format!("{tool}: ")), "{err}");
+    assert!(err.contains(needle), "no '{needle}' in: {err}");
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+/// A fresh, empty folder `polargen-test-<tag>-<process id>` in the system's temporary directory
+/// (each test binary is its own process; tags keep the tests of one binary apart).
+pub fn scratch(tag: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("polargen-test-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
