@@ -1,31 +1,15 @@
 //! `polargen summary` (text, CSV, JSON; any readable format), JSON Lines tables through
 //! `convert`, and AeroDyn files read back by `convert` whatever their extension.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
+mod cli_support;
 
+use cli_support::{ok, polargen, root, scratch, stderr};
 use polargen::table::{read_table, summarize, write_table, TableFormat, SUMMARY_COLUMNS};
+use std::path::PathBuf;
 
-fn polargen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_polargen"))
-        .args(args)
-        .output()
-        .expect("run polargen")
-}
-
-fn repo(path: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(path)
-}
-
-fn out_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("polargen-summary-{tag}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn ok(o: &Output) -> String {
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    String::from_utf8(o.stdout.clone()).unwrap()
+/// The repository file `relative`.
+fn repo(relative: &str) -> PathBuf {
+    root().join(relative)
 }
 
 /// The free-transition 8-H-12 at the paper's condition (docs/, subcritical points flagged):
@@ -35,7 +19,7 @@ fn ok(o: &Output) -> String {
 fn summary_of_the_paper_polars() {
     let free = repo("docs/naca8h12_Re1.9e6_M0.41_free.csv");
     let tripped = repo("docs/naca8h12_Re1.9e6_M0.41_xtr0.07.csv");
-    let csv = ok(&polargen(&["summary", free.to_str().unwrap(), "--csv"]));
+    let csv = ok(polargen(&["summary", free.to_str().unwrap(), "--csv"]));
     let mut lines = csv.lines();
     assert_eq!(lines.next().unwrap(), SUMMARY_COLUMNS.join(","));
     let row: Vec<&str> = lines.next().unwrap().split(',').collect();
@@ -58,12 +42,12 @@ fn summary_of_the_paper_polars() {
         (-3.5, 7.25)
     );
     // JSON: the same numbers as an array of flat records.
-    let json = ok(&polargen(&["summary", free.to_str().unwrap(), "--json"]));
+    let json = ok(polargen(&["summary", free.to_str().unwrap(), "--json"]));
     let records: serde_json::Value = serde_json::from_str(&json).unwrap();
     assert_eq!(records[0]["lift_slope"].as_f64().unwrap(), slope);
     assert_eq!(records[0]["airfoil"], "NACA 8-H-12");
     // Text: one header and one line per polar, angles and slope readable.
-    let text = ok(&polargen(&["summary", free.to_str().unwrap()]));
+    let text = ok(polargen(&["summary", free.to_str().unwrap()]));
     assert_eq!(text.lines().count(), 3, "{text}");
     assert!(text.contains(&format!("{slope:.3}")), "{text}");
 }
@@ -71,9 +55,9 @@ fn summary_of_the_paper_polars() {
 #[test]
 fn jsonl_round_trip_and_columns_of_the_csv() {
     let src = repo("polars/naca8h12_xtr0.07.csv");
-    let dir = out_dir("jsonl");
+    let dir = scratch("jsonl");
     let jsonl = dir.join("t.jsonl");
-    ok(&polargen(&[
+    ok(polargen(&[
         "convert",
         src.to_str().unwrap(),
         "--out",
@@ -113,10 +97,10 @@ fn jsonl_round_trip_and_columns_of_the_csv() {
 /// converted; ours come back as the table, C81 decks convert with the assumed Re said.
 #[test]
 fn aerodyn_and_c81_convert_by_content() {
-    let dir = out_dir("aerodyn");
+    let dir = scratch("aerodyn");
     let src = repo("docs/naca8h12_Re1.9e6_M0.41_xtr0.07.csv");
     let dat = dir.join("foil.dat");
-    ok(&polargen(&[
+    ok(polargen(&[
         "convert",
         src.to_str().unwrap(),
         "--format",
@@ -125,7 +109,7 @@ fn aerodyn_and_c81_convert_by_content() {
         dat.to_str().unwrap(),
     ]));
     let json = dir.join("back.json");
-    ok(&polargen(&[
+    ok(polargen(&[
         "convert",
         dat.to_str().unwrap(),
         "--out",
@@ -151,19 +135,19 @@ fn aerodyn_and_c81_convert_by_content() {
     // said: the deck does not give it).
     let deck = repo("tests/data/foreign/mbdyn_naca0012.c81");
     let o = polargen(&["summary", deck.to_str().unwrap(), "--csv"]);
-    let err = String::from_utf8_lossy(&o.stderr);
+    let err = stderr(&o);
     assert!(
         err.contains("Re 1000000 assumed (set it with --assume-re)"),
         "{err}"
     );
     let o = polargen(&["summary", deck.to_str().unwrap(), "--assume-re", "2.5e6"]);
-    assert!(ok(&o)
+    let err = stderr(&o);
+    assert!(ok(o)
         .lines()
         .nth(2)
         .unwrap()
         .trim_start()
         .starts_with("2.5e6"));
-    let err = String::from_utf8_lossy(&o.stderr);
     assert!(
         err.contains("Re 2500000 assumed") && !err.contains("--assume-re"),
         "{err}"
