@@ -116,7 +116,8 @@ def test_rel_thickness_from_the_geometry(tmp_path):
 def test_c_nalpha_of_the_free_table_is_the_attached_flow_slope(grid_files):
     """On the shipped free-transition 8-H-12 (M 0.4, the 8 Re tables), C_nalpha is within 10 %
     of the attached-flow lift slope — that of the tripped table at the same (Re, M), which has
-    no laminar bucket — for Re >= 2e5 (measured: -2.4 % to +3.8 %). OpenFAST's own derivation
+    no laminar bucket — for Re >= 2e5 (measured: -2.5 % to +3.6 %; Re 1e5: +11 %). OpenFAST's
+    own derivation
     from the same rows gives 8.6 to 25.6 per rad (its attached range falls inside the bucket)."""
     free = openfast_tables(grid_files / "free_M0.4.dat")
     tripped = pg.Table.read(ROOT / "polars" / "naca8h12_xtr0.07.csv")
@@ -133,7 +134,7 @@ def test_ua_block_agrees_with_openfasts_derivation_on_tripped_tables(grid_files)
     """Where OpenFAST's derivation works (tripped polars, no laminar bucket; M <= 0.4,
     Re >= 4e5), its alpha0, C_nalpha, Cn1, Cn2 and ours agree. Measured: C_nalpha ours 0.4-3.9 %
     lower (the median of local slopes over the whole attached range against its least squares
-    inside alphaLower..alphaUpper), alpha0 within 0.02 deg, Cn1 within 0.007, Cn2 within 0.014;
+    inside alphaLower..alphaUpper), alpha0 within 0.02 deg, Cn1 within 0.007, Cn2 within 0.015;
     the tolerances are about 3x those."""
     for mach in ("0", "0.2", "0.3", "0.4"):
         for t in openfast_tables(grid_files / f"xtr0.07_M{mach}.dat"):

@@ -15,8 +15,9 @@
 //! * `alpha1`, `alpha2`: where the Kirchhoff separation point f, from
 //!   Cn = C_nα·(α − α0)·((1 + √f)/2)², falls to 0.7 above and below α0 (AeroDyn's definition:
 //!   "angle of attack at f = 0.7, approximately the stall angle"); searched on the table's
-//!   lookup curve (the rows the file holds) from the ends of the attached range outwards, in
-//!   [`SEARCH_STEP_DEG`] steps, linear between steps.
+//!   lookup curve (the rows the file holds) outwards from the point of the attached range
+//!   where Cn is closest to (or above) the attached line, in [`SEARCH_STEP_DEG`] steps, linear
+//!   between steps.
 //! * `Cn1`, `Cn2`: Cn at `alpha1` and `alpha2` (AeroDyn derives them the same way).
 //! * `Cd0`, `Cm0`: Cd and Cm at `alpha0` ("2D drag coefficient value at 0-lift", "pitching
 //!   moment coefficient … at 0-lift").
@@ -145,15 +146,29 @@ impl UaParameters {
     }
 }
 
-/// The parameters of the polar at grid row (`i_re`, `i_mach`); `None` when it has no
-/// attached range ([`attached_fit`]) or f never falls to 0.7 on one side within ±90° of α0.
+/// The parameters of the polar at grid row (`i_re`, `i_mach`), from its trusted points, else
+/// from its converged points; `None` when neither gives an attached range
+/// ([`attached_fit`]) in which f falls to 0.7 on both sides within 90° of α0.
 pub fn ua_parameters(table: &PolarTable, i_re: usize, i_mach: usize) -> Option<UaParameters> {
     let points = table.polar_at(i_re, i_mach)?;
-    let (re, mach) = (table.re()[i_re], table.mach()[i_mach]);
     let converged: fn(&PolarPoint) -> bool = |p| p.converged;
-    let (run, fit, supercritical_fit) = [trusted, converged]
-        .into_iter()
-        .find_map(|keep| fitted_run(points, keep))?;
+    [trusted, converged].into_iter().find_map(|keep| {
+        let (run, fit, supercritical_fit) = fitted_run(points, keep)?;
+        from_fit(table, i_re, i_mach, run, fit, supercritical_fit)
+    })
+}
+
+/// The parameters from the attached `fit` of `run`, points of the polar at (`i_re`,
+/// `i_mach`).
+fn from_fit(
+    table: &PolarTable,
+    i_re: usize,
+    i_mach: usize,
+    run: &[PolarPoint],
+    fit: AttachedFit,
+    supercritical_fit: bool,
+) -> Option<UaParameters> {
+    let (re, mach) = (table.re()[i_re], table.mach()[i_mach]);
     let alpha: Vec<f64> = run.iter().map(|p| p.alpha).collect();
     let alpha0 = fit.alpha_zero;
     let at0 = table.lookup(alpha0, re, mach);
@@ -173,20 +188,18 @@ pub fn ua_parameters(table: &PolarTable, i_re: usize, i_mach: usize) -> Option<U
     // Cn / Cn_attached at which f = 0.7: ((1 + √0.7) / 2)².
     let threshold = (0.5 * (1.0 + F_AT_STALL.sqrt())).powi(2);
     let ratio = |a: f64| cn_at(a) / (c_nalpha * (a - alpha0).to_radians());
-    let alpha1 = stall_crossing(
-        alpha[fit.last].max(alpha0 + 1.0),
-        1.0,
-        alpha0,
-        &ratio,
-        threshold,
-    )?;
-    let alpha2 = stall_crossing(
-        alpha[fit.first].min(alpha0 - 1.0),
-        -1.0,
-        alpha0,
-        &ratio,
-        threshold,
-    )?;
+    // Each search starts where the attached range holds Cn closest to (or above) the line:
+    // the point of largest ratio at least 1° from α0 on that side (a laminar-bucket dip or
+    // the first rounding of the curve inside the range does not count as stall).
+    let start = |side: &mut dyn Iterator<Item = f64>, sign: f64| {
+        side.filter(|a| (a - alpha0) * sign >= 1.0)
+            .max_by(|a, b| ratio(*a).total_cmp(&ratio(*b)))
+            .unwrap_or(alpha0 + sign)
+    };
+    let upper = start(&mut alpha[fit.first..=fit.last].iter().copied(), 1.0);
+    let lower = start(&mut alpha[fit.first..=fit.last].iter().copied(), -1.0);
+    let alpha1 = stall_crossing(upper, 1.0, alpha0, &ratio, threshold)?;
+    let alpha2 = stall_crossing(lower, -1.0, alpha0, &ratio, threshold)?;
     Some(UaParameters {
         alpha0,
         alpha1,
@@ -236,11 +249,11 @@ fn fitted_run(
     Some((run, fit, supercritical))
 }
 
-/// Where `ratio(α)` (Cn over the attached line) crosses `threshold` going away from α0 in
+/// Where `ratio(α)` (Cn over the attached line) falls below `threshold` going away from α0 in
 /// direction `sign` (+1 up, −1 down): from `start`, step outwards while the ratio stays at or
-/// above the threshold — or, when it is already below at `start`, inwards while it stays
-/// below, not closer than 1° to α0 — and interpolate linearly between the last two steps.
-/// `None` when it does not cross within 90° of α0.
+/// above the threshold, and interpolate linearly between the last two steps. `None` when the
+/// ratio is below the threshold already at `start` or does not fall below it within 90° of
+/// α0.
 fn stall_crossing(
     start: f64,
     sign: f64,
@@ -249,16 +262,17 @@ fn stall_crossing(
     threshold: f64,
 ) -> Option<f64> {
     let above = |a: f64| ratio(a) >= threshold;
-    let outwards = above(start);
-    let step = if outwards { sign } else { -sign } * SEARCH_STEP_DEG;
+    if !above(start) {
+        return None;
+    }
+    let step = sign * SEARCH_STEP_DEG;
     let mut a = start;
     loop {
         let next = a + step;
-        let beyond = (next - alpha0) * sign;
-        if !(1.0..=90.0).contains(&beyond) {
+        if (next - alpha0) * sign > 90.0 {
             return None;
         }
-        if above(next) != outwards {
+        if !above(next) {
             let (ra, rn) = (ratio(a) - threshold, ratio(next) - threshold);
             return Some(a + step * ra / (ra - rn));
         }

@@ -444,12 +444,14 @@ impl C81Block {
         let (j, u) = bracket(&self.mach, mach);
         let (k, t) = bracket(&self.alpha, alpha);
         let v = |k: usize, j: usize| self.values[k * nm + j];
+        // a + t·(b − a): equal neighbours give their value exactly.
+        let lerp = |a: f64, b: f64, t: f64| a + t * (b - a);
         let row = |k: usize| match j {
-            Some(j) => (1.0 - u) * v(k, j) + u * v(k, j + 1),
+            Some(j) => lerp(v(k, j), v(k, j + 1), u),
             None => v(k, 0),
         };
         match k {
-            Some(k) => (1.0 - t) * row(k) + t * row(k + 1),
+            Some(k) => lerp(row(k), row(k + 1), t),
             None => row(0),
         }
     }
