@@ -117,8 +117,8 @@ def test_c_nalpha_of_the_free_table_is_the_attached_flow_slope(grid_files):
     """On the shipped free-transition 8-H-12 (M 0.4, the 8 Re tables), C_nalpha is within 10 %
     of the attached-flow lift slope — that of the tripped table at the same (Re, M), which has
     no laminar bucket — for Re >= 2e5 (measured: -2.5 % to +3.6 %; Re 1e5: +11 %). OpenFAST's
-    own derivation
-    from the same rows gives 8.6 to 25.6 per rad (its attached range falls inside the bucket)."""
+    own derivation from the same rows gives 8.6 to 25.6 per rad (its attached range falls
+    inside the bucket)."""
     free = openfast_tables(grid_files / "free_M0.4.dat")
     tripped = pg.Table.read(ROOT / "polars" / "naca8h12_xtr0.07.csv")
     for t in free:
