@@ -23,7 +23,7 @@ mod _polargen {
     #[pymodule_export]
     use crate::errors::NotConvergedError;
     #[pymodule_export]
-    use crate::rotor::PyAircraft;
+    use crate::rotor::{PyAircraft, PyRotor};
     #[pymodule_export]
     use crate::solve::{alpha_range, point, table};
     #[pymodule_export]

@@ -18,7 +18,8 @@ NumPy arrays in and out.
   :meth:`Table.read`, :meth:`Table.write` in every CLI format; :meth:`Table.lookup`
   vectorised, with the clamping/bridging/post-stall flags and the 360° extension.
 * :mod:`polargen.rotor` — the gyroplane: ``Aircraft.read``, ``trim``, ``takeoff`` with the
-  fields of ``gyro trim --json`` / ``gyro takeoff --json``.
+  fields of ``gyro trim --json`` / ``gyro takeoff --json``; ``Rotor.read``, ``autorotate``
+  (the rotor alone in a tunnel, ``gyro autorotate --json``).
 
 Errors are exceptions with the command-line tools' one-line messages: ``ValueError`` for bad
 input, ``OSError`` (``FileNotFoundError``, …) for files, :class:`NotConvergedError` when a

@@ -7,6 +7,12 @@
 
 Results hold exactly the fields ``gyro trim --json`` and ``gyro takeoff --json`` print (a
 mapping: ``result["rotor_rpm"]``, and attributes: ``result.rotor_rpm``).
+
+The rotor alone in a wind tunnel (``gyro autorotate``):
+
+>>> r = pg.rotor.Rotor.read("aircraft/pca2.toml")                      # doctest: +SKIP
+>>> a = r.autorotate(pg.Table.read("polars/goe429_xtr0.07.csv"), alpha_deg=8.3, speed_m_s=15.7)  # doctest: +SKIP
+>>> a.rotor_rpm, a.cl, a.b1_deg                                        # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -22,7 +28,10 @@ from . import _polargen
 from ._results import _pandas
 from ._table import Table
 
-__all__ = ["Aircraft", "TakeoffResult", "TrimResult", "takeoff", "trim"]
+__all__ = [
+    "Aircraft", "AutorotationResult", "Rotor", "TakeoffResult", "TrimResult", "autorotate",
+    "takeoff", "trim",
+]
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -83,6 +92,59 @@ class TakeoffResult(_Fields):
     def history_to_pandas(self):
         """The time history as a ``pandas.DataFrame``."""
         return _pandas().DataFrame(self.history)
+
+
+class AutorotationResult(_Fields):
+    """The autorotating rotor in a tunnel with the fields of ``gyro autorotate --json``:
+    ``alpha_deg``, ``speed_m_s``, ``rotor_rpm``, ``mu``, ``cl``, ``cd`` (wind axes, on
+    q·πR²), ``lift_to_drag``, ``coning_deg``, ``a1_deg``, ``b1_deg`` (NACA signs),
+    ``thrust_coefficient``, ``inflow_ratio`` and the shares of reverse flow, clamped and
+    supercritical lookups. ``notes`` holds what ``gyro`` prints beside it."""
+
+    def __init__(self, fields: Dict[str, Any], notes: List[str]) -> None:
+        super().__init__(fields)
+        self.__dict__["notes"] = list(notes)
+
+
+class Rotor:
+    """The rotor of a preset alone (an aircraft's, or a rotor-only preset such as
+    ``aircraft/pca2.toml``), as ``gyro autorotate`` reads it."""
+
+    def __init__(self, core: "_polargen.Rotor") -> None:
+        self._core = core
+
+    @classmethod
+    def read(cls, path: PathLike) -> "Rotor":
+        """Reads and checks the rotor of a TOML preset, as ``gyro autorotate --aircraft``."""
+        return cls(_polargen.Rotor.read(os.fspath(path)))
+
+    @classmethod
+    def from_toml(cls, text: str, origin: str = "<string>") -> "Rotor":
+        """Parses and checks the rotor of a TOML preset held in a string."""
+        return cls(_polargen.Rotor.from_toml(text, origin))
+
+    @property
+    def name(self) -> str:
+        """The preset's name."""
+        return self._core.name
+
+    def autorotate(self, table: Table, alpha_deg: float, speed_m_s: Optional[float] = None,
+                   mu: Optional[float] = None, reference_rpm: Optional[float] = None,
+                   pitch_deg: Optional[float] = None,
+                   altitude_m: float = 0.0) -> AutorotationResult:
+        """The rotor autorotating in a tunnel at shaft angle ``alpha_deg`` and wind speed
+        ``speed_m_s`` (or tip-speed ratio ``mu`` at ``reference_rpm``), ISA ``altitude_m``,
+        blade pitch setting ``pitch_deg`` (the preset's when None), as ``gyro autorotate``."""
+        opt = lambda v: None if v is None else float(v)  # noqa: E731
+        text, notes = self._core.autorotate(_core(table), float(alpha_deg), opt(speed_m_s),
+                                            opt(mu), opt(reference_rpm), opt(pitch_deg),
+                                            float(altitude_m))
+        for note in notes:
+            warnings.warn(note, UserWarning, stacklevel=2)
+        return AutorotationResult(json.loads(text), notes)
+
+    def __repr__(self) -> str:
+        return f"Rotor({self.name!r})"
 
 
 class Aircraft:
@@ -149,3 +211,12 @@ def trim(aircraft: Aircraft, table: Table, speed_kt: float = 60.0,
 def takeoff(aircraft: Aircraft, table: Table, mass_kg: Optional[float] = None) -> TakeoffResult:
     """:meth:`Aircraft.takeoff` of ``aircraft``."""
     return aircraft.takeoff(table, mass_kg=mass_kg)
+
+
+def autorotate(rotor: Rotor, table: Table, alpha_deg: float, speed_m_s: Optional[float] = None,
+               mu: Optional[float] = None, reference_rpm: Optional[float] = None,
+               pitch_deg: Optional[float] = None, altitude_m: float = 0.0) -> AutorotationResult:
+    """:meth:`Rotor.autorotate` of ``rotor``."""
+    return rotor.autorotate(table, alpha_deg, speed_m_s=speed_m_s, mu=mu,
+                            reference_rpm=reference_rpm, pitch_deg=pitch_deg,
+                            altitude_m=altitude_m)
