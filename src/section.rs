@@ -98,16 +98,30 @@ impl Transition {
         }
     }
 
+    /// The setting of a table whose file does not record it (a C81 deck, an AeroDyn file from
+    /// another tool): every value NaN, unknown.
+    pub const UNKNOWN: Self = Self::sides(f64::NAN, f64::NAN, f64::NAN, f64::NAN);
+
     /// Checks every value against its rule ([`TransitionField::rule`]); the first that breaks
     /// it is the error.
     pub fn check(&self) -> Result<(), TransitionError> {
+        self.check_fields(false)
+    }
+
+    /// [`check`](Self::check) for a setting read from a table file, where a value may be
+    /// unknown (NaN, as in [`Transition::UNKNOWN`]).
+    pub fn check_recorded(&self) -> Result<(), TransitionError> {
+        self.check_fields(true)
+    }
+
+    fn check_fields(&self, unknown_allowed: bool) -> Result<(), TransitionError> {
         for (field, value) in [
             (TransitionField::NcritTop, self.ncrit_top),
             (TransitionField::NcritBot, self.ncrit_bot),
             (TransitionField::XtrTop, self.xtr_top),
             (TransitionField::XtrBot, self.xtr_bot),
         ] {
-            if !field.accepts(value) {
+            if !(field.accepts(value) || (unknown_allowed && value.is_nan())) {
                 return Err(TransitionError { field, value });
             }
         }
@@ -125,9 +139,11 @@ impl Transition {
         (self.ncrit_top.to_bits() == self.ncrit_bot.to_bits()).then_some(self.ncrit_top)
     }
 
-    /// N_crit for a comment line: `9`, or `9 (top) 3 (bottom)` when the surfaces differ.
+    /// N_crit for a comment line: `9`, `9 (top) 3 (bottom)` when the surfaces differ,
+    /// `unknown` when the table does not say.
     pub fn ncrit_text(&self) -> String {
         match self.common_ncrit() {
+            Some(n) if n.is_nan() => "unknown".to_string(),
             Some(n) => n.to_string(),
             None => format!("{} (top) {} (bottom)", self.ncrit_top, self.ncrit_bot),
         }

@@ -255,9 +255,10 @@ fn tables_that_cannot_round_trip_are_refused() {
             *l = f.join(",");
         }
     };
-    let cases: [(usize, &str, &str, &str); 5] = [
-        (3, "nan", "ncrit = NaN is invalid", "pol"),
+    let cases: [(usize, &str, &str, &str); 6] = [
+        (3, "nan", "ncrit_top is unknown", "pol"),
         (5, "-0.5", "xtr_bot_set = -0.5 is invalid", "pol"),
+        (4, "inf", "xtr_top_set = inf is invalid", "pol"),
         (7, "7e250", "cl = 7e250 at alpha", "pol"),
         (11, "3.5e9", "xtr_top = 3.5e9 at alpha -10", "csv"),
         (1, "3e-7", "Re = 3e-7 is below the resolution", "pol"),

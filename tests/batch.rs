@@ -162,6 +162,30 @@ fn two_shards_give_the_tables_of_the_unsharded_run() {
         assert_eq!(j["status"], row[4].as_str());
         assert!(j["seconds"].as_f64().unwrap() >= 0.0);
     }
+
+    // The summary files: one row per polar of each table (one polar each here), named as in
+    // the index, with the numbers of `polargen summary` of that table.
+    let text = fs::read_to_string(whole.join("index-summary.csv")).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        polargen::table::SUMMARY_COLUMNS.join(",")
+    );
+    let summary: Vec<Vec<String>> = lines
+        .map(|l| l.split(',').map(str::to_string).collect())
+        .collect();
+    assert_eq!(summary.len(), rows.len());
+    for (s, row) in summary.iter().zip(&rows) {
+        assert_eq!(s[0], row[0]);
+        let table = polargen::table::read_table(&whole.join(format!("{}.csv", row[0]))).unwrap();
+        let mut expect = table.summaries().remove(0);
+        expect.airfoil = row[0].clone();
+        assert_eq!(s, &expect.fields(), "{}", row[0]);
+    }
+    let json: serde_json::Value =
+        serde_json::from_str(&fs::read_to_string(whole.join("index-summary.json")).unwrap())
+            .unwrap();
+    assert_eq!(json.as_array().unwrap().len(), rows.len());
 }
 
 #[test]

@@ -87,10 +87,10 @@ fn unequal_sides_are_recorded_and_read_back() {
         "--format",
         "aerodyn",
     ]));
-    let first = std::fs::read_to_string(&aerodyn).unwrap();
-    assert!(first
+    let header = std::fs::read_to_string(&aerodyn).unwrap();
+    assert!(header
         .lines()
-        .next()
+        .nth(1)
         .unwrap()
         .contains("Ncrit 9 (top) 3 (bottom)"));
     std::fs::remove_dir_all(dir).unwrap();

@@ -245,3 +245,35 @@ fn invalid_designations_are_rejected_with_reason() {
     assert!(NacaSection::parse("naca-23012").is_ok());
     assert!(NacaSection::parse(" NACA 2412 ").is_ok());
 }
+
+/// The largest thickness of the contour (AeroDyn's `RelThickness`): 12 % for the NACA 0012,
+/// 23012 and 8-H-12 (their designations), measured normal to the chord line whatever the
+/// contour's rotation. Measured: 0.120032 (0012, 23012; linear between contour points),
+/// 0.119780 (8-H-12, its tabulated ordinates); tolerance 6e-4.
+#[test]
+fn max_thickness_is_the_designation() {
+    use polargen::geometry::airfoil_by_name_or_path;
+    for name in ["naca0012", "naca23012", "naca8h12"] {
+        let foil = airfoil_by_name_or_path(name).unwrap();
+        let t = foil.max_thickness().unwrap();
+        assert!((t - 0.12).abs() < 6e-4, "{name}: {t}");
+        // Rotated by 10° and scaled by 2: the same t/c.
+        let (s, c) = 10f64.to_radians().sin_cos();
+        let turned = polargen::geometry::Airfoil {
+            name: foil.name.clone(),
+            x: foil
+                .x
+                .iter()
+                .zip(&foil.y)
+                .map(|(x, y)| 2.0 * (x * c - y * s))
+                .collect(),
+            y: foil
+                .x
+                .iter()
+                .zip(&foil.y)
+                .map(|(x, y)| 2.0 * (x * s + y * c))
+                .collect(),
+        };
+        assert!((turned.max_thickness().unwrap() - t).abs() < 1e-4, "{name}");
+    }
+}

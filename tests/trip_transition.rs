@@ -128,6 +128,7 @@ fn every_layer_takes_the_same_transition_range() {
         let meta = TableMeta {
             airfoil: "t".into(),
             transition: t,
+            thickness: f64::NAN,
             panels: 60,
             solver: "test".into(),
             geometry: Vec::new(),

@@ -12,7 +12,9 @@ use polargen::polar::{
     check_alphas, parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams,
 };
 use polargen::section::{PolarPoint, Transition};
-use polargen::table::{build_table_cancellable, BuildError, GridSpec, PolarTable};
+use polargen::table::{
+    build_table_cancellable, summarize, BuildError, GridSpec, PolarSummary, PolarTable,
+};
 use polargen::viscous::distributions::pressure_coefficient;
 use polargen::viscous::{BlStation, ViscousParams, ViscousSolver};
 use pyo3::prelude::*;
@@ -102,6 +104,25 @@ pub fn polar_columns<'py>(py: Python<'py>, points: &[PolarPoint]) -> PyResult<Bo
     d.set_item("xsep_top", column(|p| p.xsep_top))?;
     d.set_item("xsep_bot", column(|p| p.xsep_bot))?;
     d.set_item("massive_separation", flag(|p| p.massive_separation))?;
+    d.set_item("summary", summary_dict(py, &summarize(points))?)?;
+    Ok(d)
+}
+
+/// A polar's summary (`polargen summary`) as a dict: its JSON fields, absent values None.
+pub fn summary_dict<'py>(py: Python<'py>, s: &PolarSummary) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    let value = serde_json::to_value(s)
+        .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
+    if let serde_json::Value::Object(fields) = value {
+        for (name, v) in fields {
+            match v {
+                serde_json::Value::Bool(b) => d.set_item(name, b)?,
+                serde_json::Value::Number(n) if n.is_u64() => d.set_item(name, n.as_u64())?,
+                serde_json::Value::Number(n) => d.set_item(name, n.as_f64())?,
+                _ => d.set_item(name, py.None())?,
+            }
+        }
+    }
     Ok(d)
 }
 

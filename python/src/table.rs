@@ -6,8 +6,8 @@ use std::path::PathBuf;
 use numpy::{AllowTypeChange, IntoPyArray, PyArray1, PyArrayLike1};
 use polargen::section::Lookup;
 use polargen::table::{
-    alpha_at_cl, read_table, write_c81, write_table, C81Options, PolarTable, PostStallParams,
-    TableFormat,
+    alpha_at_cl, read_table_with, write_c81, write_table, C81Options, PolarTable, PostStallParams,
+    ReadOptions, TableFormat,
 };
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
@@ -47,16 +47,58 @@ fn lookup_dict<'py>(py: Python<'py>, l: &Lookup) -> PyResult<Bound<'py, PyDict>>
 
 #[pymethods]
 impl Table {
-    /// Reads a table file as the CLI does: polargen CSV or JSON, an XFOIL polar file, or a
-    /// single-polar CSV.
+    /// Reads a table file as the CLI does (every format `polargen convert` reads), assuming
+    /// `re` (a C81 deck), `mach` (an AeroDyn file from another tool) where the file gives
+    /// none and reading the tables at `user_prop` of an AeroDyn file with several: the table
+    /// and the reader's notes (what it assumed).
     #[staticmethod]
-    fn read(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
-        let table = py.detach(|| shielded(|| read_table(&path)))?;
-        table.map(Self::from).map_err(|e| raise(None, e))
+    #[pyo3(signature = (path, re = None, mach = None, user_prop = None))]
+    fn read(
+        py: Python<'_>,
+        path: PathBuf,
+        re: Option<f64>,
+        mach: Option<f64>,
+        user_prop: Option<f64>,
+    ) -> PyResult<(Self, Vec<String>)> {
+        let input = |r: Result<(), polargen::arguments::ArgumentError>, name| {
+            r.map_err(|e| raise(Some(name), e))
+        };
+        if let Some(re) = re {
+            input(polargen::arguments::reynolds("re", re), "re")?;
+        }
+        if let Some(mach) = mach {
+            input(polargen::arguments::mach("mach", mach), "mach")?;
+        }
+        let options = ReadOptions {
+            re,
+            mach,
+            user_prop,
+        };
+        let read = py.detach(|| shielded(|| read_table_with(&path, &options)))?;
+        read.map(|r| (Self::from(r.table), r.notes))
+            .map_err(|e| raise(None, e))
     }
 
-    /// Writes the table to `path` in `format` (`csv`, `json`, `xfoil`, `c81`; from the
-    /// extension when None), as `polargen convert` does; C81 at `c81_re` only when given.
+    /// The summary of every polar (`polargen summary`), Re-major: dicts with airfoil, re,
+    /// mach and the summary's fields.
+    fn summary<'py>(&self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
+        self.inner
+            .summaries()
+            .iter()
+            .map(|row| {
+                let d = PyDict::new(py);
+                d.set_item("airfoil", &row.airfoil)?;
+                d.set_item("re", row.re)?;
+                d.set_item("mach", row.mach)?;
+                d.update(crate::solve::summary_dict(py, &row.summary)?.as_mapping())?;
+                Ok(d)
+            })
+            .collect()
+    }
+
+    /// Writes the table to `path` in `format` (`csv`, `json`, `jsonl`, `xfoil`, `c81`,
+    /// `aerodyn`; from the extension when None), as `polargen convert` does; C81 at `c81_re`
+    /// only when given.
     /// Returns the files written.
     #[pyo3(signature = (path, format = None, c81_re = None))]
     fn write(
@@ -101,7 +143,8 @@ impl Table {
     }
 
     /// How the table was made: airfoil, ncrit (None when the surfaces differ), ncrit_top,
-    /// ncrit_bot, xtr_top_set, xtr_bot_set, panels, solver.
+    /// ncrit_bot, xtr_top_set, xtr_bot_set, thickness (t/c), panels, solver; NaN where the
+    /// file did not say (a C81 deck has no N_crit).
     #[getter]
     fn meta<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let m = self.inner.meta();
@@ -113,6 +156,7 @@ impl Table {
         d.set_item("ncrit_bot", t.ncrit_bot)?;
         d.set_item("xtr_top_set", t.xtr_top)?;
         d.set_item("xtr_bot_set", t.xtr_bot)?;
+        d.set_item("thickness", m.thickness)?;
         d.set_item("panels", m.panels)?;
         d.set_item("solver", &m.solver)?;
         let ops: Vec<String> = m.geometry.iter().map(ToString::to_string).collect();

@@ -57,7 +57,7 @@ def test_one_polar_reads_back_with_the_table_values(tmp_path):
     assert len(tables) == 1
     t = tables[0]
     assert math.isclose(t["Re"], 1.9e6, rel_tol=1e-12)
-    assert t["InclUAdata"] is False
+    assert t["InclUAdata"] is True
     alpha, cl, cd, cm = t["Alpha"], t["Cl"], t["Cd"], t["Cm"]
     assert len(alpha) == t["NumAlf"]
     assert alpha[0] == -180.0 and alpha[-1] == 180.0
@@ -79,9 +79,9 @@ def test_a_grid_gives_one_file_per_mach_with_one_table_per_re(tmp_path):
     convert(GRID, tmp_path / "grid.dat")
     files = sorted(p.name for p in tmp_path.iterdir())
     assert files == ["grid_M0.2.dat", "grid_M0.3.dat", "grid_M0.4.dat", "grid_M0.5.dat",
-                     "grid_M0.dat"]
+                     "grid_M0.55.dat", "grid_M0.6.dat", "grid_M0.65.dat", "grid_M0.dat"]
     tables = read_aerodyn(tmp_path / "grid_M0.3.dat")
     res = [t["Re"] for t in tables]
-    assert len(res) == 6
-    for got, want in zip(res, [0.25e6, 0.5e6, 1e6, 1.5e6, 2e6, 2.5e6]):
+    assert len(res) == 8
+    for got, want in zip(res, [1e5, 2e5, 4e5, 7e5, 1e6, 1.5e6, 2e6, 3e6]):
         assert math.isclose(got, want, rel_tol=1e-12)

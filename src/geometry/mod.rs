@@ -216,6 +216,32 @@ impl Airfoil {
         }
     }
 
+    /// Largest thickness / chord, measured normal to the chord line (the airfoil's t/c, the
+    /// `RelThickness` of AeroDyn files): the largest distance between the upper and the lower
+    /// surface at one chordwise station, the contour taken in chord units along its chord
+    /// line, each surface linear between its points.
+    pub fn max_thickness(&self) -> Result<f64, GeometryError> {
+        let foil = self.derotated()?.normalized()?;
+        let le = foil.le_index()?;
+        // Upper surface from the LE to the TE (x increasing), lower likewise.
+        let upper: Vec<(f64, f64)> = (0..=le).rev().map(|k| (foil.x[k], foil.y[k])).collect();
+        let lower: Vec<(f64, f64)> = (le..foil.len()).map(|k| (foil.x[k], foil.y[k])).collect();
+        let at = |side: &[(f64, f64)], x: f64| -> Option<f64> {
+            side.windows(2).find_map(|w| {
+                let ((x0, y0), (x1, y1)) = (w[0], w[1]);
+                (x0.min(x1) <= x && x <= x0.max(x1) && x1 != x0)
+                    .then(|| y0 + (y1 - y0) * (x - x0) / (x1 - x0))
+            })
+        };
+        let from_upper = upper
+            .iter()
+            .filter_map(|&(x, y)| at(&lower, x).map(|yl| y - yl));
+        let from_lower = lower
+            .iter()
+            .filter_map(|&(x, y)| at(&upper, x).map(|yu| yu - y));
+        Ok(from_upper.chain(from_lower).fold(0.0, f64::max))
+    }
+
     /// Inclination of the chord line (leading-edge point to TE midpoint) to the x axis, in
     /// degrees, positive when the trailing edge is above the leading edge.
     pub fn chord_angle_deg(&self) -> Result<f64, GeometryError> {

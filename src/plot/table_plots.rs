@@ -9,7 +9,7 @@ use super::figure::{Figure, Style};
 use super::polar_plots::{compact_number, overlay_title, polar_figure_styled, PolarCurve};
 use crate::limits::short_number;
 use crate::section::{FlowCondition, PolarPoint};
-use crate::table::{read_table, TableError};
+use crate::table::{read_table_with, ReadOptions, TableError};
 
 /// Why the polars of an overlay could not be taken from their tables. One line each, naming
 /// the flag (`--re`, `--label`) or file at fault.
@@ -75,6 +75,8 @@ pub struct TableOverlay<'a> {
     pub title: Option<&'a str>,
     /// Upper end of the drag polar's Cd axis.
     pub cd_axis: CdAxis,
+    /// What to assume where a file does not say.
+    pub read: ReadOptions,
 }
 
 /// The polar figure of [`polar_figure_styled`] with one polar from each table (palette colour
@@ -91,7 +93,7 @@ pub fn table_overlay_figure(overlay: &TableOverlay) -> Result<Figure, OverlayErr
     let mut polars: Vec<Vec<PolarPoint>> = Vec::new();
     let mut conditions: Vec<FlowCondition> = Vec::new();
     for (i, path) in tables.iter().enumerate() {
-        let table = read_table(path)?;
+        let table = read_table_with(path, &overlay.read)?.table;
         let (re_axis, mach_axis) = (table.re(), table.mach());
         let (re, mach) = match (overlay.re, overlay.mach) {
             (Some(re), Some(mach)) => (re, mach),

@@ -326,7 +326,7 @@ fn check_table_case(
 /// Reads the free and fixed-transition tables of one airfoil and looks up Table 5.
 fn load_foil(dir: &Path, row: &'static Table5Row) -> Result<FoilTables, ReportError> {
     let paths = TRANSITIONS.map(|t| dir.join(format!("{}_{t}.csv", row.stem)));
-    let [free, fixed] = [shipped::table(&paths[0])?, shipped::table(&paths[1])?];
+    let [free, fixed] = [shipped::table(&paths[0])?.table, shipped::table(&paths[1])?.table];
     for ((table, path), xtr) in [&free, &fixed].iter().zip(&paths).zip(TRANSITION_XTR) {
         check_table_case(table, path, row.stem, xtr)?;
     }
@@ -354,7 +354,7 @@ fn second_rotor_results(inputs: &ReportInputs) -> Result<second_rotor::SecondRot
     let folder = inputs.aircraft.parent().unwrap_or(Path::new(""));
     let preset = shipped::rotor_preset(&folder.join("pca2.toml"))?;
     let [free, fixed] = TRANSITIONS.map(|t| inputs.polars.join(format!("goe429_{t}.csv")));
-    let tables = [shipped::table(&free)?, shipped::table(&fixed)?];
+    let tables = [shipped::table(&free)?.table, shipped::table(&fixed)?.table];
     for ((table, path), xtr) in tables.iter().zip([&free, &fixed]).zip(TRANSITION_XTR) {
         check_table_case(table, path, "goe429", xtr)?;
     }

@@ -12,7 +12,8 @@
 use crate::input::exists;
 use crate::rotor::{Aircraft, AircraftError, RotorPreset};
 use crate::table::{
-    check_lookup_table, parse_table, read_lookup_table, PolarTable, TableError, TableFormat,
+    check_lookup_table, parse_table, read_lookup_table_with, PolarTable,
+    ReadOptions, TableError, TableFormat, TableRead,
 };
 use std::path::{Path, PathBuf};
 
@@ -137,14 +138,15 @@ pub(super) fn rotor_preset(path: &Path) -> Result<RotorPreset, AircraftError> {
     RotorPreset::from_toml_file(path)
 }
 
-/// The lookup table at `path`, or the built-in copy when `path` lies in the default folder,
-/// is one of the shipped tables and is absent.
-pub(super) fn table(path: &Path) -> Result<PolarTable, TableError> {
+/// The lookup table at `path` with what its reader assumed (the Reynolds number of a C81
+/// deck, the Mach number of an AeroDyn file: [`read_lookup_table_with`]), or the built-in copy
+/// when `path` lies in the default folder, is one of the shipped tables and is absent.
+pub(super) fn table(path: &Path) -> Result<TableRead, TableError> {
     let builtin = TABLES
         .iter()
         .find(|(name, _)| path == Path::new(SHIPPED_POLARS).join(name) && !exists(path));
     let Some((_, text)) = builtin else {
-        return read_lookup_table(path);
+        return read_lookup_table_with(path, &ReadOptions::default());
     };
     let in_file = |source| TableError::File {
         path: path.to_path_buf(),
@@ -152,21 +154,29 @@ pub(super) fn table(path: &Path) -> Result<PolarTable, TableError> {
     };
     let table = parse_table(text.as_bytes(), TableFormat::Csv).map_err(in_file)?;
     check_lookup_table(&table).map_err(in_file)?;
-    Ok(table)
+    Ok(TableRead {
+        table,
+        notes: Vec::new(),
+    })
 }
 
 /// The inputs of a command that reads an aircraft and section tables: each file given, else
 /// the shipped one (the file in a checkout, else the built-in copy: [`aircraft`], [`table`]),
-/// the rule of `gyro report` for every command; [`note`](Self::note) names the shipped inputs
-/// used, in one line.
+/// the rule of `gyro report` for every command; [`notes`](Self::notes) names the shipped
+/// inputs used, in one line, after what the table readers assumed.
 #[derive(Debug, Default)]
-pub struct ShippedInputs(Vec<&'static str>);
+pub struct ShippedInputs {
+    /// The shipped inputs used.
+    shipped: Vec<&'static str>,
+    /// What the table readers assumed, one line each.
+    reader_notes: Vec<String>,
+}
 
 impl ShippedInputs {
     /// `given`, else the shipped path `shipped` (recorded for the note).
     fn path(&mut self, given: &Option<PathBuf>, shipped: &'static str) -> PathBuf {
         given.clone().unwrap_or_else(|| {
-            self.0.push(shipped);
+            self.shipped.push(shipped);
             PathBuf::from(shipped)
         })
     }
@@ -188,16 +198,30 @@ impl ShippedInputs {
         given: &Option<PathBuf>,
         shipped: &'static str,
     ) -> Result<PolarTable, TableError> {
-        table(&self.path(given, shipped))
+        let read = table(&self.path(given, shipped))?;
+        self.reader_notes.extend(read.notes);
+        Ok(read.table)
+    }
+
+    /// What a user should read about the inputs, one line each starting `note: `: what the
+    /// table readers assumed, then the shipped inputs used.
+    pub fn notes(&self) -> Vec<String> {
+        let mut notes: Vec<String> = self
+            .reader_notes
+            .iter()
+            .map(|n| format!("note: {n}"))
+            .collect();
+        notes.extend(self.shipped_note());
+        notes
     }
 
     /// The note naming the shipped inputs used (`None` when every input was given).
-    pub fn note(&self) -> Option<String> {
-        (!self.0.is_empty()).then(|| {
+    fn shipped_note(&self) -> Option<String> {
+        (!self.shipped.is_empty()).then(|| {
             format!(
                 "note: the shipped {} (the copy built in where the file is absent); \
                  --aircraft, --table, --clean, --contaminated choose others",
-                self.0.join(" and ")
+                self.shipped.join(" and ")
             )
         })
     }
@@ -219,7 +243,7 @@ mod tests {
         assert_eq!(pca2.rotor.incidence_deg, file.rotor.incidence_deg);
         for (name, text) in TABLES {
             let t = parse_table(text.as_bytes(), TableFormat::Csv).unwrap();
-            let f = read_lookup_table(&root.join(SHIPPED_POLARS).join(name)).unwrap();
+            let f = crate::table::read_lookup_table(&root.join(SHIPPED_POLARS).join(name)).unwrap();
             assert_eq!(t.re(), f.re(), "{name}");
             assert_eq!(t.converged_count(), f.converged_count(), "{name}");
         }

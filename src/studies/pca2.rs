@@ -65,6 +65,7 @@ pub fn report_487_section() -> Result<PolarTable, TableError> {
     let meta = TableMeta {
         airfoil: "NACA Report 487 section constants".to_string(),
         transition: Transition::default(),
+        thickness: f64::NAN,
         panels: 0,
         solver: "analytic".to_string(),
         geometry: Vec::new(),

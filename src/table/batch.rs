@@ -32,7 +32,9 @@ mod index;
 pub use index::{IndexRow, TableStatus};
 
 use super::build::table_meta;
-use super::{build_table, read_table, write_table, GridSpec, TableError, TableFormat, TableMeta};
+use super::{
+    build_table, read_table, write_table, GridSpec, PolarTable, TableError, TableFormat, TableMeta,
+};
 use crate::diagnostics::error_line;
 use crate::geometry::{solver_airfoil, Airfoil, GeometryError, ShapeOp};
 use crate::output::{check_output_path, OutputError};
@@ -320,6 +322,7 @@ impl Batch {
                 converged: 0,
                 seconds: 0.0,
                 status: TableStatus::Pending,
+                summary: Vec::new(),
             })
             .collect();
         let index = index::write_index(&self.out, &stem, &rows)?;
@@ -380,23 +383,30 @@ impl Batch {
     ) -> Result<IndexRow, BatchError> {
         let s = &self.settings;
         let path = self.out.join(format!("{name}.{}", s.format.name()));
-        let row = |points, converged, seconds, status| IndexRow {
-            airfoil: name.clone(),
-            file: spec.clone(),
-            points,
-            converged,
-            seconds,
-            status,
+        let row = |table: Option<&PolarTable>, seconds, status| {
+            let c = table.map(PolarTable::census).unwrap_or_default();
+            let summary = table.map_or_else(Vec::new, |t| {
+                let mut rows = t.summaries();
+                rows.iter_mut().for_each(|r| r.airfoil.clone_from(name));
+                rows
+            });
+            IndexRow {
+                airfoil: name.clone(),
+                file: spec.clone(),
+                points: c.points,
+                converged: c.converged,
+                seconds,
+                status,
+                summary,
+            }
         };
         let meta = TableMeta {
             geometry: s.geometry.clone(),
             ..table_meta(foil, s.panels, &s.base)
         };
-        if let Some((points, converged)) =
-            s.resume.then(|| finished(&path, &meta, &s.grid)).flatten()
-        {
+        if let Some(table) = s.resume.then(|| finished(&path, &meta, &s.grid)).flatten() {
             on_points(s.grid.point_count());
-            return Ok(row(points, converged, 0.0, TableStatus::Kept));
+            return Ok(row(Some(&table), 0.0, TableStatus::Kept));
         }
         let start = Instant::now();
         let built = build_table(foil, s.panels, &s.grid, &s.base, s.threads, on_points)
@@ -406,8 +416,7 @@ impl Batch {
             Ok(table) if table.census().converged > 0 => {
                 write_table(&table, &path, Some(s.format))
                     .map_err(|e| BatchError::Table(path, e))?;
-                let c = table.census();
-                return Ok(row(c.points, c.converged, seconds, TableStatus::Solved));
+                return Ok(row(Some(&table), seconds, TableStatus::Solved));
             }
             Ok(_) => "no point converged".to_string(),
             Err(e) => error_line(&e),
@@ -418,7 +427,7 @@ impl Batch {
             }
             _ => {}
         }
-        Ok(row(0, 0, seconds, TableStatus::Failed(why)))
+        Ok(row(None, seconds, TableStatus::Failed(why)))
     }
 }
 
@@ -427,9 +436,9 @@ fn shard_pair(settings: &BatchSettings) -> Option<(usize, usize)> {
     settings.shard.map(|s| (s.index, s.count))
 }
 
-/// The (points, converged points) of the table at `path` when it reads back and was made
-/// with `meta` on `grid` (see the module documentation); `None` otherwise.
-fn finished(path: &Path, meta: &TableMeta, grid: &GridSpec) -> Option<(usize, usize)> {
+/// The table at `path` when it reads back and was made with `meta` on `grid` (see the module
+/// documentation); `None` otherwise.
+fn finished(path: &Path, meta: &TableMeta, grid: &GridSpec) -> Option<PolarTable> {
     let table = read_table(path).ok()?;
     let sorted = |v: &[f64]| {
         let mut v = v.to_vec();
@@ -443,8 +452,7 @@ fn finished(path: &Path, meta: &TableMeta, grid: &GridSpec) -> Option<(usize, us
         && table
             .polars()
             .all(|(_, polar)| polar.iter().map(|p| p.alpha).eq(alphas.iter().copied()));
-    let c = table.census();
-    same.then_some((c.points, c.converged))
+    same.then_some(table)
 }
 
 /// (name, input) pairs.

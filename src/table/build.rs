@@ -224,6 +224,12 @@ pub(crate) fn table_meta(foil: &Airfoil, panels: usize, base: &ViscousParams) ->
     TableMeta {
         airfoil: foil.name.clone(),
         transition: base.transition,
+        // Unknown only for a contour the spline cannot take, which the solver refuses anyway.
+        thickness: foil
+            .max_thickness()
+            .ok()
+            .filter(|t| *t > 0.0 && *t < 1.0)
+            .unwrap_or(f64::NAN),
         panels,
         solver: format!("polargen {}", env!("CARGO_PKG_VERSION")),
         geometry: Vec::new(),

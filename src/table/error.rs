@@ -301,9 +301,27 @@ pub enum TableError {
         /// What each file holds (`polar`, `Re`, `Mach number`).
         per: &'static str,
     },
-    /// A format that is written but not read.
-    #[error("{0} files are written only, not read back as tables")]
-    NotReadable(&'static str),
+    /// A format's header needs a number the table does not know.
+    #[error(
+        "{field} is unknown (the table was read from a file without it): {format} needs a number"
+    )]
+    UnknownInHeader {
+        /// The metadata field.
+        field: &'static str,
+        /// The format, as in a sentence.
+        format: &'static str,
+    },
+    /// An AeroDyn airfoil file does not follow the format.
+    #[error("AeroDyn line {line}: {message}")]
+    AeroDyn {
+        /// Line number (1-based).
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// The tables of an AeroDyn file cannot make one table.
+    #[error("AeroDyn file: {0}")]
+    AeroDynTables(String),
     /// A C81 file does not follow the format.
     #[error("C81 line {line}: {message}")]
     C81 {

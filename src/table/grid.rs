@@ -544,7 +544,7 @@ impl<'de> Deserialize<'de> for PolarTable {
 }
 
 /// Serde helpers: finite floats as numbers, NaN and ±∞ as strings.
-mod nonfinite {
+pub(super) mod nonfinite {
     use serde::{de, Deserialize, Deserializer, Serializer};
 
     /// Write a finite value as a number, otherwise as `"NaN"`, `"inf"` or `"-inf"`.

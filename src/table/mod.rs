@@ -19,6 +19,10 @@
 //!   α and Cd where Cl reaches a target (paper Table 5).
 //! * `post_stall` — the 360° extension beyond the computed α range (Viterna–Corrigan and a
 //!   flat plate).
+//! * `lift_slope` — the points the method trusts, the attached range and lift slope of a
+//!   polar (one fit for the summary and the unsteady-aerodynamics block).
+//! * `summary` — [`PolarSummary`]: α0, lift slope, Cl_max, Cd_min, best L/D, Cm0 per polar.
+//! * `unsteady_aero` — [`UaParameters`]: the Beddoes–Leishman parameters AeroDyn reads.
 //! * `io` — CSV, JSON, XFOIL polar, C81 and single-polar CSV files; one reader that
 //!   recognises the layout, writers through [`output`](crate::output).
 //! * `error` — [`TableError`].
@@ -30,6 +34,7 @@
 //! let meta = TableMeta {
 //!     airfoil: "flat".into(),
 //!     transition: Transition::default(),
+//!     thickness: 0.12,
 //!     panels: 160,
 //!     solver: "example".into(),
 //!     geometry: Vec::new(),
@@ -78,9 +83,12 @@ mod fixed_condition;
 mod flap_sweep;
 mod grid;
 mod io;
+mod lift_slope;
 mod lookup;
 mod meta;
 mod post_stall;
+mod summary;
+mod unsteady_aero;
 mod validation;
 
 pub use crate::limits::MAX_RE;
@@ -97,10 +105,16 @@ pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
 pub use flap_sweep::flap_sweep;
 pub use grid::PolarTable;
 pub use io::{
-    check_lookup_table, check_table_output, parse_c81, parse_table, read_lookup_table, read_table,
-    table_files, with_cd_max, write_aerodyn, write_c81, write_table, C81Options, TableFormat,
+    check_lookup_table, check_table_output, parse_c81, parse_table, read_lookup_table,
+    read_lookup_table_with, read_table, read_table_with, table_files, with_cd_max, write_aerodyn,
+    write_c81, write_table, C81Options, ReadOptions, TableFormat, TableRead,
     LOOKUP_ALPHA_COVER_DEG,
 };
+pub use lift_slope::{trusted, STALL_SLOPE_FRACTION};
 pub use meta::TableMeta;
 pub use post_stall::PostStallParams;
+pub use summary::{
+    summarize, summary_csv, summary_json, summary_text, PolarSummary, SummaryRow, SUMMARY_COLUMNS,
+};
+pub use unsteady_aero::{ua_parameters, UaParameters};
 pub use validation::COEFFICIENT_BOUNDS;

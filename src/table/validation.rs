@@ -37,12 +37,18 @@ pub const XTR_SLACK: f64 = 1e-3;
 /// A value beyond is not a section coefficient (`Cl 1e300` at a converged point).
 pub const COEFFICIENT_BOUNDS: [(&str, f64); 3] = [("cl", MAX_SECTION_CL), ("cd", 4.0), ("cm", 4.0)];
 
-/// Check the metadata: the transition setting by its rule ([`Transition::check`]: N_crit
-/// positive, trips in [0, 1]), names without control characters (they head text files).
+/// Check the metadata: the transition setting by its rule ([`Transition::check_recorded`]:
+/// N_crit positive, trips in [0, 1], each may be NaN, unknown), a thickness in (0, 1) or
+/// unknown, names without control characters (they head text files).
 ///
-/// [`Transition::check`]: crate::section::Transition::check
+/// [`Transition::check_recorded`]: crate::section::Transition::check_recorded
 pub(super) fn check_meta(meta: &TableMeta) -> Result<(), TableError> {
-    if let Err(e) = meta.transition.check() {
+    let bad = |field, value: f64, rule| TableError::BadMeta {
+        field,
+        value: short_number(value),
+        rule,
+    };
+    if let Err(e) = meta.transition.check_recorded() {
         // The fields as the files name them: one `ncrit` when both surfaces share it.
         let field = match (e.field, meta.transition.common_ncrit()) {
             (TransitionField::NcritTop | TransitionField::NcritBot, Some(_)) => "ncrit",
@@ -51,11 +57,11 @@ pub(super) fn check_meta(meta: &TableMeta) -> Result<(), TableError> {
             (TransitionField::XtrTop, _) => "xtr_top_set",
             (TransitionField::XtrBot, _) => "xtr_bot_set",
         };
-        return Err(TableError::BadMeta {
-            field,
-            value: short_number(e.value),
-            rule: e.field.range(),
-        });
+        return Err(bad(field, e.value, e.field.range()));
+    }
+    let t = meta.thickness;
+    if !(t.is_nan() || (t > 0.0 && t < 1.0)) {
+        return Err(bad("thickness", t, "in (0, 1)"));
     }
     for (field, text) in [("airfoil", &meta.airfoil), ("solver", &meta.solver)] {
         if text.chars().any(char::is_control) {

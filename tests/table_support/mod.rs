@@ -18,6 +18,7 @@ pub fn meta(name: &str) -> TableMeta {
     TableMeta {
         airfoil: name.to_string(),
         transition: Transition::default(),
+        thickness: 0.12,
         panels: 160,
         solver: "polargen 0.1.0".to_string(),
         geometry: Vec::new(),

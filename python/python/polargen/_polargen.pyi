@@ -83,7 +83,13 @@ class PolarTable:
     """A table of polars, one per (Re, M) node (the library's ``PolarTable``)."""
 
     @staticmethod
-    def read(path: PathLike) -> "PolarTable": ...
+    def read(
+        path: PathLike,
+        re: Optional[float] = None,
+        mach: Optional[float] = None,
+        user_prop: Optional[float] = None,
+    ) -> Tuple["PolarTable", List[str]]: ...
+    def summary(self) -> List[Dict[str, Any]]: ...
     def write(
         self, path: PathLike, format: Optional[str] = None, c81_re: Optional[float] = None
     ) -> List[str]: ...

@@ -80,6 +80,7 @@ class Polar:
                 self._unknown[name] = coded < 0
                 value = coded > 0
             setattr(self, name, value)
+        self._summary = dict(columns.get("summary") or {})
 
     @property
     def usable(self) -> np.ndarray:
@@ -102,6 +103,16 @@ class Polar:
     def columns(self) -> Dict[str, np.ndarray]:
         """The columns as a dict of arrays."""
         return {name: getattr(self, name) for name in POLAR_COLUMNS}
+
+    def summary(self) -> Dict[str, Any]:
+        """What ``polargen summary`` prints for this polar: ``points``, ``trusted`` (converged
+        and not supercritical), ``alpha_trusted_min``/``max`` (the run of trusted points
+        around zero lift), ``alpha_zero_lift``, ``lift_slope`` [1/rad] and the α range it was
+        fitted on (``lift_slope_alpha_min``/``max``), ``cl_max``, ``alpha_cl_max``,
+        ``cl_max_at_edge`` (the stall peak was not reached by trusted points), ``cl_min``,
+        ``alpha_cl_min``, ``cd_min``, ``cl_at_cd_min``, ``ld_max``, ``alpha_ld_max``,
+        ``cm0``; None where the polar cannot give a number. Angles in degrees."""
+        return dict(self._summary)
 
     def to_pandas(self):
         """The columns as a ``pandas.DataFrame`` (with ``re`` and ``mach`` columns); the

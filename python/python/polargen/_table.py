@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import warnings
 from typing import Any, Dict, List, Optional, Tuple, Union
 
 import numpy as np
@@ -27,18 +28,33 @@ class Table:
         self._core = core
 
     @classmethod
-    def read(cls, path: PathLike) -> "Table":
-        """Reads a polargen CSV or JSON table, an XFOIL polar file (``.pol``) or a
-        single-polar CSV (columns alpha, cl, cd, …), as ``polargen convert`` does. C81 files
-        cannot be read back."""
-        return cls(_polargen.PolarTable.read(os.fspath(path)))
+    def read(cls, path: PathLike, re: Optional[float] = None, mach: Optional[float] = None,
+             user_prop: Optional[float] = None) -> "Table":
+        """Reads a table file as ``polargen convert`` does: a polargen CSV, JSON or JSON Lines
+        table, an XFOIL polar file (``.pol``), a C81 deck, an OpenFAST AeroDyn airfoil file
+        (recognised by its content, whatever its extension) or a single-polar CSV (columns
+        alpha, cl, cd, …). ``re`` is the Reynolds number of a C81 deck (it carries none; 1e6
+        when not given), ``mach`` the Mach number of an AeroDyn file from another tool (0),
+        ``user_prop`` the tables to read of an AeroDyn file whose tables differ in UserProp.
+        What the reader assumed is issued as a ``UserWarning``."""
+        core, notes = _polargen.PolarTable.read(os.fspath(path), re, mach, user_prop)
+        for note in notes:
+            warnings.warn(note, stacklevel=2)
+        return cls(core)
+
+    def summary(self) -> List[Dict[str, Any]]:
+        """Per polar, Re-major, what ``polargen summary`` prints: dicts with ``airfoil``,
+        ``re``, ``mach`` and the fields of :meth:`Polar.summary`, the columns of
+        ``polargen summary --csv`` (``pandas.DataFrame(table.summary())`` gives that frame)."""
+        return self._core.summary()
 
     def write(self, path: PathLike, format: Optional[str] = None,
               c81_re: Optional[float] = None) -> List[str]:
         """Writes the table as ``polargen convert`` does: ``format`` ``"csv"``, ``"json"``,
-        ``"xfoil"`` (one ``.pol`` per node) or ``"c81"`` (one file per Re, or only at
-        ``c81_re``); from the extension of ``path`` when None. Files are written atomically;
-        returns the paths written."""
+        ``"jsonl"`` (JSON Lines, ``pandas.read_json(path, lines=True)``), ``"xfoil"`` (one
+        ``.pol`` per node), ``"c81"`` (one file per Re, or only at ``c81_re``) or
+        ``"aerodyn"`` (one file per Mach number); from the extension of ``path`` when None.
+        Files are written atomically; returns the paths written."""
         written = self._core.write(os.fspath(path), format, c81_re)
         return [os.fspath(p) for p in written]
 
@@ -54,8 +70,9 @@ class Table:
 
     @property
     def meta(self) -> Dict[str, Any]:
-        """How the table was made: airfoil, ncrit (None when the
-        surfaces differ), ncrit_top, ncrit_bot, xtr_top_set, xtr_bot_set, panels, solver."""
+        """How the table was made: airfoil, ncrit (None when the surfaces differ), ncrit_top,
+        ncrit_bot, xtr_top_set, xtr_bot_set, thickness (t/c), panels, solver; NaN where the
+        file did not say (a C81 deck has no N_crit or transition setting)."""
         return self._core.meta
 
     @property

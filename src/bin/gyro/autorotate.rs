@@ -72,7 +72,7 @@ pub fn run(args: AutorotateArgs, buf: &mut String, say: impl Fn(&str)) -> Result
         )?],
     };
     let section = shipped.table(&args.table, SHIPPED_TABLE)?;
-    shipped.note().into_iter().for_each(|n| say(&n));
+    shipped.notes().into_iter().for_each(|n| say(&n));
     let rotor = Rotor::from_params(&preset.rotor);
     let atm = Atmosphere::isa(args.altitude_m);
     let outcomes = autorotate_outcomes(&rotor, &section, &cases, &atm, &TrimParams::default());

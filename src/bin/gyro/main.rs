@@ -151,15 +151,16 @@ struct Inputs {
     /// Aircraft preset (TOML) [default: aircraft/mtosport.toml, built in when absent].
     #[arg(long)]
     aircraft: Option<PathBuf>,
-    /// Section polar table: polargen CSV or JSON, XFOIL .pol, C81, or a CSV of one polar with
-    /// columns alpha, cl, cd[, cm] [default: polars/naca8h12_free.csv, built in when absent].
+    /// Section polar table: any format polargen convert reads (CSV, JSON, XFOIL .pol, C81,
+    /// AeroDyn, a CSV of one polar with columns alpha, cl, cd[, cm]) [default:
+    /// polars/naca8h12_free.csv, built in when absent].
     #[arg(long)]
     table: Option<PathBuf>,
 }
 
 /// The note naming the shipped inputs `used` in place of those not given, if any.
 fn note_shipped(used: ShippedInputs) {
-    used.note().into_iter().for_each(|n| TOOL.say(n));
+    used.notes().into_iter().for_each(|n| TOOL.say(n));
 }
 
 /// The aircraft (at `mass`, else its own), what `check` makes of it (flags checked against it

@@ -50,8 +50,8 @@ pub struct CaseArgs {
     /// Aircraft preset (TOML) [default: aircraft/mtosport.toml, built in when absent].
     #[arg(long)]
     aircraft: Option<PathBuf>,
-    /// Polar table of the clean blade section (polargen CSV or JSON, XFOIL .pol, C81, or a
-    /// CSV of one polar) [default: polars/naca8h12_free.csv, built in when absent].
+    /// Polar table of the clean blade section (any format polargen convert reads) [default:
+    /// polars/naca8h12_free.csv, built in when absent].
     #[arg(long)]
     clean: Option<PathBuf>,
     /// Polar table of the contaminated blade section (optional: without it only the clean

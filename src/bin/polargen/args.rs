@@ -33,12 +33,15 @@ pub struct Cli {
 /// Subcommands besides the main job (computing polars and tables).
 #[derive(Subcommand, Debug)]
 pub enum Command {
-    /// Overlay polars from tables (polargen CSV or JSON, XFOIL .pol, C81, single-polar CSV):
-    /// Cl–α, Cl–Cd, Cl–x_tr (transition), Cl/Cd–α, Cm–α; SVG or PNG by the extension of --out.
+    /// Overlay polars from tables (any format convert reads): Cl–α, Cl–Cd, Cl–x_tr
+    /// (transition), Cl/Cd–α, Cm–α; SVG or PNG by the extension of --out.
     Plot(PlotArgs),
-    /// Convert a table (polargen CSV or JSON, XFOIL .pol, C81, single-polar CSV) to another
-    /// format: csv, json, xfoil, c81 or aerodyn.
+    /// Convert a table (polargen CSV, JSON or JSONL, XFOIL .pol, C81, OpenFAST AeroDyn,
+    /// single-polar CSV) to another format: csv, json, jsonl, xfoil, c81 or aerodyn.
     Convert(ConvertArgs),
+    /// Per polar of a table (any format convert reads): α0, lift slope and its fit range,
+    /// Cl_max, Cd_min and the Cl there, best L/D, Cm0, and the α range the method trusts.
+    Summary(SummaryArgs),
     /// Cp(x) over the airfoil contour and boundary-layer distributions (H, Cf, N) at one α or
     /// Cl, one case per transition setting overlaid (e.g. --xtr 1,0.07: clean vs tripped).
     PlotPoint(PlotPointArgs),
@@ -147,11 +150,43 @@ pub struct PointCase {
     pub newton: Newton,
 }
 
+/// `polargen summary` options.
+#[derive(Args, Debug)]
+pub struct SummaryArgs {
+    /// Table file (any format convert reads).
+    #[arg(value_name = "TABLE")]
+    pub table: PathBuf,
+    /// JSON (an array of flat records) instead of a text table.
+    #[arg(long, conflicts_with = "csv")]
+    pub json: bool,
+    /// CSV instead of a text table.
+    #[arg(long)]
+    pub csv: bool,
+    #[command(flatten)]
+    pub read: ReadArgs,
+}
+
+/// What to assume where a table file does not say.
+#[derive(Args, Debug)]
+pub struct ReadArgs {
+    /// Reynolds number of a C81 deck whose name gives none (default 1e6; stderr says so).
+    #[arg(long, value_name = "RE", allow_hyphen_values = true, value_parser = values::reynolds)]
+    pub assume_re: Option<f64>,
+    /// Mach number of an AeroDyn file from another tool (it gives none; default 0).
+    #[arg(long, value_name = "M", allow_hyphen_values = true, value_parser = values::mach)]
+    pub assume_mach: Option<f64>,
+    /// The tables to read from an AeroDyn file whose tables differ in UserProp (e.g. flap
+    /// angles).
+    #[arg(long, value_name = "VALUE", allow_hyphen_values = true, value_parser = values::number)]
+    pub user_prop: Option<f64>,
+}
+
 /// `polargen convert` options.
 #[derive(Args, Debug)]
 pub struct ConvertArgs {
-    /// Table: polargen CSV (.csv) or JSON (.json), XFOIL polar file (.pol), C81 (.c81), or a
-    /// CSV of one polar with columns alpha, cl, cd[, cm].
+    /// Table: polargen CSV (.csv), JSON (.json) or JSON Lines (.jsonl), XFOIL polar file
+    /// (.pol), C81 (.c81), OpenFAST AeroDyn airfoil file (any extension), or a CSV of one
+    /// polar with columns alpha, cl, cd[, cm].
     #[arg(value_name = "TABLE")]
     pub table: PathBuf,
 
@@ -161,14 +196,17 @@ pub struct ConvertArgs {
     #[arg(long, value_name = "FILE|-")]
     pub out: PathBuf,
 
-    /// Output format (aerodyn: OpenFAST AirfoilInfo file, InclUAdata False: OpenFAST then
-    /// derives the unsteady-aero parameters from the table itself; UA is switched off only by
-    /// UA_Mod = 0 in the AeroDyn input file).
+    /// Output format: csv, json, jsonl (JSON Lines: pandas.read_json(path, lines=True)),
+    /// xfoil, c81 or aerodyn (OpenFAST AirfoilInfo file, one table per Re, one file per
+    /// Mach number, with the unsteady-aero coefficients from the polar: InclUAdata True).
     #[arg(long, value_enum)]
     pub format: Option<TableFormat>,
 
     #[command(flatten)]
     pub extension: Extension,
+
+    #[command(flatten)]
+    pub read: ReadArgs,
 }
 
 /// The 360° extension written into C81 (and AeroDyn) files.
@@ -184,8 +222,7 @@ pub struct Extension {
 /// `polargen plot` options.
 #[derive(Args, Debug)]
 pub struct PlotArgs {
-    /// Tables: polargen CSV (.csv) or JSON (.json), XFOIL polar files (.pol), C81 (.c81), or
-    /// CSVs of one polar with columns alpha, cl, cd[, cm].
+    /// Tables: any format convert reads.
     #[arg(required = true, value_name = "TABLE")]
     pub tables: Vec<PathBuf>,
 
@@ -219,6 +256,9 @@ pub struct PlotArgs {
         allow_hyphen_values = true
     )]
     pub cd_axis: polargen::plot::drag_axis::CdAxis,
+
+    #[command(flatten)]
+    pub read: ReadArgs,
 }
 
 /// Options of the main job: polars and tables.
@@ -236,7 +276,10 @@ pub struct RunArgs {
     #[command(flatten)]
     pub grid: GridArgs,
 
-    /// Output format; default: from --out's extension, else csv (see convert --help).
+    /// Output format: csv, json, jsonl (JSON Lines), xfoil (one .pol per Re, M), c81 (one
+    /// file per Re) or aerodyn (OpenFAST AirfoilInfo file, one file per Mach number, a table
+    /// per Re, with the unsteady-aero coefficients; see convert --help); default: from
+    /// --out's extension, else csv.
     #[arg(long, value_enum)]
     pub format: Option<TableFormat>,
 

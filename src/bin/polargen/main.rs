@@ -18,7 +18,7 @@ use std::time::Instant;
 use anyhow::{bail, Context, Result};
 use args::{
     BatchArgs, Cli, Command, ConvertArgs, GridArgs, Ncrit, PlotArgs, PlotPointArgs, PointCase,
-    RunArgs, Shape,
+    ReadArgs, RunArgs, Shape, SummaryArgs,
 };
 use clap::CommandFactory;
 
@@ -35,7 +35,8 @@ use polargen::progress::Progress;
 use polargen::section::{Transition, FREE_XTR};
 use polargen::table::check_table_output;
 use polargen::table::{
-    build_table, flap_sweep, read_table, with_cd_max, write_table, Batch, BatchSettings, GridSpec,
+    build_table, flap_sweep, read_table_with, summary_csv, summary_json, summary_text,
+    with_cd_max, write_table, Batch, BatchSettings, GridSpec, PolarTable, ReadOptions,
     TableFormat, DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
 };
 use polargen::viscous::distributions::write_distributions_file;
@@ -53,6 +54,7 @@ fn main() -> ExitCode {
     TOOL.finish(match &cli.command {
         Some(Command::Plot(args)) => plot_tables(args),
         Some(Command::Convert(args)) => convert_table(args),
+        Some(Command::Summary(args)) => summary(args),
         Some(Command::PlotPoint(args)) => plot_point(args),
         Some(Command::Batch(args)) => run_batch(args),
         Some(Command::Point { case, csv }) => point(case, csv),
@@ -271,6 +273,7 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
         mach: args.mach,
         title: args.title.as_deref(),
         cd_axis: args.cd_axis,
+        read: read_options(&args.read)?,
     })?;
     render(&figure, &args.out)?;
     Ok(())
@@ -280,13 +283,41 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
 fn convert_table(args: &ConvertArgs) -> Result<()> {
     let format = TableFormat::for_output(args.format, Some(&args.out)).context("--format/--out")?;
     check_output_path(&args.out).context("--out")?;
-    let table = with_cd_max(read_table(&args.table)?, args.extension.cd_max).context("--cd-max")?;
+    let table =
+        with_cd_max(read(&args.table, &args.read)?, args.extension.cd_max).context("--cd-max")?;
     check_table_output(&args.out, format, table.re(), table.mach()).context("--out")?;
     let files = write_table(&table, &args.out, Some(format))?;
     if files.len() > 1 {
         TOOL.say(format!("wrote {} files", files.len()));
     }
     Ok(())
+}
+
+/// `--assume-re`, `--assume-mach`, `--user-prop`, checked.
+fn read_options(r: &ReadArgs) -> Result<ReadOptions> {
+    let (re, mach) = (r.assume_re, r.assume_mach);
+    let names = ["--assume-re", "--assume-mach"];
+    Ok(ReadOptions::checked(names, re, mach, r.user_prop)?)
+}
+
+/// Read a table file, saying on stderr what the reader assumed.
+fn read(path: &Path, r: &ReadArgs) -> Result<PolarTable> {
+    let read = read_table_with(path, &read_options(r)?)?;
+    read.notes
+        .iter()
+        .for_each(|n| TOOL.say(format!("note: {n}")));
+    Ok(read.table)
+}
+
+/// `polargen summary`: per-polar numbers as text, CSV or JSON on standard output.
+fn summary(args: &SummaryArgs) -> Result<()> {
+    let rows = read(&args.table, &args.read)?.summaries();
+    let text = match (args.json, args.csv) {
+        (true, _) => summary_json(&rows),
+        (_, true) => summary_csv(&rows),
+        _ => summary_text(&rows),
+    };
+    Ok(write_stdout(text.as_bytes())?)
 }
 
 /// `polargen plot-point`: Cp and the boundary-layer distributions of both surfaces.

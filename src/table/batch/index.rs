@@ -1,9 +1,12 @@
 //! The index of a batch run: one row per airfoil (name, input, points, converged points,
-//! seconds, status), written as CSV and JSON together through an
-//! [`OutputSet`](crate::output::OutputSet), so that an interrupted run leaves a complete pair
+//! seconds, status), written as CSV and JSON, and the summary of every polar of every table
+//! written (`polargen summary`'s columns, `airfoil` the name in the batch) as
+//! `<index>-summary.csv` and `.json`, all four together through an
+//! [`OutputSet`](crate::output::OutputSet), so that an interrupted run leaves a complete set
 //! of files describing the tables written so far.
 
 use crate::output::{OutputError, OutputSet};
+use crate::table::{summary_csv, summary_json, SummaryRow};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
@@ -58,6 +61,9 @@ pub struct IndexRow {
     /// [`TableStatus`] as text.
     #[serde(serialize_with = "as_text")]
     pub status: TableStatus,
+    /// The summary of each polar of the table (none without a table), in the summary files.
+    #[serde(skip)]
+    pub summary: Vec<SummaryRow>,
 }
 
 /// Serialise through `Display`.
@@ -73,8 +79,10 @@ pub(crate) fn index_stem(shard: Option<(usize, usize)>) -> String {
     }
 }
 
-/// Whether an airfoil called `name` would be written over an index file of some batch.
+/// Whether an airfoil called `name` would be written over an index file of some batch (an
+/// index or its summary).
 pub(crate) fn is_index_name(name: &str) -> bool {
+    let name = name.strip_suffix(SUMMARY_SUFFIX).unwrap_or(name);
     let numbers = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
     name == "index"
         || name
@@ -83,7 +91,11 @@ pub(crate) fn is_index_name(name: &str) -> bool {
             .is_some_and(|(k, n)| numbers(k) && numbers(n))
 }
 
-/// Write `rows` as `<stem>.csv` and `<stem>.json` in `dir`, together; returns the CSV path.
+/// What the summary files add to the index stem.
+const SUMMARY_SUFFIX: &str = "-summary";
+
+/// Write `rows` as `<stem>.csv` and `<stem>.json` in `dir`, and their polars' summaries as
+/// `<stem>-summary.csv` and `.json`, together; returns the index CSV's path.
 pub(crate) fn write_index(
     dir: &Path,
     stem: &str,
@@ -108,6 +120,17 @@ pub(crate) fn write_index(
         w.write_all(b"\n")
             .map_err(|e| OutputError::io(&json_path, e))
     })?;
+    let summaries: Vec<SummaryRow> = rows.iter().flat_map(|r| r.summary.clone()).collect();
+    for (ext, text) in [
+        ("csv", summary_csv(&summaries)),
+        ("json", summary_json(&summaries)),
+    ] {
+        let path = dir.join(format!("{stem}{SUMMARY_SUFFIX}.{ext}"));
+        set.write(&path, |w| {
+            w.write_all(text.as_bytes())
+                .map_err(|e| OutputError::io(&path, e))
+        })?;
+    }
     set.commit()?;
     Ok(csv_path)
 }
@@ -128,7 +151,13 @@ mod tests {
     #[test]
     fn index_names_are_recognised() {
         assert_eq!(index_stem(Some((2, 8))), "index-2-of-8");
-        for name in ["index", "index-1-of-2", "index-10-of-12"] {
+        for name in [
+            "index",
+            "index-1-of-2",
+            "index-10-of-12",
+            "index-summary",
+            "index-3-of-4-summary",
+        ] {
             assert!(is_index_name(name), "{name}");
         }
         for name in [

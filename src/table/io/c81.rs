@@ -43,17 +43,24 @@
 //!   like any other, points in massive separation not at all (the extension stands in for
 //!   them). The CSV, JSON and XFOIL-polar forms of the same table hold them.
 //!
-//! The reader ([`parse_c81`]) takes the fixed 7-column fields of the format's definition
-//! (MBDyn files need not leave blanks between fields), the counts from columns 31–42 of the
-//! first line, and the Reynolds number from a `Re<number>` word of the name (as written
-//! here), else from the file name (`…_Re1e6…`), else 10⁶. CD and CM rows at other α than the
-//! CL rows are interpolated linearly onto the CL rows; every row is a converged point.
+//! The reader ([`parse_c81`], [`parse_c81_with`]) takes the fixed 7-column fields of the
+//! format's definition (MBDyn files need not leave blanks between fields) and the counts from
+//! columns 31–42 of the first line. Each block is read on its own Mach and α lists, as decks
+//! from other tools have them (MBDyn's `naca0012.c81`: CL at 11 Mach numbers and 39 angles,
+//! CD at 11 and 65, CM at 9 and 47). The table's Mach axis is the union of the three Mach
+//! lists below 1 (a column at M ≥ 1 is dropped, and said: a table holds subsonic polars), each
+//! polar's α rows the union of the three α lists; each coefficient is interpolated on its
+//! own block, linearly in α and M, held at the block's edges. Every row is a converged point.
+//! A deck carries no Reynolds number and no N_crit or transition setting: the Reynolds number
+//! comes from a `Re<number>` word of the name (as written here), else from the file name
+//! (`…_Re1e6…`), else [`ReadOptions::re`](crate::table::ReadOptions), else 10⁶ — the last two
+//! said in a note; N_crit and the transition settings are unknown (NaN).
 
 use super::xfoil_polar::re_label;
 use super::{extension_or, stem_or};
 use crate::output::{fixed_decimals, write_output, OutputSet};
-use crate::section::{PolarPoint, SectionAero, Transition};
-use crate::table::{PolarTable, TableError, TableMeta};
+use crate::section::{PolarPoint, SectionAero};
+use crate::table::{PolarTable, ReadOptions, TableError, TableMeta, TableRead};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -438,48 +445,88 @@ impl Cursor<'_> {
 }
 
 impl C81Block {
-    /// The value at Mach column `j` and `alpha`, linear in α, held at the ends.
-    fn at(&self, j: usize, alpha: f64) -> f64 {
+    /// The value at Mach number `mach` and `alpha`, linear in both on this block's lists,
+    /// held at their ends.
+    fn at(&self, mach: f64, alpha: f64) -> f64 {
         let nm = self.mach.len();
-        let a = &self.alpha;
-        let k = a
-            .partition_point(|&x| x <= alpha)
-            .clamp(1, a.len().max(2) - 1);
-        if a.len() == 1 {
-            return self.values[j];
+        let (j, u) = bracket(&self.mach, mach);
+        let (k, t) = bracket(&self.alpha, alpha);
+        let v = |k: usize, j: usize| self.values[k * nm + j];
+        // a + t·(b − a): equal neighbours give their value exactly.
+        let lerp = |a: f64, b: f64, t: f64| a + t * (b - a);
+        let row = |k: usize| match j {
+            Some(j) => lerp(v(k, j), v(k, j + 1), u),
+            None => v(k, 0),
+        };
+        match k {
+            Some(k) => lerp(row(k), row(k + 1), t),
+            None => row(0),
         }
-        let t = ((alpha - a[k - 1]) / (a[k] - a[k - 1])).clamp(0.0, 1.0);
-        (1.0 - t) * self.values[(k - 1) * nm + j] + t * self.values[k * nm + j]
     }
 }
 
-/// Parse a C81 table (see the module docs); `stem` is the file stem the Reynolds number may
-/// come from.
-pub fn parse_c81(text: &str, stem: &str) -> Result<PolarTable, TableError> {
-    let mut cursor = Cursor {
-        lines: text.lines().collect(),
-        next: 1,
+/// The interval `k` of `axis` (increasing) holding `x` and the fraction `t` along it, `x`
+/// clamped to the axis; `None` for an axis of one value.
+fn bracket(axis: &[f64], x: f64) -> (Option<usize>, f64) {
+    if axis.len() < 2 {
+        return (None, 0.0);
+    }
+    let k = axis.partition_point(|&a| a <= x).clamp(1, axis.len() - 1) - 1;
+    let t = ((x - axis[k]) / (axis[k + 1] - axis[k])).clamp(0.0, 1.0);
+    (Some(k), t)
+}
+
+/// Whether `head` (the start of a file) looks like a C81 deck: six counts of two digits in
+/// columns 31–42 of the first line and a second line of numbers in 7-column fields after 7
+/// blanks (the Mach list).
+pub(crate) fn looks_like_c81(head: &str) -> bool {
+    let mut lines = head.lines();
+    let (Some(first), Some(second)) = (lines.next(), lines.next()) else {
+        return false;
     };
-    let header: Vec<char> = cursor
-        .lines
-        .first()
-        .copied()
-        .unwrap_or("")
-        .chars()
-        .collect();
-    let counts: Vec<usize> = (0..6)
+    header_counts(first).is_some()
+        && second
+            .get(..FIELD)
+            .is_some_and(|lead| lead.trim().is_empty())
+        && line_fields(second, 1, 9, 2).is_ok_and(|v| !v.is_empty())
+}
+
+/// The six counts NML NAL NMD NAD NMM NAM of a C81 header line (columns 31–42).
+fn header_counts(line: &str) -> Option<Vec<usize>> {
+    let header: Vec<char> = line.chars().collect();
+    (0..6)
         .map(|k| {
             let field: String = header.iter().skip(30 + 2 * k).take(2).collect();
             field.trim().parse::<usize>().ok().filter(|&n| n > 0)
         })
-        .collect::<Option<_>>()
-        .ok_or_else(|| TableError::C81 {
-            line: 1,
-            message: "columns 31-42 must hold six counts of two digits (NML NAL NMD NAD NMM NAM)"
-                .to_string(),
-        })?;
-    let name: String = header
-        .iter()
+        .collect()
+}
+
+/// Parse a C81 table (see the module docs); `stem` is the file stem the Reynolds number may
+/// come from. What [`parse_c81_with`] would say in notes is dropped.
+pub fn parse_c81(text: &str, stem: &str) -> Result<PolarTable, TableError> {
+    parse_c81_with(text, stem, &ReadOptions::default()).map(|read| read.table)
+}
+
+/// Parse a C81 table, assuming `options.re` when neither the deck's name nor `stem` gives a
+/// Reynolds number; the notes say what was assumed or dropped.
+pub fn parse_c81_with(
+    text: &str,
+    stem: &str,
+    options: &ReadOptions,
+) -> Result<TableRead, TableError> {
+    let mut cursor = Cursor {
+        lines: text.lines().collect(),
+        next: 1,
+    };
+    let first = cursor.lines.first().copied().unwrap_or("");
+    let counts = header_counts(first).ok_or_else(|| TableError::C81 {
+        line: 1,
+        message: "columns 31-42 must hold six counts of two digits (NML NAL NMD NAD NMM NAM)"
+            .to_string(),
+    })?;
+    let name: String = first
+        .chars()
         .take(30)
         .collect::<String>()
         .trim()
@@ -487,34 +534,39 @@ pub fn parse_c81(text: &str, stem: &str) -> Result<PolarTable, TableError> {
     let cl = cursor.block(counts[0], counts[1], "CL")?;
     let cd = cursor.block(counts[2], counts[3], "CD")?;
     let cm = cursor.block(counts[4], counts[5], "CM")?;
-    if cd.mach != cl.mach || cm.mach != cl.mach {
-        return Err(TableError::C81 {
-            line: 1,
-            message: "the CL, CD and CM blocks have different Mach lists".to_string(),
-        });
+    let mut notes = Vec::new();
+    let union = |lists: [&[f64]; 3]| {
+        let mut all: Vec<f64> = lists.concat();
+        all.sort_by(f64::total_cmp);
+        all.dedup();
+        all
+    };
+    let mut mach = union([&cl.mach, &cd.mach, &cm.mach]);
+    let supersonic: Vec<String> = mach
+        .iter()
+        .filter(|&&m| m >= 1.0)
+        .map(|m| m.to_string())
+        .collect();
+    if !supersonic.is_empty() {
+        notes.push(format!(
+            "C81 deck: the column at Mach {} dropped (tables hold 0 <= M < 1)",
+            supersonic.join(", ")
+        ));
+        mach.retain(|&m| m < 1.0);
     }
-    let nm = cl.mach.len();
-    let polar = |j: usize| -> Vec<PolarPoint> {
-        cl.alpha
+    let mut alpha = union([&cl.alpha, &cd.alpha, &cm.alpha]);
+    alpha.retain(|a| a.abs() <= 180.0);
+    let polar = |m: f64| -> Vec<PolarPoint> {
+        alpha
             .iter()
-            .enumerate()
-            .map(|(i, &alpha)| {
-                // C81 has no drag split, transition or cpmin: unknown.
-                PolarPoint::from_coefficients(
-                    alpha,
-                    cl.values[i * nm + j],
-                    cd.at(j, alpha),
-                    cm.at(j, alpha),
-                )
-            })
+            .map(|&a| PolarPoint::from_coefficients(a, cl.at(m, a), cd.at(m, a), cm.at(m, a)))
             .collect()
     };
-    let mut polars: Vec<Vec<PolarPoint>> = (0..nm).map(polar).collect();
-    let mut mach = cl.mach.clone();
+    let mut polars: Vec<Vec<PolarPoint>> = mach.iter().map(|&m| polar(m)).collect();
     // Identical columns throughout: a one-Mach table written for two-column readers.
     let coefficients =
         |p: &[PolarPoint]| -> Vec<[f64; 3]> { p.iter().map(|q| [q.cl, q.cd, q.cm]).collect() };
-    if nm > 1
+    if polars.len() > 1
         && polars
             .iter()
             .all(|p| coefficients(p) == coefficients(&polars[0]))
@@ -526,22 +578,28 @@ pub fn parse_c81(text: &str, stem: &str) -> Result<PolarTable, TableError> {
         s.split(|c: char| c.is_whitespace() || c == '_')
             .find_map(|w| w.strip_prefix("Re").and_then(|v| v.parse::<f64>().ok()))
     };
-    let re = re_word(&name).or_else(|| re_word(stem)).unwrap_or(1e6);
+    let re = match re_word(&name).or_else(|| re_word(stem)) {
+        Some(re) => re,
+        None => {
+            let re = options.re.unwrap_or(1e6);
+            notes.push(format!(
+                "C81 deck: it gives no Reynolds number; Re {re} assumed{}",
+                if options.re.is_some() {
+                    ""
+                } else {
+                    " (set it with --assume-re)"
+                }
+            ));
+            re
+        }
+    };
     let airfoil = name
         .split_whitespace()
         .filter(|w| re_word(w).is_none())
         .collect::<Vec<_>>()
         .join(" ");
-    let meta = TableMeta {
-        airfoil: if airfoil.is_empty() {
-            stem.to_string()
-        } else {
-            airfoil
-        },
-        transition: Transition::default(),
-        panels: 0,
-        solver: "C81 file".to_string(),
-        geometry: Vec::new(),
-    };
-    PolarTable::new(meta, vec![re], mach, polars)
+    let airfoil = if airfoil.is_empty() { stem } else { &airfoil };
+    let meta = TableMeta::unknown(airfoil, "C81 deck");
+    let table = PolarTable::new(meta, vec![re], mach, polars)?;
+    Ok(TableRead { table, notes })
 }

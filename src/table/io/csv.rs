@@ -2,12 +2,14 @@
 //!
 //! Columns: `airfoil,re,mach,ncrit,xtr_top_set,xtr_bot_set,alpha,cl,cd,cdp,cm,xtr_top,xtr_bot,
 //! converged,cdf,iterations,residual,panels,solver,cpmin,supercritical,xsep_top,xsep_bot,
-//! massive_separation`; a table whose
+//! massive_separation,thickness`; a table whose
 //! surfaces have different N_crit has the two columns `ncrit_top,ncrit_bot` in place of
 //! `ncrit`. Floats are written with Rust's shortest round-trip formatting (`NaN`, `-inf`
 //! where not finite), so reading a file back gives the identical table. The reader needs the
 //! first fourteen columns (any order; `ncrit` or both `ncrit_top` and `ncrit_bot`); `cdf` (default cd − cdp), `iterations`, `residual`, `panels` (default 0), `solver`
-//! (default empty), `cpmin` and `supercritical` are optional. A file without `cpmin` reads as
+//! (default empty), `cpmin`, `supercritical` and `thickness` (the airfoil's t/c, default
+//! NaN: unknown) are optional. Unknown metadata (a table converted from a C81 deck has no
+//! N_crit) is written `NaN`. A file without `cpmin` reads as
 //! minimum pressure unknown (NaN); without `supercritical` the flag follows from `cpmin` and
 //! the Mach number (Cp_min < Cp*), unknown (empty field, `None`) when `cpmin` is; likewise
 //! `xsep_top`, `xsep_bot` (NaN when absent) and `massive_separation`, which follows from them
@@ -28,7 +30,7 @@ use std::io::{Read, Write};
 use std::path::Path;
 
 /// Column names written, in order.
-pub const COLUMNS: [&str; 24] = [
+pub const COLUMNS: [&str; 25] = [
     "airfoil",
     "re",
     "mach",
@@ -53,6 +55,7 @@ pub const COLUMNS: [&str; 24] = [
     "xsep_top",
     "xsep_bot",
     "massive_separation",
+    "thickness",
 ];
 
 /// Columns a CSV file must have.
@@ -72,16 +75,12 @@ fn with_ncrit<'a>(fields: [&'a str; COLUMNS.len()], ncrit: &'a [String]) -> Vec<
     out
 }
 
-/// Write `table` as long-form CSV to `w`.
-pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableError> {
-    // Records of text fields fail only in the stream below.
-    let werr = |e: csv::Error| {
-        let text = e.to_string();
-        match e.into_kind() {
-            csv::ErrorKind::Io(io) => TableError::Write(io),
-            _ => TableError::Write(std::io::Error::other(text)),
-        }
-    };
+/// Call `record` with the header (the column names) and then each point's fields, as the CSV
+/// writes them: the one definition of the columns, shared with JSON Lines.
+pub(super) fn for_each_record<E>(
+    table: &PolarTable,
+    mut record: impl FnMut(&[&str]) -> Result<(), E>,
+) -> Result<(), E> {
     let m = table.meta();
     let t = &m.transition;
     let (ncrit, ncrit_names) = match t.common_ncrit() {
@@ -91,7 +90,6 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
             NCRIT_SIDES.map(str::to_string).to_vec(),
         ),
     };
-    let mut out = csv::Writer::from_writer(w);
     // The geometry columns, only for a section made by geometry operations.
     let (shape_names, shape): (&[&str], Vec<String>) = if m.geometry.is_empty() {
         (&[], Vec::new())
@@ -101,8 +99,9 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
     };
     let mut header = with_ncrit(COLUMNS, &ncrit_names);
     header.extend(shape_names);
-    out.write_record(header).map_err(werr)?;
+    record(&header)?;
     let panels = m.panels.to_string();
+    let thickness = m.thickness.to_string();
     let (xt, xb) = (t.xtr_top.to_string(), t.xtr_bot.to_string());
     for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
         let (re, mach) = (re.to_string(), mach.to_string());
@@ -132,12 +131,28 @@ pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableEr
                 &p.xsep_top.to_string(),
                 &p.xsep_bot.to_string(),
                 flag_field(p.massive_separation),
+                &thickness,
             ];
-            let mut record = with_ncrit(fields, &ncrit);
-            record.extend(shape.iter().map(String::as_str));
-            out.write_record(record).map_err(werr)?;
+            let mut fields = with_ncrit(fields, &ncrit);
+            fields.extend(shape.iter().map(String::as_str));
+            record(&fields)?;
         }
     }
+    Ok(())
+}
+
+/// Write `table` as long-form CSV to `w`.
+pub fn write_csv_to(table: &PolarTable, w: &mut dyn Write) -> Result<(), TableError> {
+    // Records of text fields fail only in the stream below.
+    let werr = |e: csv::Error| {
+        let text = e.to_string();
+        match e.into_kind() {
+            csv::ErrorKind::Io(io) => TableError::Write(io),
+            _ => TableError::Write(std::io::Error::other(text)),
+        }
+    };
+    let mut out = csv::Writer::from_writer(w);
+    for_each_record(table, |fields| out.write_record(fields).map_err(werr))?;
     out.flush().map_err(TableError::Write)
 }
 
@@ -212,6 +227,7 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
         let this = TableMeta {
             airfoil: row.text(0)?.to_string(),
             transition: Transition::sides(ncrit_top, ncrit_bot, row.num(4)?, row.num(5)?),
+            thickness: row.opt_num(24)?.unwrap_or(f64::NAN),
             panels: row.opt_int(17)?.unwrap_or(0) as usize,
             solver: row.opt_text(18).unwrap_or("").to_string(),
             geometry: match geometry_col.and_then(|i| rec.get(i)) {
@@ -351,13 +367,8 @@ pub fn parse_polar_csv<R: Read>(r: R, stem: &str) -> Result<PolarTable, TableErr
         stem.split('_')
             .find_map(|part| part.strip_prefix(key).and_then(|v| v.parse::<f64>().ok()))
     };
-    let meta = TableMeta {
-        airfoil: stem.split('_').next().unwrap_or("polar").to_string(),
-        transition: Transition::default(),
-        panels: 0,
-        solver: "XFOIL polar file".to_string(),
-        geometry: Vec::new(),
-    };
+    // The file gives no N_crit or transition setting: unknown.
+    let meta = TableMeta::unknown(stem.split('_').next().unwrap_or("polar"), "polar CSV");
     PolarTable::new(
         meta,
         vec![stem_number("Re").unwrap_or(1e6)],
@@ -378,6 +389,8 @@ fn meta_difference(a: &TableMeta, b: &TableMeta) -> Option<&'static str> {
         Some("xtr_top_set")
     } else if a.transition.xtr_bot.to_bits() != b.transition.xtr_bot.to_bits() {
         Some("xtr_bot_set")
+    } else if a.thickness.to_bits() != b.thickness.to_bits() {
+        Some("thickness")
     } else if a.panels != b.panels {
         Some("panels")
     } else if a.solver != b.solver {

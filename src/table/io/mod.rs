@@ -1,7 +1,9 @@
-//! Table files: CSV and JSON (written and read back exactly), XFOIL polar text (written, and
-//! read as a one-polar table), C81 (written, and read as a one-Re table) and single-polar CSV
-//! (read), and OpenFAST AeroDyn airfoil files (written). [`read_table`] is the
-//! one reader: it reads a file once and recognises its layout.
+//! Table files: CSV, JSON and JSON Lines (written and read back exactly), XFOIL polar text
+//! (written, and read as a one-polar table), C81 (written, and read as a one-Re table),
+//! OpenFAST AeroDyn airfoil files (written, and read as a one-Mach table) and single-polar CSV
+//! (read). [`read_table`] is the one reader: it reads a file once and recognises its layout;
+//! [`read_table_with`] also takes what to assume where a file does not say
+//! ([`ReadOptions`]) and says what it assumed.
 //! Every writer goes through [`write_output`](crate::output::write_output), so a failure
 //! never leaves half a file and missing folders are created.
 
@@ -9,6 +11,7 @@ mod aerodyn;
 mod c81;
 mod csv;
 mod json;
+mod json_lines;
 mod xfoil_polar;
 
 use super::{PolarTable, TableError};
@@ -21,6 +24,48 @@ use std::str::FromStr;
 pub use self::aerodyn::write_aerodyn;
 pub use self::c81::{parse_c81, write_c81, C81Options};
 
+/// What a reader assumes where a file does not say, and which part of a file it reads.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ReadOptions {
+    /// Reynolds number of a file that carries none (a C81 deck without `Re…` in its name);
+    /// 10⁶ when not given (and said in a note).
+    pub re: Option<f64>,
+    /// Mach number of a file that carries none (an AeroDyn file from another tool); 0 when
+    /// not given (and said in a note).
+    pub mach: Option<f64>,
+    /// The `UserProp` of the tables to read from an AeroDyn file whose tables differ in it.
+    pub user_prop: Option<f64>,
+}
+
+impl ReadOptions {
+    /// The options, `re` and `mach` checked as the command-line checks a Reynolds and a Mach
+    /// number; errors name the argument by `names` (`--assume-re`, `--assume-mach` for the
+    /// CLI).
+    pub fn checked(
+        names: [&str; 2],
+        re: Option<f64>,
+        mach: Option<f64>,
+        user_prop: Option<f64>,
+    ) -> Result<Self, crate::arguments::ArgumentError> {
+        re.map_or(Ok(()), |re| crate::arguments::reynolds(names[0], re))?;
+        mach.map_or(Ok(()), |m| crate::arguments::mach(names[1], m))?;
+        Ok(Self {
+            re,
+            mach,
+            user_prop,
+        })
+    }
+}
+
+/// A table read from a file, with what the reader assumed (one line each).
+#[derive(Clone, Debug)]
+pub struct TableRead {
+    /// The table.
+    pub table: PolarTable,
+    /// Assumptions and choices, e.g. the Reynolds number of a C81 deck.
+    pub notes: Vec<String>,
+}
+
 /// A table file format (with the `cli` feature also a clap value enum: `--format` lists and
 /// completes these names).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -30,20 +75,24 @@ pub enum TableFormat {
     Csv,
     /// Serde JSON (`.json`), readable.
     Json,
+    /// JSON Lines (`.jsonl`): one flat record per point with the CSV's columns, the form
+    /// `pandas.read_json(path, lines=True)` reads; readable.
+    #[cfg_attr(feature = "cli", value(name = "jsonl"))]
+    JsonLines,
     /// XFOIL polar text, one file per (Re, M) (`.pol`); readable as a one-polar table.
     #[cfg_attr(feature = "cli", value(name = "xfoil", alias = "pol", alias = "polar"))]
     XfoilPolar,
     /// C81 rotorcraft airfoil table, one file per Re (`.c81`); readable as a one-Re table.
     C81,
     /// OpenFAST AeroDyn airfoil file, one table per Re, one file per Mach number (chosen
-    /// with `--format aerodyn`; written only).
+    /// with `--format aerodyn`); readable as a one-Mach table, recognised by its content.
     #[cfg_attr(feature = "cli", value(name = "aerodyn"))]
     AeroDyn,
 }
 
 impl TableFormat {
-    /// The format implied by a file's extension (case-insensitive: `.csv`, `.json`, `.pol`
-    /// or `.polar`, `.c81`).
+    /// The format implied by a file's extension (case-insensitive: `.csv`, `.json`, `.jsonl`,
+    /// `.pol` or `.polar`, `.c81`).
     pub fn from_path(path: &Path) -> Result<Self, TableError> {
         let ext = path
             .extension()
@@ -52,6 +101,7 @@ impl TableFormat {
         match ext.as_str() {
             "csv" => Ok(Self::Csv),
             "json" => Ok(Self::Json),
+            "jsonl" => Ok(Self::JsonLines),
             "pol" | "polar" => Ok(Self::XfoilPolar),
             "c81" => Ok(Self::C81),
             _ => Err(TableError::UnknownExtension(path.display().to_string())),
@@ -72,7 +122,7 @@ impl TableFormat {
             Self::XfoilPolar => Some("polar"),
             Self::C81 => Some("Re"),
             Self::AeroDyn => Some("Mach number"),
-            Self::Csv | Self::Json => None,
+            Self::Csv | Self::Json | Self::JsonLines => None,
         };
         if let (true, Some(per)) = (stdout, per) {
             return Err(TableError::NeedsFile {
@@ -88,6 +138,7 @@ impl TableFormat {
         match self {
             Self::Csv => "csv",
             Self::Json => "json",
+            Self::JsonLines => "jsonl",
             Self::XfoilPolar => "xfoil",
             Self::C81 => "c81",
             Self::AeroDyn => "aerodyn",
@@ -98,11 +149,12 @@ impl TableFormat {
 impl FromStr for TableFormat {
     type Err = TableError;
 
-    /// Parse `csv`, `json`, `xfoil` (or `pol`) or `c81`, case-insensitive.
+    /// Parse `csv`, `json`, `jsonl`, `xfoil` (or `pol`), `c81` or `aerodyn`, case-insensitive.
     fn from_str(s: &str) -> Result<Self, TableError> {
         match s.to_ascii_lowercase().as_str() {
             "csv" => Ok(Self::Csv),
             "json" => Ok(Self::Json),
+            "jsonl" => Ok(Self::JsonLines),
             "xfoil" | "pol" | "polar" => Ok(Self::XfoilPolar),
             "c81" => Ok(Self::C81),
             "aerodyn" => Ok(Self::AeroDyn),
@@ -157,6 +209,9 @@ pub fn write_table(
     match format {
         TableFormat::Csv => csv::write_csv(table, path).map(|()| vec![path.to_path_buf()]),
         TableFormat::Json => json::write_json(table, path).map(|()| vec![path.to_path_buf()]),
+        TableFormat::JsonLines => {
+            json_lines::write_json_lines(table, path).map(|()| vec![path.to_path_buf()])
+        }
         TableFormat::XfoilPolar => xfoil_polar::write_xfoil_polars(table, path),
         TableFormat::C81 => c81::write_c81(table, path, &C81Options::default()),
         TableFormat::AeroDyn => aerodyn::write_aerodyn(table, path),
@@ -176,6 +231,7 @@ fn check_readable_size(table: &PolarTable, format: TableFormat) -> Result<(), Ta
     let result = match format {
         TableFormat::Csv => csv::write_csv_to(table, &mut sink),
         TableFormat::Json => json::write_json_to(table, &mut sink),
+        TableFormat::JsonLines => json_lines::write_json_lines_to(table, &mut sink),
         TableFormat::XfoilPolar | TableFormat::C81 | TableFormat::AeroDyn => return Ok(()),
     };
     match result {
@@ -211,7 +267,7 @@ impl std::io::Write for SizeLimit {
 /// `mach` in `format` at `path` (with the default [`C81Options`]).
 pub fn table_files(path: &Path, format: TableFormat, re: &[f64], mach: &[f64]) -> Vec<PathBuf> {
     match format {
-        TableFormat::Csv | TableFormat::Json => vec![path.to_path_buf()],
+        TableFormat::Csv | TableFormat::Json | TableFormat::JsonLines => vec![path.to_path_buf()],
         TableFormat::XfoilPolar => re
             .iter()
             .flat_map(|&r| {
@@ -258,13 +314,20 @@ fn require_file_name(path: &Path, count: usize) -> Result<(), crate::output::Out
     Ok(())
 }
 
-/// Read a table file, once, recognising its layout from its extension and first line: a polargen CSV or
-/// JSON table, an XFOIL polar file (a one-polar table), a C81 file (a one-Re table), or a
-/// single-polar CSV with columns
-/// `alpha, cl, cd[, cdp, cm, xtr_top, xtr_bot]` such as the XFOIL reference polars (a
-/// one-polar table at the Re and M of a file name like `…_Re1.9e6_M0.41_…`, else Re 10⁶,
-/// M 0). Every error names the file.
+/// Read a table file, once, recognising its layout from its extension and content: a
+/// polargen CSV, JSON or JSON Lines table, an XFOIL polar file (a one-polar table), a C81
+/// deck (a one-Re table), an OpenFAST AeroDyn airfoil file (a one-Mach table, whatever its
+/// extension), or a single-polar CSV with columns `alpha, cl, cd[, cdp, cm, xtr_top,
+/// xtr_bot]` such as the XFOIL reference polars (a one-polar table at the Re and M of a file
+/// name like `…_Re1.9e6_M0.41_…`, else Re 10⁶, M 0). Every error names the file. What the
+/// reader assumed is dropped: [`read_table_with`] returns it.
 pub fn read_table(path: &Path) -> Result<PolarTable, TableError> {
+    read_table_with(path, &ReadOptions::default()).map(|read| read.table)
+}
+
+/// [`read_table`], assuming `options` where the file does not say; the notes say what was
+/// assumed or chosen.
+pub fn read_table_with(path: &Path, options: &ReadOptions) -> Result<TableRead, TableError> {
     let bytes = read_input(path).map_err(TableError::Input)?;
     // Name the file, unless the error already does.
     let in_file = |source: TableError| {
@@ -279,7 +342,7 @@ pub fn read_table(path: &Path) -> Result<PolarTable, TableError> {
     };
     let layout = Layout::detect(path, &bytes).map_err(in_file)?;
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("");
-    parse_layout(&bytes, layout, stem).map_err(in_file)
+    parse_layout(&bytes, layout, stem, options).map_err(in_file)
 }
 
 /// Parse a table held in memory in `format` (CSV is polargen's long form).
@@ -287,23 +350,35 @@ pub fn parse_table(bytes: &[u8], format: TableFormat) -> Result<PolarTable, Tabl
     let layout = match format {
         TableFormat::Csv => Layout::Csv,
         TableFormat::Json => Layout::Json,
+        TableFormat::JsonLines => Layout::JsonLines,
         TableFormat::XfoilPolar => Layout::XfoilPolar,
         TableFormat::C81 => Layout::C81,
-        TableFormat::AeroDyn => return Err(TableError::NotReadable("AeroDyn")),
+        TableFormat::AeroDyn => Layout::AeroDyn,
     };
-    parse_layout(bytes, layout, "")
+    parse_layout(bytes, layout, "", &ReadOptions::default()).map(|read| read.table)
 }
 
 /// Parse `bytes` laid out as `layout`; `stem` is the file stem a single-polar CSV takes its
-/// flow condition from.
-fn parse_layout(bytes: &[u8], layout: Layout, stem: &str) -> Result<PolarTable, TableError> {
+/// flow condition from (and a C81 deck its Reynolds number, an AeroDyn file its name).
+fn parse_layout(
+    bytes: &[u8],
+    layout: Layout,
+    stem: &str,
+    options: &ReadOptions,
+) -> Result<TableRead, TableError> {
     let text = || std::str::from_utf8(bytes).map_err(|_| TableError::NotText);
+    let plain = |table: PolarTable| TableRead {
+        table,
+        notes: Vec::new(),
+    };
     match layout {
-        Layout::Csv => csv::parse_csv(bytes),
-        Layout::PolarCsv => csv::parse_polar_csv(bytes, stem),
-        Layout::Json => json::parse_json(text()?),
-        Layout::XfoilPolar => xfoil_polar::parse_xfoil_polar(text()?),
-        Layout::C81 => c81::parse_c81(text()?, stem),
+        Layout::Csv => csv::parse_csv(bytes).map(plain),
+        Layout::PolarCsv => csv::parse_polar_csv(bytes, stem).map(plain),
+        Layout::Json => json::parse_json(text()?).map(plain),
+        Layout::JsonLines => json_lines::parse_json_lines(text()?).map(plain),
+        Layout::XfoilPolar => xfoil_polar::parse_xfoil_polar(text()?).map(plain),
+        Layout::C81 => c81::parse_c81_with(text()?, stem, options),
+        Layout::AeroDyn => aerodyn::parse_aerodyn(text()?, stem, options),
     }
 }
 
@@ -333,12 +408,17 @@ pub const LOOKUP_ALPHA_COVER_DEG: (f64, f64) = (0.0, 10.0);
 /// without two converged points in any polar is refused ([`PolarTable::require_lookup`]),
 /// and so is one whose α range does not cover [`LOOKUP_ALPHA_COVER_DEG`].
 pub fn read_lookup_table(path: &Path) -> Result<PolarTable, TableError> {
-    let table = read_table(path)?;
-    check_lookup_table(&table).map_err(|e| TableError::File {
+    read_lookup_table_with(path, &ReadOptions::default()).map(|read| read.table)
+}
+
+/// [`read_lookup_table`] with [`ReadOptions`], returning the reader's notes.
+pub fn read_lookup_table_with(path: &Path, options: &ReadOptions) -> Result<TableRead, TableError> {
+    let read = read_table_with(path, options)?;
+    check_lookup_table(&read.table).map_err(|e| TableError::File {
         path: path.to_path_buf(),
         source: Box::new(e),
     })?;
-    Ok(table)
+    Ok(read)
 }
 
 /// The checks of [`read_lookup_table`] on a table already read.
@@ -367,10 +447,14 @@ enum Layout {
     PolarCsv,
     /// polargen's JSON.
     Json,
+    /// polargen's JSON Lines.
+    JsonLines,
     /// XFOIL's polar-file text.
     XfoilPolar,
     /// C81 text.
     C81,
+    /// An OpenFAST AeroDyn airfoil file.
+    AeroDyn,
 }
 
 impl Layout {
@@ -378,8 +462,10 @@ impl Layout {
     /// does not decide: a `.csv` whose header names the `airfoil`, `re` and `mach` columns is
     /// a polargen table, one naming `alpha`, `cl` and `cd` (and not those) a single polar, any
     /// other is refused naming what is missing (an empty one is left to the CSV reader). A file with
-    /// another extension is recognised by its start: `{` (JSON), `Calculated polar for:`
-    /// (XFOIL) or a CSV header as above.
+    /// another extension is recognised by its content: an AeroDyn airfoil file (a line named
+    /// `InterpOrd` or `NumTabs`), `{` (JSON; a JSON Lines record ends its first line),
+    /// `Calculated polar for:` (XFOIL), a CSV header as above, or a C81 header (six
+    /// two-digit counts in columns 31–42 and a Mach row).
     fn detect(path: &Path, bytes: &[u8]) -> Result<Self, TableError> {
         let head = String::from_utf8_lossy(&bytes[..bytes.len().min(4096)]);
         let first = head.trim_start();
@@ -406,16 +492,29 @@ impl Layout {
         match TableFormat::from_path(path) {
             Ok(TableFormat::Csv) => csv.map_or_else(neither, Ok),
             Ok(TableFormat::Json) => Ok(Self::Json),
+            Ok(TableFormat::JsonLines) => Ok(Self::JsonLines),
             Ok(TableFormat::XfoilPolar) => Ok(Self::XfoilPolar),
             Ok(TableFormat::C81) => Ok(Self::C81),
-            Ok(TableFormat::AeroDyn) => Err(TableError::NotReadable("AeroDyn")),
+            Ok(TableFormat::AeroDyn) => Ok(Self::AeroDyn),
             Err(unknown) => {
-                if first.starts_with('{') {
+                let first_line = crate::input::text_lines(first).next().unwrap_or("");
+                if aerodyn::looks_like_aerodyn(&head) {
+                    Ok(Self::AeroDyn)
+                } else if first_line.starts_with('{')
+                    && first_line.contains("\"alpha\"")
+                    && !first_line.contains("\"polars\"")
+                {
+                    Ok(Self::JsonLines)
+                } else if first.starts_with('{') {
                     Ok(Self::Json)
                 } else if head.contains("Calculated polar for:") {
                     Ok(Self::XfoilPolar)
+                } else if let Some(csv) = csv {
+                    Ok(csv)
+                } else if c81::looks_like_c81(&head) {
+                    Ok(Self::C81)
                 } else {
-                    csv.ok_or(unknown)
+                    Err(unknown)
                 }
             }
         }

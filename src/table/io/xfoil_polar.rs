@@ -43,7 +43,8 @@ const POLAR_FIELDS: [(usize, usize); 10] = [
 const CPMIN_FIELD: usize = 7;
 
 /// Write one polar in XFOIL's polar-file layout to `w`; a value wider than its field is
-/// refused ([`TableError::FieldOverflow`]).
+/// refused ([`TableError::FieldOverflow`]), and so is metadata the header needs but the table
+/// does not know (N_crit and the trips of a table read from a C81 deck).
 pub fn write_polar_to(
     meta: &TableMeta,
     re: f64,
@@ -51,6 +52,18 @@ pub fn write_polar_to(
     points: &[PolarPoint],
     w: &mut dyn Write,
 ) -> Result<(), TableError> {
+    let header = [
+        ("ncrit_top", meta.transition.ncrit_top),
+        ("ncrit_bot", meta.transition.ncrit_bot),
+        ("xtr_top_set", meta.transition.xtr_top),
+        ("xtr_bot_set", meta.transition.xtr_bot),
+    ];
+    if let Some((field, _)) = header.iter().find(|(_, v)| v.is_nan()) {
+        return Err(TableError::UnknownInHeader {
+            field,
+            format: "an XFOIL polar file",
+        });
+    }
     let solver = if meta.solver.is_empty() {
         "polargen"
     } else {
@@ -329,6 +342,7 @@ pub fn parse_xfoil_polar(text: &str) -> Result<PolarTable, TableError> {
     let meta = TableMeta {
         airfoil: name,
         transition: Transition::sides(ncrit_top, ncrit_bot, xt, xb),
+        thickness: f64::NAN,
         panels: 0,
         solver,
         geometry: Vec::new(),
