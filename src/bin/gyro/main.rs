@@ -374,7 +374,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
                 TOOL.say(note);
             }
             for path in &outcome.written {
-                outln!(buf, "wrote {}", path.display());
+                TOOL.say(format!("wrote {}", path.display()));
             }
         }
     }
