@@ -43,15 +43,15 @@ fn lookup_dict<'py>(py: Python<'py>, l: &Lookup) -> PyResult<Bound<'py, PyDict>>
 
 #[pymethods]
 impl Table {
-    /// Reads a table file as the CLI does: polargen CSV or JSON, an XFOIL polar file, or a
-    /// single-polar CSV.
+    /// Reads a table file as the CLI does: polargen CSV or JSON, an XFOIL polar file, a C81
+    /// deck or a single-polar CSV.
     #[staticmethod]
     fn read(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
         let table = py.detach(|| shielded(|| read_table(&path)))?;
         table.map(Self::from).map_err(|e| raise(None, e))
     }
 
-    /// Writes the table to `path` in `format` (`csv`, `json`, `xfoil`, `c81`; from the
+    /// Writes the table to `path` in `format` (`csv`, `json`, `xfoil`, `c81`, `aerodyn`; from the
     /// extension when None), as `polargen convert` does; C81 at `c81_re` only when given.
     /// Returns the files written.
     #[pyo3(signature = (path, format = None, c81_re = None))]

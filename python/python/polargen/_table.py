@@ -27,17 +27,17 @@ class Table:
 
     @classmethod
     def read(cls, path: PathLike) -> "Table":
-        """Reads a polargen CSV or JSON table, an XFOIL polar file (``.pol``) or a
-        single-polar CSV (columns alpha, cl, cd, …), as ``polargen convert`` does. C81 files
-        cannot be read back."""
+        """Reads a table file as ``polargen convert`` does, recognising the layout: polargen
+        CSV or JSON, an XFOIL polar file (``.pol``), a C81 deck or a single-polar CSV
+        (columns alpha, cl, cd, …)."""
         return cls(_polargen.PolarTable.read(os.fspath(path)))
 
     def write(self, path: PathLike, format: Optional[str] = None,
               c81_re: Optional[float] = None) -> List[str]:
         """Writes the table as ``polargen convert`` does: ``format`` ``"csv"``, ``"json"``,
-        ``"xfoil"`` (one ``.pol`` per node) or ``"c81"`` (one file per Re, or only at
-        ``c81_re``); from the extension of ``path`` when None. Files are written atomically;
-        returns the paths written."""
+        ``"xfoil"`` (one ``.pol`` per node), ``"c81"`` (one file per Re, or only at
+        ``c81_re``) or ``"aerodyn"`` (OpenFAST AeroDyn airfoil files); from the extension of
+        ``path`` when None. Files are written atomically; returns the paths written."""
         written = self._core.write(os.fspath(path), format, c81_re)
         return [os.fspath(p) for p in written]
 
@@ -92,15 +92,24 @@ class Table:
     def polars(self) -> List[Polar]:
         """Every polar, Re-major (``index = i_re·len(mach) + i_mach``)."""
         meta = self.meta
-        return [Polar(re, mach, columns, meta) for re, mach, columns in self._core.polars()]
+        return [self._polar(re, mach, columns, meta)
+                for re, mach, columns in self._core.polars()]
+
+    def _polar(self, re: float, mach: float, columns: Dict[str, np.ndarray],
+               meta: Dict[str, Any]) -> Polar:
+        """A polar of this table that knows its table (for :meth:`Polar.plot`)."""
+        polar = Polar(re, mach, columns, meta)
+        polar._table = self._core
+        return polar
 
     def polar(self, re: float, mach: float) -> Polar:
         """The polar at the node (``re``, ``mach``) (relative tolerance 1e-9)."""
         found = self._core.polar(float(re), float(mach))
         if found is None:
-            raise KeyError(f"no polar at Re {re:g}, M {mach:g} (axes: Re {list(self.re)}, "
-                           f"M {list(self.mach)})")
-        return Polar(*found, self.meta)
+            axis = lambda values: ", ".join(f"{v:g}" for v in values)  # noqa: E731
+            raise KeyError(f"no polar at Re {re:g}, M {mach:g} (axes: Re {axis(self.re)}; "
+                           f"M {axis(self.mach)})")
+        return self._polar(*found, self.meta)
 
     def lookup(self, alpha, re, mach) -> Lookup:
         """Section coefficients at angles ``alpha`` [deg] (any value, wrapped to ±180°),
