@@ -24,11 +24,14 @@
 //! * [`table`] — Re × Mach × α tables: building ([`table::build_table`]), lookups with a 360°
 //!   extension, one reader that recognises every readable layout ([`table::read_table`]), and
 //!   the writers.
-//! * [`rotor`] — blade-element model of a teetering gyroplane rotor and a blade-element–momentum
-//!   propeller with its engine: trim, takeoff, cruise sweeps, and [`rotor::study`], the paper's
-//!   clean-versus-contaminated study and its sensitivity to the preset's estimates.
-//! * [`studies`] — what-if studies on top of the rotor (contamination severity and spanwise
-//!   coverage, airfoil choice, airspeed), their section tables solved and cached.
+//! * [`rotor`] — blade-element model of a gyroplane rotor (teetering, or N blades on flapping
+//!   hinges) and a blade-element–momentum propeller with its engine: trim, takeoff, cruise
+//!   sweeps, the isolated rotor in a wind tunnel.
+//! * [`studies`] — studies on top of the rotor: [`studies::paper`], the paper's
+//!   clean-versus-contaminated study and its sensitivity to the preset's estimates,
+//!   [`studies::pca2`], the rotor model against the PCA-2 autogiro's tunnel and flight tests,
+//!   and the what-if studies (contamination severity and spanwise coverage, airfoil choice, airspeed,
+//!   a fixed wing), their section tables solved and cached.
 //! * [`plot`] — SVG/PNG figures of polars, point distributions and rotor results.
 //! * [`report`] — the paper report: Tables 3–5 beside the paper's values, figures, words.
 //!
@@ -61,7 +64,8 @@
 //! | build, read, write a table | [`table::build_table`], [`table::read_table`], [`table::write_table`] |
 //! | one table per airfoil of many, sharded | [`table::Batch`] |
 //! | look up section coefficients | [`section::SectionAero`] on [`table::PolarTable`] |
-//! | trim, takeoff, sweeps | [`rotor::trim_aircraft`], [`rotor::simulate_takeoff`], [`rotor::study`] |
+//! | trim, takeoff, sweeps | [`rotor::trim_aircraft`], [`rotor::simulate_takeoff`], [`studies::paper`] |
+//! | a rotor in a wind tunnel | [`rotor::autorotate`], [`rotor::RotorPreset`] |
 //! | propeller and engine | [`rotor::Powerplant`], [`rotor::Propeller`] |
 //! | figures | [`plot::render`] with [`plot::polar_plots`], [`plot::point_plots`], [`plot::rotor_plots`] |
 //! | the paper report | [`report::write_report`] |

@@ -22,7 +22,7 @@ const SKIP_MARKER: &str = "[skip-test]";
 const SETUP: [&str; 2] = ["cargo ", "pip "];
 
 /// The shipped folders the examples read, copied into the test's folder.
-const INPUTS: [&str; 3] = ["aircraft", "geometry", "polars"];
+const INPUTS: [&str; 4] = ["aircraft", "geometry", "polars", "tests/data/pca2"];
 
 /// One command of a shell block: its first README line and its text (continuations joined).
 struct Example {

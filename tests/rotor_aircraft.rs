@@ -15,7 +15,7 @@ fn preset_holds_the_paper_table_1() {
     assert_eq!(ac.rotor.blades, 2);
     assert_eq!(ac.rotor.chord_m, 0.2);
     assert_eq!(ac.rotor.incidence_deg, 2.5);
-    assert_eq!(ac.rotor.flap_stop_deg, 7.0);
+    assert_eq!(ac.rotor.flap_stop_deg, Some(7.0));
     assert_eq!(ac.rotor.radial_strips, 10);
     // Paper T1 rounds the Rotax gear 21/51 to 0.41.
     assert!((ac.engine.gear_ratio - 0.41).abs() < 0.002);
@@ -82,7 +82,7 @@ fn unknown_field_and_bad_values_are_rejected() {
         ),
         "{err}"
     );
-    let text = preset_text().replace("inflow = \"glauert\"", "inflow = \"vortex\"");
+    let text = preset_text().replace("inflow = \"drees\"", "inflow = \"vortex\"");
     assert_eq!(
         Aircraft::from_toml_str(&text, "t").unwrap_err().to_string(),
         "bad aircraft file t: unknown variant `vortex`, expected `glauert` or `drees`"

@@ -34,7 +34,7 @@ fn strips_query_reynolds_and_mach_of_their_local_speed() {
         inner: AnalyticSection::clean(),
         queries: RefCell::new(Vec::new()),
     };
-    let s = rotor.solve(&section, &cond, None).unwrap();
+    let s = rotor.solve(&section, &cond, &mut None).unwrap();
     let q = section.queries.borrow();
     // One query per strip and azimuth step for each residual evaluation.
     assert_eq!(q.len() % (rotor.radial_strips * rotor.azimuth_steps), 0);

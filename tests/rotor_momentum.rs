@@ -15,7 +15,9 @@ fn hover_inflow_matches_actuator_disc() {
         omega: rpm_to_rad_s(350.0),
         atmosphere: atm,
     };
-    let s = r.solve(&AnalyticSection::clean(), &cond, None).unwrap();
+    let s = r
+        .solve(&AnalyticSection::clean(), &cond, &mut None)
+        .unwrap();
     assert!(s.thrust > 500.0, "thrust {}", s.thrust);
     // Actuator disc v_h = √(T/2ρA), scaled by the preset's induced-power factor κ.
     assert!(r.induced_power_factor > 1.0);
@@ -26,7 +28,7 @@ fn hover_inflow_matches_actuator_disc() {
         s.induced_velocity
     );
     // Axisymmetric hover: no flapping, no in-plane force, and the rotor needs driving torque.
-    assert!(s.teeter.amplitude() < 1e-8, "{:?}", s.teeter);
+    assert!(s.flapping.amplitude() < 1e-8, "{:?}", s.flapping);
     assert!(s.h_force.abs() < 1e-6 * s.thrust && s.side_force.abs() < 1e-6 * s.thrust);
     assert!(s.torque < 0.0);
 }
@@ -44,7 +46,9 @@ fn high_speed_inflow_tends_to_t_over_2_rho_a_v() {
             omega: rpm_to_rad_s(380.0),
             atmosphere: atm,
         };
-        let s = r.solve(&AnalyticSection::clean(), &cond, None).unwrap();
+        let s = r
+            .solve(&AnalyticSection::clean(), &cond, &mut None)
+            .unwrap();
         let expected = r.induced_power_factor * s.thrust / (2.0 * atm.density * r.disc_area() * v);
         assert!(
             (s.induced_velocity / expected - 1.0).abs() < 0.01,
@@ -77,8 +81,8 @@ fn induced_power_factor_scales_the_induced_power() {
         atmosphere: atm,
     };
     let section = AnalyticSection::clean();
-    let a = ideal.solve(&section, &cond, None).unwrap();
-    let b = real.solve(&section, &cond, None).unwrap();
+    let a = ideal.solve(&section, &cond, &mut None).unwrap();
+    let b = real.solve(&section, &cond, &mut None).unwrap();
     // Glauert's momentum theory, T = 2ρA·v·V′ with V′ = √((V cos α)² + (V sin α − v)²), solved
     // for the induced velocity v by bisection (a reference independent of the library's).
     let ideal_of = |s: &polargen::rotor::RotorSolution| {
@@ -119,8 +123,8 @@ fn discretisation_is_converged_to_a_few_percent() {
         atmosphere: Atmosphere::isa(0.0),
     };
     let section = AnalyticSection::clean();
-    let a = coarse.solve(&section, &cond, None).unwrap();
-    let b = fine.solve(&section, &cond, None).unwrap();
+    let a = coarse.solve(&section, &cond, &mut None).unwrap();
+    let b = fine.solve(&section, &cond, &mut None).unwrap();
     assert!(
         (a.thrust / b.thrust - 1.0).abs() < 0.02,
         "{} vs {}",
@@ -137,7 +141,7 @@ fn discretisation_is_converged_to_a_few_percent() {
 
 #[test]
 fn warm_start_reaches_the_cold_solution() {
-    // A warm start carries the previous solution's Broyden-updated Jacobian; near (the next
+    // A warm start carries the previous solve's Broyden-updated Jacobian; near (the next
     // takeoff stage) and far (hover from cruise: the Jacobian is refreshed) it must land on the
     // same root as a cold solve, to the step tolerance.
     let r = Rotor::from_params(&mtosport().rotor);
@@ -148,19 +152,22 @@ fn warm_start_reaches_the_cold_solution() {
         omega: rpm_to_rad_s(rpm),
         atmosphere: Atmosphere::isa(0.0),
     };
-    let start = r.solve(&section, &at(30.0, 10.0, 330.0), None).unwrap();
+    let mut start = None;
+    r.solve(&section, &at(30.0, 10.0, 330.0), &mut start)
+        .unwrap();
     for target in [
         at(30.2, 10.05, 331.0),
         at(0.0, 0.0, 350.0),
         at(40.0, 3.0, 380.0),
     ] {
-        let warm = r.solve(&section, &target, Some(&start)).unwrap();
-        let cold = r.solve(&section, &target, None).unwrap();
+        let mut from_start = start;
+        let warm = r.solve(&section, &target, &mut from_start).unwrap();
+        let cold = r.solve(&section, &target, &mut None).unwrap();
         let tip = target.omega * r.radius;
         let dv = (warm.induced_velocity - cold.induced_velocity).abs() / tip;
-        let db = (warm.teeter.beta1c - cold.teeter.beta1c)
+        let db = (warm.flapping.beta1c - cold.flapping.beta1c)
             .abs()
-            .max((warm.teeter.beta1s - cold.teeter.beta1s).abs());
+            .max((warm.flapping.beta1s - cold.flapping.beta1s).abs());
         assert!(
             dv < 1e-8 && db < 1e-8,
             "{target:?}: Δv0/ΩR {dv:e}, Δβ {db:e}"

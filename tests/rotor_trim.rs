@@ -41,7 +41,7 @@ fn autorotation_has_zero_torque_and_is_stable() {
             omega: s.condition.omega * factor,
             ..s.condition
         };
-        let t = r.solve(&section, &cond, Some(&s)).unwrap().torque;
+        let t = r.solve(&section, &cond, &mut None).unwrap().torque;
         assert!(t * sign > 0.05 * scale, "factor {factor}: torque {t}");
     }
 }
@@ -126,7 +126,7 @@ fn flapping_tilts_the_disc_back_advancing_blade_rises() {
         &TrimParams::default(),
     )
     .unwrap();
-    let teeter = s.teeter;
+    let teeter = s.flapping;
     // Advancing blade (ψ = 90°) moves up: dβ/dψ > 0 there, and down on the retreating side.
     assert!(teeter.beta_rate(90f64.to_radians()) > 0.0);
     assert!(teeter.beta_rate(270f64.to_radians()) < 0.0);
@@ -178,7 +178,7 @@ fn reverse_flow_region_at_high_advance_ratio() {
         omega: rpm_to_rad_s(150.0),
         atmosphere: Atmosphere::isa(0.0),
     };
-    let s = r.solve(&section, &cond, None).unwrap();
+    let s = r.solve(&section, &cond, &mut None).unwrap();
     assert!(s.advance_ratio > 0.5, "μ {}", s.advance_ratio);
     // The reverse-flow circle has diameter μR on the retreating side: strips with
     // r < μR·|sin ψ| for sin ψ < 0 see the air from the trailing edge.
@@ -190,7 +190,7 @@ fn reverse_flow_region_at_high_advance_ratio() {
     let inner = r.alpha_at_radius(&s, 0.15, 36);
     let a270 = inner[27].1;
     assert!(a270.abs() > 150.0, "α at ψ = 270°, 0.15 R: {a270}");
-    assert!(s.thrust.is_finite() && s.torque.is_finite() && s.teeter.amplitude().is_finite());
+    assert!(s.thrust.is_finite() && s.torque.is_finite() && s.flapping.amplitude().is_finite());
 }
 
 #[test]

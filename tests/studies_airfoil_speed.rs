@@ -2,9 +2,9 @@
 //! difference of its own runs, the speed study's 60 kt point is the contamination study's, and
 //! the CSV columns are the records' JSON keys in the documented order (docs/studies.md).
 
-use polargen::rotor::study::paper_runs;
 use polargen::rotor::Aircraft;
 use polargen::studies::airfoil::{run_airfoils, AirfoilStudy};
+use polargen::studies::paper::paper_runs;
 use polargen::studies::speed::{run_speeds, SpeedStudy};
 use polargen::studies::Transition;
 use polargen::table::read_lookup_table;

@@ -3,11 +3,11 @@
 //! recomputes a damaged entry, and the records carry the keys scripts rely on.
 
 use polargen::geometry::DEFAULT_PANEL_NODES;
-use polargen::rotor::study::paper_runs;
 use polargen::rotor::Aircraft;
 use polargen::studies::contamination::{
     run_contamination, transitions, ContaminationOptions, Group, Setting,
 };
+use polargen::studies::paper::paper_runs;
 use polargen::studies::{load_study_airfoil, sections, Sections, TableCache, Transition};
 use polargen::table::{read_lookup_table, GridSpec, PolarTable};
 use std::path::Path;

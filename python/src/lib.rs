@@ -30,7 +30,7 @@ mod _polargen {
     #[pymodule_export]
     use crate::plot::polar_figure;
     #[pymodule_export]
-    use crate::rotor::PyAircraft;
+    use crate::rotor::{PyAircraft, PyRotor};
     #[pymodule_export]
     use crate::rotor_runs::{rotor_compare, rotor_study, rotor_sweep};
     #[pymodule_export]

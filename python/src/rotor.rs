@@ -1,12 +1,13 @@
 //! `Aircraft`: the gyroplane preset, its cruise trim and its takeoff, with the results in the
-//! fields `gyro trim --json` and `gyro takeoff --json` print (their serde form).
+//! fields `gyro trim --json` and `gyro takeoff --json` print (their serde form); `Rotor`: the
+//! rotor of a preset alone, autorotating in a tunnel as `gyro autorotate` computes it.
 
 use std::path::PathBuf;
 
 use numpy::IntoPyArray;
 use polargen::rotor::{
-    check_altitude_m, check_mass_kg, check_speed_kt, simulate_takeoff, trim_aircraft, Aircraft,
-    TakeoffSample, TrimParams,
+    autorotate, check_altitude_m, check_mass_kg, check_speed_kt, simulate_takeoff, trim_aircraft,
+    tunnel_case, Aircraft, Atmosphere, Rotor, RotorPreset, TakeoffSample, TrimParams,
 };
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -138,5 +139,80 @@ impl PyAircraft {
 
     fn __repr__(&self) -> String {
         format!("Aircraft({:?}, {} kg)", self.inner.name, self.inner.mass_kg)
+    }
+}
+
+/// The rotor of a preset (an aircraft's, or a rotor-only preset such as the PCA-2's).
+#[pyclass(module = "polargen._polargen", name = "Rotor", frozen)]
+pub struct PyRotor {
+    inner: RotorPreset,
+}
+
+#[pymethods]
+impl PyRotor {
+    /// Reads and checks the rotor of a TOML preset (e.g. `aircraft/pca2.toml`).
+    #[staticmethod]
+    fn read(path: PathBuf) -> PyResult<Self> {
+        RotorPreset::from_toml_file(&path)
+            .map(|inner| Self { inner })
+            .map_err(|e| raise(None, e))
+    }
+
+    /// Parses and checks the rotor of a TOML preset held in a string.
+    #[staticmethod]
+    #[pyo3(signature = (text, origin = "<string>"))]
+    fn from_toml(text: &str, origin: &str) -> PyResult<Self> {
+        RotorPreset::from_toml_str(text, origin)
+            .map(|inner| Self { inner })
+            .map_err(|e| raise(None, e))
+    }
+
+    /// The preset's name.
+    #[getter]
+    fn name(&self) -> &str {
+        &self.inner.name
+    }
+
+    /// The autorotating rotor in a tunnel as `gyro autorotate --json` computes it: the wind
+    /// speed `speed_m_s`, or `mu` at `reference_rpm`; (JSON text, notes).
+    #[allow(clippy::too_many_arguments)]
+    fn autorotate(
+        &self,
+        py: Python<'_>,
+        table: &Table,
+        alpha_deg: f64,
+        speed_m_s: Option<f64>,
+        mu: Option<f64>,
+        reference_rpm: Option<f64>,
+        pitch_deg: Option<f64>,
+        altitude_m: f64,
+    ) -> PyResult<(String, Vec<String>)> {
+        check_altitude_m("altitude_m", altitude_m).map_err(|e| raise(None, e))?;
+        let mut params = self.inner.rotor.clone();
+        if let Some(pitch) = pitch_deg {
+            params.incidence_deg = pitch;
+            params.validate().map_err(|e| raise(Some("pitch_deg"), e))?;
+        }
+        let names = ["alpha_deg", "speed_m_s", "mu", "reference_rpm"];
+        let case = tunnel_case(
+            alpha_deg,
+            speed_m_s,
+            mu.zip(reference_rpm),
+            params.radius_m,
+            names,
+        )
+        .map_err(|e| raise(None, e))?;
+        let section = section(table)?;
+        let rotor = Rotor::from_params(&params);
+        let atm = Atmosphere::isa(altitude_m);
+        let run = py.detach(|| {
+            shielded(|| autorotate(&rotor, section, &case, &atm, &TrimParams::default()))
+        })?;
+        let a = run.map_err(|e| raise(None, e))?;
+        Ok((json(&a)?, a.notes()))
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Rotor({:?})", self.inner.name)
     }
 }

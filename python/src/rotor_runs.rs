@@ -6,8 +6,8 @@ use std::path::PathBuf;
 
 use polargen::report::console::compare_rows;
 use polargen::rotor::check_sweep_speeds;
-use polargen::rotor::study::{paper_runs, SpeedSweep};
 use polargen::studies::contamination::ContaminationOptions;
+use polargen::studies::paper::{paper_runs, SpeedSweep};
 use polargen::studies::wing::WingOptions;
 use polargen::studies::{Progress, StudyKind, StudyRequest};
 use pyo3::prelude::*;

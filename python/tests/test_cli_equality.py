@@ -165,3 +165,26 @@ def test_takeoff_has_the_fields_values_and_history_of_gyro_takeoff(cli, tmp_path
     columns = read_csv_columns(history.read_text())
     for name, values in result.history.items():
         assert same(values, floats(columns[name])), name
+
+
+def test_autorotate_has_the_fields_and_values_of_gyro_autorotate_json(cli, repo):
+    """The PCA-2 rotor in the tunnel (NACA Report 515, Table III row μ .216, α 8.3°), by wind
+    speed and by μ at the row's rotor speed, with a pitch override."""
+    table = pg.Table.read(repo / "polars" / "goe429_xtr0.07.csv")
+    rotor = pg.rotor.Rotor.read(repo / "aircraft" / "pca2.toml")
+    base = ("autorotate", "--aircraft", "aircraft/pca2.toml", "--table",
+            "polars/goe429_xtr0.07.csv", "--json", "--alpha-deg", "8.3")
+    for extra, kwargs in [(("--speed-m-s", "15.7"), {"speed_m_s": 15.7}),
+                          (("--mu", "0.216", "--reference-rpm", "100.5", "--pitch-deg", "2.7"),
+                           {"mu": 0.216, "reference_rpm": 100.5, "pitch_deg": 2.7})]:
+        run = cli.run("gyro", *base, *extra)
+        expected = json.loads(run.stdout)
+        with warnings.catch_warnings(record=True):
+            warnings.simplefilter("always")
+            result = rotor.autorotate(table, alpha_deg=8.3, **kwargs)
+        assert result.to_dict() == expected
+        assert list(result) == list(expected)
+        notes = [line[len("gyro: "):] for line in run.stderr.splitlines()]
+        assert result.notes == notes
+    with pytest.raises(ValueError, match="alpha_deg"):
+        rotor.autorotate(table, alpha_deg=95.0, speed_m_s=20.0)

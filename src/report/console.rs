@@ -1,12 +1,13 @@
-//! The command-line text of the rotor results (`gyro`'s stdout): the trim and takeoff
-//! summaries, the speed-sweep table and the paper comparison (Tables 3 and 4, text and JSON).
+//! The command-line text of the rotor results (`gyro`'s stdout): the trim, takeoff and
+//! tunnel-autorotation summaries, the speed-sweep table and the paper comparison (Tables 3 and
+//! 4, text and JSON).
 //! Each function appends to a text buffer the tool prints.
 
-use crate::rotor::study::paper::{
+use crate::rotor::{Autorotation, TakeoffResult, TrimResult};
+use crate::studies::paper::published::{
     change_percent as rel, compare as paired, Comparison, TABLE3_TRIM, TABLE4_TAKEOFF,
 };
-use crate::rotor::study::PaperRun;
-use crate::rotor::{TakeoffResult, TrimResult};
+use crate::studies::paper::PaperRun;
 use serde::Serialize;
 
 /// Engine rpm as printed, or `above max` when the engine cannot reach the thrust.
@@ -51,6 +52,43 @@ pub fn trim(buf: &mut String, t: &TrimResult) {
         "  flapping b1c, b1s [deg]{:8.2} {:.2}",
         t.beta1c_deg,
         t.beta1s_deg
+    );
+}
+
+/// The summary of the autorotating rotor in the tunnel.
+pub fn autorotation(buf: &mut String, a: &Autorotation) {
+    outln!(
+        buf,
+        "autorotation at alpha {} deg, V {} m/s",
+        a.alpha_deg,
+        a.speed_m_s
+    );
+    outln!(buf, "  rotor rpm                {:9.2}", a.rotor_rpm);
+    outln!(buf, "  tip-speed ratio mu       {:9.4}", a.mu);
+    outln!(
+        buf,
+        "  lift coefficient C_L     {:9.4}   (on q pi R^2)",
+        a.cl
+    );
+    outln!(buf, "  drag coefficient C_D     {:9.5}", a.cd);
+    outln!(buf, "  L/D                      {:9.3}", a.lift_to_drag);
+    outln!(
+        buf,
+        "  thrust coefficient C_T   {:9.5}",
+        a.thrust_coefficient
+    );
+    outln!(buf, "  inflow ratio lambda      {:9.5}", a.inflow_ratio);
+    outln!(
+        buf,
+        "  coning a0, flapping a1, b1 [deg] {:.2} {:.2} {:.2}   (NACA signs)",
+        a.coning_deg,
+        a.a1_deg,
+        a.b1_deg
+    );
+    outln!(
+        buf,
+        "  reverse flow             {:9.1} %",
+        100.0 * a.reverse_flow_fraction
     );
 }
 

@@ -5,12 +5,12 @@
 use super::words::{num, pct, rel};
 use super::RotorResults;
 use crate::diagnostics::error_line;
-use crate::rotor::study::paper::{
+use crate::rotor::{Aircraft, Atmosphere, FullThrottle, Powerplant, PropellerError};
+use crate::studies::paper::published::{
     TABLE1_STATIC_THRUST_N, TABLE2_ENGINE_RPM, TABLE2_ROTOR_RPM, TABLE3_TRIM,
 };
-use crate::rotor::study::sensitivity::{Change, Outcome, Sensitivity};
-use crate::rotor::study::PAPER_TRIM_SPEED_KT;
-use crate::rotor::{Aircraft, Atmosphere, FullThrottle, Powerplant, PropellerError};
+use crate::studies::paper::sensitivity::{Change, Outcome, Sensitivity};
+use crate::studies::paper::PAPER_TRIM_SPEED_KT;
 
 /// What the report needs of the powerplant: its calibrated blade angle and the full-throttle
 /// static equilibrium at ISA sea level.

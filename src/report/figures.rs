@@ -5,10 +5,10 @@ use super::{FoilTables, RotorResults, FIG10_RADIUS};
 use crate::plot::polar_plots::{mark_lift_coefficient, polar_figure};
 use crate::plot::rotor_plots::alpha_figure;
 use crate::plot::{Figure, Marker};
-use crate::rotor::study::paper::{
+use crate::studies::paper::published::{
     FIG10_MAX_ALPHA_DEG, FIG10_PSI_DEG, SECTION_MACH, SECTION_RE, TABLE5_CL,
 };
-use crate::rotor::study::{CASE_LABELS, PAPER_TRIM_SPEED_KT};
+use crate::studies::paper::{CASE_LABELS, PAPER_TRIM_SPEED_KT};
 use crate::table::sample_polar;
 
 /// Label of a table's transition setting for legends.

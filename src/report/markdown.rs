@@ -8,12 +8,12 @@ use super::words::{
 use super::{
     fidelity, FoilTables, ReportInputs, RotorResults, FIG10_RADIUS, SWEEP_KT, TABLE5_ALPHA_RANGE,
 };
-use crate::rotor::study::paper::{
+use crate::rotor::{rpm_to_rad_s, Aircraft, Atmosphere, TakeoffResult, TrimResult};
+use crate::studies::paper::published::{
     compare, Comparison, CLEAN_TAKEOFF_TEXT, FIG10_MAX_ALPHA_DEG, FIG10_PSI_DEG, SECTION_MACH,
     TABLE2_ENGINE_RPM, TABLE3_TRIM, TABLE4_TAKEOFF, TABLE5_CL,
 };
-use crate::rotor::study::{CASE_LABELS, PAPER_TRIM_SPEED_KT};
-use crate::rotor::{rpm_to_rad_s, Aircraft, Atmosphere, TakeoffResult, TrimResult};
+use crate::studies::paper::{CASE_LABELS, PAPER_TRIM_SPEED_KT};
 
 /// Rounding of the paper's Table 5 values (printed with three decimals).
 const TABLE5_ROUNDING: f64 = 0.0005;

@@ -3,9 +3,11 @@
 //! [`write_report`] reads the shipped polar tables, runs the cruise trim (Table 3), the takeoff
 //! (Table 4), the blade α(ψ) (Fig. 10), the power-required sweep and the sensitivity to the
 //! preset's estimates for the clean and the contaminated 8-H-12 rotor
-//! ([`rotor::study`](crate::rotor::study)), looks up Cd at Cl = 0.8 (Table 5) for both
+//! ([`studies::paper`](crate::studies::paper)), looks up Cd at Cl = 0.8 (Table 5) for both
 //! airfoils, draws every figure (PNG and SVG) and writes `README.md` with our numbers beside
-//! the flight test's and the paper's and the differences in words. Everything is computed on each
+//! the flight test's and the paper's and the differences in words; and the same rotor model on
+//! a second rotor, the PCA-2 autogiro against its tunnel and flight tests
+//! ([`studies::pca2`](crate::studies::pca2)). Everything is computed on each
 //! run; nothing in the report is typed in except the paper's own values.
 
 /// Appends one formatted line to an output `String` (writing to a `String` cannot fail).
@@ -24,6 +26,7 @@ pub mod console;
 mod fidelity;
 mod figures;
 mod markdown;
+mod second_rotor;
 mod shipped;
 mod words;
 
@@ -33,14 +36,14 @@ use crate::geometry::airfoil_key;
 use crate::output::{check_output_path, OutputError, OutputSet};
 use crate::plot::rotor_plots::{power_plot, takeoff_plot};
 use crate::plot::{render_into_set, Figure, PlotError};
-use crate::rotor::study::paper::{Table5Row, SECTION_MACH, SECTION_RE, TABLE5, TABLE5_CL};
-use crate::rotor::study::sensitivity::{sensitivity, Sensitivity};
-use crate::rotor::study::{
-    blade_alpha_cases, paper_runs, sweep_cases, SpeedSweep, StudyError, CASE_LABELS,
-    PAPER_TRIM_SPEED_KT,
-};
 use crate::rotor::{
     sweep_speeds, Aircraft, AircraftError, Powerplant, PropellerError, TakeoffResult, TrimResult,
+};
+use crate::studies::paper::published::{Table5Row, SECTION_MACH, SECTION_RE, TABLE5, TABLE5_CL};
+use crate::studies::paper::sensitivity::{sensitivity, Sensitivity};
+use crate::studies::paper::{
+    blade_alpha_cases, paper_runs, sweep_cases, SpeedSweep, StudyError, CASE_LABELS,
+    PAPER_TRIM_SPEED_KT,
 };
 use crate::table::{alpha_at_cl, LiftMatch, PolarTable, TableError};
 use fidelity::PropellerFacts;
@@ -77,10 +80,12 @@ const REPORT_README: &str = "README.md";
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ReportInputs {
     /// Aircraft preset (TOML); the built-in copy when it is [`SHIPPED_AIRCRAFT`] and absent.
+    /// The PCA-2 rotor preset `pca2.toml` is read from the same folder (built in likewise).
     pub aircraft: PathBuf,
-    /// Folder holding `naca8h12_free.csv`, `naca8h12_xtr0.07.csv`, `naca23012_free.csv` and
-    /// `naca23012_xtr0.07.csv` (the shipped default-grid tables); built-in copies when it is
-    /// [`SHIPPED_POLARS`] and they are absent.
+    /// Folder holding `naca8h12_free.csv`, `naca8h12_xtr0.07.csv`, `naca23012_free.csv`,
+    /// `naca23012_xtr0.07.csv` (the shipped default-grid tables), `goe429_free.csv` and
+    /// `goe429_xtr0.07.csv` (the PCA-2's); built-in copies when it is [`SHIPPED_POLARS`] and
+    /// they are absent.
     pub polars: PathBuf,
     /// Output folder (created if missing): `README.md` and the figures.
     pub out: PathBuf,
@@ -187,6 +192,7 @@ pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError>
         .map(|row| load_foil(&inputs.polars, row))
         .collect::<Result<Vec<_>, _>>()?;
     let rotor = rotor_results(&ac, &foils[0].tables)?;
+    let second = second_rotor_results(inputs)?;
     let beyond = match &inputs.studies {
         Some(cache) => Some(beyond::run(&ac, cache)?),
         None => None,
@@ -225,6 +231,10 @@ pub fn write_report(inputs: &ReportInputs) -> Result<ReportOutcome, ReportError>
     )?;
 
     let mut text = markdown::markdown(inputs, &ac, &foils, &rotor);
+    for (name, fig) in second.figures() {
+        figure(name, &fig)?;
+    }
+    text.push_str(&second.markdown());
     if let Some(b) = &beyond {
         for (name, fig) in b.figures()? {
             figure(&name, &fig)?;
@@ -264,6 +274,7 @@ pub fn check_report_paths(out: &Path) -> Result<(), OutputError> {
         .iter()
         .map(polar_figure_name)
         .chain(ROTOR_FIGURES.iter().map(|s| s.to_string()))
+        .chain(second_rotor::FIGURE_STEMS.iter().map(|s| s.to_string()))
         .chain(beyond::figure_stems().into_iter().map(String::from));
     let mut files: Vec<PathBuf> = stems
         .flat_map(|stem| FIGURE_FORMATS.map(|ext| out.join(format!("{stem}.{ext}"))))
@@ -276,7 +287,8 @@ pub fn check_report_paths(out: &Path) -> Result<(), OutputError> {
 }
 
 /// Check that a table file holds the case its name promises: the airfoil of `stem` (names
-/// compared by [`airfoil_key`], `NACA 8-H-12` ~ `naca8h12`) at transition `xtr` on both
+/// compared by [`airfoil_key`], `NACA 8-H-12` ~ `naca8h12`, `GOE 429 AIRFOIL` ~ `goe429`) at
+/// transition `xtr` on both
 /// surfaces, so that a misnamed file cannot enter the report.
 fn check_table_case(
     table: &PolarTable,
@@ -285,7 +297,10 @@ fn check_table_case(
     xtr: f64,
 ) -> Result<(), ReportError> {
     let meta = table.meta();
-    if airfoil_key(&meta.airfoil) != stem || meta.xtr_top_set != xtr || meta.xtr_bot_set != xtr {
+    // A UIUC coordinate file's header names the section "GOE 429 AIRFOIL".
+    let key = airfoil_key(&meta.airfoil);
+    let name = key.strip_suffix("airfoil").unwrap_or(&key);
+    if name != stem || meta.xtr_top_set != xtr || meta.xtr_bot_set != xtr {
         return Err(ReportError::MisnamedTable {
             path: path.to_path_buf(),
             airfoil: meta.airfoil.clone(),
@@ -321,6 +336,19 @@ fn load_foil(dir: &Path, row: &'static Table5Row) -> Result<FoilTables, ReportEr
         paths,
         at_cl,
     })
+}
+
+/// The PCA-2 rotor preset beside the aircraft preset and its Göttingen 429 tables (free,
+/// 7 % trip) in the table folder, compared with its tunnel and flight tests.
+fn second_rotor_results(inputs: &ReportInputs) -> Result<second_rotor::SecondRotor, ReportError> {
+    let folder = inputs.aircraft.parent().unwrap_or(Path::new(""));
+    let preset = shipped::rotor_preset(&folder.join("pca2.toml"))?;
+    let [free, fixed] = TRANSITIONS.map(|t| inputs.polars.join(format!("goe429_{t}.csv")));
+    let tables = [shipped::table(&free)?, shipped::table(&fixed)?];
+    for ((table, path), xtr) in tables.iter().zip([&free, &fixed]).zip(TRANSITION_XTR) {
+        check_table_case(table, path, "goe429", xtr)?;
+    }
+    Ok(second_rotor::run(&preset, &tables)?)
 }
 
 /// Trim, takeoff, blade α(ψ) and the speed sweep for the clean and the contaminated section.

@@ -1,6 +1,7 @@
 //! The shipped report inputs, built into the program so that `gyro report` runs from any
-//! folder: the MTOsport preset with its propeller's Clark Y table and the four default-grid
-//! tables of `polars/`. They are used
+//! folder: the MTOsport preset with its propeller's Clark Y table, the four default-grid
+//! tables of `polars/`, and the PCA-2 rotor preset with its two Göttingen 429 tables. They are
+//! used
 //! when the default path is asked for and nothing exists there; a file that exists (in a
 //! checkout, or given with `--aircraft`/`--polars`) is always read instead.
 //!
@@ -9,7 +10,7 @@
 //! (`polars/README.md`), so a report made outside the checkout shows the same numbers.
 
 use crate::input::exists;
-use crate::rotor::{Aircraft, AircraftError};
+use crate::rotor::{Aircraft, AircraftError, RotorPreset};
 use crate::table::{parse_table, read_lookup_table, PolarTable, TableError, TableFormat};
 use std::path::Path;
 
@@ -22,11 +23,17 @@ pub const SHIPPED_POLARS: &str = "polars";
 /// The MTOsport preset as shipped.
 const AIRCRAFT_TOML: &str = include_str!("../../aircraft/mtosport.toml");
 
+/// The PCA-2 rotor preset beside the default aircraft preset.
+pub const SHIPPED_PCA2: &str = "aircraft/pca2.toml";
+
+/// The PCA-2 rotor preset as shipped.
+const PCA2_TOML: &str = include_str!("../../aircraft/pca2.toml");
+
 /// The preset's propeller section table (its `section_table`) as shipped.
 const PROPELLER_TABLE: &str = include_str!("../../polars/clarky_free.csv");
 
-/// The shipped default-grid tables: file name, content.
-const TABLES: [(&str, &str); 4] = [
+/// The shipped tables: file name, content.
+const TABLES: [(&str, &str); 6] = [
     (
         "naca8h12_free.csv",
         include_str!("../../polars/naca8h12_free.csv"),
@@ -42,6 +49,14 @@ const TABLES: [(&str, &str); 4] = [
     (
         "naca23012_xtr0.07.csv",
         include_str!("../../polars/naca23012_xtr0.07.csv"),
+    ),
+    (
+        "goe429_free.csv",
+        include_str!("../../polars/goe429_free.csv"),
+    ),
+    (
+        "goe429_xtr0.07.csv",
+        include_str!("../../polars/goe429_xtr0.07.csv"),
     ),
 ];
 
@@ -59,6 +74,15 @@ pub(super) fn aircraft(path: &Path) -> Result<Aircraft, AircraftError> {
         );
     }
     Aircraft::from_toml_file(path)
+}
+
+/// The rotor preset at `path`, or the built-in PCA-2 preset when `path` is the default and
+/// absent.
+pub(super) fn rotor_preset(path: &Path) -> Result<RotorPreset, AircraftError> {
+    if path == Path::new(SHIPPED_PCA2) && !exists(path) {
+        return RotorPreset::from_toml_str(PCA2_TOML, SHIPPED_PCA2);
+    }
+    RotorPreset::from_toml_file(path)
 }
 
 /// The lookup table at `path`, or the built-in copy when `path` lies in the default folder,
@@ -90,6 +114,9 @@ mod tests {
         let ac = Aircraft::from_toml_str(AIRCRAFT_TOML, SHIPPED_AIRCRAFT).unwrap();
         let file = Aircraft::from_toml_file(&root.join(SHIPPED_AIRCRAFT)).unwrap();
         assert_eq!(ac.mass_kg, file.mass_kg);
+        let pca2 = RotorPreset::from_toml_str(PCA2_TOML, SHIPPED_PCA2).unwrap();
+        let file = RotorPreset::from_toml_file(&root.join(SHIPPED_PCA2)).unwrap();
+        assert_eq!(pca2.rotor.incidence_deg, file.rotor.incidence_deg);
         for (name, text) in TABLES {
             let t = parse_table(text.as_bytes(), TableFormat::Csv).unwrap();
             let f = read_lookup_table(&root.join(SHIPPED_POLARS).join(name)).unwrap();

@@ -1,8 +1,8 @@
 //! The report's words: numbers as printed, verdicts by the report's bands, and the sentences
 //! and Markdown tables that compare ours with the paper.
 
-pub(super) use crate::rotor::study::paper::change_percent as rel;
-use crate::rotor::study::paper::Comparison;
+pub(super) use crate::studies::paper::published::change_percent as rel;
+use crate::studies::paper::published::Comparison;
 use std::fmt::Write as _;
 
 /// Relative differences up to this [%] are called a match in the report's words.

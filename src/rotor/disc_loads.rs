@@ -1,20 +1,20 @@
-//! Azimuth-averaged loads of the teetering rotor: the blade-element sum over radial strips and
-//! azimuth steps at given induced inflow and teeter flapping (solved for in
-//! [`inflow_flapping`](super::inflow_flapping)).
+//! Azimuth-averaged loads of the rotor: the blade-element sum over radial strips and azimuth
+//! steps at given induced inflow and blade flapping (solved for in `inflow_flapping`).
 //!
 //! Hub frame: x along the hub plane pointing downstream (ψ = 0, the rear), y towards the
 //! advancing side (ψ = 90°), z along the shaft, up. The disc is tilted back by the hub angle
 //! of attack α_H, so the free stream has the in-plane component V cos α_H (towards +x) and the
-//! upflow V sin α_H. Blade 1 sits at azimuth ψ, radius r; blade 2 mirrors it (teeter).
+//! upflow V sin α_H. Blade 1 sits at azimuth ψ, radius r; every other blade repeats its motion
+//! and loads at its own azimuth, so the disc's forces are N_b times blade 1's azimuth mean.
 
 use super::atmosphere::Atmosphere;
 use super::blade_element::{strip_load, AirState, StripFlow};
-use super::flapping::{first_harmonics, Teeter};
+use super::flapping::{first_harmonics, Flapping, Hub};
 use super::inflow::{
     drees_coefficients, gessow_myers_tip_loss, glauert_thrust, prandtl_strip_mean, InflowModel,
     TipLoss, YawedFlow,
 };
-pub(super) use super::inflow_flapping::{RotorError, RotorSolution, RotorSolverParams};
+use super::planform::Planform;
 use super::spanwise::BladeSection;
 use std::f64::consts::TAU;
 
@@ -23,16 +23,20 @@ use std::f64::consts::TAU;
 pub struct Rotor {
     /// Radius R \[m\].
     pub radius: f64,
-    /// Chord c \[m\].
+    /// Reference chord c \[m\]: the blade's chord where the planform's ratio is 1 (solidity
+    /// N_b c/(πR), the scale of the flap-moment residuals).
     pub chord: f64,
-    /// Number of blades (2 for the teetering model).
+    /// Chord and twist along the blade (relative to `chord` and `pitch`).
+    pub planform: Planform,
+    /// Number of blades (2 for a teetering hub).
     pub blades: u32,
-    /// Blade pitch relative to the hub plane θ \[rad\].
+    /// Blade pitch setting relative to the hub plane θ \[rad\]: the pitch where the planform's
+    /// twist is 0.
     pub pitch: f64,
     /// Root cut-out radius \[m\].
     pub root_cutout: f64,
-    /// Hub-bar coning β0 \[rad\].
-    pub precone: f64,
+    /// How the blades are attached: teetering (fixed coning) or on flapping hinges.
+    pub hub: Hub,
     /// Number of radial strips.
     pub radial_strips: usize,
     /// Number of azimuth steps per revolution.
@@ -53,6 +57,35 @@ pub struct Rotor {
     pub induced_power_factor: f64,
     /// Numerics.
     pub solver: RotorSolverParams,
+}
+
+/// Tunable numerics of the coupled inflow/flapping Newton iteration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RotorSolverParams {
+    /// Largest number of Newton iterations.
+    pub max_iterations: usize,
+    /// Convergence: scaled Newton step below this (v0 in units of ΩR, β in rad), the step
+    /// taken to the returned state or the next one from it.
+    pub tolerance: f64,
+    /// Finite-difference step for the Jacobian (same scaling).
+    pub fd_step: f64,
+    /// Largest allowed change of a flap coefficient per iteration \[rad\].
+    pub max_flap_step: f64,
+    /// A Broyden-updated Jacobian is kept while each iteration shrinks the largest scaled
+    /// residual by at least this factor; otherwise it is taken afresh by finite differences.
+    pub broyden_contraction: f64,
+}
+
+impl Default for RotorSolverParams {
+    fn default() -> Self {
+        Self {
+            max_iterations: 40,
+            tolerance: 1e-9,
+            fd_step: 1e-6,
+            max_flap_step: 0.05,
+            broyden_contraction: 0.5,
+        }
+    }
 }
 
 /// Operating point of the rotor.
@@ -84,7 +117,20 @@ struct DiscStream {
     air: AirState,
 }
 
-/// Azimuth ψ of blade 1 with the trigonometry and teeter motion its strips share.
+/// One radial strip of the blade: centre radius, edges as radius fractions, chord and pitch.
+#[derive(Clone, Copy, Debug)]
+struct Strip {
+    /// Centre radius r \[m\].
+    r: f64,
+    /// Inner and outer edge r/R.
+    edges: (f64, f64),
+    /// Chord \[m\].
+    chord: f64,
+    /// Pitch relative to the hub plane \[rad\].
+    pitch: f64,
+}
+
+/// Azimuth ψ of blade 1 with the trigonometry and flap motion its strips share.
 struct AzimuthStation {
     /// sin ψ.
     sin_psi: f64,
@@ -97,13 +143,13 @@ struct AzimuthStation {
 }
 
 impl AzimuthStation {
-    fn new(teeter: &Teeter, psi: f64) -> Self {
+    fn new(flapping: &Flapping, psi: f64) -> Self {
         let (sin_psi, cos_psi) = psi.sin_cos();
         Self {
             sin_psi,
             cos_psi,
-            beta: teeter.beta_at(sin_psi, cos_psi),
-            beta_rate: teeter.beta_rate_at(sin_psi, cos_psi),
+            beta: flapping.beta_at(sin_psi, cos_psi),
+            beta_rate: flapping.beta_rate_at(sin_psi, cos_psi),
         }
     }
 }
@@ -119,9 +165,11 @@ pub(super) struct Loads {
     pub(super) side_force: f64,
     /// Aerodynamic driving torque \[N m\].
     pub(super) torque: f64,
-    /// Cosine harmonic of blade 1's flap moment about the teeter bolt \[N m\].
+    /// Mean of blade 1's aerodynamic flap moment about its flapping axis \[N m\].
+    pub(super) moment_0: f64,
+    /// Cosine harmonic of blade 1's flap moment about its flapping axis \[N m\].
     pub(super) moment_1c: f64,
-    /// Sine harmonic of blade 1's flap moment about the teeter bolt \[N m\].
+    /// Sine harmonic of blade 1's flap moment about its flapping axis \[N m\].
     pub(super) moment_1s: f64,
     /// Fraction of strip-azimuth samples in reverse flow.
     pub(super) reverse_fraction: f64,
@@ -152,6 +200,30 @@ impl Rotor {
         self.radial_strips.max(1) as f64
     }
 
+    /// Chord \[m\] and pitch \[rad\] of the blade at radius `r` \[m\].
+    pub fn chord_and_pitch(&self, r: f64) -> (f64, f64) {
+        let (ratio, twist) = self.planform.at(r / self.radius);
+        (self.chord * ratio, self.pitch + twist)
+    }
+
+    /// The radial strips of one evaluation.
+    fn strip_layout(&self) -> (Vec<Strip>, f64) {
+        let (radii, dr) = self.strips();
+        let strips = radii
+            .into_iter()
+            .map(|r| {
+                let (chord, pitch) = self.chord_and_pitch(r);
+                Strip {
+                    r,
+                    edges: ((r - 0.5 * dr) / self.radius, (r + 0.5 * dr) / self.radius),
+                    chord,
+                    pitch,
+                }
+            })
+            .collect();
+        (strips, dr)
+    }
+
     fn air(cond: &FlightCondition) -> AirState {
         AirState {
             density: cond.atmosphere.density,
@@ -167,7 +239,7 @@ impl Rotor {
         match self.tip_loss {
             TipLoss::Prandtl => None,
             TipLoss::NoLoss => Some(1.0),
-            TipLoss::Chord => Some(1.0 - 0.5 * self.chord / self.radius),
+            TipLoss::Chord => Some(1.0 - 0.5 * self.chord_and_pitch(self.radius).0 / self.radius),
             TipLoss::GessowMyers => {
                 let rho = cond.atmosphere.density;
                 let v_ideal = v0 / self.induced_power_factor;
@@ -216,7 +288,7 @@ impl Rotor {
 
     /// Velocity triangle of blade 1 at radius `r`, azimuth `psi`:
     /// U_T = Ωr + V cos α_H sin ψ,
-    /// U_P = V sin α_H − v_i(r, ψ) − Ωr dβ/dψ − V cos α_H β cos ψ,
+    /// U_P = V sin α_H − v_i(r, ψ) − Ω(r − e) dβ/dψ − V cos α_H β cos ψ (e the hinge offset),
     /// U_R = V cos α_H cos ψ (radial, drag only, with [`YawedFlow::RadialDrag`]; see
     /// [`StripFlow`](super::StripFlow))
     /// (small flap angles; Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §4.7,
@@ -225,37 +297,46 @@ impl Rotor {
         &self,
         cond: &FlightCondition,
         v0: f64,
-        teeter: &Teeter,
+        flapping: &Flapping,
         r: f64,
         psi: f64,
     ) -> StripFlow {
         let stream = self.disc_stream(cond, v0);
-        self.flow_at(&stream, &AzimuthStation::new(teeter, psi), r)
+        let (chord, pitch) = self.chord_and_pitch(r);
+        let strip = Strip {
+            r,
+            edges: (r / self.radius, r / self.radius),
+            chord,
+            pitch,
+        };
+        self.flow_at(&stream, &AzimuthStation::new(flapping, psi), &strip)
     }
 
     /// [`strip_flow`](Self::strip_flow) from the shared parts of one evaluation.
-    fn flow_at(&self, stream: &DiscStream, at: &AzimuthStation, r: f64) -> StripFlow {
+    fn flow_at(&self, stream: &DiscStream, at: &AzimuthStation, strip: &Strip) -> StripFlow {
+        let r = strip.r;
         let ut = stream.omega * r + stream.edge * at.sin_psi;
         let up = stream.axial
             - self.induced_at(stream, r, at)
-            - stream.omega * r * at.beta_rate
+            - stream.omega * (r - self.hub.hinge_offset()) * at.beta_rate
             - stream.edge * at.beta * at.cos_psi;
-        let flow = StripFlow::new(ut, up, self.pitch, self.chord, &stream.air);
+        let flow = StripFlow::new(ut, up, strip.pitch, strip.chord, &stream.air);
         match self.yawed_flow {
             YawedFlow::RadialDrag => flow.with_radial(stream.edge * at.cos_psi),
             YawedFlow::Ignored => flow,
         }
     }
 
-    /// Blade-element sum for inflow `v0` and flapping `teeter`.
+    /// Blade-element sum for inflow `v0` and flapping `flapping`.
     pub(super) fn evaluate<S: BladeSection + ?Sized>(
         &self,
         section: &S,
         cond: &FlightCondition,
         v0: f64,
-        teeter: &Teeter,
+        flapping: &Flapping,
     ) -> Loads {
-        let (radii, dr) = self.strips();
+        let (strips, dr) = self.strip_layout();
+        let hinge = self.hub.hinge_offset();
         let uniform = self.uniform_tip_loss(cond, v0);
         let rho = cond.atmosphere.density;
         let n = self.azimuth_steps;
@@ -267,15 +348,16 @@ impl Rotor {
         let mut lift_free = 0.0;
         let stream = self.disc_stream(cond, v0);
         for (k, moment) in moments.iter_mut().enumerate() {
-            let at = AzimuthStation::new(teeter, TAU * k as f64 / n as f64);
+            let at = AzimuthStation::new(flapping, TAU * k as f64 / n as f64);
             let (beta, sp, cp) = (at.beta, at.sin_psi, at.cos_psi);
             let (mut ft_sum, mut fn_sum, mut fr_sum, mut q, mut m) = (0.0, 0.0, 0.0, 0.0, 0.0);
-            for &r in &radii {
-                let flow = self.flow_at(&stream, &at, r);
+            for strip in &strips {
+                let r = strip.r;
+                let flow = self.flow_at(&stream, &at, strip);
                 if flow.is_reversed() {
                     reversed += 1;
                 }
-                let (x1, x2) = ((r - 0.5 * dr) / self.radius, (r + 0.5 * dr) / self.radius);
+                let (x1, x2) = strip.edges;
                 let lift_factor = match uniform {
                     Some(b) => ((b - x1) / (x2 - x1)).clamp(0.0, 1.0),
                     // The tip-vortex helix angle: up-flow against the blade's rotational
@@ -295,12 +377,12 @@ impl Rotor {
                 if coeffs.supercritical {
                     supercritical += 1;
                 }
-                let load = strip_load(&flow, &coeffs, rho, self.chord, lift_factor);
+                let load = strip_load(&flow, &coeffs, rho, strip.chord, lift_factor);
                 ft_sum += load.tangential * dr;
                 fn_sum += load.normal * dr;
                 fr_sum += load.radial * dr;
                 q += load.tangential * r * dr;
-                m += load.normal * r * dr;
+                m += load.normal * (r - hinge) * dr;
             }
             *moment = m;
             // Force on the hub from blade 1:
@@ -313,45 +395,22 @@ impl Rotor {
             loads.side_force += ft_sum * cp + inplane_r * sp;
             loads.torque += q;
         }
-        // Both blades: blade 2 reproduces blade 1's loads half a revolution later.
+        // Every blade reproduces blade 1's loads at its own azimuth.
         let scale = f64::from(self.blades) / n as f64;
         loads.thrust *= scale;
         loads.h_force *= scale;
         loads.side_force *= scale;
         loads.torque *= scale;
         let (m1c, m1s) = first_harmonics(&moments);
+        loads.moment_0 = moments.iter().sum::<f64>() / n as f64;
         loads.moment_1c = m1c;
         loads.moment_1s = m1s;
-        loads.reverse_fraction = reversed as f64 / (n * radii.len()) as f64;
-        loads.clamped_fraction = clamped as f64 / (n * radii.len()) as f64;
-        loads.supercritical_fraction = supercritical as f64 / (n * radii.len()) as f64;
+        let cells = (n * strips.len()) as f64;
+        loads.reverse_fraction = reversed as f64 / cells;
+        loads.clamped_fraction = clamped as f64 / cells;
+        loads.supercritical_fraction = supercritical as f64 / cells;
         loads.tip_loss_b = 1.0 - lift_free / (n as f64 * self.radius);
         loads
-    }
-
-    /// Section angle of attack α(ψ) \[deg\] at radius fraction `r_over_r` for `samples` azimuths
-    /// ψ_k = 360°·k/samples (ψ = 0 at the rear), using a converged `solution`'s inflow and
-    /// flapping. Returns (ψ \[deg\], α \[deg\]) pairs.
-    pub fn alpha_at_radius(
-        &self,
-        solution: &RotorSolution,
-        r_over_r: f64,
-        samples: usize,
-    ) -> Vec<(f64, f64)> {
-        let r = r_over_r * self.radius;
-        (0..samples)
-            .map(|k| {
-                let psi = TAU * k as f64 / samples.max(1) as f64;
-                let flow = self.strip_flow(
-                    &solution.condition,
-                    solution.induced_velocity,
-                    &solution.teeter,
-                    r,
-                    psi,
-                );
-                (psi.to_degrees(), flow.alpha_deg)
-            })
-            .collect()
     }
 }
 
@@ -361,10 +420,11 @@ impl Rotor {
         Self {
             radius: p.radius_m,
             chord: p.chord_m,
+            planform: p.planform(),
             blades: p.blades,
             pitch: p.incidence_deg.to_radians(),
             root_cutout: p.root_cutout_m,
-            precone: p.precone_deg.to_radians(),
+            hub: p.hub(),
             radial_strips: p.radial_strips,
             azimuth_steps: p.azimuth_steps,
             tip_loss: p.tip_loss,

@@ -1,19 +1,33 @@
-//! First-harmonic teeter motion of a two-bladed teetering rotor.
+//! First-harmonic blade flapping and the hub that decides which of its coefficients are free.
 //!
-//! Both blades are one rigid beam on the teeter bolt, so blade 2 (at ψ + π) has the opposite
-//! teeter angle of blade 1: the coning β0 is fixed by the hub bar (precone) and only the first
-//! harmonics β1c, β1s are free. For a centrally hinged rigid blade the flap natural frequency is
-//! exactly 1/rev, so the inertial and centrifugal terms cancel for a 1/rev motion and the teeter
-//! equation reduces to: the first harmonics of the aerodynamic flap moment about the teeter bolt
-//! vanish (Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., §4.8 with ν_β = 1).
+//! Every blade follows the same periodic motion in its own azimuth, β(ψ) = β0 + β1c cos ψ +
+//! β1s sin ψ, so one blade at every azimuth stands for all of them ([`Flapping`]). The hub
+//! ([`Hub`]) sets the equations the coefficients obey:
+//!
+//! * **teetering** — two blades on one beam on a bolt at the shaft: the coning β0 is the hub
+//!   bar's precone and only β1c, β1s are free. A centrally hinged rigid blade pair has a flap
+//!   frequency of exactly 1/rev, so the inertial and centrifugal terms cancel for a 1/rev motion
+//!   and the first harmonics of the aerodynamic flap moment about the bolt vanish (Leishman,
+//!   *Principles of Helicopter Aerodynamics*, 2nd ed., §4.8 with ν_β = 1).
+//! * **articulated** — each blade on its own flapping hinge at distance e from the shaft, with
+//!   flapping inertia I_β and first mass moment S_β about the hinge. Rigid-blade flapping,
+//!   I_β (β̈ + ν_β² Ω² β) = M_β − M_W with ν_β² = 1 + e S_β/I_β (Leishman §4.3–4.5; Johnson,
+//!   *Helicopter Theory*, 1980, §5.4; the hinge at the shaft, e = 0, is Wheatley's eq. 6-3, NACA
+//!   Report 487), balanced harmonic by harmonic: the coning from the mean moment,
+//!   I_β Ω² ν_β² β0 = M_0 − M_W, and (ν_β² − 1) I_β Ω² β1c,1s = M_1c,1s. The blade weight
+//!   moment M_W = S_β g cos α_H acts along the shaft. The coning so comes out of the balance of
+//!   aerodynamic and centrifugal moments, whose ratio is the Lock number γ = ρ a c R⁴/I_β.
 
-/// Blade flap angle β(ψ) = β0 + β1c cos ψ + β1s sin ψ (ψ = 0 at the rear, blade 1) \[rad\].
+use super::G0;
+
+/// Blade flap angle β(ψ) = β0 + β1c cos ψ + β1s sin ψ (ψ = 0 at the rear) \[rad\].
 ///
 /// With this sign convention β1c < 0 means the blade is highest over the nose: the tip-path
-/// plane is tilted *back* by −β1c; β1s > 0 tilts it towards the advancing side (ψ = 90°).
+/// plane is tilted *back* by −β1c; β1s > 0 tilts it towards the advancing side (ψ = 90°). The
+/// NACA reports write β = a0 − a1 cos ψ − b1 sin ψ: a0 = β0, a1 = −β1c, b1 = −β1s.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Teeter {
-    /// Hub-bar coning (precone) β0 \[rad\].
+pub struct Flapping {
+    /// Coning β0 \[rad\]: the hub bar's precone (teetering) or free (articulated).
     pub beta0: f64,
     /// Cosine coefficient β1c \[rad\].
     pub beta1c: f64,
@@ -21,7 +35,7 @@ pub struct Teeter {
     pub beta1s: f64,
 }
 
-impl Teeter {
+impl Flapping {
     /// Flap angle β(ψ) \[rad\].
     pub fn beta(&self, psi: f64) -> f64 {
         self.beta_at(psi.sin(), psi.cos())
@@ -42,8 +56,8 @@ impl Teeter {
         -self.beta1c * sin_psi + self.beta1s * cos_psi
     }
 
-    /// Teeter amplitude √(β1c² + β1s²) \[rad\]: the angle the hub swings to, checked against the
-    /// teeter stops.
+    /// First-harmonic amplitude √(β1c² + β1s²) \[rad\]: for the teetering rotor the angle the
+    /// hub swings to, checked against the teeter stops.
     pub fn amplitude(&self) -> f64 {
         self.beta1c.hypot(self.beta1s)
     }
@@ -51,6 +65,53 @@ impl Teeter {
     /// Backward tilt of the tip-path plane relative to the hub plane, −β1c \[rad\].
     pub fn tilt_back(&self) -> f64 {
         -self.beta1c
+    }
+}
+
+/// The rotor hub: how the blades are attached, which decides the flapping equations (module
+/// documentation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Hub {
+    /// Two blades on one teeter bolt at the shaft; the coning is fixed.
+    Teetering {
+        /// Hub-bar coning (precone) β0 \[rad\].
+        precone: f64,
+    },
+    /// Blades on flapping hinges.
+    Articulated(FlapHinge),
+}
+
+/// A blade on a flapping hinge: where the hinge is and the blade's mass about it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FlapHinge {
+    /// Distance of the hinge from the shaft e \[m\].
+    pub offset: f64,
+    /// Flapping moment of inertia of one blade about its hinge I_β \[kg m²\].
+    pub inertia: f64,
+    /// First mass moment of one blade about its hinge S_β = ∫ m (r − e) dr \[kg m\].
+    pub mass_moment: f64,
+}
+
+impl FlapHinge {
+    /// Square of the rotating flap frequency per rev, ν_β² = 1 + e S_β/I_β.
+    pub fn frequency_squared(&self) -> f64 {
+        1.0 + self.offset * self.mass_moment / self.inertia
+    }
+
+    /// Blade weight moment about the hinge M_W = S_β g cos α_H \[N m\] at hub angle `hub_aoa`
+    /// \[rad\] (the shaft tilted back from the vertical by α_H).
+    pub fn weight_moment(&self, hub_aoa: f64) -> f64 {
+        self.mass_moment * G0 * hub_aoa.cos()
+    }
+}
+
+impl Hub {
+    /// Distance of the flapping axis from the shaft \[m\] (0 for the teeter bolt).
+    pub fn hinge_offset(&self) -> f64 {
+        match self {
+            Self::Teetering { .. } => 0.0,
+            Self::Articulated(h) => h.offset,
+        }
     }
 }
 

@@ -1,23 +1,31 @@
-//! Blade-element (strip) model of a two-bladed teetering gyroplane rotor driven by a polar
-//! table: autorotation, cruise trim and takeoff.
+//! Blade-element (strip) model of a gyroplane rotor driven by a polar table — two blades on a
+//! teeter bolt or N blades on flapping hinges, the hub as data ([`Hub`]) — : autorotation,
+//! cruise trim, takeoff, and the isolated rotor in a wind tunnel.
 //!
 //! The rotor sees the airfoil only through [`BladeSection`]: every strip turns its local
 //! velocity into (α, Re, M) and asks the section at its radius for (c_l, c_d, c_m); every
 //! [`SectionAero`](crate::section::SectionAero) is a blade section uniform along the span. The facade is re-exported here (the aircraft, the rotor and its solution,
-//! trim, takeoff, cruise sweeps, the blade element) and [`study`]; the files inside:
+//! trim, takeoff, cruise sweeps, the blade element); the files inside:
 //!
 //! * `atmosphere` — ISA standard atmosphere (density, speed of sound, viscosity).
 //! * `aircraft` — the aircraft preset (rotor, airframe, propeller, engine, takeoff data and an
-//!   optional fixed wing with its lifting-line lift and drag) from TOML.
+//!   optional fixed wing with its lifting-line lift and drag) from TOML, and a preset read for
+//!   its rotor alone ([`RotorPreset`]).
 //! * `blade_element` — velocity triangle and loads of one strip (reverse flow included).
 //! * `inflow` — induced velocity: Glauert momentum theory, Drees linear inflow; the tip-loss
 //!   models and the yawed-flow switch.
-//! * `flapping` — first-harmonic teeter motion of the blade pair.
+//! * `flapping` — first-harmonic blade flapping and the hub: teetering (fixed coning) or
+//!   articulated (free coning from the blade's flapping inertia, hinge offset).
+//! * `planform` — chord and twist along the blade.
 //! * `disc_loads` — the rotor disc: azimuth-averaged forces and torque of the blade-element
 //!   sum.
-//! * `inflow_flapping` — the disc's induced inflow and teeter flapping solved together with
+//! * `inflow_flapping` — the disc's induced inflow and blade flapping solved together with
 //!   those loads (Newton–Broyden).
+//! * `solution` — what a solve returns: the converged state and its loads, and apart from it
+//!   the solver's memory for a warm start.
 //! * `trim` — autorotation rpm and level-cruise trim.
+//! * `tunnel` — the isolated rotor in a wind tunnel: autorotative rpm and wind-axis
+//!   coefficients at a shaft angle and wind speed (`gyro autorotate`).
 //! * `cruise` — power-required speed sweep and blade α(ψ) in trimmed cruise.
 //! * `engine` — full-throttle torque curve and reduction gear (Rotax 912 ULS in the preset).
 //! * `propeller` — blade-element–momentum propeller from its geometry and section table, and
@@ -25,7 +33,6 @@
 //! * `takeoff` — time-domain takeoff simulation to 15 m.
 //! * `spanwise` — section data along the blade: [`BladeSection`] and [`SpanwiseSection`], a
 //!   blade that reads another section over part of its span.
-//! * [`study`] — the paper's clean-versus-contaminated study and its published values.
 
 mod aircraft;
 mod atmosphere;
@@ -36,16 +43,19 @@ mod engine;
 mod flapping;
 mod inflow;
 mod inflow_flapping;
+mod planform;
 mod propeller;
+mod solution;
 mod spanwise;
-pub mod study;
 mod takeoff;
 mod trim;
+mod tunnel;
 
 pub use aircraft::{
     check_altitude_m, check_azimuth_samples, check_blade_radius, check_mass_kg, check_speed_kt,
-    Aircraft, AircraftError, BladeGeometry, EngineParams, PropellerParams, RotorParams,
-    TakeoffParams, WingError, WingLoads, WingParams, MAX_MASS_KG, MAX_SPEED_KT,
+    Aircraft, AircraftError, BladeGeometry, BladeParams, EngineParams, HubParams, PropellerParams,
+    RotorParams, RotorPreset, TakeoffParams, WingError, WingLoads, WingParams, MAX_BLADES,
+    MAX_MASS_KG, MAX_SPEED_KT,
 };
 pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};
@@ -53,15 +63,22 @@ pub use cruise::{
     check_sweep_speeds, checked_sweep_speeds, cruise_blade_alpha, speed_sweep, sweep_speeds,
     SweepPoint,
 };
-pub use disc_loads::{FlightCondition, Rotor};
+pub use disc_loads::{FlightCondition, Rotor, RotorSolverParams};
 pub use engine::Engine;
-pub use flapping::Teeter;
+pub use flapping::{FlapHinge, Flapping, Hub};
 pub use inflow::{InflowModel, TipLoss, YawedFlow};
-pub use inflow_flapping::{RotorError, RotorSolution, RotorSolverParams};
+pub use inflow_flapping::RotorError;
+pub use planform::{Planform, PlanformStation};
 pub use propeller::{FullThrottle, Powerplant, Propeller, PropellerError, PropellerPoint};
+pub use solution::{RotorSolution, RotorWarmStart};
 pub use spanwise::{BladeSection, SpanBand, SpanwiseSection};
 pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
 pub use trim::{autorotation, trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
+pub use tunnel::{
+    autorotate, autorotate_cases, autorotate_outcomes, cases_csv, check_alpha_deg, check_mu,
+    check_rpm, read_tunnel_cases, tunnel_case, Autorotation, CaseOutcome, TunnelCase,
+    TunnelCasesError, MAX_TUNNEL_CASES, MAX_TUNNEL_SPEED_M_S, TUNNEL_ALPHA_RANGE_DEG,
+};
 
 /// Knots to metres per second (1 kt = 1852 m / 3600 s, exact by definition).
 pub const KT_TO_MS: f64 = 1852.0 / 3600.0;

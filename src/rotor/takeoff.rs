@@ -24,8 +24,10 @@
 
 use super::aircraft::{Aircraft, WingError, WingLoads};
 use super::atmosphere::Atmosphere;
-use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
+use super::disc_loads::{FlightCondition, Rotor};
+use super::inflow_flapping::RotorError;
 use super::propeller::{FullThrottle, Powerplant, PropellerError};
+use super::solution::{RotorSolution, RotorWarmStart};
 use super::spanwise::BladeSection;
 use super::{rad_s_to_rpm, rpm_to_rad_s, G0};
 use serde::Serialize;
@@ -140,8 +142,8 @@ struct Model<'a, S: BladeSection + ?Sized> {
     /// Last full-throttle equilibrium, the start of the next solve (local to this run).
     warm_prop: Option<FullThrottle>,
     inertia: f64,
-    /// Last rotor solution, the warm start of the next solve (local to this run).
-    warm: Option<RotorSolution>,
+    /// The last rotor solve's state, the warm start of the next solve (local to this run).
+    warm: Option<RotorWarmStart>,
     /// Airspeed at lift-off \[m/s\] (start of the pilot's airspeed schedule).
     liftoff_speed: f64,
 }
@@ -167,12 +169,9 @@ impl<S: BladeSection + ?Sized> Model<'_, S> {
                 reason: "the rotor stopped",
             });
         }
-        let s = self
-            .rotor
-            .solve(self.section, &cond, self.warm.as_ref())
-            .map_err(|source| TakeoffError::Rotor { time_s: t, source })?;
-        self.warm = Some(s);
-        Ok(s)
+        self.rotor
+            .solve(self.section, &cond, &mut self.warm)
+            .map_err(|source| TakeoffError::Rotor { time_s: t, source })
     }
 
     /// The wing's lift and drag in state `y`.
@@ -293,7 +292,7 @@ fn sample(t: f64, y: &State, s: &RotorSolution) -> TakeoffSample {
         v: y[2].hypot(y[3]),
         rotor_rpm: rad_s_to_rpm(y[4]),
         alpha_r_deg: s.disc_aoa().to_degrees(),
-        beta_deg: s.teeter.amplitude().to_degrees(),
+        beta_deg: s.flapping.amplitude().to_degrees(),
     }
 }
 
@@ -337,7 +336,7 @@ pub fn simulate_takeoff<S: BladeSection + ?Sized>(
     while t < to.max_time_s {
         let (next, s) = model.rk4_step(t, &y, dt, airborne)?;
         history.push(sample(t, &y, &s));
-        beta_max = beta_max.max(s.teeter.amplitude().to_degrees());
+        beta_max = beta_max.max(s.flapping.amplitude().to_degrees());
         if !airborne && s.lift + model.wing_at(&y)?.lift_n >= weight {
             airborne = true;
             liftoff = Some((y[0], t, y[2], y[4]));
@@ -351,13 +350,16 @@ pub fn simulate_takeoff<S: BladeSection + ?Sized>(
             let t_next = time_at(step + 1);
             let s_end = model.rotor_at(t_next, &next)?;
             history.push(sample(t_next, &next, &s_end));
-            beta_max = beta_max.max(s_end.teeter.amplitude().to_degrees());
+            beta_max = beta_max.max(s_end.flapping.amplitude().to_degrees());
             let (x_to, t_to, v_to, omega_to) = liftoff.unwrap_or((x15, t15, v15, next[4]));
             return Ok(TakeoffResult {
                 takeoff_roll_m: x_to,
                 distance_15m_m: x15,
                 max_flapping_deg: beta_max,
-                flap_stops_reached: beta_max >= aircraft.rotor.flap_stop_deg,
+                flap_stops_reached: aircraft
+                    .rotor
+                    .flap_stop_deg
+                    .is_some_and(|stop| beta_max >= stop),
                 liftoff_speed_kt: v_to / kt,
                 screen_speed_kt: v15 / kt,
                 liftoff_rotor_rpm: rad_s_to_rpm(omega_to),

@@ -14,8 +14,10 @@
 
 use super::aircraft::{Aircraft, WingError, WingLoads};
 use super::atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
-use super::disc_loads::{FlightCondition, Rotor, RotorError, RotorSolution};
+use super::disc_loads::{FlightCondition, Rotor};
+use super::inflow_flapping::RotorError;
 use super::propeller::{Powerplant, PropellerError};
+use super::solution::RotorSolution;
 use super::spanwise::BladeSection;
 use super::{rad_s_to_rpm, rpm_to_rad_s, KT_TO_MS};
 use crate::numerics::roots::bracketed_root;
@@ -261,14 +263,14 @@ pub fn autorotation<S: BladeSection + ?Sized>(
         reason,
     };
     let mut hi = params.rpm_max;
-    let first = rotor.solve(section, &cond(hi), None)?;
+    let mut warm = None;
+    let first = rotor.solve(section, &cond(hi), &mut warm)?;
     if first.torque > 0.0 {
         return Err(no_auto(
             "the rotor still accelerates at the highest rpm searched",
         ));
     }
     let mut f_hi = first.torque;
-    let mut warm = Some(first);
     let (lo, f_lo) = loop {
         let lo = hi * params.rpm_scan_factor;
         if lo < params.rpm_min {
@@ -276,8 +278,7 @@ pub fn autorotation<S: BladeSection + ?Sized>(
                 "the rotor needs driving torque at every rpm searched",
             ));
         }
-        let s = rotor.solve(section, &cond(lo), warm.as_ref())?;
-        warm = Some(s);
+        let s = rotor.solve(section, &cond(lo), &mut warm)?;
         if s.torque >= 0.0 {
             break (lo, s.torque);
         }
@@ -285,17 +286,13 @@ pub fn autorotation<S: BladeSection + ?Sized>(
         f_hi = s.torque;
     };
     let rpm = bracketed_root(
-        |rpm| -> Result<f64, TrimError> {
-            let s = rotor.solve(section, &cond(rpm), warm.as_ref())?;
-            warm = Some(s);
-            Ok(s.torque)
-        },
+        |rpm| -> Result<f64, TrimError> { Ok(rotor.solve(section, &cond(rpm), &mut warm)?.torque) },
         (lo, f_lo),
         (hi, f_hi),
         params.rpm_tolerance,
         params.max_iterations,
     )?;
-    Ok(rotor.solve(section, &cond(rpm), warm.as_ref())?)
+    Ok(rotor.solve(section, &cond(rpm), &mut warm)?)
 }
 
 /// Level-flight trim: hub angle and rotor speed such that the rotor autorotates and its lift
@@ -417,8 +414,8 @@ pub fn trim_aircraft<S: BladeSection + ?Sized>(
         prop_thrust_n: f_prop,
         lift_to_drag: weight / f_prop,
         power_required_kw: f_prop * v / 1000.0,
-        beta1c_deg: s.teeter.beta1c.to_degrees(),
-        beta1s_deg: s.teeter.beta1s.to_degrees(),
+        beta1c_deg: s.flapping.beta1c.to_degrees(),
+        beta1s_deg: s.flapping.beta1s.to_degrees(),
         advance_ratio: s.advance_ratio,
         thrust_coefficient: s.thrust_coefficient,
         torque_nm: s.torque,

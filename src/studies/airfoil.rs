@@ -8,9 +8,9 @@ use super::{
     TakeoffFigures, Transition, TrimFigures, PAPER_TRIP_XTR,
 };
 use crate::plot::{Figure, Panel, Series, Style};
-use crate::rotor::study::{paper_run, PAPER_TRIM_SPEED_KT};
 use crate::rotor::Aircraft;
 use crate::section::SectionAero;
+use crate::studies::paper::{paper_run, PAPER_TRIM_SPEED_KT};
 use rayon::prelude::*;
 use serde::Serialize;
 

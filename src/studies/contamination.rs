@@ -14,9 +14,9 @@ use super::{
     StudiesError, StudyFiles, TableCache, TakeoffFigures, Transition, TrimFigures, PAPER_TRIP_XTR,
 };
 use crate::plot::{Figure, Marker, Panel, Series, Style};
-use crate::rotor::study::{paper_run, PAPER_TRIM_SPEED_KT};
 use crate::rotor::{Aircraft, SpanwiseSection};
 use crate::section::SectionAero;
+use crate::studies::paper::{paper_run, PAPER_TRIM_SPEED_KT};
 use rayon::prelude::*;
 use serde::Serialize;
 

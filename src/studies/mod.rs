@@ -1,9 +1,14 @@
-//! What-if studies at aircraft level, on top of the rotor model: the paper's contamination
-//! question carried beyond its single point.
+//! Studies at aircraft level, on top of the rotor model: the paper's clean-versus-contaminated
+//! study, and its contamination question carried beyond its single point.
 //!
+//! * [`paper`] — the paper's two computations (60 kt trim, takeoff) for the clean and the
+//!   contaminated blade, the paper's published values beside them, and the sensitivity of the
+//!   results to every estimated value of the aircraft preset;
 //! * [`contamination`] — trip location on both or one surface, free transition at several
 //!   N_crit, and spanwise coverage (the blade reads the tripped table over part of its span):
 //!   the 60 kt trim and the takeoff of each setting against the clean rotor;
+//! * [`pca2`] — the rotor model on a second rotor: the PCA-2 autogiro rotor against its
+//!   full-scale tunnel and flight tests (NACA Reports 515 and 487);
 //! * [`airfoil`] — the same rotor with each of several airfoils, clean and tripped;
 //! * [`speed`] — the contamination penalty over the airspeed range;
 //! * [`wing`] — a fixed wing of several areas over the airspeed range: the rotor unloads;
@@ -18,6 +23,8 @@ pub mod airfoil;
 mod cache;
 pub mod contamination;
 mod files;
+pub mod paper;
+pub mod pca2;
 mod progress;
 mod request;
 pub mod speed;
@@ -31,9 +38,9 @@ pub use request::{records_json, StudyKind, StudyOutcome, StudyRequest};
 use crate::geometry::GeometryError;
 use crate::output::OutputError;
 use crate::plot::PlotError;
-use crate::rotor::study::StudyError;
 use crate::rotor::{TakeoffResult, TrimResult};
 use crate::table::{BuildError, TableError};
+use paper::StudyError;
 use serde::Serialize;
 
 /// Trip location x/c of the paper's contaminated blade (transition fixed at 7 % chord on both

@@ -7,9 +7,9 @@ use super::{
     StudyFiles, TableCache, Transition,
 };
 use crate::plot::{Figure, Panel, Series, Style};
-use crate::rotor::study::PAPER_TRIM_SPEED_KT;
 use crate::rotor::{speed_sweep, Aircraft, TrimParams, TrimResult};
 use crate::section::SectionAero;
+use crate::studies::paper::PAPER_TRIM_SPEED_KT;
 use serde::Serialize;
 
 use super::contamination::FLIGHT_TEST_DELTA_ENGINE_RPM;

@@ -23,8 +23,8 @@ NumPy arrays in and out.
   vectorised, with the clamping/bridging/post-stall flags and the 360° extension.
 * :mod:`polargen.rotor` — the gyroplane: ``Aircraft.read``, ``trim``, ``takeoff``,
   ``sweep`` (trims over an array of speeds), ``compare`` (against the paper) and ``study``
-  (``gyro study …``), with the fields of the ``gyro … --json`` output, as records or
-  DataFrames.
+  (``gyro study …``); ``Rotor.read``, ``autorotate`` (the rotor alone in a tunnel); with the
+  fields of the ``gyro … --json`` output, as records or DataFrames.
 
 Errors are exceptions with the command-line tools' one-line messages: ``ValueError`` for bad
 input, ``OSError`` (``FileNotFoundError``, …) for files, :class:`NotConvergedError` when a

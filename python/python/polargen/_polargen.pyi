@@ -112,6 +112,20 @@ class Aircraft:
         self, table: PolarTable, mass_kg: Optional[float]
     ) -> Tuple[str, Dict[str, np.ndarray]]: ...
 
+class Rotor:
+    """The rotor of a preset alone."""
+
+    @staticmethod
+    def read(path: PathLike) -> "Rotor": ...
+    @staticmethod
+    def from_toml(text: str, origin: str = "<string>") -> "Rotor": ...
+    @property
+    def name(self) -> str: ...
+    def autorotate(
+        self, table: PolarTable, alpha_deg: float, speed_m_s: Optional[float], mu: Optional[float],
+        reference_rpm: Optional[float], pitch_deg: Optional[float], altitude_m: float,
+    ) -> Tuple[str, List[str]]: ...
+
 def alpha_range(text: str) -> npt.NDArray[np.float64]:
     """The α values of the range text ``A0:A1:DA`` (or one value), as the CLI's ``--alpha``."""
 

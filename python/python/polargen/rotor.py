@@ -12,6 +12,12 @@ mapping: ``result["rotor_rpm"]``, and attributes: ``result.rotor_rpm``). Runs of
 
 >>> ac.sweep(table, speeds_kt=range(30, 95, 5)).to_pandas()           # doctest: +SKIP
 >>> pg.rotor.study("speed", "aircraft/mtosport.toml").to_pandas()      # doctest: +SKIP
+
+The rotor alone in a wind tunnel (``gyro autorotate``):
+
+>>> r = pg.rotor.Rotor.read("aircraft/pca2.toml")                      # doctest: +SKIP
+>>> a = r.autorotate(pg.Table.read("polars/goe429_xtr0.07.csv"), alpha_deg=8.3, speed_m_s=15.7)  # doctest: +SKIP
+>>> a.rotor_rpm, a.cl, a.b1_deg                                        # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -28,8 +34,8 @@ from ._results import _pandas
 from ._table import Table
 
 __all__ = [
-    "Aircraft", "Records", "TakeoffResult", "TrimResult", "compare", "study", "sweep", "takeoff",
-    "trim",
+    "Aircraft", "AutorotationResult", "Records", "Rotor", "TakeoffResult", "TrimResult",
+    "autorotate", "compare", "study", "sweep", "takeoff", "trim",
 ]
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -114,6 +120,59 @@ class Records(List[Mapping[str, Any]]):
 def _warn(notes: List[str]) -> None:
     for note in notes:
         warnings.warn(note, UserWarning, stacklevel=3)
+
+
+class AutorotationResult(_Fields):
+    """The autorotating rotor in a tunnel with the fields of ``gyro autorotate --json``:
+    ``alpha_deg``, ``speed_m_s``, ``rotor_rpm``, ``mu``, ``cl``, ``cd`` (wind axes, on
+    q·πR²), ``lift_to_drag``, ``coning_deg``, ``a1_deg``, ``b1_deg`` (NACA signs),
+    ``thrust_coefficient``, ``inflow_ratio`` and the shares of reverse flow, clamped and
+    supercritical lookups. ``notes`` holds what ``gyro`` prints beside it."""
+
+    def __init__(self, fields: Dict[str, Any], notes: List[str]) -> None:
+        super().__init__(fields)
+        self.__dict__["notes"] = list(notes)
+
+
+class Rotor:
+    """The rotor of a preset alone (an aircraft's, or a rotor-only preset such as
+    ``aircraft/pca2.toml``), as ``gyro autorotate`` reads it."""
+
+    def __init__(self, core: "_polargen.Rotor") -> None:
+        self._core = core
+
+    @classmethod
+    def read(cls, path: PathLike) -> "Rotor":
+        """Reads and checks the rotor of a TOML preset, as ``gyro autorotate --aircraft``."""
+        return cls(_polargen.Rotor.read(os.fspath(path)))
+
+    @classmethod
+    def from_toml(cls, text: str, origin: str = "<string>") -> "Rotor":
+        """Parses and checks the rotor of a TOML preset held in a string."""
+        return cls(_polargen.Rotor.from_toml(text, origin))
+
+    @property
+    def name(self) -> str:
+        """The preset's name."""
+        return self._core.name
+
+    def autorotate(self, table: Table, alpha_deg: float, speed_m_s: Optional[float] = None,
+                   mu: Optional[float] = None, reference_rpm: Optional[float] = None,
+                   pitch_deg: Optional[float] = None,
+                   altitude_m: float = 0.0) -> AutorotationResult:
+        """The rotor autorotating in a tunnel at shaft angle ``alpha_deg`` and wind speed
+        ``speed_m_s`` (or tip-speed ratio ``mu`` at ``reference_rpm``), ISA ``altitude_m``,
+        blade pitch setting ``pitch_deg`` (the preset's when None), as ``gyro autorotate``."""
+        opt = lambda v: None if v is None else float(v)  # noqa: E731
+        text, notes = self._core.autorotate(_core(table), float(alpha_deg), opt(speed_m_s),
+                                            opt(mu), opt(reference_rpm), opt(pitch_deg),
+                                            float(altitude_m))
+        for note in notes:
+            warnings.warn(note, UserWarning, stacklevel=2)
+        return AutorotationResult(json.loads(text), notes)
+
+    def __repr__(self) -> str:
+        return f"Rotor({self.name!r})"
 
 
 class Aircraft:
@@ -240,3 +299,12 @@ def study(kind: str, aircraft: PathLike = "aircraft/mtosport.toml", *,
     records = Records(json.loads(text), notes)
     records.files = [os.fspath(p) for p in written]
     return records
+
+
+def autorotate(rotor: Rotor, table: Table, alpha_deg: float, speed_m_s: Optional[float] = None,
+               mu: Optional[float] = None, reference_rpm: Optional[float] = None,
+               pitch_deg: Optional[float] = None, altitude_m: float = 0.0) -> AutorotationResult:
+    """:meth:`Rotor.autorotate` of ``rotor``."""
+    return rotor.autorotate(table, alpha_deg, speed_m_s=speed_m_s, mu=mu,
+                            reference_rpm=reference_rpm, pitch_deg=pitch_deg,
+                            altitude_m=altitude_m)

@@ -3,6 +3,7 @@
 //! plots ([`plot`]) and the paper report ([`polargen::report`]). Text output is formatted in
 //! [`print`](mod@print).
 
+mod autorotate;
 mod plot;
 use polargen::report::console as print;
 mod study;
@@ -14,12 +15,12 @@ use polargen::output::{check_output_path, write_output, OutputError};
 use polargen::report::{
     check_report_paths, write_report, ReportInputs, SHIPPED_AIRCRAFT, SHIPPED_POLARS,
 };
-use polargen::rotor::study::{paper_runs, SpeedSweep};
 use polargen::rotor::{
     check_altitude_m, check_azimuth_samples, check_blade_radius, check_mass_kg, check_speed_kt,
     checked_sweep_speeds, cruise_blade_alpha, simulate_takeoff, trim_aircraft, Aircraft,
     TrimParams, MAX_ISA_ALTITUDE_M,
 };
+use polargen::studies::paper::{paper_runs, SpeedSweep};
 use polargen::table::read_lookup_table;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -129,6 +130,8 @@ enum Command {
         #[arg(long, default_value_t = 36, allow_hyphen_values = true)]
         samples: usize,
     },
+    /// Isolated rotor in a wind tunnel: autorotative rpm, C_L, C_D, L/D, coning and flapping.
+    Autorotate(autorotate::AutorotateArgs),
     /// Rotor figures, clean vs contaminated, to SVG or PNG: alpha, takeoff or power.
     #[command(arg_required_else_help = true)]
     Plot {
@@ -345,6 +348,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
                 outln!(buf, "{psi:.1},{a:.3}");
             }
         }
+        Command::Autorotate(args) => autorotate::run(args, buf, |n| TOOL.say(n))?,
         Command::Plot { kind } => plot::run(kind)?,
         Command::Completions(args) => {
             let script = cli::completions(Cli::command(), args.shell);

@@ -7,8 +7,8 @@ use anyhow::{Context, Result};
 use clap::{Args, Subcommand};
 use polargen::plot::rotor_plots::{alpha_figure, power_plot, takeoff_plot};
 use polargen::plot::{check_image_path, render_with_legend_room};
-use polargen::rotor::study::{blade_alpha_cases, sweep_cases, takeoff_cases, CASE_LABELS};
 use polargen::rotor::{TakeoffResult, TrimResult};
+use polargen::studies::paper::{blade_alpha_cases, sweep_cases, takeoff_cases, CASE_LABELS};
 use polargen::table::{read_lookup_table, PolarTable};
 use std::path::PathBuf;
 

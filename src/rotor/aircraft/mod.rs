@@ -3,7 +3,6 @@
 //! read with it.
 
 use super::atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
-use super::inflow::{InflowModel, TipLoss, YawedFlow};
 use crate::arguments::ArgumentError;
 use crate::input::{read_input, InputError};
 use crate::section::SectionAero;
@@ -16,9 +15,11 @@ use std::sync::Arc;
 
 mod checks;
 mod powerplant;
+mod rotor_params;
 mod wing;
 
 pub use powerplant::{BladeGeometry, EngineParams, PropellerParams};
+pub use rotor_params::{BladeParams, HubParams, RotorParams, RotorPreset, MAX_BLADES};
 pub use wing::{WingError, WingLoads, WingParams};
 
 /// Errors while loading or checking an aircraft preset.
@@ -62,6 +63,23 @@ pub enum AircraftError {
     /// The `[wing]` table does not describe one section model.
     #[error("aircraft [wing]: {0}")]
     WingModel(&'static str),
+    /// A value a whole aircraft needs is not given.
+    #[error("aircraft parameter {field} is missing: {reason}")]
+    Missing {
+        /// Dotted field name.
+        field: &'static str,
+        /// What needs it.
+        reason: &'static str,
+    },
+    /// The file describes a rotor alone, where a whole aircraft is needed.
+    #[error(
+        "aircraft file {path} describes a rotor alone (no [propeller], [engine], [takeoff]): \
+         this needs a whole aircraft"
+    )]
+    RotorOnly {
+        /// The file.
+        path: String,
+    },
     /// A value is outside its physical range.
     #[error("aircraft parameter {field} = {} is invalid: {reason}", short_number(*value))]
     Invalid {
@@ -75,10 +93,8 @@ pub enum AircraftError {
 }
 
 use crate::limits::short_number;
-use crate::limits::{
-    AZIMUTH_STEPS, MAX_ROTOR_CELLS, MAX_TAKEOFF_CELL_STEPS, MAX_TAKEOFF_STEPS, RADIAL_STRIPS,
-};
 pub use crate::limits::{MAX_MASS_KG, MAX_SPEED_KT};
+use crate::limits::{MAX_TAKEOFF_CELL_STEPS, MAX_TAKEOFF_STEPS};
 
 /// An airspeed argument \[kt\] (of `gyro` and the Python package): above 0 and below
 /// [`MAX_SPEED_KT`].
@@ -181,49 +197,6 @@ pub struct Aircraft {
     wing_section: Option<Arc<PolarTable>>,
 }
 
-/// Rotor geometry, mass and discretisation.
-#[derive(Clone, Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RotorParams {
-    /// Rotor radius R \[m\].
-    pub radius_m: f64,
-    /// Number of blades (a teetering rotor has 2).
-    pub blades: u32,
-    /// Blade chord c \[m\] (constant, untwisted blade).
-    pub chord_m: f64,
-    /// Blade incidence θ relative to the hub plane \[deg\] (fixed, no collective or cyclic).
-    pub incidence_deg: f64,
-    /// Root cut-out: radius where the aerodynamic blade starts \[m\].
-    pub root_cutout_m: f64,
-    /// Built-in coning of the hub bar β0 \[deg\] (a teetering rotor's coning is fixed by the hub).
-    pub precone_deg: f64,
-    /// Mass of one blade \[kg\] (uniform spanwise distribution assumed for the inertia).
-    pub blade_mass_kg: f64,
-    /// Polar moment of inertia of hub, teeter block and bolts about the shaft \[kg m²\].
-    pub hub_inertia_kg_m2: f64,
-    /// Teeter stops: largest teeter amplitude before the blades hit the stops \[deg\].
-    pub flap_stop_deg: f64,
-    /// Number of radial strips.
-    pub radial_strips: usize,
-    /// Number of azimuth steps per revolution (even, so both blades sit on the grid).
-    pub azimuth_steps: usize,
-    /// Tip-loss model: "prandtl", "gessow_myers", "chord" or "none" ([`TipLoss`]).
-    pub tip_loss: TipLoss,
-    /// Profile drag in yawed (radial) flow: "radial_drag" or "none" ([`YawedFlow`]).
-    pub yawed_flow: YawedFlow,
-    /// Induced-inflow model: "glauert" (uniform) or "drees" (linear).
-    pub inflow: InflowModel,
-    /// Induced-power factor κ (induced velocity = κ × Glauert's momentum value, see
-    /// [`crate::rotor::Rotor::induced_power_factor`]); omitted → 1 (ideal momentum theory).
-    #[serde(default = "ideal_induced_power_factor")]
-    pub induced_power_factor: f64,
-}
-
-/// κ = 1: ideal momentum theory (the default when a preset omits the factor).
-fn ideal_induced_power_factor() -> f64 {
-    1.0
-}
-
 /// Takeoff procedure and ground data.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -295,9 +268,22 @@ impl Aircraft {
     /// Parses and checks a TOML preset held in memory without reading its propeller section
     /// table (give it with [`Aircraft::with_propeller_section`]); `origin` names it in errors.
     pub fn parse_toml(text: &str, origin: &str) -> Result<Self, AircraftError> {
-        let aircraft: Aircraft = toml::from_str(text).map_err(|e| AircraftError::Parse {
-            path: origin.to_string(),
-            message: e.message().replace('\n', " "),
+        let aircraft: Aircraft = toml::from_str(text).map_err(|e| {
+            let rotor_only = toml::from_str::<toml::Table>(text).is_ok_and(|t| {
+                t.contains_key("rotor")
+                    && ["propeller", "engine", "takeoff"]
+                        .iter()
+                        .all(|k| !t.contains_key(*k))
+            });
+            if rotor_only {
+                return AircraftError::RotorOnly {
+                    path: origin.to_string(),
+                };
+            }
+            AircraftError::Parse {
+                path: origin.to_string(),
+                message: e.message().replace('\n', " "),
+            }
         })?;
         aircraft.validate()?;
         Ok(aircraft)
@@ -363,85 +349,15 @@ impl Aircraft {
             "must be positive and at most 100000 kg",
         )?;
         non_negative("parasitic_drag_area_m2", self.parasitic_drag_area_m2)?;
-        positive("rotor.radius_m", r.radius_m)?;
-        positive("rotor.chord_m", r.chord_m)?;
-        non_negative("rotor.root_cutout_m", r.root_cutout_m)?;
-        if r.root_cutout_m >= r.radius_m {
-            return Err(AircraftError::Invalid {
-                field: "rotor.root_cutout_m",
-                value: r.root_cutout_m,
-                reason: "must be smaller than the radius".into(),
-            });
-        }
-        if r.blades != 2 {
-            return Err(AircraftError::Invalid {
-                field: "rotor.blades",
-                value: f64::from(r.blades),
-                reason: "the teetering-rotor model needs exactly 2 blades".into(),
-            });
-        }
-        if !r.incidence_deg.is_finite() || r.incidence_deg.abs() > 20.0 {
-            return Err(AircraftError::Invalid {
-                field: "rotor.incidence_deg",
-                value: r.incidence_deg,
-                reason: "must be within ±20°".into(),
-            });
-        }
-        if !r.precone_deg.is_finite() || r.precone_deg.abs() > 10.0 {
-            return Err(AircraftError::Invalid {
-                field: "rotor.precone_deg",
-                value: r.precone_deg,
-                reason: "must be within ±10°".into(),
-            });
-        }
-        positive("rotor.blade_mass_kg", r.blade_mass_kg)?;
-        non_negative("rotor.hub_inertia_kg_m2", r.hub_inertia_kg_m2)?;
-        positive("rotor.flap_stop_deg", r.flap_stop_deg)?;
-        if !(RADIAL_STRIPS.0..=RADIAL_STRIPS.1).contains(&r.radial_strips) {
-            return Err(AircraftError::Invalid {
-                field: "rotor.radial_strips",
-                value: r.radial_strips as f64,
-                reason: format!(
-                    "must be between {} and {}",
-                    RADIAL_STRIPS.0, RADIAL_STRIPS.1
-                )
-                .into(),
-            });
-        }
-        if !(AZIMUTH_STEPS.0..=AZIMUTH_STEPS.1).contains(&r.azimuth_steps)
-            || r.azimuth_steps % 2 != 0
-        {
-            return Err(AircraftError::Invalid {
-                field: "rotor.azimuth_steps",
-                value: r.azimuth_steps as f64,
-                reason: format!(
-                    "must be even and between {} and {}",
-                    AZIMUTH_STEPS.0, AZIMUTH_STEPS.1
-                )
-                .into(),
-            });
-        }
-        if r.cells() > MAX_ROTOR_CELLS {
-            return Err(AircraftError::Invalid {
-                field: "rotor.azimuth_steps",
-                value: r.azimuth_steps as f64,
-                reason: format!(
-                    "with {} radial strips gives {} blade-element cells, more than the limit \
-                     of {MAX_ROTOR_CELLS} (radial_strips × azimuth_steps; every rotor \
-                     evaluation costs in proportion)",
-                    r.radial_strips,
-                    r.cells()
-                )
-                .into(),
-            });
-        }
-        if !(r.induced_power_factor >= 1.0 && r.induced_power_factor <= 2.0) {
-            return Err(AircraftError::Invalid {
-                field: "rotor.induced_power_factor",
-                value: r.induced_power_factor,
-                reason: "must be between 1 and 2".into(),
-            });
-        }
+        self.rotor.validate()?;
+        let whole_aircraft = |field: &'static str, value: Option<f64>| {
+            value.map(|_| ()).ok_or(AircraftError::Missing {
+                field,
+                reason: "a whole aircraft needs it (the takeoff)",
+            })
+        };
+        whole_aircraft("rotor.hub_inertia_kg_m2", r.hub_inertia_kg_m2)?;
+        whole_aircraft("rotor.flap_stop_deg", r.flap_stop_deg)?;
         self.propeller.validate()?;
         if let Some(w) = &self.wing {
             w.validate()?;
@@ -509,25 +425,5 @@ impl Aircraft {
             });
         }
         Ok(())
-    }
-}
-
-impl RotorParams {
-    /// Blade-element cells of one rotor evaluation: radial strips × azimuth steps.
-    pub fn cells(&self) -> usize {
-        self.radial_strips.saturating_mul(self.azimuth_steps)
-    }
-
-    /// Polar moment of inertia of the rotor about the shaft \[kg m²\]: hub plus N_b uniform
-    /// blades spanning root cut-out r0 … R, I_b = m_b (R³ − r0³) / (3 (R − r0)).
-    pub fn polar_inertia(&self) -> f64 {
-        let (r0, r1) = (self.root_cutout_m, self.radius_m);
-        let blade = self.blade_mass_kg * (r1.powi(3) - r0.powi(3)) / (3.0 * (r1 - r0));
-        self.hub_inertia_kg_m2 + f64::from(self.blades) * blade
-    }
-
-    /// Rotor disc area A = πR² \[m²\].
-    pub fn disc_area(&self) -> f64 {
-        std::f64::consts::PI * self.radius_m * self.radius_m
     }
 }

@@ -6,20 +6,19 @@
 //! * [`blade_alpha_cases`], [`takeoff_cases`], [`sweep_cases`] — blade α(ψ) in trimmed cruise
 //!   (Fig. 10), takeoff time histories (Fig. 11) and power-required sweeps for one or more
 //!   sections, in parallel;
-//! * [`paper`] — the paper's published values, each beside the accessor of ours;
+//! * [`published`] — the paper's published values, each beside the accessor of ours;
 //! * [`sensitivity`] — the study again with each estimated value of the preset at the ends of
 //!   its range.
 //!
 //! Everything here only calls the trim, takeoff and cruise models; no new physics.
 
-pub mod paper;
+pub mod published;
 pub mod sensitivity;
 
-use super::cruise::{cruise_blade_alpha, speed_sweep};
-use super::takeoff::{simulate_takeoff, TakeoffError, TakeoffResult};
-use super::trim::{trim_aircraft, TrimError, TrimParams, TrimResult};
-use super::Aircraft;
-use crate::rotor::BladeSection;
+use crate::rotor::{
+    cruise_blade_alpha, simulate_takeoff, speed_sweep, trim_aircraft, Aircraft, BladeSection,
+    TakeoffError, TakeoffResult, TrimError, TrimParams, TrimResult,
+};
 use rayon::prelude::*;
 
 /// Airspeed of the paper's cruise trim (Table 3) \[kt\].

@@ -5,9 +5,9 @@
 //! computed again. Each range is argued or cited beside the value ([`ESTIMATES`]).
 
 use super::{StudyError, PAPER_TRIM_SPEED_KT};
-use crate::rotor::takeoff::simulate_takeoff;
-use crate::rotor::trim::{trim_aircraft, TrimParams};
-use crate::rotor::{Aircraft, TipLoss, YawedFlow};
+use crate::rotor::{
+    simulate_takeoff, trim_aircraft, Aircraft, HubParams, TipLoss, TrimParams, YawedFlow,
+};
 use crate::section::SectionAero;
 use rayon::prelude::*;
 
@@ -45,10 +45,14 @@ impl Change {
     fn apply(&self, ac: &mut Aircraft) {
         match *self {
             Self::TrimMass(_) => {}
-            Self::Precone(v) => ac.rotor.precone_deg = v,
+            Self::Precone(v) => {
+                if let HubParams::Teetering { precone_deg } = &mut ac.rotor.hub {
+                    *precone_deg = v;
+                }
+            }
             Self::BladeMass(v) => ac.rotor.blade_mass_kg = v,
             Self::RootCutout(v) => ac.rotor.root_cutout_m = v,
-            Self::HubInertia(v) => ac.rotor.hub_inertia_kg_m2 = v,
+            Self::HubInertia(v) => ac.rotor.hub_inertia_kg_m2 = Some(v),
             Self::RollingFriction(v) => ac.takeoff.rolling_friction = v,
             Self::InducedPowerFactor(v) => ac.rotor.induced_power_factor = v,
             Self::TipLoss(t) => ac.rotor.tip_loss = t,

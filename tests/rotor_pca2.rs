@@ -1,0 +1,157 @@
+//! The rotor model on a second rotor: the PCA-2 autogiro rotor (`aircraft/pca2.toml`) against
+//! NACA Report 515's tunnel data (Table III, pitch setting 1.9°) and NACA Report 487's flight
+//! data (Figs. 7 and 8), through `polargen::studies::pca2`. Nothing in the preset is fitted to
+//! these data; the tests guard the agreement and the disagreement the report states.
+//!
+//! Measured (Drees inflow, the presets' default; polargen's Göttingen 429 tables, polars/):
+//! * tunnel, α ≥ 4° (40 rows, μ 0.13–0.32): 7 % trip rotor rpm +7.5 %, C_L +24.1 %, L/D
+//!   −6.0 %; free transition +14.1 %, +34.2 %, −1.9 %. α < 4° (41 rows, μ 0.30–0.72): trip
+//!   +42.9 %, +134 %, +8.1 % — the model's rotor reaches μ ≈ 0.33 where the tunnel's reaches
+//!   0.72 (a stated limitation).
+//! * the same rotor with NACA Report 487's own section constants for this blade (lift slope
+//!   5.85 per rad, profile drag 0.0120): α ≥ 4° rpm −1.0 %, C_L −1.1 %, L/D −11 %: the rotor
+//!   model holds ±5 % on rpm and ±8 % on C_L with them; polargen's smooth
+//!   section (slope 6.9 per rad, c_d 0.009–0.011 tripped) has about a third less drag per lift
+//!   slope than the fabric-covered blade of 1934.
+//! * flight, μ 0.11–0.40, trimmed to the measured thrust at the flight's speed: rotor rpm
+//!   −1.5 % on average (largest 3.8 %); coning a0 2.0° high (Report 487's own theory is high
+//!   too); with the model's coning error taken out (μ 0.15–0.41), lateral flapping b1 with
+//!   Drees inflow is within 0.3° on average where uniform inflow is 1.1° (36 %) low; a1 is
+//!   within 0.5° (Drees) and 0.2° (uniform).
+
+mod rotor_support;
+
+use polargen::rotor::{InflowModel, Rotor, RotorPreset};
+use polargen::studies::pca2::{
+    flapping_errors, flight_comparison, tunnel_comparison, FlightPoint, ALPHA_BAND_DEG,
+    FLIGHT_PITCH_DEG,
+};
+use polargen::table::{read_lookup_table, PolarTable};
+use rotor_support::AnalyticSection;
+use std::path::Path;
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn preset() -> RotorPreset {
+    RotorPreset::from_toml_file(&root().join("aircraft/pca2.toml")).unwrap()
+}
+
+fn table(name: &str) -> PolarTable {
+    read_lookup_table(&root().join("polars").join(name)).unwrap()
+}
+
+/// The tunnel rotor: the preset as it is (pitch setting 1.9°).
+fn tunnel_rotor() -> Rotor {
+    Rotor::from_params(&preset().rotor)
+}
+
+/// The flight rotor: the preset at the pitch measured in flight, with `inflow`.
+fn flight_rotor(inflow: InflowModel) -> Rotor {
+    let mut p = preset().rotor;
+    p.incidence_deg = FLIGHT_PITCH_DEG;
+    Rotor {
+        inflow,
+        ..Rotor::from_params(&p)
+    }
+}
+
+#[test]
+fn preset_is_the_report_487_rotor() {
+    let p = preset().rotor;
+    let rotor = tunnel_rotor();
+    // Solidity from the outer chord, as Report 487 computes it: 0.1038.
+    let sigma = f64::from(p.blades) * p.chord_m / (std::f64::consts::PI * p.radius_m);
+    assert!((sigma - 0.1038).abs() < 2e-4, "σ {sigma}");
+    // Pitch at the tip: setting + 1.896° (Report 487's twist), chord steps at 0.394 R.
+    let (c_in, _) = rotor.chord_and_pitch(0.3 * rotor.radius);
+    let (c_out, tip) = rotor.chord_and_pitch(rotor.radius);
+    assert!((c_in - 0.381).abs() < 1e-3 && (c_out - 0.5587).abs() < 1e-9);
+    assert!(
+        (tip.to_degrees() - 3.796).abs() < 1e-3,
+        "{}",
+        tip.to_degrees()
+    );
+}
+
+#[test]
+fn tunnel_table_iii_with_polargen_tables() {
+    let rotor = tunnel_rotor();
+    let tripped = tunnel_comparison(&rotor, &table("goe429_xtr0.07.csv"));
+    let free = tunnel_comparison(&rotor, &table("goe429_free.csv"));
+    assert_eq!(tripped.rows.len(), 81);
+    let (t_hi, t_lo) = (
+        tripped.band(ALPHA_BAND_DEG, 90.0),
+        tripped.band(-90.0, ALPHA_BAND_DEG),
+    );
+    let f_hi = free.band(ALPHA_BAND_DEG, 90.0);
+    assert_eq!((t_hi.rows, t_lo.rows), (40, 41));
+    assert_eq!(t_hi.failed + t_lo.failed + f_hi.failed, 0);
+    // α ≥ 4°, 7 % trip: rpm +7.5 %, C_L +24 %, L/D −6.0 % (module documentation).
+    assert!((0.045..0.105).contains(&t_hi.rotor_rpm), "{t_hi:?}");
+    assert!((0.16..0.32).contains(&t_hi.cl), "{t_hi:?}");
+    assert!(t_hi.lift_to_drag.abs() < 0.09, "{t_hi:?}");
+    // Free transition turns the rotor faster still (+14 %).
+    assert!(f_hi.rotor_rpm > t_hi.rotor_rpm + 0.04, "{f_hi:?}");
+    // α < 4°: the stated limitation, the rotor far too fast (+43 %).
+    assert!(t_lo.rotor_rpm > 0.25, "{t_lo:?}");
+}
+
+#[test]
+fn tunnel_table_iii_with_report_487_section_constants() {
+    // Report 487 p. 13: lift slope 5.85 per rad, average profile drag 0.0120 for this blade.
+    let section = AnalyticSection {
+        a0: 5.85,
+        alpha0_deg: 0.0,
+        cd0: 0.012,
+        k: 0.0,
+        stall_deg: 14.0,
+        blend_deg: 1.5,
+    };
+    let c = tunnel_comparison(&tunnel_rotor(), &section);
+    let hi = c.band(ALPHA_BAND_DEG, 90.0);
+    assert_eq!(hi.failed, 0);
+    // Within ±5 % and ±8 % with the blade's own constants: rpm −1.0 %, C_L −1.1 %.
+    assert!(hi.rotor_rpm.abs() < 0.05, "{hi:?}");
+    assert!(hi.cl.abs() < 0.08, "{hi:?}");
+    // A constant drag coefficient is too high at the rotor's low c_l: L/D −11 %.
+    assert!((-0.2..-0.04).contains(&hi.lift_to_drag), "{hi:?}");
+}
+
+#[test]
+fn flight_report_487_rotor_speed_and_flapping() {
+    let section = table("goe429_xtr0.07.csv");
+    let trims = |inflow| -> Vec<FlightPoint> {
+        flight_comparison(&flight_rotor(inflow), &section)
+            .into_iter()
+            .filter_map(Result::ok)
+            .collect()
+    };
+    let (drees, uniform) = (trims(InflowModel::Drees), trims(InflowModel::Glauert));
+    let low: Vec<&FlightPoint> = drees.iter().filter(|p| p.mu_measured <= 0.41).collect();
+    assert!(low.len() >= 8, "{} trims at μ ≤ 0.4", low.len());
+    // Rotor speed at the measured load and speed: −1.5 % on average, at most 3.8 % off.
+    let errors: Vec<f64> = low
+        .iter()
+        .map(|p| p.rotor_rpm / p.rpm_measured - 1.0)
+        .collect();
+    let mean = errors.iter().sum::<f64>() / errors.len() as f64;
+    let worst = errors.iter().fold(0.0_f64, |a, e| a.max(e.abs()));
+    assert!(mean.abs() < 0.04 && worst < 0.07, "{errors:?}");
+    let range = (0.15, 0.41);
+    let (d, u) = (
+        flapping_errors(&drees, range),
+        flapping_errors(&uniform, range),
+    );
+    // Coning 2.0° too high with either inflow (Report 487's theory is high too).
+    assert!((1.0..3.5).contains(&d.a0.mean), "{d:?}");
+    // Lateral flapping, coning error taken out: Drees within 0.3° on average (measured 0.30),
+    // uniform inflow 1.1° (36 %) low. The evidence for the presets' inflow.
+    assert!(d.b1_coning_corrected.points >= 7, "{d:?}");
+    assert!(d.b1_coning_corrected.mean_abs < 0.6, "{d:?}");
+    assert!(u.b1_coning_corrected.mean < -0.8, "{u:?}");
+    assert!(u.b1_coning_corrected.mean_relative < -0.25, "{u:?}");
+    // Longitudinal flapping within 0.5° (Drees) and 0.2° (uniform).
+    assert!(d.a1.mean_abs < 0.8 && u.a1.mean_abs < 0.8, "{d:?} {u:?}");
+}
