@@ -418,7 +418,10 @@ fn summary(o: &mut String, foils: &[FoilTables], rotor: &RotorResults) {
     };
     outln!(
         o,
-        "- **Flight test (Table 2), the study's one measurement:** contamination costs {} engine          rpm at {PAPER_TRIM_SPEED_KT} kt here, ≈ {test:+} in the flight test ({:.2}×). Our          contamination changes come out {size} the paper's: {:.1}–{:.1}× its Table 3 changes          ({}).",
+        "- **Flight test (Table 2), the study's one measurement:** contamination costs {} engine \
+         rpm at {PAPER_TRIM_SPEED_KT} kt here, ≈ {test:+} in the flight test ({:.2}×). Our \
+         contamination changes come out {size} the paper's: {:.1}–{:.1}× its Table 3 changes \
+         ({}).",
         fidelity::signed(ours),
         ours / test,
         low,
