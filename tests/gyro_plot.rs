@@ -203,8 +203,15 @@ fn report_tables_match_the_single_commands() {
     let md = std::fs::read_to_string(dir.join("README.md")).unwrap();
     // The files written are notes on stderr, nothing on stdout.
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(out.stdout.is_empty(), "{}", String::from_utf8_lossy(&out.stdout));
-    assert!(stderr.contains("gyro: wrote ") && stderr.contains("README.md"), "{stderr}");
+    assert!(
+        out.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    assert!(
+        stderr.contains("gyro: wrote ") && stderr.contains("README.md"),
+        "{stderr}"
+    );
     // The summary leads with the flight test: our Δ engine rpm beside the test's ≈ +200 and
     // our contamination changes as multiples of the paper's.
     let summary = md.split("## Summary").nth(1).expect("summary");
@@ -216,7 +223,10 @@ fn report_tables_match_the_single_commands() {
             .as_f64()
             .unwrap()
     };
-    let delta = format!("costs {:+.0} engine rpm", engine("xtr0.07") - engine("free"));
+    let delta = format!(
+        "costs {:+.0} engine rpm",
+        engine("xtr0.07") - engine("free")
+    );
     assert!(
         first.contains(&delta) && first.contains("× its Table 3 changes"),
         "{delta}: {first}"
