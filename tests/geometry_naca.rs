@@ -242,6 +242,10 @@ fn invalid_designations_are_rejected_with_reason() {
     assert!(msg("23512").contains("third digit"));
     assert!(msg("21112").contains("reflexed camber position digit"));
     assert!(msg("26012").contains("camber position digit must be 1..5"));
+    for six in ["64-212", "NACA 65A010", "naca63(420)-422", "64_1-212"] {
+        assert!(msg(six).contains("6-series"), "{six}: {}", msg(six));
+    }
+    assert!(NacaSection::parse("6412").is_ok() && NacaSection::parse("64012").is_ok());
     assert!(NacaSection::parse("naca-23012").is_ok());
     assert!(NacaSection::parse(" NACA 2412 ").is_ok());
 }

@@ -70,6 +70,15 @@ fn malformed_naca_names_say_why() {
             .to_string(),
         "invalid NACA designation 'NACA 12345': third digit must be 0 (normal) or 1 (reflexed)"
     );
+    for six in ["naca64-212", "NACA 65A010"] {
+        let e = airfoil_by_name_or_path(six).unwrap_err().to_string();
+        assert!(e.contains(&format!("'{six}': 6-series sections")), "{e}");
+    }
+    // a missing file named like a designation is still a missing file
+    let e = airfoil_by_name_or_path("naca0012.dat")
+        .unwrap_err()
+        .to_string();
+    assert!(e.starts_with("unknown airfoil"), "{e}");
 }
 
 #[test]

@@ -34,6 +34,7 @@ use polargen::table::read_lookup_table;
 use std::path::PathBuf;
 
 mod cli_support;
+mod xfoil_support;
 use cli_support::{aircraft, gyro, ok, root};
 
 /// The JSON `gyro` prints for `args` (the run must succeed).
@@ -135,6 +136,19 @@ fn shipped_tables_against_the_flight_test_and_the_paper() {
     assert!((30.0..=50.0).contains(&beyond), "{beyond} %");
     assert!((55.0..=85.0).contains(&supercritical), "{supercritical} %");
     assert_eq!(static_thrust, td["static_thrust_n"].as_f64().unwrap());
+    // The README states these numbers as computed here.
+    xfoil_support::check_readme_block(
+        "flight test",
+        "UPDATE_README=1 cargo test --test gyro_paper shipped_tables",
+        &format!(
+            "The aircraft against the flight test at 60 kt (paper Table 2) with the shipped \
+             tables: clean rotor {rc:.1} rpm (≈ 350), contamination {:+.0} engine rpm (≈ +200; \
+             the paper's model +195); predicted static thrust {static_thrust:.0} N (paper Table \
+             1 ≈ 2000 N). The rest in [the report](report/README.md); `tests/gyro_paper.rs` \
+             asserts the bands that are met and states the others with their numbers.\n",
+            ed - ec
+        ),
+    );
     for t in [&tc, &td] {
         let clamped = t["table_clamped_fraction"].as_f64().unwrap();
         // Band ≤ 2 % not met: ~3 % (module doc), all near the reverse-flow circle.
@@ -215,9 +229,9 @@ impl SectionAero for DragOnly<'_> {
     }
 }
 
-/// What the trip's loss of lift slope is worth (the README's number): the tables' slope falls
-/// 14.5 % at Re 1.9e6, M 0.41 (0.148 → 0.127 /deg, least squares over α −2…6°), as the paper
-/// says of its own polars; the contaminated drag alone gives a smaller ΔF_prop.
+/// What the trip's loss of lift slope is worth (the README's sentence is this test's output):
+/// the contaminated table with the clean table's lift and moment (its drag alone) gives a
+/// smaller ΔF_prop than the contaminated table.
 #[test]
 fn the_lift_slope_loss_is_worth_points_of_delta_f_prop() {
     let ac = Aircraft::from_toml_file(&root().join("aircraft/mtosport.toml")).unwrap();
@@ -239,5 +253,16 @@ fn the_lift_slope_loss_is_worth_points_of_delta_f_prop() {
     assert!(
         full - drag_only > 3.0 && full - drag_only < 7.0,
         "{full} {drag_only}"
+    );
+    // The README states these numbers as computed here.
+    xfoil_support::check_readme_block(
+        "thrust rise",
+        "UPDATE_README=1 cargo test --test gyro_paper lift_slope",
+        &format!(
+            "That loss of slope is worth {:.0} points of the propeller-thrust rise at 60 kt: \
+             {full:+.1} % with the tripped table, {drag_only:+.1} % with its drag alone \
+             (`tests/gyro_paper.rs`).\n",
+            full - drag_only
+        ),
     );
 }

@@ -201,6 +201,36 @@ fn report_tables_match_the_single_commands() {
         assert!(len > 5_000, "{name}: {len} bytes");
     }
     let md = std::fs::read_to_string(dir.join("README.md")).unwrap();
+    // The files written are notes on stderr, nothing on stdout.
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    assert!(
+        stderr.contains("gyro: wrote ") && stderr.contains("README.md"),
+        "{stderr}"
+    );
+    // The summary leads with the flight test: our Δ engine rpm beside the test's ≈ +200 and
+    // our contamination changes as multiples of the paper's.
+    let summary = md.split("## Summary").nth(1).expect("summary");
+    let first = summary.lines().find(|l| l.starts_with("- ")).unwrap();
+    assert!(first.starts_with("- **Flight test (Table 2)"), "{first}");
+    let engine = |kind: &str| {
+        let table = polars(&format!("naca8h12_{kind}.csv"));
+        json_of(&["trim", "--aircraft", &ac, "--table", &table, "--json"])["engine_rpm"]
+            .as_f64()
+            .unwrap()
+    };
+    let delta = format!(
+        "costs {:+.0} engine rpm",
+        engine("xtr0.07") - engine("free")
+    );
+    assert!(
+        first.contains(&delta) && first.contains("× its Table 3 changes"),
+        "{delta}: {first}"
+    );
     // The share of lookups clamped to the tables' edges is stated under Table 3.
     let coverage = md
         .lines()

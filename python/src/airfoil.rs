@@ -5,7 +5,7 @@ use numpy::ndarray::Array2;
 use numpy::{AllowTypeChange, IntoPyArray, PyArray1, PyArray2, PyArrayLike1};
 use polargen::arguments;
 use polargen::geometry::{
-    airfoil_by_name_or_path, airfoil_key, apply_shape_ops, naca, read_airfoil_file, shape_ops_text,
+    airfoil_by_name_or_path, apply_shape_ops, naca, read_airfoil_file, shape_ops_text,
     to_selig_string, Airfoil as Contour, GeometryError, NacaOptions, ShapeOp,
 };
 use pyo3::exceptions::PyUserWarning;
@@ -125,15 +125,15 @@ impl Airfoil {
     /// ``"23012"``, ``"NACA 23012"``.
     #[staticmethod]
     fn naca(designation: &str) -> PyResult<Self> {
-        let key = airfoil_key(designation);
-        let digits = key.strip_prefix("naca").unwrap_or(&key);
-        wrap(naca(digits, &NacaOptions::default()).map_err(|e| match e {
-            GeometryError::NacaDesignation { reason, .. } => GeometryError::NacaDesignation {
-                designation: designation.trim().to_string(),
-                reason,
-            },
-            other => other,
-        }))
+        wrap(
+            naca(designation, &NacaOptions::default()).map_err(|e| match e {
+                GeometryError::NacaDesignation { reason, .. } => GeometryError::NacaDesignation {
+                    designation: designation.trim().to_string(),
+                    reason,
+                },
+                other => other,
+            }),
+        )
     }
 
     /// What the command line's ``--airfoil`` accepts: ``naca8h12``, ``naca23012``, any NACA

@@ -15,6 +15,8 @@ use polargen::input::{InputError, InputProblem};
 use polargen::output::OutputError;
 use polargen::polar::{OperatingPointError, RangeError, TargetClError};
 use polargen::rotor::{AircraftError, TakeoffError, TrimError};
+use polargen::studies::paper::StudyError;
+use polargen::studies::StudiesError;
 use polargen::table::{BuildError, TableError};
 use polargen::viscous::ViscousError;
 use pyo3::exceptions::{
@@ -190,6 +192,30 @@ impl Classify for TakeoffError {
         match self {
             TakeoffError::Propeller(_) => Kind::Input,
             _ => Kind::NotConverged,
+        }
+    }
+}
+
+impl Classify for StudyError {
+    fn kind(&self) -> Kind {
+        match self {
+            StudyError::Trim { source, .. } => source.kind(),
+            StudyError::Takeoff { source, .. } => source.kind(),
+            _ => Kind::NotConverged,
+        }
+    }
+}
+
+impl Classify for StudiesError {
+    fn kind(&self) -> Kind {
+        match self {
+            StudiesError::Aircraft(e) => e.kind(),
+            StudiesError::Rotor(e) => e.kind(),
+            StudiesError::Output(e) => e.kind(),
+            StudiesError::Cache(e) => e.kind(),
+            StudiesError::Build { source, .. } => source.kind(),
+            StudiesError::Csv(_) => Kind::File(io_kind(self)),
+            _ => Kind::Input,
         }
     }
 }

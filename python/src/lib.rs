@@ -5,9 +5,12 @@
 //! the library's errors into Python exceptions with the CLI's messages. The Python modules in
 //! `python/polargen/` give the results their classes (columns, `to_pandas`).
 
+mod aero;
 mod airfoil;
 mod errors;
+mod plot;
 mod rotor;
+mod rotor_runs;
 mod solve;
 mod table;
 
@@ -19,11 +22,17 @@ mod _polargen {
     use pyo3::prelude::*;
 
     #[pymodule_export]
+    use crate::aero::aero;
+    #[pymodule_export]
     use crate::airfoil::Airfoil;
     #[pymodule_export]
     use crate::errors::NotConvergedError;
     #[pymodule_export]
+    use crate::plot::polar_figure;
+    #[pymodule_export]
     use crate::rotor::{PyAircraft, PyRotor};
+    #[pymodule_export]
+    use crate::rotor_runs::{rotor_compare, rotor_study, rotor_sweep};
     #[pymodule_export]
     use crate::solve::{alpha_range, estimate_seconds, point, table};
     #[pymodule_export]

@@ -18,12 +18,13 @@ use crate::table::Table;
 /// A gyroplane preset (rotor, airframe, propeller, takeoff data).
 #[pyclass(module = "polargen._polargen", name = "Aircraft", frozen)]
 pub struct PyAircraft {
-    inner: Aircraft,
+    /// The preset.
+    pub inner: Aircraft,
 }
 
 impl PyAircraft {
     /// The preset with its mass replaced by `mass_kg` (checked as `gyro --mass`) when given.
-    fn with_mass(&self, mass_kg: Option<f64>) -> PyResult<Aircraft> {
+    pub fn with_mass(&self, mass_kg: Option<f64>) -> PyResult<Aircraft> {
         let mut aircraft = self.inner.clone();
         if let Some(m) = mass_kg {
             check_mass_kg("mass_kg", m).map_err(|e| raise(None, e))?;
@@ -34,7 +35,7 @@ impl PyAircraft {
 }
 
 /// The table as a rotor section: it must allow lookups, as `gyro` requires of its `--table`.
-fn section(table: &Table) -> PyResult<&polargen::table::PolarTable> {
+pub fn section(table: &Table) -> PyResult<&polargen::table::PolarTable> {
     table
         .inner
         .require_lookup()
@@ -43,7 +44,7 @@ fn section(table: &Table) -> PyResult<&polargen::table::PolarTable> {
 }
 
 /// The serde form of a result (what `gyro … --json` prints) as JSON text.
-fn json<T: serde::Serialize>(value: &T) -> PyResult<String> {
+pub fn json<T: serde::Serialize>(value: &T) -> PyResult<String> {
     serde_json::to_string(value).map_err(|e| pyo3::exceptions::PyValueError::new_err(e.to_string()))
 }
 

@@ -24,18 +24,18 @@ use crate::airfoil::Airfoil;
 use crate::errors::{raise, shielded};
 use crate::table::Table;
 
-/// The solver settings shared by `polar`, `point` and `table`, checked.
-struct Settings {
+/// The solver settings shared by `polar`, `point`, `table` and `aero`, checked.
+pub struct Settings {
     transition: Transition,
     tolerance: f64,
 }
 
 /// The arguments `ncrit`, `ncrit_top`, `ncrit_bot` (a side not given takes `ncrit`).
-type NcritArgs = (f64, Option<f64>, Option<f64>);
+pub type NcritArgs = (f64, Option<f64>, Option<f64>);
 
 impl Settings {
     /// Checks each setting as the CLI checks its flag.
-    fn checked(xtr_top: f64, xtr_bot: f64, ncrit: NcritArgs, tolerance: f64) -> PyResult<Self> {
+    pub fn checked(xtr_top: f64, xtr_bot: f64, ncrit: NcritArgs, tolerance: f64) -> PyResult<Self> {
         // One value for both surfaces (bit for bit: NaN too) is the argument `xtr` (the CLI's
         // `--xtr`).
         let names = if xtr_top.to_bits() == xtr_bot.to_bits() {
@@ -59,7 +59,7 @@ impl Settings {
     }
 
     /// The solver parameters at (Re, M) with these settings (the CLI's `ViscousParams`).
-    fn params(&self, reynolds: f64, mach: f64) -> ViscousParams {
+    pub fn params(&self, reynolds: f64, mach: f64) -> ViscousParams {
         ViscousParams {
             reynolds,
             mach,
@@ -178,10 +178,8 @@ fn checked_axis(
     Ok(values)
 }
 
-/// Solves the grid (checked) on the nodes of `airfoil` with the GIL released: the build runs on
-/// a worker thread while this thread forwards its progress to `progress(done, total)` and
-/// checks for signals (Ctrl-C) every 0.1 s; an exception from either cancels the build and is
-/// raised once the polars under way have finished.
+/// Solves the grid (checked) on the nodes of `airfoil` with the GIL released
+/// ([`run_detached`]).
 #[allow(clippy::too_many_arguments)]
 fn build(
     py: Python<'_>,
@@ -200,26 +198,33 @@ fn build(
     if let Some(callback) = &progress {
         callback.call1(py, (0, total))?;
     }
+    run_detached(py, total, progress, |on_points, cancel| {
+        build_table_cancellable(&nodes, panels, &grid, &base, threads, on_points, cancel)
+    })
+}
+
+/// Runs `work` with the GIL released: on a worker thread while this thread forwards its
+/// progress (`work` reports finished points to the function it is given) to
+/// `progress(done, total)` and checks for signals (Ctrl-C) every 0.1 s; an exception from
+/// either sets the cancel flag `work` is given and is raised once the polars under way have
+/// finished.
+pub fn run_detached<T: Send>(
+    py: Python<'_>,
+    total: usize,
+    progress: Option<Py<PyAny>>,
+    work: impl FnOnce(&(dyn Fn(usize) + Sync), &AtomicBool) -> Result<T, BuildError> + Send,
+) -> PyResult<T> {
     let cancel = AtomicBool::new(false);
     let (result, interrupted) = py.detach(|| {
         let (sender, receiver) = mpsc::channel::<usize>();
         std::thread::scope(|scope| {
-            let (nodes, grid, base, cancel) = (&nodes, &grid, &base, &cancel);
+            let cancel = &cancel;
             let worker = scope.spawn(move || {
-                shielded(|| {
-                    build_table_cancellable(
-                        nodes,
-                        panels,
-                        grid,
-                        base,
-                        threads,
-                        |n| {
-                            // The receiver is gone only once the build is over.
-                            let _ = sender.send(n);
-                        },
-                        cancel,
-                    )
-                })
+                // The receiver is gone only once the work is over.
+                let on_points = move |n: usize| {
+                    let _ = sender.send(n);
+                };
+                shielded(|| work(&on_points, cancel))
             });
             let (mut done, mut reported) = (0, 0);
             let mut interrupted: Option<PyErr> = None;
@@ -254,7 +259,7 @@ fn build(
             }
             let result = worker.join().unwrap_or_else(|_| {
                 Err(pyo3::exceptions::PyRuntimeError::new_err(
-                    "polargen internal error (please report): the build thread failed",
+                    "polargen internal error (please report): the worker thread failed",
                 ))
             });
             (result, interrupted)
@@ -264,9 +269,9 @@ fn build(
         return Err(e);
     }
     match result? {
-        Ok(table) => Ok(table),
+        Ok(value) => Ok(value),
         Err(BuildError::Cancelled) => Err(pyo3::exceptions::PyKeyboardInterrupt::new_err(
-            "table computation cancelled",
+            "computation cancelled",
         )),
         Err(e) => Err(raise(None, e)),
     }

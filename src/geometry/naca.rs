@@ -82,6 +82,21 @@ pub enum NacaSection {
     },
 }
 
+/// Why a 6-series designation is refused.
+const SIX_SERIES: &str =
+    "6-series sections (NACA 6X-XXX, 6XA-XXX) are not supported, only 4- and 5-digit \
+     ones: give their ordinates as a coordinate file";
+
+/// Whether `body` (lower case, without the `naca` prefix) names a 6-series section: a `6`, a
+/// digit, then `-`, `a` or `(` (`64-212`, `65a010`, `63(420)-422`, `64_1-212`).
+fn is_six_series(body: &str) -> bool {
+    let b = body.as_bytes();
+    b.len() > 2
+        && b[0] == b'6'
+        && b[1].is_ascii_digit()
+        && matches!(b[2], b'-' | b'a' | b'(' | b'_')
+}
+
 impl NacaSection {
     /// Parses `2412`, `23012`, `NACA 23012`, `naca-0012` (case-insensitive).
     pub fn parse(designation: &str) -> Result<Self, GeometryError> {
@@ -90,7 +105,10 @@ impl NacaSection {
             reason: reason.to_string(),
         };
         let lower = designation.trim().to_ascii_lowercase();
-        let body = lower.strip_prefix("naca").unwrap_or(&lower);
+        let body = lower.strip_prefix("naca").unwrap_or(&lower).trim_start();
+        if is_six_series(body) {
+            return Err(err(SIX_SERIES));
+        }
         let digits: String = body
             .chars()
             .filter(|c| !c.is_whitespace() && *c != '-' && *c != '_')

@@ -49,9 +49,13 @@ pub fn airfoil_by_name_or_path(s: &str) -> Result<Airfoil, GeometryError> {
     if trimmed == crate::input::STDIN_PATH {
         return read_airfoil_file(path);
     }
-    if let Some(digits) = key.strip_prefix("naca") {
-        if !digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit()) && !path.is_file() {
-            return naca(digits, &NacaOptions::default()).map_err(|e| match e {
+    if let Some(rest) = key.strip_prefix("naca") {
+        // A designation (digits, or a 6-series one such as 64-212 or 65A010, refused by name)
+        // unless a file of that name exists or the name looks like a path.
+        let designation =
+            rest.starts_with(|c: char| c.is_ascii_digit()) && !trimmed.contains(['.', '/', '\\']);
+        if designation && !path.is_file() {
+            return naca(trimmed, &NacaOptions::default()).map_err(|e| match e {
                 GeometryError::NacaDesignation { reason, .. } => GeometryError::NacaDesignation {
                     designation: trimmed.to_string(),
                     reason,

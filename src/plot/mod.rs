@@ -8,6 +8,8 @@
 //!   by the file extension): entry points, pixel layout, tick scales, clipping, plotters calls.
 //! * `font` — the embedded DejaVu Sans font used for all text.
 //! * `sparse` — the rule that puts a symbol on every point of a sparse series.
+//! * `spec` — [`figure_spec`]: a figure with the renderer's decisions taken (grid, axis
+//!   limits, symbols), as plain data for another renderer (the Python package's matplotlib).
 //! * [`polar_plots`] — Cl–α, Cl–Cd, Cl–x_tr, Cl/Cd–α, Cm–α overlays of polars, with the drag
 //!   polar's Cd axis of [`drag_axis`].
 //! * [`table_plots`] — the polars of table files overlaid (`polargen plot`).
@@ -44,6 +46,7 @@ pub mod polar_plots;
 mod render;
 pub mod rotor_plots;
 mod sparse;
+mod spec;
 pub mod table_plots;
 
 pub use error::PlotError;
@@ -52,3 +55,4 @@ pub use render::{
     check_image_path, render, render_into_set, render_svg_string, render_with,
     render_with_legend_room, RenderParams,
 };
+pub use spec::{figure_spec, FigureSpec, MarkerSpec, PanelSpec, SeriesSpec};

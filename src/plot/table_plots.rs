@@ -9,7 +9,7 @@ use super::figure::{Figure, Style};
 use super::polar_plots::{compact_number, overlay_title, polar_figure_styled, PolarCurve};
 use crate::limits::short_number;
 use crate::section::{FlowCondition, PolarPoint};
-use crate::table::{read_table_with, ReadOptions, TableError};
+use crate::table::{read_table_with, ReadOptions, TableError, TableMeta};
 
 /// Why the polars of an overlay could not be taken from their tables. One line each, naming
 /// the flag (`--re`, `--label`) or file at fault.
@@ -115,13 +115,9 @@ pub fn table_overlay_figure(overlay: &TableOverlay) -> Result<Figure, OverlayErr
                 condition: at,
             });
         }
-        let meta = table.meta();
         names.push(match labels.get(i) {
             Some(label) => label.clone(),
-            None => {
-                let trip = meta.transition.trip_label();
-                format!("{} {trip}", meta.airfoil)
-            }
+            None => table_label(table.meta()),
         });
         polars.push(points.to_vec());
         conditions.push(at);
@@ -145,6 +141,12 @@ pub fn table_overlay_figure(overlay: &TableOverlay) -> Result<Figure, OverlayErr
         })
         .collect();
     Ok(polar_figure_styled(&curves, &title, overlay.cd_axis))
+}
+
+/// The default legend label of a table's polars: airfoil and transition setting
+/// (`naca8h12 xtr 0.07`).
+pub fn table_label(meta: &TableMeta) -> String {
+    format!("{} {}", meta.airfoil, meta.transition.trip_label())
 }
 
 /// Error when `value` lies outside a table axis (beyond 0.1 % of the span).

@@ -10,6 +10,17 @@ use rayon::prelude::*;
 use super::sweep::{sweep_split, SweepParams, WarmStartSolver};
 use crate::section::PolarPoint;
 
+/// One polar a grid asks for: its condition and its angles of attack.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GridNode<'a> {
+    /// Reynolds number.
+    pub re: f64,
+    /// Mach number.
+    pub mach: f64,
+    /// Angles of attack \[deg\].
+    pub alphas: &'a [f64],
+}
+
 /// One computed polar of a grid.
 #[derive(Clone, Debug, PartialEq)]
 pub struct GridPolar {
@@ -21,15 +32,14 @@ pub struct GridPolar {
     pub points: Vec<PolarPoint>,
 }
 
-/// Run one sweep over `alphas` for every `(re, mach)` node on a pool of `threads` threads
+/// Run one sweep over its α values for every node on a pool of `threads` threads
 /// (0 = all cores). A node runs at most two tasks at once (its two α branches), so the pool
 /// never gets more than two threads per node: more could not be used, and thousands of idle
-/// threads cost seconds to start. `make_solver(re, mach)` builds a node's solver; a node whose
+/// threads cost seconds to start. `make_solver(i)` builds the solver of `nodes[i]`; a node whose
 /// solver cannot be built fails the whole grid with that error. `on_polar_done` is called after each node
 /// (from worker threads; for progress display). Polars come back in the order of `nodes`.
 pub fn run_grid<S, E, F, P>(
-    nodes: &[(f64, f64)],
-    alphas: &[f64],
+    nodes: &[GridNode<'_>],
     threads: usize,
     params: &SweepParams,
     make_solver: F,
@@ -39,22 +49,23 @@ where
     S: WarmStartSolver + Send,
     S::State: Send,
     E: Send,
-    F: Fn(f64, f64) -> Result<S, E> + Sync,
+    F: Fn(usize) -> Result<S, E> + Sync,
     P: Fn(&GridPolar) + Sync,
 {
     let work = || {
         nodes
             .par_iter()
             .with_max_len(1)
-            .map(|&(re, mach)| {
+            .enumerate()
+            .map(|(i, node)| {
                 // A second solver lets the node's two α branches run in parallel too, so that
                 // the last polars of a grid do not leave a core idle.
-                let mut solver = make_solver(re, mach)?;
-                let second = make_solver(re, mach)?;
+                let mut solver = make_solver(i)?;
+                let second = make_solver(i)?;
                 let polar = GridPolar {
-                    re,
-                    mach,
-                    points: sweep_split(&mut solver, Some(second), alphas, params),
+                    re: node.re,
+                    mach: node.mach,
+                    points: sweep_split(&mut solver, Some(second), node.alphas, params),
                 };
                 on_polar_done(&polar);
                 Ok(polar)
@@ -112,6 +123,20 @@ mod tests {
         fn restore(&mut self, _: &()) {}
     }
 
+    fn grid_nodes<'a>(nodes: &[(f64, f64)], alphas: &'a [f64]) -> Vec<GridNode<'a>> {
+        nodes
+            .iter()
+            .map(|&(re, mach)| GridNode { re, mach, alphas })
+            .collect()
+    }
+
+    fn analytic(nodes: &[GridNode<'_>], i: usize) -> Analytic {
+        Analytic {
+            re: nodes[i].re,
+            mach: nodes[i].mach,
+        }
+    }
+
     #[test]
     fn same_result_for_any_thread_count() {
         let nodes: Vec<(f64, f64)> = [1e6, 2e6, 3e6]
@@ -119,13 +144,13 @@ mod tests {
             .flat_map(|&r| [0.0, 0.3].map(move |m| (r, m)))
             .collect();
         let alphas = [-2.0, 0.0, 2.0, 4.0];
+        let nodes = grid_nodes(&nodes, &alphas);
         let run = |t| {
             run_grid(
                 &nodes,
-                &alphas,
                 t,
                 &SweepParams::default(),
-                |re, mach| Ok::<_, ()>(Analytic { re, mach }),
+                |i| Ok::<_, ()>(analytic(&nodes, i)),
                 |_| {},
             )
             .unwrap()
@@ -141,14 +166,14 @@ mod tests {
     fn at_most_two_threads_per_polar() {
         let pool_size = |nodes: &[(f64, f64)], threads| {
             let seen = std::sync::Mutex::new(Vec::new());
+            let nodes = grid_nodes(nodes, &[0.0, 1.0]);
             run_grid(
-                nodes,
-                &[0.0, 1.0],
+                &nodes,
                 threads,
                 &SweepParams::default(),
-                |re, mach| {
+                |i| {
                     seen.lock().unwrap().push(rayon::current_num_threads());
-                    Ok::<_, ()>(Analytic { re, mach })
+                    Ok::<_, ()>(analytic(&nodes, i))
                 },
                 |_| {},
             )
@@ -164,16 +189,16 @@ mod tests {
 
     #[test]
     fn solver_error_fails_the_grid() {
+        let nodes = grid_nodes(&[(1e6, 0.0), (2e6, 0.0)], &[0.0]);
         let r = run_grid(
-            &[(1e6, 0.0), (2e6, 0.0)],
-            &[0.0],
+            &nodes,
             1,
             &SweepParams::default(),
-            |re, mach| {
-                if re > 1.5e6 {
+            |i| {
+                if nodes[i].re > 1.5e6 {
                     Err("too fast")
                 } else {
-                    Ok(Analytic { re, mach })
+                    Ok(analytic(&nodes, i))
                 }
             },
             |_| {},

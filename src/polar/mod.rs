@@ -7,7 +7,7 @@ mod sweep;
 mod target_cl;
 mod viscous_sweep;
 
-pub use grid::{run_grid, GridPolar};
+pub use grid::{run_grid, GridNode, GridPolar};
 pub use operating_point::{solve_operating_point, OperatingPoint, OperatingPointError};
 pub use range::{
     check_alphas, march_order, parse_alpha_range, RangeError, MAX_ALPHA_DEG, MAX_ALPHA_POINTS,

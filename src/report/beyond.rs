@@ -97,6 +97,17 @@ fn run_with(
     })
 }
 
+/// How the report names `docs/studies.md`: a relative link when the report folder `out` sits
+/// beside the repository's `docs/` (the shipped `report/`), else the path in words, so that a
+/// report written elsewhere has no broken link.
+pub(super) fn studies_doc_reference(out: &std::path::Path) -> String {
+    if out.join("../docs/studies.md").is_file() {
+        "[docs/studies.md](../docs/studies.md)".to_string()
+    } else {
+        "`docs/studies.md` of the polargen sources".to_string()
+    }
+}
+
 impl Beyond {
     /// The figures by file stem.
     pub(super) fn figures(&self) -> Result<Vec<(String, Figure)>, StudiesError> {
@@ -109,8 +120,9 @@ impl Beyond {
         Ok(v)
     }
 
-    /// The section's Markdown.
-    pub(super) fn markdown(&self) -> String {
+    /// The section's Markdown; `studies_doc` is how it names `docs/studies.md` (a link when
+    /// the report lies in the repository, [`studies_doc_reference`]).
+    pub(super) fn markdown(&self, studies_doc: &str) -> String {
         let mut o = String::new();
         let recs = &self.contamination.records;
         let rpm = |r: &ContaminationRecord| signed(r.penalty.delta_engine_rpm);
@@ -122,7 +134,7 @@ impl Beyond {
             o,
             "The paper computes one contaminated case (transition fixed at 7 % chord on both \
              surfaces of the whole blade). `gyro study` asks how the aircraft-level answer \
-             depends on that choice ([docs/studies.md](../docs/studies.md)); every table below is \
+             depends on that choice ({studies_doc}); every table below is \
              solved by polargen on the default grid, the aircraft is the preset above at 60 kt."
         );
         outln!(o);
@@ -219,7 +231,7 @@ impl Beyond {
             speeds.join(", ")
         );
         if let Some(w) = &self.wing {
-            wing_findings(&mut o, w);
+            wing_findings(&mut o, w, studies_doc);
         }
         outln!(o, "\n![Penalty vs airspeed](contamination_speed.png)");
         outln!(o, "![Airfoils](airfoils.png)");
@@ -251,7 +263,7 @@ impl Beyond {
 
 /// The wing bullet: F_prop change and the rotor's share of the lift for each wing area at 60
 /// and 90 kt, and the paper's §6 claim beside them.
-fn wing_findings(o: &mut String, w: &WingStudy) {
+fn wing_findings(o: &mut String, w: &WingStudy, studies_doc: &str) {
     let at = |area: f64, v: f64| -> Option<&WingRecord> {
         w.records
             .iter()
@@ -285,7 +297,7 @@ fn wing_findings(o: &mut String, w: &WingStudy) {
          (= total drag in level flight) against no wing: {}. The 1.7 m² wing gains most at {}; \
          the paper's §6 cites about −12 % total drag at cruise for 1.7 m², which this model \
          reaches only with a much higher wing C_L or more rotor drag shed per newton of lift \
-         ([docs/studies.md](../docs/studies.md)).",
+         ({studies_doc}).",
         cells.join("; "),
         best.map_or("no speed".to_string(), |(v, d)| format!(
             "{v} kt ({d:+.1} %)"
@@ -316,8 +328,12 @@ mod tests {
         let root = Path::new(env!("CARGO_MANIFEST_DIR"));
         let ac = Aircraft::from_toml_file(&root.join("aircraft/mtosport.toml")).unwrap();
         let b = run_with(&ac, &cache, &crate::progress::Silent).unwrap();
-        let text = b.markdown();
+        let text = b.markdown(&studies_doc_reference(&root.join("report")));
         assert!(text.starts_with("## Beyond the paper"));
+        // In the repository the study notes are a link; elsewhere named in words.
+        assert!(text.contains("[docs/studies.md](../docs/studies.md)"));
+        let elsewhere = studies_doc_reference(dir.path());
+        assert!(!elsewhere.contains("](") && elsewhere.contains("docs/studies.md"));
         // One entry per trip location, each with the Δ engine rpm of its record.
         let trip_line = text
             .lines()

@@ -204,6 +204,17 @@ struct Row {
 
 /// Tables 3 and 4 as JSON: `{"trim": [rows], "takeoff": [rows]}`.
 pub fn compare_json(buf: &mut String, runs: &[PaperRun; 2]) -> Result<(), serde_json::Error> {
+    outln!(
+        buf,
+        "{}",
+        serde_json::to_string_pretty(&compare_rows(runs))?
+    );
+    Ok(())
+}
+
+/// Tables 3 and 4 as a JSON value: `{"trim": [rows], "takeoff": [rows]}`, each row
+/// `quantity`, `paper_clean`, `paper_contaminated`, `ours_clean`, `ours_contaminated`.
+pub fn compare_rows(runs: &[PaperRun; 2]) -> serde_json::Value {
     let rows = |table: &[Comparison]| -> Vec<Row> {
         table
             .iter()
@@ -217,7 +228,5 @@ pub fn compare_json(buf: &mut String, runs: &[PaperRun; 2]) -> Result<(), serde_
             .collect()
     };
     let [trim, takeoff] = tables(runs);
-    let out = serde_json::json!({ "trim": rows(&trim), "takeoff": rows(&takeoff) });
-    outln!(buf, "{}", serde_json::to_string_pretty(&out)?);
-    Ok(())
+    serde_json::json!({ "trim": rows(&trim), "takeoff": rows(&takeoff) })
 }

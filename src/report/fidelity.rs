@@ -49,7 +49,7 @@ fn table3(name: &str) -> [f64; 2] {
 }
 
 /// A whole number with its sign, "—" if not finite.
-fn signed(v: f64) -> String {
+pub(super) fn signed(v: f64) -> String {
     if v.is_finite() {
         format!("{v:+.0}")
     } else {

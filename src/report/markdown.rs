@@ -2,8 +2,8 @@
 //! words.
 
 use super::words::{
-    comparison_table, comparison_words, direction_sentence, nan_max, num, num_pct, pct, rel,
-    tally_of, verdict, CLOSE_PERCENT, MATCH_PERCENT,
+    change_ratios, comparison_table, comparison_words, direction_sentence, nan_max, num, num_pct,
+    pct, rel, tally_of, verdict, CLOSE_PERCENT, MATCH_PERCENT,
 };
 use super::{
     fidelity, FoilTables, ReportInputs, RotorResults, FIG10_RADIUS, SWEEP_KT, TABLE5_ALPHA_RANGE,
@@ -11,7 +11,7 @@ use super::{
 use crate::rotor::{rpm_to_rad_s, Aircraft, Atmosphere, TakeoffResult, TrimResult};
 use crate::studies::paper::published::{
     compare, Comparison, CLEAN_TAKEOFF_TEXT, FIG10_MAX_ALPHA_DEG, FIG10_PSI_DEG, SECTION_MACH,
-    TABLE3_TRIM, TABLE4_TAKEOFF, TABLE5_CL,
+    TABLE2_ENGINE_RPM, TABLE3_TRIM, TABLE4_TAKEOFF, TABLE5_CL,
 };
 use crate::studies::paper::{CASE_LABELS, PAPER_TRIM_SPEED_KT};
 
@@ -410,10 +410,44 @@ fn power_section(o: &mut String, rotor: &RotorResults) {
     outln!(o);
 }
 
-/// The summary at the top of the report: one verdict line per table and figure.
+/// The summary at the top of the report: first the flight test and the size of our
+/// contamination changes against the paper's, then one verdict line per table and figure.
 fn summary(o: &mut String, foils: &[FoilTables], rotor: &RotorResults) {
     outln!(o, "## Summary");
     outln!(o);
+    let engine = |t: &TrimResult| t.engine_rpm.unwrap_or(f64::NAN);
+    let [clean, dirty] = &rotor.trims;
+    let ours = engine(dirty) - engine(clean);
+    let test = TABLE2_ENGINE_RPM.contaminated - TABLE2_ENGINE_RPM.clean;
+    let ratios = change_ratios(&trim_rows(&rotor.trims));
+    let (low, high) = ratios
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), r| {
+            (l.min(r.1), h.max(r.1))
+        });
+    let each: Vec<String> = ratios
+        .iter()
+        .map(|(name, r)| format!("{} {r:.2}×", name.split(" [").next().unwrap_or(name)))
+        .collect();
+    let size = if low > 1.0 {
+        "larger than"
+    } else if high < 1.0 {
+        "smaller than"
+    } else {
+        "around"
+    };
+    outln!(
+        o,
+        "- **Flight test (Table 2), the study's one measurement:** contamination costs {} engine \
+         rpm at {PAPER_TRIM_SPEED_KT} kt here, ≈ {test:+} in the flight test ({:.2}×). Our \
+         contamination changes come out {size} the paper's: {:.1}–{:.1}× its Table 3 changes \
+         ({}).",
+        fidelity::signed(ours),
+        ours / test,
+        low,
+        high,
+        each.join(", "),
+    );
     for (what, rows) in [
         ("Trim (Table 3)", trim_rows(&rotor.trims)),
         ("Takeoff (Table 4)", takeoff_rows(&rotor.takeoffs)),

@@ -247,7 +247,7 @@ pub fn write_report(
         for (name, fig) in b.figures()? {
             figure(&name, &fig)?;
         }
-        text.push_str(&b.markdown());
+        text.push_str(&b.markdown(&beyond::studies_doc_reference(&inputs.out)));
     }
     let readme = inputs.out.join(REPORT_README);
     set.write(&readme, |w| {

@@ -156,6 +156,20 @@ pub(super) fn direction_sentence(rows: &[Comparison]) -> String {
     )
 }
 
+/// Our contamination change of each row over the paper's, (ours contaminated − ours clean) /
+/// (paper contaminated − paper clean), for the rows the paper shows changing by
+/// [`CHANGE_THRESHOLD_PERCENT`] or more: (name, ratio).
+pub(super) fn change_ratios(rows: &[Comparison]) -> Vec<(&'static str, f64)> {
+    rows.iter()
+        .filter(|r| rel(r.paper.clean, r.paper.contaminated).abs() >= CHANGE_THRESHOLD_PERCENT)
+        .map(|r| {
+            let ratio =
+                (r.ours.contaminated - r.ours.clean) / (r.paper.contaminated - r.paper.clean);
+            (r.name, ratio)
+        })
+        .collect()
+}
+
 /// Bullet list stating each row's agreement and its contamination change in words, then the
 /// tally and direction sentences.
 pub(super) fn comparison_words(out: &mut String, rows: &[Comparison]) {

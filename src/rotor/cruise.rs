@@ -66,6 +66,28 @@ pub fn checked_sweep_speeds(
     Ok(speeds)
 }
 
+/// A list of sweep airspeeds given directly (the Python package's `sweep`), checked as
+/// [`checked_sweep_speeds`] checks a range: each a valid airspeed, at most
+/// [`MAX_SWEEP_SPEEDS`] of them and at most [`MAX_SWEEP_CELL_SPEEDS`] speeds × `cells`.
+pub fn check_sweep_speeds(
+    name: &str,
+    speeds_kt: &[f64],
+    cells: usize,
+) -> Result<(), ArgumentError> {
+    for &v in speeds_kt {
+        check_speed_kt(name, v)?;
+    }
+    let n = speeds_kt.len();
+    if n == 0 || n > MAX_SWEEP_SPEEDS || n.saturating_mul(cells) > MAX_SWEEP_CELL_SPEEDS {
+        let rule = format!(
+            "{n} speeds: give 1 to {} for a rotor with {cells} cells",
+            MAX_SWEEP_SPEEDS.min(MAX_SWEEP_CELL_SPEEDS / cells.max(1))
+        );
+        return Err(ArgumentError::with_text(name, "", rule));
+    }
+    Ok(())
+}
+
 /// Power-required sweep: [`trim_aircraft`] at each airspeed of `speeds_kt` (in parallel), at
 /// `mass_kg` and ISA `altitude_m`. Each point keeps its own result, so one speed without a trim
 /// (e.g. too slow to carry the weight) does not lose the others.

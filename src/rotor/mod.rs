@@ -59,7 +59,10 @@ pub use aircraft::{
 };
 pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};
-pub use cruise::{checked_sweep_speeds, cruise_blade_alpha, speed_sweep, sweep_speeds, SweepPoint};
+pub use cruise::{
+    check_sweep_speeds, checked_sweep_speeds, cruise_blade_alpha, speed_sweep, sweep_speeds,
+    SweepPoint,
+};
 pub use disc_loads::{FlightCondition, Rotor, RotorSolverParams};
 pub use engine::Engine;
 pub use flapping::{FlapHinge, Flapping, Hub};

@@ -170,8 +170,18 @@ impl AirfoilStudy {
                 .map(|(i, r)| (i as f64 + 1.0, r))
                 .collect()
         };
+        let names: Vec<&str> = xs(false).iter().map(|(_, r)| r.airfoil.as_str()).collect();
+        let numbered: Vec<String> = names
+            .iter()
+            .enumerate()
+            .map(|(i, n)| format!("{} = {n}", i + 1))
+            .collect();
+        let x_label = format!("airfoil: {}", numbered.join(", "));
+        let last = names.len() as f64;
         let panel = |y: &str, v: &dyn Fn(&AirfoilRecord) -> Option<f64>| {
-            let mut p = Panel::new("", "airfoil (1 = first of --airfoils)", y);
+            let mut p = Panel::new("", x_label.as_str(), y)
+                .with_x_range(0.5, last + 0.5)
+                .with_x_tick_step(1.0);
             for (c, dirty) in [false, true].into_iter().enumerate() {
                 let pts: Vec<(f64, f64)> = xs(dirty)
                     .iter()
@@ -186,7 +196,6 @@ impl AirfoilStudy {
             }
             p
         };
-        let names: Vec<&str> = xs(false).iter().map(|(_, r)| r.airfoil.as_str()).collect();
         let fig = Figure::new(format!(
             "Rotor with each airfoil at 60 kt: {}",
             names.join(", ")

@@ -147,12 +147,23 @@ impl<'de> Deserialize<'de> for InOrder {
     }
 }
 
-/// The flight-test band `(centre, half width)` as three horizontal lines on `panel`.
+/// The flight-test band `(centre, half width)` as three horizontal lines on `panel` (for an x
+/// axis that is not airspeed: every setting is at the flight test's 60 kt).
 pub(crate) fn band_markers(panel: Panel, (centre, half): (f64, f64)) -> Panel {
     panel
-        .with_marker(Marker::hline(centre, format!("flight test +{centre}"), 1))
-        .with_marker(Marker::hline(centre - half, format!("± {half}"), 7))
+        .with_marker(Marker::hline(centre, flight_test_label(centre), 1))
+        .with_marker(Marker::hline(centre - half, band_label(half), 7))
         .with_marker(Marker::hline(centre + half, "", 7))
+}
+
+/// Legend of the flight test's Δ engine rpm (paper Table 2, at 60 kt).
+pub(crate) fn flight_test_label(centre: f64) -> String {
+    format!("flight test ≈ +{centre} at 60 kt (paper Table 2)")
+}
+
+/// Legend of the band drawn around it: an assumed tachometer reading band, not a measured one.
+pub(crate) fn band_label(half: f64) -> String {
+    format!("± {half}: assumed reading band")
 }
 
 #[cfg(test)]

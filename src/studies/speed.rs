@@ -1,7 +1,7 @@
 //! The contamination penalty against airspeed: clean and tripped rotor trimmed at each speed
 //! (the flight test's speed is only "≈ 60 kt"), ΔF_prop and Δ engine rpm.
 
-use super::files::{band_markers, records_csv};
+use super::files::{band_label, flight_test_label, records_csv};
 use super::{
     cell, check_speeds, load_study_airfoil, sections, study_tables, StudiesError, StudyFiles,
     TableCache, CLEAN,
@@ -10,6 +10,7 @@ use crate::plot::{Figure, Panel, Series, Style};
 use crate::progress::Progress;
 use crate::rotor::{speed_sweep, Aircraft, TrimParams, TrimResult};
 use crate::section::{SectionAero, Transition};
+use crate::studies::paper::PAPER_TRIM_SPEED_KT;
 use serde::Serialize;
 
 use super::contamination::FLIGHT_TEST_DELTA_ENGINE_RPM;
@@ -154,7 +155,7 @@ impl SpeedStudy {
         s
     }
 
-    /// The figure: Δ engine rpm (with the flight-test band) and ΔF_prop against airspeed.
+    /// The figure: Δ engine rpm (with the flight test at 60 kt) and ΔF_prop against airspeed.
     pub fn figure(&self) -> Figure {
         let series = |v: &dyn Fn(&SpeedRecord) -> Option<f64>| {
             let pts: Vec<(f64, f64)> = self
@@ -164,11 +165,24 @@ impl SpeedStudy {
                 .collect();
             Series::from_pairs("computed", pts, Style::solid(0).with_points())
         };
-        let rpm = band_markers(
-            Panel::new("", "airspeed [kt]", "Δ engine rpm")
-                .with_series(series(&|r| r.delta_engine_rpm)),
-            FLIGHT_TEST_DELTA_ENGINE_RPM,
-        );
+        // The flight test is one point, at the paper's 60 kt: drawn there only, its band as
+        // an error bar.
+        let (centre, half) = FLIGHT_TEST_DELTA_ENGINE_RPM;
+        let v = PAPER_TRIM_SPEED_KT;
+        let rpm = Panel::new("", "airspeed [kt]", "Δ engine rpm")
+            .with_series(series(&|r| r.delta_engine_rpm))
+            .with_series(Series::new(
+                band_label(half),
+                vec![v, v],
+                vec![centre - half, centre + half],
+                Style::solid(7),
+            ))
+            .with_series(Series::new(
+                flight_test_label(centre),
+                vec![v],
+                vec![centre],
+                Style::points(1),
+            ));
         let thrust = Panel::new("", "airspeed [kt]", "ΔF_prop [%]")
             .with_series(series(&|r| Some(r.delta_prop_thrust_pct)));
         Figure::new(format!(

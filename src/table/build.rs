@@ -5,7 +5,7 @@
 use super::{PolarTable, TableError, TableMeta};
 use crate::geometry::Airfoil;
 use crate::limits::MAX_GRID_POINTS;
-use crate::polar::{parse_alpha_range, run_grid, GridPolar, SweepParams};
+use crate::polar::{parse_alpha_range, run_grid, GridNode, GridPolar, SweepParams};
 use crate::progress::Work;
 use crate::section::FlowCondition;
 use crate::viscous::{SharedPanels, ViscousError, ViscousParams, ViscousSolver};
@@ -145,6 +145,17 @@ pub enum BuildError {
         /// Their product.
         points: usize,
     },
+    /// More points to solve than [`MAX_GRID_POINTS`] ([`super::PointPlan::check_size`]).
+    #[error(
+        "{points} points in {polars} polars: more than the limit of {MAX_GRID_POINTS} points \
+         per run"
+    )]
+    TooManyPoints {
+        /// Distinct conditions.
+        polars: usize,
+        /// Distinct points to solve.
+        points: usize,
+    },
     /// The caller cancelled the build ([`build_table_cancellable`]).
     #[error("cancelled")]
     Cancelled,
@@ -180,25 +191,28 @@ pub fn build_table_cancellable(
 ) -> Result<PolarTable, BuildError> {
     // One panel store for the whole grid: the per-α inviscid model does not depend on Re or M.
     let store = Arc::new(SharedPanels::new(foil).map_err(BuildError::Solver)?);
-    let nodes: Vec<(f64, f64)> = grid
+    let nodes: Vec<GridNode<'_>> = grid
         .conditions()
         .iter()
-        .map(|c| (c.reynolds, c.mach))
+        .map(|c| GridNode {
+            re: c.reynolds,
+            mach: c.mach,
+            alphas: &grid.alpha_deg,
+        })
         .collect();
     let polars = run_grid(
         &nodes,
-        &grid.alpha_deg,
         threads,
         &SweepParams::default(),
-        |reynolds, mach| {
+        |i| {
             if cancel.load(Ordering::Relaxed) {
                 return Err(BuildError::Cancelled);
             }
             ViscousSolver::with_panels(
                 Arc::clone(&store),
                 ViscousParams {
-                    reynolds,
-                    mach,
+                    reynolds: nodes[i].re,
+                    mach: nodes[i].mach,
                     ..*base
                 },
             )

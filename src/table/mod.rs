@@ -10,6 +10,8 @@
 //! * `batch` — [`Batch`]: one table per airfoil of a list of files, folders and names, with
 //!   an index; shards and resumed runs.
 //! * `build` — solving a table: the viscous polars of one airfoil on a Re × M × α grid.
+//! * `points` — [`solve_points`]: scattered (α, Re, M, trip) points, one warm-started polar per
+//!   distinct condition, in the order asked.
 //! * `census` — [`TableCensus`]: points, converged, supercritical.
 //! * `grid` — [`PolarTable`]: one polar per (Re, M) node, metadata, validation, accessors.
 //! * `lookup` — the α curve of one polar (monotone cubic, gaps bridged) and the
@@ -86,6 +88,7 @@ mod io;
 mod lift_slope;
 mod lookup;
 mod meta;
+mod points;
 mod post_stall;
 mod summary;
 mod unsteady_aero;
@@ -112,6 +115,7 @@ pub use io::{
 };
 pub use lift_slope::{trusted, STALL_SLOPE_FRACTION};
 pub use meta::TableMeta;
+pub use points::{solve_points, PointPlan, PointQuery};
 pub use post_stall::PostStallParams;
 pub use summary::{
     summarize, summary_csv, summary_json, summary_text, PolarSummary, SummaryRow, SUMMARY_COLUMNS,

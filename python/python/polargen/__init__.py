@@ -12,15 +12,20 @@ NumPy arrays in and out.
 * :class:`Airfoil` — ``naca``, ``named`` (what ``--airfoil`` accepts), ``from_file``,
   ``from_coordinates``; ``coordinates``, ``x``, ``y``.
 * :func:`polar` — one polar (:class:`Polar`: NumPy columns, ``to_pandas()``).
+* :func:`aero` — the coefficients at any points (α, Re, M, trips as NumPy arrays,
+  broadcast), solved as warm-started polars in parallel (:class:`Aero`).
+* :mod:`polargen.plot` — the figures of ``polargen plot`` with matplotlib
+  (``Polar.plot()``, ``plot.polars([...])``).
 * :func:`point` — one operating point at α or at a target Cl with its surface and wake
   distributions (:class:`Point`).
 * :func:`table` — a Re × M × α table (:class:`Table`) with progress (plain lines on stderr
   by default, :class:`PlainProgress`, or a callback);
   :meth:`Table.read`, :meth:`Table.write` in every CLI format; :meth:`Table.lookup`
   vectorised, with the clamping/bridging/post-stall flags and the 360° extension.
-* :mod:`polargen.rotor` — the gyroplane: ``Aircraft.read``, ``trim``, ``takeoff`` with the
-  fields of ``gyro trim --json`` / ``gyro takeoff --json``; ``Rotor.read``, ``autorotate``
-  (the rotor alone in a tunnel, ``gyro autorotate --json``).
+* :mod:`polargen.rotor` — the gyroplane: ``Aircraft.read``, ``trim``, ``takeoff``,
+  ``sweep`` (trims over an array of speeds), ``compare`` (against the paper) and ``study``
+  (``gyro study …``); ``Rotor.read``, ``autorotate`` (the rotor alone in a tunnel); with the
+  fields of the ``gyro … --json`` output, as records or DataFrames.
 
 Errors are exceptions with the command-line tools' one-line messages: ``ValueError`` for bad
 input, ``OSError`` (``FileNotFoundError``, …) for files, :class:`NotConvergedError` when a
@@ -38,10 +43,12 @@ import numpy as np
 
 from . import _polargen
 from ._polargen import Airfoil, NotConvergedError
+from ._aero import Aero, aero
 from ._results import Distribution, Lookup, Point, Polar
 from ._table import Table
 
 __all__ = [
+    "Aero",
     "Airfoil",
     "Distribution",
     "Lookup",
@@ -50,9 +57,11 @@ __all__ = [
     "Point",
     "Polar",
     "Table",
+    "aero",
     "alpha_range",
     "point",
     "polar",
+    "plot",
     "rotor",
     "table",
     "DEFAULT_ALPHA",
@@ -112,12 +121,31 @@ def _axis(name: str, values: Union[float, Sequence[float], np.ndarray]) -> list:
     return array.reshape(-1).tolist()
 
 
+def _scalar(name: str, value: object, several: str) -> float:
+    """``value`` as one number; a list, an array or text names the argument and says where
+    several values go (``several``)."""
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name}: expected one number, got {type(value).__name__}")
+    if np.ndim(value) != 0:
+        raise TypeError(f"{name}: expected one number, got {type(value).__name__} of "
+                        f"{np.size(value)} values; {several}")
+    try:
+        return float(value)  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        raise TypeError(f"{name}: expected a number, got {type(value).__name__}") from None
+
+
+_SEVERAL = "for several values use pg.table(...) (a Re x M grid) or pg.aero(...) (any points)"
+
+
 def _transition(xtr: Transition) -> Tuple[float, float]:
     if isinstance(xtr, (tuple, list)):
         if len(xtr) != 2:
             raise ValueError(f"xtr: expected one value or (top, bottom), got {len(xtr)} values")
-        return float(xtr[0]), float(xtr[1])
-    return float(xtr), float(xtr)
+        return (_scalar("xtr", xtr[0], "give (top, bottom)"),
+                _scalar("xtr", xtr[1], "give (top, bottom)"))
+    value = _scalar("xtr", xtr, "give one value or (top, bottom); pg.aero takes arrays")
+    return value, value
 
 
 class PlainProgress:
@@ -241,7 +269,8 @@ def polar(
     """
     top, bot = _transition(xtr)
     result = _polargen.table(
-        _airfoil(airfoil), [float(re)], [float(mach)], _alphas(alpha), top, bot,
+        _airfoil(airfoil), [_scalar("re", re, _SEVERAL)], [_scalar("mach", mach, _SEVERAL)],
+        _alphas(alpha), top, bot,
         _ncrit(ncrit, ncrit_top, ncrit_bot), int(panels), float(tolerance), int(threads), None,
     )
     return Table(result).polars()[0]
@@ -268,9 +297,11 @@ def point(
     converge raises :class:`NotConvergedError`.
     """
     top, bot = _transition(xtr)
+    several = "pg.point solves one operating point; use pg.polar or pg.aero for several"
     result = _polargen.point(
-        _airfoil(airfoil), float(re), float(mach),
-        None if alpha is None else float(alpha), None if cl is None else float(cl),
+        _airfoil(airfoil), _scalar("re", re, several), _scalar("mach", mach, several),
+        None if alpha is None else _scalar("alpha", alpha, several),
+        None if cl is None else _scalar("cl", cl, several),
         top, bot, _ncrit(ncrit, ncrit_top, ncrit_bot), int(panels), float(tolerance),
     )
     return Point(float(re), float(mach), result)
@@ -313,4 +344,4 @@ def table(
     return Table(result)
 
 
-from . import rotor  # noqa: E402  (the rotor module uses Table)
+from . import plot, rotor  # noqa: E402  (they use Table and Polar)

@@ -172,3 +172,27 @@ def point(
     airfoil: Airfoil, re: float, mach: float, alpha: Optional[float], cl: Optional[float],
     xtr_top: float, xtr_bot: float, ncrit: Tuple[float, Optional[float], Optional[float]], panels: int, tolerance: float,
 ) -> Dict[str, Dict[str, np.ndarray]]: ...
+def aero(
+    airfoil: Airfoil, alpha: List[float], re: List[float], mach: List[float],
+    xtr_top: List[float], xtr_bot: List[float],
+    ncrit: Tuple[float, Optional[float], Optional[float]], panels: int, tolerance: float,
+    threads: int, progress: Optional[Callable[[int, int], object]],
+) -> Dict[str, np.ndarray]:
+    """The points (α, Re, M, trips) solved as warm-started polars per distinct condition:
+    the columns of a polar, one value per point in the order given."""
+def polar_figure(
+    curves: List[Tuple[PolarTable, float, float]], labels: Optional[List[str]],
+    title: Optional[str], cd_axis: str,
+) -> str:
+    """JSON of the ``polargen plot`` figure of the polars at (re, mach) of each table."""
+def rotor_sweep(
+    aircraft: Aircraft, table: PolarTable, speeds_kt: List[float], mass_kg: Optional[float]
+) -> Tuple[str, List[str]]: ...
+def rotor_compare(aircraft: Aircraft, clean: PolarTable, contaminated: PolarTable) -> str: ...
+def rotor_study(
+    kind: str, aircraft: PathLike, airfoil: Optional[str], airfoils: Optional[List[str]],
+    trips: Optional[List[float]], ncrits: Optional[List[float]],
+    outboard: Optional[List[float]], inboard: Optional[List[float]], xtr: Optional[float],
+    speeds_kt: Optional[List[float]], areas_m2: Optional[List[float]],
+    out: Optional[PathLike], cache: Optional[PathLike],
+) -> Tuple[str, List[str], List[str]]: ...

@@ -66,6 +66,8 @@ class Polar:
     xsep_top: np.ndarray
     xsep_bot: np.ndarray
     massive_separation: np.ndarray
+    #: The core table the polar belongs to (set by :class:`Table`; used by :meth:`plot`).
+    _table: Any = None
 
     def __init__(self, re: float, mach: float, columns: Dict[str, np.ndarray],
                  meta: Dict[str, Any]) -> None:
@@ -126,6 +128,14 @@ class Polar:
         frame.insert(0, "mach", self.mach)
         frame.insert(0, "re", self.re)
         return frame
+
+    def plot(self, label: Optional[str] = None, title: Optional[str] = None,
+             cd_axis: Any = "auto", fig: Any = None):
+        """This polar drawn as ``polargen plot`` draws it, with matplotlib
+        (:func:`polargen.plot.polars`); returns the matplotlib figure."""
+        from . import plot
+
+        return plot.polars([self], None if label is None else [label], title, cd_axis, fig)
 
 
 class Distribution:

@@ -116,15 +116,24 @@ class Table:
     def polars(self) -> List[Polar]:
         """Every polar, Re-major (``index = i_re·len(mach) + i_mach``)."""
         meta = self.meta
-        return [Polar(re, mach, columns, meta) for re, mach, columns in self._core.polars()]
+        return [self._polar(re, mach, columns, meta)
+                for re, mach, columns in self._core.polars()]
+
+    def _polar(self, re: float, mach: float, columns: Dict[str, np.ndarray],
+               meta: Dict[str, Any]) -> Polar:
+        """A polar of this table that knows its table (for :meth:`Polar.plot`)."""
+        polar = Polar(re, mach, columns, meta)
+        polar._table = self._core
+        return polar
 
     def polar(self, re: float, mach: float) -> Polar:
         """The polar at the node (``re``, ``mach``) (relative tolerance 1e-9)."""
         found = self._core.polar(float(re), float(mach))
         if found is None:
-            raise KeyError(f"no polar at Re {re:g}, M {mach:g} (axes: Re {list(self.re)}, "
-                           f"M {list(self.mach)})")
-        return Polar(*found, self.meta)
+            axis = lambda values: ", ".join(f"{v:g}" for v in values)  # noqa: E731
+            raise KeyError(f"no polar at Re {re:g}, M {mach:g} (axes: Re {axis(self.re)}; "
+                           f"M {axis(self.mach)})")
+        return self._polar(*found, self.meta)
 
     def lookup(self, alpha, re, mach) -> Lookup:
         """Section coefficients at angles ``alpha`` [deg] (any value, wrapped to ±180°),

@@ -6,7 +6,12 @@
 >>> t.rotor_rpm, t["engine_rpm"]                                       # doctest: +SKIP
 
 Results hold exactly the fields ``gyro trim --json`` and ``gyro takeoff --json`` print (a
-mapping: ``result["rotor_rpm"]``, and attributes: ``result.rotor_rpm``).
+mapping: ``result["rotor_rpm"]``, and attributes: ``result.rotor_rpm``). Runs of many results
+— ``Aircraft.sweep`` (``gyro sweep``), :func:`compare` (``gyro compare``), :func:`study`
+(``gyro study``) — return :class:`Records` of them, with ``to_pandas()``:
+
+>>> ac.sweep(table, speeds_kt=range(30, 95, 5)).to_pandas()           # doctest: +SKIP
+>>> pg.rotor.study("speed", "aircraft/mtosport.toml").to_pandas()      # doctest: +SKIP
 
 The rotor alone in a wind tunnel (``gyro autorotate``):
 
@@ -20,7 +25,7 @@ from __future__ import annotations
 import json
 import os
 import warnings
-from typing import Any, Dict, Iterator, List, Mapping, Optional, Union
+from typing import Any, Dict, Iterable, Iterator, List, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
@@ -29,8 +34,8 @@ from ._results import _pandas
 from ._table import Table
 
 __all__ = [
-    "Aircraft", "AutorotationResult", "Rotor", "TakeoffResult", "TrimResult", "autorotate",
-    "takeoff", "trim",
+    "Aircraft", "AutorotationResult", "Records", "Rotor", "TakeoffResult", "TrimResult",
+    "autorotate", "compare", "study", "sweep", "takeoff", "trim",
 ]
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -92,6 +97,29 @@ class TakeoffResult(_Fields):
     def history_to_pandas(self):
         """The time history as a ``pandas.DataFrame``."""
         return _pandas().DataFrame(self.history)
+
+
+class Records(List[Mapping[str, Any]]):
+    """Results with the fields of a ``gyro … --json`` array, one mapping per record (a trim,
+    a study setting, a row of the comparison): a list, with :meth:`to_pandas` for a
+    DataFrame whose columns are the JSON keys. ``notes`` holds what ``gyro`` prints beside
+    the records (also issued as warnings)."""
+
+    def __init__(self, records: Iterable[Mapping[str, Any]] = (),
+                 notes: Optional[List[str]] = None) -> None:
+        super().__init__(records)
+        self.notes: List[str] = list(notes or [])
+        #: Files a study wrote (``out``).
+        self.files: List[str] = []
+
+    def to_pandas(self) -> Any:
+        """One row per record, the JSON keys as columns."""
+        return _pandas().DataFrame([dict(r) for r in self])
+
+
+def _warn(notes: List[str]) -> None:
+    for note in notes:
+        warnings.warn(note, UserWarning, stacklevel=3)
 
 
 class AutorotationResult(_Fields):
@@ -192,6 +220,18 @@ class Aircraft:
                                            None if mass_kg is None else float(mass_kg))
         return TakeoffResult(json.loads(text), history)
 
+    def sweep(self, table: Table, speeds_kt: Union[float, Sequence[float], np.ndarray],
+              mass_kg: Optional[float] = None) -> Records:
+        """Level-cruise trims at each airspeed of ``speeds_kt`` [kt] (a list or array) with
+        the blade section ``table``, at ``mass_kg`` (the preset's when None), ISA sea level,
+        as ``gyro sweep``: a :class:`Records` of :class:`TrimResult` (the speeds that trim, in
+        increasing speed; a speed that does not is left out and named in ``notes``)."""
+        speeds = [float(v) for v in np.atleast_1d(np.asarray(speeds_kt, dtype=float)).ravel()]
+        text, notes = _polargen.rotor_sweep(self._core, _core(table), speeds,
+                                            None if mass_kg is None else float(mass_kg))
+        _warn(notes)
+        return Records((TrimResult(t, []) for t in json.loads(text)), notes)
+
     def __repr__(self) -> str:
         return f"Aircraft({self.name!r}, {self.mass_kg:g} kg)"
 
@@ -211,6 +251,54 @@ def trim(aircraft: Aircraft, table: Table, speed_kt: float = 60.0,
 def takeoff(aircraft: Aircraft, table: Table, mass_kg: Optional[float] = None) -> TakeoffResult:
     """:meth:`Aircraft.takeoff` of ``aircraft``."""
     return aircraft.takeoff(table, mass_kg=mass_kg)
+
+
+def sweep(aircraft: Aircraft, table: Table, speeds_kt: Union[float, Sequence[float], np.ndarray],
+          mass_kg: Optional[float] = None) -> Records:
+    """:meth:`Aircraft.sweep` of ``aircraft``."""
+    return aircraft.sweep(table, speeds_kt, mass_kg=mass_kg)
+
+
+def compare(aircraft: Aircraft, clean: Table, contaminated: Table) -> Dict[str, Records]:
+    """The clean and the contaminated rotor against the paper, as ``gyro compare --json``:
+    ``{"trim": Records, "takeoff": Records}``, each record a quantity with ``paper_clean``,
+    ``paper_contaminated``, ``ours_clean`` and ``ours_contaminated``."""
+    text = _polargen.rotor_compare(aircraft._core, _core(clean), _core(contaminated))
+    return {part: Records(rows) for part, rows in json.loads(text).items()}
+
+
+STUDIES = ("contamination", "airfoil", "speed", "wing")
+
+
+def study(kind: str, aircraft: PathLike = "aircraft/mtosport.toml", *,
+          airfoil: Optional[str] = None, airfoils: Optional[Sequence[str]] = None,
+          trips: Optional[Sequence[float]] = None, ncrits: Optional[Sequence[float]] = None,
+          outboard: Optional[Sequence[float]] = None, inboard: Optional[Sequence[float]] = None,
+          xtr: Optional[float] = None, speeds_kt: Optional[Sequence[float]] = None,
+          areas_m2: Optional[Sequence[float]] = None, out: Optional[PathLike] = None,
+          cache: Optional[PathLike] = None) -> Records:
+    """A study beyond the paper, as ``gyro study KIND --json`` (docs/studies.md): ``kind`` is
+    ``"contamination"`` (``airfoil``, ``trips``, ``ncrits``, ``outboard``, ``inboard``),
+    ``"airfoil"`` (``airfoils``), ``"speed"`` (``airfoil``, ``xtr``, ``speeds_kt``) or
+    ``"wing"`` (``airfoil``, ``areas_m2``, ``speeds_kt``, ``xtr``); settings not given are the
+    command line's defaults. The section tables are solved once and kept in ``cache`` (the
+    command line's cache folder when None): a cold run takes minutes to half an hour. ``out``
+    also writes the CSV table and the figures there. Returns a :class:`Records` of the JSON
+    records (``notes``: settings without a result), ``files`` the paths written."""
+    if kind not in STUDIES:
+        raise ValueError(f"study: unknown study {kind!r} (one of {', '.join(STUDIES)})")
+    def floats(v: Optional[Sequence[float]]) -> Optional[List[float]]:
+        return None if v is None else [float(x) for x in np.atleast_1d(np.asarray(v, float))]
+
+    text, notes, written = _polargen.rotor_study(
+        kind, os.fspath(aircraft), airfoil, None if airfoils is None else list(airfoils),
+        floats(trips), floats(ncrits), floats(outboard), floats(inboard),
+        None if xtr is None else float(xtr), floats(speeds_kt), floats(areas_m2),
+        None if out is None else os.fspath(out), None if cache is None else os.fspath(cache))
+    _warn(notes)
+    records = Records(json.loads(text), notes)
+    records.files = [os.fspath(p) for p in written]
+    return records
 
 
 def autorotate(rotor: Rotor, table: Table, alpha_deg: float, speed_m_s: Optional[float] = None,

@@ -374,7 +374,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             };
             let outcome = write_report(&inputs, &TOOL.progress())?;
             for path in &outcome.written {
-                *buf += &format!("wrote {}\n", path.display());
+                TOOL.say(format!("wrote {}", path.display()));
             }
             flush_stdout(buf)?;
             outcome.notes.iter().for_each(|n| TOOL.say(n));
