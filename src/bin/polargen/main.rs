@@ -35,9 +35,9 @@ use polargen::progress::Progress;
 use polargen::section::{Transition, FREE_XTR};
 use polargen::table::check_table_output;
 use polargen::table::{
-    build_table, flap_sweep, read_table_with, summary_csv, summary_json, summary_text,
-    with_cd_max, write_table, Batch, BatchSettings, GridSpec, PolarTable, ReadOptions,
-    TableFormat, DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
+    build_table, flap_sweep, read_table_with, summary_csv, summary_json, summary_text, with_cd_max,
+    write_table, Batch, BatchSettings, GridSpec, PolarTable, ReadOptions, TableFormat,
+    DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
 };
 use polargen::viscous::distributions::write_distributions_file;
 use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};

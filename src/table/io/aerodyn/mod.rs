@@ -55,8 +55,8 @@ mod write;
 
 pub(crate) use read::looks_like_aerodyn;
 pub use read::parse_aerodyn;
-pub use write::write_aerodyn;
 pub(crate) use write::mach_path;
+pub use write::write_aerodyn;
 
 use crate::table::{PolarTable, PostStallParams, TableMeta};
 use serde::{Deserialize, Serialize};
