@@ -183,6 +183,14 @@ pub(super) fn flight_test_section(o: &mut String, ac: &Aircraft, rotor: &RotorRe
          *Helicopter Theory*, ch. 5); `none` drops it (sensitivity table).",
         Change::YawedFlow(ac.rotor.yawed_flow).value()
     );
+    outln!(
+        o,
+        "- **Inflow `{}`:** with `drees`, Glauert's mean induced velocity with Drees' linear \
+         fore-aft and lateral gradients (Leishman, ch. 10); on the PCA-2's flight test (NACA \
+         Report 487, section \"The rotor model on a second rotor\") it gives the lateral \
+         flapping that uniform inflow misses. `glauert` (uniform) is in the sensitivity table.",
+        Change::Inflow(ac.rotor.inflow).value()
+    );
     outln!(o);
     outln!(o, "### Propeller");
     outln!(o);
