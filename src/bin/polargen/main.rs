@@ -180,9 +180,10 @@ fn grid_request(cli: &GridArgs) -> Result<(GridSpec, ViscousParams)> {
 /// The viscous polar(s) or table; with `--flap-deg` one table per flap deflection.
 fn run_viscous(cli: &RunArgs) -> Result<()> {
     let (grid, base) = grid_request(&cli.grid)?;
+    let out = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
+    check_output_path(out).context("--out")?;
     let format =
         TableFormat::for_output(cli.format, cli.out.as_deref()).context("--format/--out")?;
-    let out = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
     let ops = cli.grid.shape.ops();
     let sweep = FlapSweep::new(&ops, cli.flap_deg.as_deref(), out, format)?;
     sweep
