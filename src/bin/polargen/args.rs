@@ -292,6 +292,9 @@ pub struct RunArgs {
 
     /// Flap sweep: one table per deflection [deg], comma-separated, about the hinge of --flap
     /// X:Y; each file named <stem>_flap<DEG><ext> (the deflection is the table's flap_deg).
+    /// With --format aerodyn several deflections go together: one file per Re and Mach
+    /// (<stem>_Re<RE>_M<MACH><ext>; --out itself for one), holding one table per deflection
+    /// in increasing order, its UserProp the deflection (OpenFAST's AFTabMod 3).
     #[arg(
         long,
         value_name = "LIST",
