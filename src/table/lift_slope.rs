@@ -104,9 +104,8 @@ pub(crate) fn attached_fit(alpha_deg: &[f64], cl: &[f64]) -> Option<AttachedFit>
         match (k < high && steep(k), start) {
             (true, None) => start = Some(k),
             (false, Some(s)) => {
-                let wider = best.map_or(true, |(a, b)| {
-                    alpha_deg[k] - alpha_deg[s] > alpha_deg[b] - alpha_deg[a]
-                });
+                let wider = best
+                    .is_none_or(|(a, b)| alpha_deg[k] - alpha_deg[s] > alpha_deg[b] - alpha_deg[a]);
                 if wider {
                     best = Some((s, k));
                 }

@@ -163,7 +163,7 @@ pub fn solve_points(
     Ok(plan
         .slots
         .iter()
-        .map(|&(i, at)| polars[i].points[at].clone())
+        .map(|&(i, at)| polars[i].points[at])
         .collect())
 }
 
