@@ -1,12 +1,15 @@
-//! C81 both ways: the reader (round trip of the writer, shipped files, MBDyn-style fields
-//! without blanks, errors), one decimal count per block with negatives as `-.0100`, one-Mach
-//! tables as two identical columns, and the post-stall Cd_max of the written extension.
+//! C81 both ways: the writer's layout (header counts, continuation lines, one file per Re or
+//! one at a chosen Re, α lists thinned to 99 rows), the reader (round trip of the writer,
+//! shipped files, MBDyn-style fields without blanks, errors), one decimal count per block
+//! with negatives as `-.0100`, one-Mach tables as two identical columns, and the post-stall
+//! Cd_max of the written extension.
 
 mod table_support;
 
 use polargen::section::SectionAero;
 use polargen::table::{
-    parse_c81, read_lookup_table, read_table, with_cd_max, write_table, PolarTable, TableFormat,
+    parse_c81, read_lookup_table, read_table, with_cd_max, write_c81, write_table, C81Options,
+    PolarTable, TableFormat,
 };
 use std::path::Path;
 use table_support::*;
@@ -173,4 +176,170 @@ fn cd_max_sets_the_broadside_drag_of_the_written_extension() {
     let l = back.lookup(90.0, 1e6, 0.0);
     assert!((l.cd - 1.3).abs() < 1e-3, "cd(90°) = {}", l.cd);
     assert!(with_cd_max(analytic_table(), Some(0.0)).is_err());
+}
+
+/// Split a C81 line into 7-character fields, checking the layout.
+fn fields(line: &str) -> Vec<&str> {
+    assert_eq!(
+        line.len() % 7,
+        0,
+        "line length {} not a multiple of 7: {line:?}",
+        line.len()
+    );
+    (0..line.len() / 7)
+        .map(|k| &line[7 * k..7 * k + 7])
+        .collect()
+}
+
+#[test]
+fn c81_structure() {
+    // 11 Mach numbers: every block row needs a continuation line (9 values per line).
+    let mach: Vec<f64> = (0..11).map(|k| 0.05 * k as f64).collect();
+    let alphas = alpha_range(-8.0, 14.0, 0.5);
+    let polars = mach
+        .iter()
+        .map(|&m| analytic_polar(1e6, m, &alphas))
+        .collect();
+    let t = PolarTable::new(meta("NACA 8-H-12"), vec![1e6], mach.clone(), polars).unwrap();
+    let dir = scratch("c81");
+    let path = dir.join("deep/er/t.c81");
+    assert_eq!(write_table(&t, &path, None).unwrap(), vec![path.clone()]);
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(!text.contains("-0.000"));
+    let lines: Vec<&str> = text.lines().collect();
+    let head = lines[0];
+    assert_eq!(head.len(), 42);
+    assert_eq!(&head[..30], "NACA 8-H-12 Re1e6             ");
+    let counts: Vec<usize> = (0..6)
+        .map(|k| head[30 + 2 * k..32 + 2 * k].trim().parse().unwrap())
+        .collect();
+    let (nm, na) = (counts[0], counts[1]);
+    assert_eq!(counts, vec![nm, na, nm, na, nm, na]);
+    assert_eq!(nm, 11);
+    // α rows: −180…−20 every 10° (−10 is within half a step of −8), the 45 computed α,
+    // 20…180 every 10°, and 20 more that split the widest extension gaps.
+    assert_eq!(na, 99);
+    assert_eq!(lines.len(), 1 + 3 * (2 + 2 * na));
+    let mut k = 1;
+    let mut alpha_seen = Vec::new();
+    for block in 0..3 {
+        // Mach row: 7 blanks + 9 Mach numbers, continuation 7 blanks + 2.
+        let f1 = fields(lines[k]);
+        let f2 = fields(lines[k + 1]);
+        assert_eq!((f1.len(), f2.len()), (10, 3));
+        assert!(f1[0].trim().is_empty() && f2[0].trim().is_empty());
+        let m: Vec<f64> = f1[1..]
+            .iter()
+            .chain(&f2[1..])
+            .map(|s| s.trim().parse().unwrap())
+            .collect();
+        assert_eq!(
+            m,
+            mach.iter()
+                .map(|v| (v * 1000.0).round() / 1000.0)
+                .collect::<Vec<_>>()
+        );
+        k += 2;
+        for _ in 0..na {
+            let f1 = fields(lines[k]);
+            let f2 = fields(lines[k + 1]);
+            assert_eq!((f1.len(), f2.len()), (10, 3));
+            assert!(f2[0].trim().is_empty());
+            let a: f64 = f1[0].trim().parse().unwrap();
+            if block == 0 {
+                alpha_seen.push(a);
+            }
+            let vals: Vec<f64> = f1[1..]
+                .iter()
+                .chain(&f2[1..])
+                .map(|s| {
+                    assert!(s.starts_with(' '), "field {s:?} has no leading blank");
+                    s.trim().parse().unwrap()
+                })
+                .collect();
+            for (j, v) in vals.iter().enumerate() {
+                let l = t.lookup(a, 1e6, mach[j]);
+                let expect = [l.cl, l.cd, l.cm][block];
+                assert!(
+                    (v - expect).abs() <= 5e-4,
+                    "block {block} α {a} M {}",
+                    mach[j]
+                );
+            }
+            k += 2;
+        }
+    }
+    assert_eq!(alpha_seen[0], -180.0);
+    assert_eq!(*alpha_seen.last().unwrap(), 180.0);
+    assert!(alpha_seen.windows(2).all(|w| w[1] > w[0]));
+    for a in &alphas {
+        assert!(alpha_seen.contains(a), "computed α {a} missing");
+    }
+    // The extension is sampled at most every 10°, and more finely next to the computed range.
+    let gaps: Vec<f64> = alpha_seen.windows(2).map(|w| w[1] - w[0]).collect();
+    assert!(gaps.iter().all(|&g| g <= 10.0 + 1e-9));
+    let k = alpha_seen.iter().position(|&a| a == -8.0).unwrap();
+    assert!(alpha_seen[k] - alpha_seen[k - 1] < 5.0);
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn c81_one_file_per_re_or_at_a_chosen_re() {
+    let t = analytic_table();
+    let dir = scratch("c81re");
+    let files = write_table(&t, &dir.join("foil.c81"), None).unwrap();
+    assert_eq!(
+        files_in(&dir),
+        vec!["foil_Re1e6.c81", "foil_Re2e6.c81", "foil_Re5e5.c81"]
+    );
+    assert_eq!(files.len(), 3);
+    let path = dir.join("at.c81");
+    let opts = C81Options {
+        re: Some(1.4e6),
+        ..C81Options::default()
+    };
+    assert_eq!(write_c81(&t, &path, &opts).unwrap(), vec![path.clone()]);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let first_row = text.lines().nth(2).unwrap();
+    let f = fields(first_row);
+    assert_eq!(f[0].trim(), "-180.00");
+    let bad = C81Options {
+        re: Some(-1.0),
+        ..C81Options::default()
+    };
+    assert_eq!(
+        write_c81(&t, &dir.join("bad.c81"), &bad)
+            .unwrap_err()
+            .to_string(),
+        "Re must be positive and at most 1e10, got -1"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
+#[test]
+fn c81_thins_long_alpha_lists_to_99_rows() {
+    let alphas = alpha_range(-20.0, 25.0, 0.25);
+    let t = PolarTable::new(
+        meta("dense"),
+        vec![1e6],
+        vec![0.0, 0.3],
+        vec![
+            analytic_polar(1e6, 0.0, &alphas),
+            analytic_polar(1e6, 0.3, &alphas),
+        ],
+    )
+    .unwrap();
+    let dir = scratch("thin");
+    let path = dir.join("dense.c81");
+    let one_re = C81Options {
+        re: Some(1e6),
+        outer_step_deg: 10.0,
+    };
+    write_c81(&t, &path, &one_re).unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::remove_dir_all(dir).unwrap();
+    let head = text.lines().next().unwrap();
+    let na: usize = head[32..34].trim().parse().unwrap();
+    assert!(na <= 99 && na > 80, "na {na}");
+    assert_eq!(text.lines().count(), 1 + 3 * (1 + na));
 }
