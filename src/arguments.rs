@@ -7,7 +7,7 @@
 //! aircraft ([`crate::rotor`]) and use the same [`ArgumentError`].
 
 use crate::limits::{short_number, short_text, MAX_NEWTON_TOLERANCE, MAX_RE, PANEL_NODES};
-use crate::section::{Transition, TransitionField};
+use crate::section::{Transition, TransitionField, FREE_XTR};
 use std::borrow::Cow;
 
 /// A user-given value outside its range: `<name> <value>: <rule>` on one line (`<name>: <rule>`
@@ -97,6 +97,20 @@ pub struct TransitionArgs<'a> {
     pub xtr_top: (&'a str, f64),
     /// Trip x/c of the lower surface (`--xtr` or `--xtr-bot`).
     pub xtr_bot: (&'a str, f64),
+}
+
+/// The trips of `--xtr` (both surfaces), else of `--xtr-top` and `--xtr-bot` (a surface not
+/// given is free): the flag and value of each surface, as [`TransitionArgs`] takes them.
+pub fn trip_flags(
+    xtr: Option<f64>,
+    xtr_top: Option<f64>,
+    xtr_bot: Option<f64>,
+) -> [(&'static str, f64); 2] {
+    match xtr {
+        Some(x) => [("--xtr", x), ("--xtr", x)],
+        None => [("--xtr-top", xtr_top), ("--xtr-bot", xtr_bot)]
+            .map(|(flag, x)| (flag, x.unwrap_or(FREE_XTR))),
+    }
 }
 
 /// The transition setting of `args`, every value checked by the setting's own rule

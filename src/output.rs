@@ -193,6 +193,13 @@ where
     }
 }
 
+/// Writes `bytes` to `path` ([`write_output`]: a regular file appears whole or not at all).
+pub fn write_output_bytes(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+    write_output(path, |w| {
+        w.write_all(bytes).map_err(|e| OutputError::io(path, e))
+    })
+}
+
 /// Writes `bytes` to standard output ([`write_output`] of `-`: an error when standard output
 /// is closed or cannot be written).
 pub fn write_stdout(bytes: &[u8]) -> Result<(), OutputError> {

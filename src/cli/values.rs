@@ -153,6 +153,12 @@ pub fn alpha_range(text: &str) -> Result<Alphas, crate::polar::RangeError> {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Alphas(pub Vec<f64>);
 
+/// `values` as a flag's comma-separated list (a default shown in the help).
+pub fn comma_list(values: Vec<f64>) -> String {
+    let text: Vec<String> = values.iter().map(f64::to_string).collect();
+    text.join(",")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

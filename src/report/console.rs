@@ -161,6 +161,19 @@ pub fn sweep(buf: &mut String, trims: &[TrimResult]) {
     }
 }
 
+/// `value` as pretty JSON with a final newline (the `--json` output of every command).
+pub fn json<T: serde::Serialize + ?Sized>(value: &T) -> Result<String, serde_json::Error> {
+    Ok(serde_json::to_string_pretty(value)? + "\n")
+}
+
+/// The blade α(ψ) curve as CSV (`psi_deg,alpha_deg`), ψ to 0.1°, α to 0.001°.
+pub fn blade_alpha(buf: &mut String, curve: &[(f64, f64)]) {
+    outln!(buf, "psi_deg,alpha_deg");
+    for (psi, a) in curve {
+        outln!(buf, "{psi:.1},{a:.3}");
+    }
+}
+
 /// Tables 3 and 4 of the paper beside ours.
 fn tables([clean, dirty]: &[PaperRun; 2]) -> [Vec<Comparison>; 2] {
     [
@@ -204,11 +217,7 @@ struct Row {
 
 /// Tables 3 and 4 as JSON: `{"trim": [rows], "takeoff": [rows]}`.
 pub fn compare_json(buf: &mut String, runs: &[PaperRun; 2]) -> Result<(), serde_json::Error> {
-    outln!(
-        buf,
-        "{}",
-        serde_json::to_string_pretty(&compare_rows(runs))?
-    );
+    buf.push_str(&json(&compare_rows(runs))?);
     Ok(())
 }
 

@@ -30,13 +30,13 @@ mod second_rotor;
 mod shipped;
 mod words;
 
+pub use figures::{rotor_figure, RotorFigure};
 pub use shipped::{
     ShippedInputs, SHIPPED_AIRCRAFT, SHIPPED_CONTAMINATED_TABLE, SHIPPED_POLARS, SHIPPED_TABLE,
 };
 
 use crate::geometry::airfoil_key;
 use crate::output::{check_output_path, OutputError, OutputSet};
-use crate::plot::rotor_plots::{power_plot, takeoff_plot};
 use crate::plot::{render_into_set, Figure, PlotError};
 use crate::progress::{Progress, Work};
 use crate::rotor::{
@@ -216,26 +216,15 @@ pub fn write_report(
     for foil in &foils {
         figure(&polar_figure_name(foil.row), &figures::polar_overlay(foil))?;
     }
-    let subject = format!("{}, {}", ac.name, foils[0].tables[0].meta().airfoil);
+    let subject = figures::subject(&ac, &foils[0].tables[0]);
     let [blade_alpha, takeoff, power_required] = ROTOR_FIGURES;
     figure(blade_alpha, &figures::fig10(&rotor, &subject))?;
-    let runs: Vec<(&str, &TakeoffResult)> =
-        CASE_LABELS.iter().copied().zip(&rotor.takeoffs).collect();
-    figure(
-        takeoff,
-        &takeoff_plot(&runs, &format!("Takeoff to 15 m — {subject}")),
-    )?;
-    let sweeps: Vec<(&str, &[TrimResult])> = CASE_LABELS
-        .iter()
-        .zip(&rotor.sweeps)
-        .map(|(l, s)| (*l, s.trims.as_slice()))
-        .collect();
+    let title = format!("Takeoff to 15 m — {subject}");
+    figure(takeoff, &figures::takeoff_figure(&rotor.takeoffs, &title))?;
+    let title = format!("Level flight, power required — {subject}");
     figure(
         power_required,
-        &power_plot(
-            &sweeps,
-            &format!("Level flight, power required — {subject}"),
-        ),
+        &figures::power_figure(&rotor.sweeps, &title),
     )?;
 
     let mut text = markdown::markdown(inputs, &ac, &foils, &rotor);

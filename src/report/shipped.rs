@@ -186,6 +186,25 @@ impl ShippedInputs {
         aircraft(&self.path(given, SHIPPED_AIRCRAFT))
     }
 
+    /// The aircraft at `aircraft` at `mass` \[kg\] (its own mass when `None`), what `check`
+    /// makes of it (flags checked against the aircraft before the table is read) and the
+    /// section table at `table`, else [`SHIPPED_TABLE`]: the inputs of a single-section command.
+    pub fn aircraft_and_table<T, E>(
+        &mut self,
+        (aircraft, table): (&Option<PathBuf>, &Option<PathBuf>),
+        mass: Option<f64>,
+        check: impl FnOnce(&Aircraft) -> Result<T, E>,
+    ) -> Result<(Aircraft, T, PolarTable), E>
+    where
+        E: From<AircraftError> + From<TableError>,
+    {
+        let mut ac = self.aircraft(aircraft)?;
+        ac.mass_kg = mass.unwrap_or(ac.mass_kg);
+        let checked = check(&ac)?;
+        let table = self.table(table, SHIPPED_TABLE)?;
+        Ok((ac, checked, table))
+    }
+
     /// The rotor of the aircraft or rotor preset at `given`, else the shipped MTOsport's.
     pub fn rotor_preset(&mut self, given: &Option<PathBuf>) -> Result<RotorPreset, AircraftError> {
         rotor_preset(&self.path(given, SHIPPED_AIRCRAFT))

@@ -79,8 +79,9 @@ pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
 pub use trim::{autorotation, trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
 pub use tunnel::{
     autorotate, autorotate_cases, autorotate_outcomes, cases_csv, check_alpha_deg, check_mu,
-    check_rpm, read_tunnel_cases, tunnel_case, Autorotation, CaseOutcome, TunnelCase,
-    TunnelCasesError, MAX_TUNNEL_CASES, MAX_TUNNEL_SPEED_M_S, TUNNEL_ALPHA_RANGE_DEG,
+    check_rpm, read_tunnel_cases, tunnel_case, tunnel_run, Autorotation, CaseOutcome,
+    NoAutorotation, TunnelCase, TunnelCasesError, MAX_TUNNEL_CASES, MAX_TUNNEL_SPEED_M_S,
+    TUNNEL_ALPHA_RANGE_DEG,
 };
 
 /// Knots to metres per second (1 kt = 1852 m / 3600 s, exact by definition).

@@ -30,7 +30,9 @@ use super::propeller::{FullThrottle, Powerplant, PropellerError};
 use super::solution::{RotorSolution, RotorWarmStart};
 use super::spanwise::BladeSection;
 use super::{rad_s_to_rpm, rpm_to_rad_s, G0};
+use crate::output::{write_output, OutputError};
 use serde::Serialize;
+use std::path::Path;
 
 /// Errors of the takeoff simulation.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -127,6 +129,15 @@ impl TakeoffResult {
         }
         w.flush()?;
         Ok(())
+    }
+
+    /// Writes the history CSV ([`write_history_csv`](Self::write_history_csv)) to `path`
+    /// (`-`: standard output), whole or not at all ([`write_output`]).
+    pub fn write_history_file(&self, path: &Path) -> Result<(), OutputError> {
+        write_output(path, |w| {
+            self.write_history_csv(w)
+                .map_err(|e| OutputError::io(path, e.into()))
+        })
     }
 }
 

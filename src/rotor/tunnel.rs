@@ -10,6 +10,7 @@
 //! a0 = β0, a1 = −β1c (the tip-path plane tilted back), b1 = −β1s (tilted towards the
 //! retreating side, ψ = 270°).
 
+use super::aircraft::RotorParams;
 use super::atmosphere::Atmosphere;
 use super::disc_loads::Rotor;
 use super::spanwise::BladeSection;
@@ -401,6 +402,31 @@ pub fn autorotate_outcomes<S: BladeSection + Sync + ?Sized>(
             },
         })
         .collect()
+}
+
+/// No case of a tunnel run found an autorotating rotor speed.
+#[derive(Debug, thiserror::Error)]
+#[error("no case found an autorotating rotor speed")]
+pub struct NoAutorotation;
+
+/// The rotor of `params` in the tunnel at ISA `altitude_m` \[m\]: every case of `cases` with
+/// `section` ([`autorotate_outcomes`], default trim settings); `say` gets each case's notes.
+/// An error when no case found an autorotating rotor speed.
+pub fn tunnel_run<S: BladeSection + Sync + ?Sized>(
+    params: &RotorParams,
+    section: &S,
+    cases: &[TunnelCase],
+    altitude_m: f64,
+    say: &dyn Fn(String),
+) -> Result<Vec<CaseOutcome>, NoAutorotation> {
+    let rotor = Rotor::from_params(params);
+    let atm = Atmosphere::isa(altitude_m);
+    let outcomes = autorotate_outcomes(&rotor, section, cases, &atm, &TrimParams::default());
+    outcomes.iter().flat_map(|o| o.notes()).for_each(say);
+    match outcomes.iter().any(CaseOutcome::found) {
+        true => Ok(outcomes),
+        false => Err(NoAutorotation),
+    }
 }
 
 /// The `error` column of a cases CSV.

@@ -38,7 +38,7 @@ use super::{
 use crate::diagnostics::error_line;
 use crate::geometry::{solver_airfoil, Airfoil, GeometryError, ShapeOp};
 use crate::output::{check_output_path, OutputError};
-use crate::progress::Work;
+use crate::progress::{Progress, Work};
 use crate::viscous::ViscousParams;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
@@ -89,6 +89,9 @@ impl FromStr for Shard {
 /// Why a batch cannot start or could not finish.
 #[derive(Debug, thiserror::Error)]
 pub enum BatchError {
+    /// Airfoils (comma-separated) without a table at the end of the run.
+    #[error("no table for {0} (see the index)")]
+    Failed(String),
     /// A shard that is not `K/N` with 1 ≤ K ≤ N.
     #[error("shard '{text}': {reason}")]
     Shard {
@@ -208,6 +211,16 @@ pub struct BatchSummary {
     pub index: PathBuf,
 }
 
+impl BatchSummary {
+    /// An error naming the airfoils without a table, if any.
+    pub fn require_all(&self) -> Result<(), BatchError> {
+        match self.failed.as_slice() {
+            [] => Ok(()),
+            names => Err(BatchError::Failed(names.join(", "))),
+        }
+    }
+}
+
 impl std::fmt::Display for BatchSummary {
     /// `tables: 3 solved, 1 kept, 0 failed; 120 of 124 points converged; index out/index.csv`.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -304,6 +317,14 @@ impl Batch {
             ),
             estimate_s: Some(s.grid.estimated_seconds(tables, threads)),
         }
+    }
+
+    /// [`run`](Self::run) reported to `progress`: one phase of [`work`](Self::work).
+    pub fn run_with_progress(&self, progress: &dyn Progress) -> Result<BatchSummary, BatchError> {
+        progress.start(&self.work());
+        let summary = self.run(|n| progress.advance(n))?;
+        progress.finish();
+        Ok(summary)
     }
 
     /// Solve (or keep) every table, writing each and the index after it; `on_points` is

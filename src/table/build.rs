@@ -3,6 +3,7 @@
 //! [`PolarTable`] with the settings that made it.
 
 use super::{PolarTable, TableError, TableMeta};
+use crate::arguments::{distinct, ArgumentError};
 use crate::geometry::Airfoil;
 use crate::limits::MAX_GRID_POINTS;
 use crate::polar::{parse_alpha_range, run_grid, GridNode, GridPolar, SweepParams};
@@ -118,6 +119,37 @@ impl GridSpec {
             alpha: self.alpha_deg.len(),
             points: self.point_count(),
         })
+    }
+
+    /// The grid of the flags `--re`, `--mach` and `--alpha` (each value checked by its
+    /// parser): the default grid when neither Re nor Mach is given, Re alone at M 0 (as
+    /// XFOIL), Mach alone refused; no axis repeats a value, and the grid holds at most
+    /// [`MAX_GRID_POINTS`] points.
+    pub fn from_flags(
+        re: Option<&[f64]>,
+        mach: Option<&[f64]>,
+        alpha_deg: Option<&[f64]>,
+    ) -> Result<Self, ArgumentError> {
+        let default = Self::default();
+        let (reynolds, mach) = match (re, mach) {
+            (Some(re), mach) => (re.to_vec(), mach.map_or(vec![0.0], <[f64]>::to_vec)),
+            (None, None) => (default.reynolds, default.mach),
+            (None, Some(_)) => Err(ArgumentError::with_text(
+                "--mach",
+                "",
+                "give the Reynolds numbers with --re too",
+            ))?,
+        };
+        distinct("--re", &reynolds)?;
+        distinct("--mach", &mach)?;
+        let grid = Self {
+            reynolds,
+            mach,
+            alpha_deg: alpha_deg.map_or(default.alpha_deg, <[f64]>::to_vec),
+        };
+        grid.check_size()
+            .map_err(|e| ArgumentError::with_text("--re, --mach, --alpha", "", e.to_string()))?;
+        Ok(grid)
     }
 }
 

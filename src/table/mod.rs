@@ -10,9 +10,13 @@
 //! * `batch` — [`Batch`]: one table per airfoil of a list of files, folders and names, with
 //!   an index; shards and resumed runs.
 //! * `build` — solving a table: the viscous polars of one airfoil on a Re × M × α grid.
+//! * `point_cases` — [`solve_point_cases`]: one operating point under several transition
+//!   settings, each solution kept whole (Cp and boundary-layer distributions).
 //! * `points` — [`solve_points`]: scattered (α, Re, M, trip) points, one warm-started polar per
 //!   distinct condition, in the order asked.
 //! * `census` — [`TableCensus`]: points, converged, supercritical.
+//! * `flap_sweep` — [`FlapSweep`]: one table, or one per flap deflection, and their outputs.
+//! * `job` — [`TableJob`]: the tables of a flap sweep solved and written (`polargen`'s job).
 //! * `grid` — [`PolarTable`]: one polar per (Re, M) node, metadata, validation, accessors.
 //! * `lookup` — the α curve of one polar (monotone cubic, gaps bridged) and the
 //!   [`SectionAero`](crate::section::SectionAero) implementation (linear in ln Re and in M
@@ -85,9 +89,11 @@ mod fixed_condition;
 mod flap_sweep;
 mod grid;
 mod io;
+mod job;
 mod lift_slope;
 mod lookup;
 mod meta;
+mod point_cases;
 mod points;
 mod post_stall;
 mod summary;
@@ -113,8 +119,10 @@ pub use io::{
     table_files, with_cd_max, write_aerodyn, write_aerodyn_flap_sweep, write_c81, write_table,
     C81Options, ReadOptions, TableFormat, TableRead, LOOKUP_ALPHA_COVER_DEG,
 };
+pub use job::{TableJob, TableJobError};
 pub use lift_slope::{trusted, STALL_SLOPE_FRACTION};
 pub use meta::TableMeta;
+pub use point_cases::{solve_point_cases, PointCaseError};
 pub use points::{solve_points, PointPlan, PointQuery};
 pub use post_stall::PostStallParams;
 pub use summary::{

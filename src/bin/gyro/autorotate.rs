@@ -1,15 +1,11 @@
 //! `gyro autorotate`: the isolated rotor in a wind tunnel ([`polargen::rotor::autorotate`]);
 //! parse, run, print.
 
-use anyhow::{bail, Result};
+use anyhow::Result;
 use clap::Args;
-use polargen::arguments::ArgumentError;
 use polargen::cli::values;
 use polargen::report::{console as print, ShippedInputs, SHIPPED_TABLE};
-use polargen::rotor::{
-    autorotate_outcomes, cases_csv, read_tunnel_cases, tunnel_case, Atmosphere, Rotor, TrimParams,
-    MAX_ISA_ALTITUDE_M,
-};
+use polargen::rotor::{cases_csv, read_tunnel_cases, tunnel_case, tunnel_run, MAX_ISA_ALTITUDE_M};
 use std::path::PathBuf;
 
 /// `gyro autorotate` options.
@@ -53,13 +49,11 @@ pub struct AutorotateArgs {
 }
 
 /// Runs `gyro autorotate`, appending its standard output to `buf`; `say` prints a note.
-pub fn run(args: AutorotateArgs, buf: &mut String, say: impl Fn(&str)) -> Result<()> {
+pub fn run(args: AutorotateArgs, buf: &mut String, say: &dyn Fn(String)) -> Result<()> {
     let mut shipped = ShippedInputs::default();
     let mut preset = shipped.rotor_preset(&args.aircraft)?;
     if let Some(pitch) = args.pitch_deg {
-        preset.rotor.incidence_deg = pitch;
-        let bad_pitch = |e| ArgumentError::new("--pitch-deg", pitch, format!("{e}"));
-        preset.rotor.validate().map_err(bad_pitch)?;
+        preset.rotor.set_pitch(pitch)?;
     }
     let cases = match &args.cases {
         Some(path) => read_tunnel_cases(path)?,
@@ -72,21 +66,12 @@ pub fn run(args: AutorotateArgs, buf: &mut String, say: impl Fn(&str)) -> Result
         )?],
     };
     let section = shipped.table(&args.table, SHIPPED_TABLE)?;
-    shipped.notes().into_iter().for_each(|n| say(&n));
-    let rotor = Rotor::from_params(&preset.rotor);
-    let atm = Atmosphere::isa(args.altitude_m);
-    let outcomes = autorotate_outcomes(&rotor, &section, &cases, &atm, &TrimParams::default());
-    outcomes
-        .iter()
-        .flat_map(|o| o.notes())
-        .for_each(|n| say(&n));
-    if !outcomes.iter().any(|o| o.found()) {
-        bail!("no case found an autorotating rotor speed");
-    }
+    shipped.notes().into_iter().for_each(say);
+    let outcomes = tunnel_run(&preset.rotor, &section, &cases, args.altitude_m, say)?;
     match (args.cases.is_some(), args.json) {
         (false, false) => print::autorotation(buf, &outcomes[0].result),
-        (false, true) => *buf += &(serde_json::to_string_pretty(&outcomes[0].result)? + "\n"),
-        (true, true) => *buf += &(serde_json::to_string_pretty(&outcomes)? + "\n"),
+        (false, true) => *buf += &print::json(&outcomes[0].result)?,
+        (true, true) => *buf += &print::json(&outcomes)?,
         (true, false) => *buf += &cases_csv(&outcomes)?,
     }
     Ok(())

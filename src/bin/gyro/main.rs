@@ -11,7 +11,7 @@ mod study;
 use anyhow::{Context, Result};
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use polargen::cli::{self, values, Tool};
-use polargen::output::{check_output_path, is_stdout, write_output, write_stdout, OutputError};
+use polargen::output::{check_output_path, is_stdout, write_stdout};
 use polargen::report::{self as paper, check_report_paths, write_report, ReportInputs};
 use polargen::report::{
     ShippedInputs, SHIPPED_AIRCRAFT, SHIPPED_CONTAMINATED_TABLE, SHIPPED_POLARS,
@@ -172,17 +172,9 @@ fn load<T>(
     check: impl FnOnce(&Aircraft) -> Result<T>,
 ) -> Result<(Aircraft, T, PolarTable)> {
     let mut shipped = ShippedInputs::default();
-    let mut ac = shipped.aircraft(&inputs.aircraft)?;
-    ac.mass_kg = mass.unwrap_or(ac.mass_kg);
-    let checked = check(&ac)?;
-    let table = shipped.table(&inputs.table, paper::SHIPPED_TABLE)?;
+    let loaded = shipped.aircraft_and_table((&inputs.aircraft, &inputs.table), mass, check)?;
     note_shipped(shipped);
-    Ok((ac, checked, table))
-}
-
-/// `value` as pretty JSON with a final newline.
-fn json<T: serde::Serialize>(value: &T) -> Result<String> {
-    Ok(serde_json::to_string_pretty(value)? + "\n")
+    Ok(loaded)
 }
 
 /// `gyro report` options.
@@ -208,14 +200,6 @@ pub struct ReportArgs {
     studies: bool,
 }
 
-/// The notes of a speed sweep on stderr, then an error if no speed trimmed.
-fn report_sweep(sweep: &SpeedSweep) -> Result<()> {
-    for note in sweep.notes() {
-        TOOL.say(note);
-    }
-    Ok(sweep.require_trims()?)
-}
-
 /// Airspeed range of a speed sweep (`gyro sweep`, `gyro plot power`).
 #[derive(Args, Debug, Clone, Copy)]
 pub struct SpeedRange {
@@ -233,13 +217,9 @@ pub struct SpeedRange {
 impl SpeedRange {
     /// The speeds of the sweep \[kt\] for `aircraft`, checked ([`checked_sweep_speeds`]).
     fn checked(&self, aircraft: &Aircraft) -> Result<Vec<f64>> {
-        let (from, to, step) = (self.from_kt, self.to_kt, self.step_kt);
-        Ok(checked_sweep_speeds(
-            from,
-            to,
-            step,
-            aircraft.rotor.cells(),
-        )?)
+        let cells = aircraft.rotor.cells();
+        let speeds = checked_sweep_speeds(self.from_kt, self.to_kt, self.step_kt, cells)?;
+        Ok(speeds)
     }
 }
 
@@ -258,7 +238,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             let t = trim_aircraft(&ac, &section, speed_kt, ac.mass_kg, altitude_m, &params)?;
             t.notes().iter().for_each(|n| TOOL.say(n));
             match json {
-                true => *buf += &self::json(&t)?,
+                true => *buf += &print::json(&t)?,
                 false => print::trim(buf, &t),
             }
         }
@@ -276,15 +256,11 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             // The history is data: when it takes standard output, the summary goes to stderr.
             let mut summary = String::new();
             match json {
-                true => summary = self::json(&t)?,
+                true => summary = print::json(&t)?,
                 false => print::takeoff(&mut summary, &t),
             }
             if let Some(path) = &history {
-                write_output(path, |w| {
-                    t.write_history_csv(w)
-                        .map_err(|e| OutputError::io(path, e.into()))
-                })
-                .context("--history")?;
+                t.write_history_file(path).context("--history")?;
             }
             match history.as_deref().is_some_and(is_stdout) {
                 true => TOOL.say_text(&summary),
@@ -317,9 +293,10 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
         } => {
             let (ac, speeds, section) = load(&inputs, mass, |ac| speeds.checked(ac))?;
             let sweep = SpeedSweep::run(&ac, &section, &speeds, None);
-            report_sweep(&sweep)?;
+            sweep.notes().into_iter().for_each(|n| TOOL.say(n));
+            sweep.require_trims()?;
             match json {
-                true => *buf += &self::json(&sweep.trims)?,
+                true => *buf += &print::json(&sweep.trims)?,
                 false => print::sweep(buf, &sweep.trims),
             }
         }
@@ -333,12 +310,9 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             let (ac, (), section) = load(&inputs, None, check)?;
             let params = TrimParams::default();
             let curve = cruise_blade_alpha(&ac, &section, speed_kt, 0.0, radius, samples, &params)?;
-            *buf += "psi_deg,alpha_deg\n";
-            for (psi, a) in curve {
-                *buf += &format!("{psi:.1},{a:.3}\n");
-            }
+            print::blade_alpha(buf, &curve);
         }
-        Command::Autorotate(args) => autorotate::run(args, buf, |n| TOOL.say(n))?,
+        Command::Autorotate(args) => autorotate::run(args, buf, &|n| TOOL.say(n))?,
         Command::Plot { kind } => plot::run(kind)?,
         Command::Completions(args) => {
             let script = cli::completions(Cli::command(), args.shell);

@@ -6,10 +6,9 @@
 use anyhow::{Context, Result};
 use clap::{Args, Subcommand};
 use polargen::cli::values;
-use polargen::plot::rotor_plots::{alpha_figure, power_plot, takeoff_plot};
 use polargen::plot::{check_image_path, render_with_legend_room};
-use polargen::rotor::{TakeoffResult, TrimResult};
-use polargen::studies::paper::{blade_alpha_cases, sweep_cases, takeoff_cases, CASE_LABELS};
+use polargen::report::{rotor_figure, RotorFigure, ShippedInputs, SHIPPED_TABLE};
+use polargen::rotor::check_blade_radius;
 use polargen::table::PolarTable;
 use std::path::PathBuf;
 
@@ -74,63 +73,34 @@ pub fn run(kind: PlotKind) -> Result<()> {
         | PlotKind::Power { cases, .. } => cases,
     };
     check_image_path(&cases.out).context("--out")?;
-    let mut shipped = polargen::report::ShippedInputs::default();
+    let mut shipped = ShippedInputs::default();
     let aircraft = shipped.aircraft(&cases.aircraft)?;
-    let mut tables: Vec<PolarTable> =
-        vec![shipped.table(&cases.clean, polargen::report::SHIPPED_TABLE)?];
+    let mut tables: Vec<PolarTable> = vec![shipped.table(&cases.clean, SHIPPED_TABLE)?];
     if cases.contaminated.is_some() {
         tables.push(shipped.table(&cases.contaminated, "")?);
     }
     crate::note_shipped(shipped);
-    let sections: Vec<&PolarTable> = tables.iter().collect();
-    let labels = &CASE_LABELS[..sections.len()];
-    let subject = format!("{}, {}", aircraft.name, tables[0].meta().airfoil);
-    let title = |default: String| cases.title.clone().unwrap_or(default);
     let figure = match &kind {
-        PlotKind::Alpha {
+        &PlotKind::Alpha {
             speed_kt,
             radius,
             samples,
             ..
         } => {
-            let (speed_kt, radius, samples) = (*speed_kt, *radius, *samples);
-            polargen::rotor::check_blade_radius("--radius", radius, &aircraft)?;
-            let curves =
-                blade_alpha_cases(&aircraft, &sections, labels, speed_kt, radius, samples)?;
-            let refs: Vec<(&str, &[(f64, f64)])> = labels
-                .iter()
-                .zip(&curves)
-                .map(|(l, c)| (*l, c.as_slice()))
-                .collect();
-            alpha_figure(
-                &refs,
-                &title(format!(
-                    "Blade α at r = {radius:.2} R, level flight at {speed_kt} kt — {subject}"
-                )),
-            )
-        }
-        PlotKind::Takeoff { .. } => {
-            let runs = takeoff_cases(&aircraft, &sections, labels)?;
-            let refs: Vec<(&str, &TakeoffResult)> = labels.iter().copied().zip(&runs).collect();
-            takeoff_plot(&refs, &title(format!("Takeoff to 15 m — {subject}")))
-        }
-        PlotKind::Power { speeds, .. } => {
-            let speeds = speeds.checked(&aircraft)?;
-            let sweeps = sweep_cases(&aircraft, &sections, labels, &speeds);
-            for sweep in &sweeps {
-                crate::report_sweep(sweep)?;
+            check_blade_radius("--radius", radius, &aircraft)?;
+            RotorFigure::Alpha {
+                speed_kt,
+                radius,
+                samples,
             }
-            let refs: Vec<(&str, &[TrimResult])> = labels
-                .iter()
-                .zip(&sweeps)
-                .map(|(l, s)| (*l, s.trims.as_slice()))
-                .collect();
-            power_plot(
-                &refs,
-                &title(format!("Level flight, power required — {subject}")),
-            )
         }
+        PlotKind::Takeoff { .. } => RotorFigure::Takeoff,
+        PlotKind::Power { speeds, .. } => RotorFigure::Power {
+            speeds_kt: speeds.checked(&aircraft)?,
+        },
     };
+    let say = |n| crate::TOOL.say(n);
+    let figure = rotor_figure(&figure, &aircraft, &tables, cases.title.as_deref(), &say)?;
     render_with_legend_room(&figure, &cases.out)?;
     Ok(())
 }

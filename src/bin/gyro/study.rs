@@ -86,22 +86,16 @@ pub enum Study {
         /// Wing areas in m² (0 = no wing): the aircraft's [wing] at its span, incidence and
         /// section.
         #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = values::number,
-              default_value = comma_list(WingOptions::default().areas_m2))]
+              default_value = values::comma_list(WingOptions::default().areas_m2))]
         areas: Vec<f64>,
         /// Airspeeds in knots.
         #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = values::speed_kt,
-              default_value = comma_list(WingOptions::default().speeds_kt))]
+              default_value = values::comma_list(WingOptions::default().speeds_kt))]
         speeds: Vec<f64>,
         /// Trip location x/c on both surfaces of a contaminated rotor [default: the clean rotor].
         #[arg(long, allow_hyphen_values = true, value_parser = values::transition)]
         xtr: Option<f64>,
     },
-}
-
-/// `values` as a flag's comma-separated list (a default shown in the help).
-fn comma_list(values: Vec<f64>) -> String {
-    let text: Vec<String> = values.iter().map(f64::to_string).collect();
-    text.join(",")
 }
 
 /// The library's request for a parsed `gyro study` command line (the aircraft loaded by
@@ -145,17 +139,14 @@ pub fn request(study: Study, shipped: &mut ShippedInputs) -> anyhow::Result<Stud
             airfoil,
             xtr,
             speeds,
-        } => {
-            let speeds_kt = speeds;
-            (
-                common,
-                StudyKind::Speed {
-                    airfoil,
-                    xtr,
-                    speeds_kt,
-                },
-            )
-        }
+        } => (
+            common,
+            StudyKind::Speed {
+                airfoil,
+                xtr,
+                speeds_kt: speeds,
+            },
+        ),
     };
     Ok(StudyRequest {
         kind,

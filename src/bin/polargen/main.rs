@@ -13,34 +13,32 @@ mod args;
 
 use std::path::Path;
 use std::process::ExitCode;
-use std::time::Instant;
 
-use anyhow::{bail, Context, Result};
+use anyhow::{Context, Result};
 use args::{
     BatchArgs, Cli, Command, ConvertArgs, GridArgs, Ncrit, PlotArgs, PlotPointArgs, PointCase,
     ReadArgs, RunArgs, Shape, SummaryArgs,
 };
 use clap::CommandFactory;
 
-use polargen::arguments::{self, ArgumentError, TransitionArgs};
+use polargen::arguments::{self, trip_flags, ArgumentError, TransitionArgs};
 use polargen::cli::{self, Tool};
 use polargen::geometry::{shaped_airfoil, solver_airfoil, to_selig_string, Airfoil, ShapeOp};
 use polargen::inviscid::{inviscid_polar_csv, PanelSystem};
-use polargen::output::{check_output_path, write_output, write_stdout, OutputError, STDOUT_PATH};
+use polargen::output::{check_output_path, write_output_bytes, write_stdout, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
 use polargen::plot::table_plots::{table_overlay_figure, TableOverlay};
 use polargen::plot::{check_image_path, render};
-use polargen::polar::{parse_alpha_range, solve_operating_point, OperatingPoint, TargetClParams};
-use polargen::progress::Progress;
+use polargen::polar::OperatingPoint;
 use polargen::section::{Transition, FREE_XTR};
 use polargen::table::check_table_output;
 use polargen::table::{
-    build_table, read_table_with, summary_csv, summary_json, summary_text, with_cd_max,
+    read_table_with, solve_point_cases, summary_csv, summary_json, summary_text, with_cd_max,
     write_table, Batch, BatchSettings, FlapSweep, GridSpec, PolarTable, ReadOptions, TableFormat,
-    DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
+    TableJob,
 };
 use polargen::viscous::distributions::write_distributions_file;
-use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};
+use polargen::viscous::{ViscousParams, ViscousSolution};
 
 /// This tool's name and error prefix.
 static TOOL: Tool = Tool::new("polargen");
@@ -74,21 +72,6 @@ fn main() -> ExitCode {
     })
 }
 
-/// Mach numbers from `--mach` (each checked by its parser), or `default`; none twice.
-fn mach_list(cli: &GridArgs, default: &[f64]) -> Result<Vec<f64>> {
-    let list = cli.mach.clone().unwrap_or_else(|| default.to_vec());
-    arguments::distinct("--mach", &list)?;
-    Ok(list)
-}
-
-/// The α of `--alpha`, or the default range.
-fn alphas(cli: &GridArgs) -> Result<Vec<f64>> {
-    match &cli.alpha {
-        Some(a) => Ok(a.0.clone()),
-        None => Ok(parse_alpha_range(DEFAULT_ALPHA)?),
-    }
-}
-
 /// Load the airfoil, apply `ops` and prepare it for the solver ([`solver_airfoil`]); say on
 /// stderr what was changed.
 fn load_airfoil(spec: Option<&str>, panels: usize, rot: bool, ops: &[ShapeOp]) -> Result<Airfoil> {
@@ -107,20 +90,23 @@ fn write_geometry(spec: &str, shape: &Shape, out: &Path) -> Result<()> {
     let gap = foil.te_gap();
     let measured = foil.thickness_camber()?;
     TOOL.say(format!("{}: {measured}, TE gap {gap:.5}", foil.name));
-    write_output(out, |w| {
-        w.write_all(to_selig_string(&foil).as_bytes())
-            .map_err(|e| OutputError::io(out, e))
-    })?;
-    Ok(())
+    Ok(write_output_bytes(out, to_selig_string(&foil).as_bytes())?)
 }
 
 /// `--inviscid`: the panel solution at one Mach number.
 fn run_inviscid(cli: &RunArgs) -> Result<()> {
-    let mach = match mach_list(&cli.grid, &[0.0])?.as_slice() {
+    let mach = cli.grid.mach.clone().unwrap_or(vec![0.0]);
+    arguments::distinct("--mach", &mach)?;
+    let mach = match mach.as_slice() {
         [m] => *m,
-        _ => Err(usage("--mach", "--inviscid takes one Mach number"))?,
+        _ => Err(ArgumentError::with_text(
+            "--mach",
+            "",
+            "--inviscid takes one Mach number",
+        ))?,
     };
-    let alphas = alphas(&cli.grid)?;
+    let alphas = cli.grid.alpha.as_ref().map(|a| a.0.clone());
+    let alphas = alphas.unwrap_or_else(|| GridSpec::default().alpha_deg);
     if let Some(path) = &cli.out {
         check_output_path(path).context("--out")?;
     }
@@ -130,47 +116,15 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
     let (csv, note) = inviscid_polar_csv(&system, &alphas, mach)?;
     note.into_iter().for_each(|n| TOOL.say(n));
     let path = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
-    write_output(path, |w| {
-        w.write_all(csv.as_bytes())
-            .map_err(|e| OutputError::io(path, e))
-    })?;
-    Ok(())
-}
-
-/// The transition setting of the N_crit flags and `--xtr` or `--xtr-top`/`--xtr-bot`, checked.
-fn grid_transition(cli: &GridArgs) -> Result<Transition> {
-    let sides = match cli.xtr {
-        Some(x) => [("--xtr", x), ("--xtr", x)],
-        None => [("--xtr-top", cli.xtr_top), ("--xtr-bot", cli.xtr_bot)]
-            .map(|(flag, x)| (flag, x.unwrap_or(FREE_XTR))),
-    };
-    transition(&cli.ncrit, sides)
-}
-
-/// A usage error of `flag` (exit 2) that is not one bad value.
-fn usage(flag: &str, rule: impl Into<String>) -> ArgumentError {
-    ArgumentError::with_text(flag, "", rule.into())
+    Ok(write_output_bytes(path, csv.as_bytes())?)
 }
 
 /// The grid and solver settings of the grid flags (each value checked by its parser).
 fn grid_request(cli: &GridArgs) -> Result<(GridSpec, ViscousParams)> {
-    // The default grid only when neither axis is given; Re alone runs at M 0, as XFOIL.
-    let (reynolds, mach_default): (Vec<f64>, &[f64]) = match (&cli.re, &cli.mach) {
-        (Some(re), _) => (re.clone(), &[0.0]),
-        (None, None) => (DEFAULT_RE.to_vec(), &DEFAULT_MACH),
-        (None, Some(_)) => Err(usage("--mach", "give the Reynolds numbers with --re too"))?,
-    };
-    arguments::distinct("--re", &reynolds)?;
-    let grid = GridSpec {
-        reynolds,
-        mach: mach_list(cli, mach_default)?,
-        alpha_deg: alphas(cli)?,
-    };
-    grid.check_size()
-        .map_err(|e| usage("--re, --mach, --alpha", e.to_string()))?;
-    let transition = grid_transition(cli)?;
+    let alpha = cli.alpha.as_ref().map(|a| a.0.as_slice());
+    let grid = GridSpec::from_flags(cli.re.as_deref(), cli.mach.as_deref(), alpha)?;
     let base = ViscousParams {
-        transition,
+        transition: transition(&cli.ncrit, trip_flags(cli.xtr, cli.xtr_top, cli.xtr_bot))?,
         tolerance: cli.newton.tolerance,
         ..ViscousParams::default()
     };
@@ -189,44 +143,17 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     sweep
         .check_output(format, &grid.reynolds, &grid.mach)
         .context("--out")?;
-    let (spec, g) = (cli.airfoil.as_deref(), &cli.grid);
-    let mut together = Vec::new();
-    for member in sweep.members() {
-        let ops = &member.ops;
-        let foil = load_airfoil(spec, g.panels, g.shape.derotate, ops)?;
-        let progress = TOOL.progress();
-        progress.start(&grid.work(&foil.name, g.threads));
-        let start = Instant::now();
-        let table = build_table(&foil, g.panels, &grid, &base, g.threads, |n| {
-            progress.advance(n)
-        })?;
-        progress.finish();
-        let census = table.census();
-        if census.converged == 0 {
-            bail!("{census}: no point converged; no table written");
-        }
-        let table =
-            with_cd_max(table.with_geometry(ops), cli.extension.cd_max).context("--cd-max")?;
-        // The result first: a summary that cannot be shown must not cost it.
-        let files = match &member.out {
-            Some(path) => write_table(&table, path, Some(format))?,
-            None => {
-                together.push(table);
-                Vec::new()
-            }
-        };
-        TOOL.say(format!(
-            "{census} in {:.1} s",
-            start.elapsed().as_secs_f64()
-        ));
-        if files.len() > 1 {
-            TOOL.say(format!("wrote {} files", files.len()));
-        }
-    }
-    let files = sweep.write_together(&together)?;
-    if !files.is_empty() {
-        TOOL.say(format!("wrote {} files", files.len()));
-    }
+    let job = TableJob {
+        airfoil: cli.airfoil.as_deref().context("--airfoil is required")?,
+        derotate: cli.grid.shape.derotate,
+        panels: cli.grid.panels,
+        grid: &grid,
+        base: &base,
+        threads: cli.grid.threads,
+        cd_max: cli.extension.cd_max,
+        format,
+    };
+    job.run(&sweep, &TOOL.progress(), &|line| TOOL.say(line))?;
     Ok(())
 }
 
@@ -250,15 +177,9 @@ fn run_batch(args: &BatchArgs) -> Result<()> {
         .notes()
         .iter()
         .for_each(|n| TOOL.say(format!("note: {n}")));
-    let progress = TOOL.progress();
-    progress.start(&batch.work());
-    let summary = batch.run(|n| progress.advance(n))?;
-    progress.finish();
+    let summary = batch.run_with_progress(&TOOL.progress())?;
     TOOL.say(&summary);
-    match summary.failed.as_slice() {
-        [] => Ok(()),
-        names => bail!("no table for {} (see the index)", names.join(", ")),
-    }
+    Ok(summary.require_all()?)
 }
 
 /// The transition setting of `--ncrit`, `--ncrit-top`, `--ncrit-bot` and the trips `xtr`
@@ -373,32 +294,12 @@ fn solve_cases(args: &PointCase) -> Result<(Airfoil, Vec<(String, ViscousSolutio
         .collect::<Result<Vec<_>>>()?;
     let (spec, shape) = (Some(args.airfoil.as_str()), &args.shape);
     let foil = load_airfoil(spec, args.panels, shape.derotate, &shape.ops())?;
-    let mut runs: Vec<(String, ViscousSolution)> = Vec::new();
-    for transition in settings {
-        let params = ViscousParams {
-            transition,
-            tolerance: args.newton.tolerance,
-            ..ViscousParams::at(args.re, args.mach, FREE_XTR)
-        };
-        let mut solver = ViscousSolver::new(&foil, params).context("viscous solver")?;
-        let label = transition.trip_label();
-        let at = args.cl.map_or(
-            OperatingPoint::Alpha(args.alpha.unwrap_or(f64::NAN)),
-            OperatingPoint::Cl,
-        );
-        let solution = solve_operating_point(&mut solver, at, &TargetClParams::default())
-            .with_context(|| label.clone())?;
-        let p = &solution.point;
-        if p.massive_separation == Some(true) {
-            TOOL.say(format!(
-                "note: {label}: alpha {:.3}: massive separation (separation at x/c {:.3} upper, \
-                 {:.3} lower): converged, but outside the method's validity; the coefficients \
-                 are not results (docs/limits.md)",
-                p.alpha, p.xsep_top, p.xsep_bot
-            ));
-        }
-        runs.push((label, solution));
-    }
+    let at = args.cl.map_or(
+        OperatingPoint::Alpha(args.alpha.unwrap_or(f64::NAN)),
+        OperatingPoint::Cl,
+    );
+    let (point, tolerance) = ((args.re, args.mach), args.newton.tolerance);
+    let runs = solve_point_cases(&foil, point, at, &settings, tolerance, &|l| TOOL.say(l))?;
     Ok((foil, runs))
 }
 

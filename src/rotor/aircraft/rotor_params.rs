@@ -3,6 +3,7 @@
 
 use super::checks::{in_range, non_negative, positive};
 use super::AircraftError;
+use crate::arguments::ArgumentError;
 use crate::input::read_input;
 use crate::limits::{AZIMUTH_STEPS, MAX_ROTOR_CELLS, RADIAL_STRIPS};
 use crate::rotor::flapping::{FlapHinge, Hub};
@@ -164,6 +165,14 @@ impl RotorParams {
                 .collect()
         });
         Planform { stations }
+    }
+
+    /// Sets the blade pitch setting `incidence_deg` to `pitch_deg` (flag `--pitch-deg`) and
+    /// checks the rotor again ([`validate`](Self::validate)).
+    pub fn set_pitch(&mut self, pitch_deg: f64) -> Result<(), ArgumentError> {
+        self.incidence_deg = pitch_deg;
+        let bad_pitch = |e| ArgumentError::new("--pitch-deg", pitch_deg, format!("{e}"));
+        self.validate().map_err(bad_pitch)
     }
 
     /// Checks every value of the `[rotor]` table for its physical range.

@@ -1,0 +1,113 @@
+//! The table job of `polargen`: the tables of a [`FlapSweep`] solved one after another on one
+//! grid, each refused when no point converged, given its post-stall Cd_max and written — to
+//! its own output, or with the others at the end ([`FlapSweep::write_together`]).
+
+use super::{build_table, with_cd_max, write_table, BuildError, FlapSweep, GridSpec};
+use super::{TableCensus, TableError, TableFormat};
+use crate::geometry::{solver_airfoil, GeometryError};
+use crate::progress::Progress;
+use crate::viscous::ViscousParams;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// What every table of a [`TableJob`] shares.
+#[derive(Clone, Debug)]
+pub struct TableJob<'a> {
+    /// Airfoil name or coordinate file (flag `--airfoil`).
+    pub airfoil: &'a str,
+    /// Derotate the airfoil before the geometry operations.
+    pub derotate: bool,
+    /// Panel count of the solver.
+    pub panels: usize,
+    /// The Re × M × α grid.
+    pub grid: &'a GridSpec,
+    /// Solver settings (transition, tolerance) of every point.
+    pub base: &'a ViscousParams,
+    /// Worker threads (0: all cores).
+    pub threads: usize,
+    /// Broadside drag of the post-stall extension (flag `--cd-max`), else the default.
+    pub cd_max: Option<f64>,
+    /// Format of the files written.
+    pub format: TableFormat,
+}
+
+/// Why a [`TableJob`] stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum TableJobError {
+    /// The airfoil could not be read, shaped or paneled.
+    #[error("--airfoil")]
+    Airfoil(#[source] GeometryError),
+    /// A table could not be solved.
+    #[error(transparent)]
+    Build(#[from] BuildError),
+    /// No point of a table converged: nothing is written.
+    #[error("{0}: no point converged; no table written")]
+    NoneConverged(TableCensus),
+    /// The Cd_max of the extension is refused.
+    #[error("--cd-max")]
+    CdMax(#[source] TableError),
+    /// A table could not be written.
+    #[error(transparent)]
+    Write(#[from] TableError),
+}
+
+impl TableJob<'_> {
+    /// Solves and writes every table of `sweep` in its order. `progress` follows each table's
+    /// build; `say` gets the notes of reading the airfoil (`note: …`), each table's census and
+    /// time (`… in 1.2 s`, after the table is written) and the file count of a table or set
+    /// written as several files (`wrote 4 files`). Returns the files written.
+    pub fn run(
+        &self,
+        sweep: &FlapSweep,
+        progress: &dyn Progress,
+        say: &dyn Fn(String),
+    ) -> Result<Vec<PathBuf>, TableJobError> {
+        let mut together = Vec::new();
+        let mut written = Vec::new();
+        for member in sweep.members() {
+            let ops = &member.ops;
+            let (foil, notes) = solver_airfoil(self.airfoil, self.panels, self.derotate, ops)
+                .map_err(TableJobError::Airfoil)?;
+            notes.iter().for_each(|n| say(format!("note: {n}")));
+            progress.start(&self.grid.work(&foil.name, self.threads));
+            let start = Instant::now();
+            let table = build_table(
+                &foil,
+                self.panels,
+                self.grid,
+                self.base,
+                self.threads,
+                |n| progress.advance(n),
+            )?;
+            progress.finish();
+            let census = table.census();
+            if census.converged == 0 {
+                return Err(TableJobError::NoneConverged(census));
+            }
+            let table =
+                with_cd_max(table.with_geometry(ops), self.cd_max).map_err(TableJobError::CdMax)?;
+            // The result first: a summary that cannot be shown must not cost it.
+            let files = match &member.out {
+                Some(path) => write_table(&table, path, Some(self.format))?,
+                None => {
+                    together.push(table);
+                    Vec::new()
+                }
+            };
+            say(format!(
+                "{census} in {:.1} s",
+                start.elapsed().as_secs_f64()
+            ));
+            if files.len() > 1 {
+                say(format!("wrote {} files", files.len()));
+            }
+            written.extend(files);
+        }
+        let files = sweep.write_together(&together)?;
+        if !files.is_empty() {
+            say(format!("wrote {} files", files.len()));
+        }
+        written.extend(files);
+        Ok(written)
+    }
+}
