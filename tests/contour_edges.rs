@@ -41,11 +41,12 @@ fn inviscid(foil: &Airfoil, alpha: f64) -> (f64, f64) {
 
 #[test]
 fn inclined_and_flapped_contours_in_chord_units_are_used_as_given() {
-    // Before, the chord of a contour was its x-extent: the NACA 0012 rotated 10° (leading edge
-    // to trailing edge exactly 1) was scaled by 1/cos 10°, the one rotated 30° by 1/cos 30°
-    // (inviscid Cl 3.997 against XFOIL's 3.4616), the flap (20° at 75 % chord, leading edge to
-    // trailing edge 0.9887) by 1/0.985. Measured now: viscous |ΔCl| ≤ 5e-5, |ΔCd|/Cd ≤ 0.02 %,
-    // |Δx_tr| ≤ 1e-4 (x/c along the inclined chord line); inviscid |ΔCl|, |ΔCm| ≤ 5e-5.
+    // A contour already in chord units keeps its size: taking its x-extent for the chord would
+    // scale the NACA 0012 rotated 10° (leading edge to trailing edge exactly 1) by 1/cos 10°,
+    // the one rotated 30° by 1/cos 30° (inviscid Cl 3.997 against XFOIL's 3.4616), the flap
+    // (20° at 75 % chord, leading edge to trailing edge 0.9887) by 1/0.985. Measured: viscous
+    // |ΔCl| ≤ 5e-5, |ΔCd|/Cd ≤ 0.02 %, |Δx_tr| ≤ 1e-4 (x/c along the inclined chord line);
+    // inviscid |ΔCl|, |ΔCm| ≤ 5e-5.
     for (file, viscous_ref, inviscid_ref) in [
         (
             "n0012_tilt10.dat",
@@ -182,9 +183,9 @@ fn cl_cd_at_4(foil: &Airfoil) -> (f64, f64) {
 
 #[test]
 fn cad_exports_with_few_decimals_are_read() {
-    // Before: refused as "folds back … (a turn of 1°): a stray point or a spike" (the rounding
-    // staircase turns its vertices back and forth by degrees). XFOIL solves the 501-point file:
-    // Cl 0.4268, Cd 0.00733 at 4°; measured 0.42680, 0.007331.
+    // The rounding staircase of a CAD export turns its vertices back and forth by degrees; the
+    // file is read, not refused as folding back (a stray point or a spike). XFOIL solves the
+    // 501-point file: Cl 0.4268, Cd 0.00733 at 4°; measured 0.42680, 0.007331.
     let (cl, cd) = cl_cd_at_4(&read_airfoil_file(Path::new(&data("n0012_cad501.dat"))).unwrap());
     let r = xfoil_support::polar("n0012_cad501_Re1e6_M0_free_a4.csv")[0];
     assert!(
@@ -253,7 +254,7 @@ fn real_spikes_and_sawtooth_contours_are_still_refused() {
     };
     let e = parse(&print(&saw(5e-4), 4)).unwrap_err().to_string();
     assert!(e.contains("zigzags") && e.contains("sawtooth"), "{e}");
-    // The same with 1e-6 chord teeth printed with 12 decimals (before: "a turn of 0°").
+    // The same with 1e-6 chord teeth printed with 12 decimals (no "a turn of 0°").
     let e = parse(&print(&saw(1e-6), 12)).unwrap_err().to_string();
     assert!(
         e.contains("zigzags") && e.contains("turns against its sense") && !e.contains("0°)"),

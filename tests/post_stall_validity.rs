@@ -5,20 +5,12 @@
 //! (and say so), files without the flag still read.
 
 mod table_support;
-mod xfoil_support;
 
 use polargen::section::{PolarPoint, SectionAero, MASSIVE_SEPARATION_XSEP};
 use polargen::table::{parse_table, read_table, write_table, PolarTable, TableFormat};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
-use table_support::{meta, point};
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("polargen-sep-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+use table_support::{meta, point, scratch, xfoil_support};
 
 /// The table `polargen` writes for NACA 0012 at `re`, M 0, over `alpha`, as CSV in `dir`.
 fn solve(dir: &Path, re: &str, alpha: &str) -> PolarTable {

@@ -7,28 +7,8 @@ mod table_support;
 
 use polargen::table::{parse_table, write_table, PolarTable, TableFormat};
 use std::io::Write;
-use std::path::PathBuf;
-use std::process::{Command, Output};
-use table_support::{analytic_polar, meta};
-
-fn scratch(name: &str) -> PathBuf {
-    let dir =
-        std::env::temp_dir().join(format!("polargen-integrity-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn polargen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_polargen"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use table_support::cli_support::{polargen, stderr};
+use table_support::{analytic_polar, meta, scratch};
 
 #[test]
 fn a_table_of_more_rows_than_a_table_may_hold_is_refused_on_read() {

@@ -51,9 +51,9 @@ fn worst(foil: &str, xtr: f64, file: &str) -> [f64; 3] {
 
 #[test]
 fn a_trip_at_the_leading_edge_trips_where_xfoil_does() {
-    // Before: x/c = 0 matched no station interval and the solution was free transition
-    // (NACA 0012, α 4°: Cd 0.00728 against XFOIL's 0.00937). Measured now: agreement to the
-    // decimals XFOIL prints, |ΔCl| ≤ 5e-5, |ΔCd|/Cd ≤ 0.05 %, |Δx_tr| ≤ 5e-5.
+    // A trip at x/c = 0 lies in the first station interval; were it missed, the solution would
+    // be free transition (NACA 0012, α 4°: Cd 0.00728 against XFOIL's 0.00937). Measured:
+    // agreement to the decimals XFOIL prints, |ΔCl| ≤ 5e-5, |ΔCd|/Cd ≤ 0.05 %, |Δx_tr| ≤ 5e-5.
     for (foil, file) in [
         ("naca0012", "naca0012_Re1e6_M0_xtr0.csv"),
         ("naca8h12", "naca8h12_Re1e6_M0_xtr0.csv"),
@@ -102,10 +102,10 @@ fn a_trip_at_the_stagnation_point_acts_on_both_surfaces() {
 #[test]
 fn a_trip_between_the_stagnation_point_and_the_first_station_acts_there() {
     // NACA 0012, α 2, trip at 0.001: on the lower surface the stagnation point lies just
-    // upstream of the trip and the first station just downstream of it. Before, no station
-    // interval contained the trip and that surface was free (Cd 0.0084); XFOIL's transition
-    // check starts at the first interval, misses the trip as well, and does not converge.
-    // The surface is tripped at its first station, as with a trip at 0.01 (XFOIL: Cd 0.01135;
+    // upstream of the trip and the first station just downstream of it: no station interval
+    // contains the trip. Left free, that surface gives Cd 0.0084; XFOIL's transition check
+    // starts at the first interval, misses the trip as well, and does not converge. The
+    // surface is tripped at its first station, as with a trip at 0.01 (XFOIL: Cd 0.01135;
     // measured 0.01138).
     let p = solve("naca0012", 0.001, 2.0);
     assert!(p.converged);
@@ -121,8 +121,8 @@ fn a_trip_between_the_stagnation_point_and_the_first_station_acts_there() {
 #[test]
 fn every_layer_takes_the_same_transition_range() {
     // One rule: the library's solver parameters, table metadata and the argument checks
-    // accept exactly the x/c in [0, 1] and the positive N_crit (before: the studies refused 0
-    // and the solver took x/c > 1).
+    // accept exactly the x/c in [0, 1] and the positive N_crit (neither refusing 0 nor taking
+    // x/c > 1).
     let (nodes, _) = solver_airfoil("naca0012", 60, false, &[]).unwrap();
     let table = |t: Transition| {
         let meta = TableMeta {

@@ -5,7 +5,7 @@
 pub mod xfoil_support;
 
 #[path = "../cli_support/mod.rs"]
-mod cli_support;
+pub mod cli_support;
 /// A fresh, empty scratch folder (the CLI tests' one; not every table test uses it).
 #[allow(unused_imports)]
 pub use cli_support::scratch;
