@@ -181,7 +181,7 @@ fn header_counts(line: &str) -> Option<Vec<usize>> {
 }
 
 /// Parse a C81 table (see the module docs); `stem` is the file stem the Reynolds number may
-/// come from. What [`parse_c81_with`] would say in notes is dropped.
+/// come from. What `parse_c81_with` would say in notes is dropped.
 pub fn parse_c81(text: &str, stem: &str) -> Result<PolarTable, TableError> {
     parse_c81_with(text, stem, &ReadOptions::default()).map(|read| read.table)
 }
