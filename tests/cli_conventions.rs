@@ -228,7 +228,7 @@ fn a_bare_command_prints_its_help() {
 fn format_is_a_value_enum_listed_in_help_and_completions() {
     let help = text(&polargen(&["convert", "-h"]).stdout);
     assert!(
-        help.contains("[possible values: csv, json, xfoil, c81, aerodyn]"),
+        help.contains("[possible values: csv, json, jsonl, xfoil, c81, aerodyn]"),
         "{help}"
     );
     let long = text(&polargen(&["convert", "--help"]).stdout);
@@ -238,7 +238,7 @@ fn format_is_a_value_enum_listed_in_help_and_completions() {
     );
     let bash = text(&polargen(&["completions", "bash"]).stdout);
     assert!(
-        bash.contains("csv json xfoil c81 aerodyn"),
+        bash.contains("csv json jsonl xfoil c81 aerodyn"),
         "no format values offered"
     );
     // The aliases still parse.

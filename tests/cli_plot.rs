@@ -259,7 +259,7 @@ fn errors_are_one_line() {
                 "--out",
                 out,
             ],
-            "--xtr '1,x'",
+            "--xtr x: not a number",
         ),
         (
             vec![

@@ -6,11 +6,12 @@
 //!
 //! The project's acceptance bands that the model meets are asserted as set: clean
 //! rotor rpm 350 ± 15 (ours 359.7), static full-throttle thrust 2000 N ± 10 %
-//! (paper Table 1; ours 1946 N with the propeller's own thickness-interpolated sections, 2290
-//! N with one 11.7 % Clark Y table; at rest 40 % of its annuli lie beyond their table's
-//! computed α range and 70 % lean on supercritical points, and a two-dimensional polar without
+//! (paper Table 1; ours 2061 N with the propeller's own thickness-interpolated sections; at
+//! rest 85 % of its annuli lie beyond their table's usable α range — past stall, where the
+//! points are in massive separation and the 360° extension stands in — and 70 % lean on
+//! supercritical points, so the static thrust is mostly the extension's; a two-dimensional polar without
 //! rotational stall delay still under-predicts a propeller's static power: NACA Report 594
-//! propeller D at 30°: −37 %, `tests/rotor_propeller.rs`). Those it does not meet are stated
+//! propeller D at 30°: −43 %, `tests/rotor_propeller.rs`). Those it does not meet are stated
 //! here with their numbers and asserted as the measured values within a stated guard, not
 //! tuned:
 //! * Δ engine rpm clean → contaminated +200 ± 60 (the paper's model +195): ours +262 (4307 →
@@ -121,19 +122,19 @@ fn shipped_tables_against_the_flight_test_and_the_paper() {
     };
     let (tc, td) = (trim("free"), trim("xtr0.07"));
     let static_thrust = tc["static_thrust_n"].as_f64().unwrap();
-    // Band 2000 N ± 10 % (module doc): ~1946 N.
+    // Band 2000 N ± 10 % (module doc): ~2061 N.
     assert!(
         (1800.0..=2200.0).contains(&static_thrust),
         "static thrust {static_thrust}"
     );
-    // The static point's validity shares (module doc): ~40 % beyond the computed α range,
+    // The static point's validity shares (module doc): ~85 % beyond the usable α range,
     // ~70 % supercritical.
     let share = |k: &str| 100.0 * tc[k].as_f64().unwrap();
     let (beyond, supercritical) = (
         share("static_thrust_post_stall_fraction"),
         share("static_thrust_supercritical_fraction"),
     );
-    assert!((30.0..=50.0).contains(&beyond), "{beyond} %");
+    assert!((75.0..=95.0).contains(&beyond), "{beyond} %");
     assert!((55.0..=85.0).contains(&supercritical), "{supercritical} %");
     assert_eq!(static_thrust, td["static_thrust_n"].as_f64().unwrap());
     // The README states these numbers as computed here.

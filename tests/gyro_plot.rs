@@ -196,11 +196,23 @@ fn report_tables_match_the_single_commands() {
         "polar_naca8h12.svg",
         "polar_naca23012.png",
         "polar_naca23012.svg",
+        "pca2_tunnel.png",
+        "pca2_tunnel.svg",
+        "pca2_flight.png",
+        "pca2_flight.svg",
     ] {
         let len = std::fs::metadata(dir.join(name)).unwrap().len();
         assert!(len > 5_000, "{name}: {len} bytes");
     }
     let md = std::fs::read_to_string(dir.join("README.md")).unwrap();
+    // The second rotor's section with its figures.
+    for line in [
+        "## The rotor model on a second rotor",
+        "![PCA-2 in the tunnel](pca2_tunnel.png)",
+        "![PCA-2 in flight](pca2_flight.png)",
+    ] {
+        assert!(md.contains(line), "no {line:?} in the report");
+    }
     // The files written are notes on stderr, nothing on stdout.
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(

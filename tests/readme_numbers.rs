@@ -2,7 +2,7 @@
 //! computed here from the polars its figure is drawn from (`docs/naca8h12_Re1.9e6_M0.41_*.csv`,
 //! made by the README's commands): Cd at Cl = 0.8 (on the interpolated polar, as the report and
 //! the Python example read it), the best Cl/Cd and the lift-curve slope (least squares over the
-//! converged points with α in [`SLOPE_WINDOW_DEG`]). The README's paragraph is this file's
+//! usable points (converged, not in massive separation) with α in [`SLOPE_WINDOW_DEG`]). The README's paragraph is this file's
 //! output (`UPDATE_README=1 cargo test --test readme_numbers` rewrites it), so the README states
 //! the numbers the code gives; `python/examples/clean_vs_contaminated.py` computes the same
 //! polars and prints the same values.
@@ -36,7 +36,7 @@ fn polar(trip: &str) -> PolarTable {
 fn numbers(table: &PolarTable) -> Numbers {
     let (at, points) = table.polars().next().unwrap();
     let found = alpha_at_cl(table, TABLE5_CL, at.reynolds, at.mach, -10.0, 20.0).unwrap();
-    let ok: Vec<&PolarPoint> = points.iter().filter(|p| p.converged).collect();
+    let ok: Vec<&PolarPoint> = points.iter().filter(|p| p.usable()).collect();
     let best_ld = ok.iter().map(|p| p.cl / p.cd).fold(f64::MIN, f64::max);
     let window: Vec<&&PolarPoint> = ok
         .iter()

@@ -57,7 +57,10 @@ fn openfast_examples_read_whole_at_the_assumed_mach() {
         );
         // Metadata a file does not give is unknown, not invented.
         let m = t.meta();
-        assert!(m.transition.ncrit_top.is_nan() && m.transition.xtr_top.is_nan(), "{m:?}");
+        assert!(
+            m.transition.ncrit_top.is_nan() && m.transition.xtr_top.is_nan(),
+            "{m:?}"
+        );
         assert_eq!(m.thickness.is_nan(), thickness.is_none());
         if let Some(tc) = thickness {
             assert_eq!(m.thickness, tc);

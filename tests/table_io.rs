@@ -172,7 +172,7 @@ fn format_inference_and_names() {
     assert_eq!(f("b.c81").unwrap(), TableFormat::C81);
     assert_eq!(
         f("out/b.txt").unwrap_err().to_string(),
-        "cannot infer table format from 'out/b.txt' (use .csv, .json, .pol or .c81)"
+        "cannot infer table format from 'out/b.txt' (use .csv, .json, .jsonl, .pol or .c81)"
     );
     assert_eq!(
         "xfoil".parse::<TableFormat>().unwrap(),
@@ -181,7 +181,7 @@ fn format_inference_and_names() {
     assert_eq!("C81".parse::<TableFormat>().unwrap(), TableFormat::C81);
     assert_eq!(
         "xls".parse::<TableFormat>().unwrap_err().to_string(),
-        "unknown table format 'xls' (expected csv, json, xfoil, c81 or aerodyn)"
+        "unknown table format 'xls' (expected csv, json, jsonl, xfoil, c81 or aerodyn)"
     );
     // An explicit format overrides the extension.
     let dir = scratch("explicit");

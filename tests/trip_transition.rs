@@ -171,7 +171,10 @@ fn every_layer_takes_the_same_transition_range() {
                 ..ViscousParams::at(1e6, 0.0, 1.0)
             };
             assert_eq!(ViscousSolver::new(&nodes, params).is_ok(), ok, "{t:?}");
-            assert_eq!(table(t).is_ok(), ok, "{t:?}");
+            // A table's metadata may also hold unknown values (NaN: a file that does not
+            // record them, such as a C81 deck); anything else obeys the same rule.
+            let recorded = ok || (x.is_nan() && t.check_recorded().is_ok());
+            assert_eq!(table(t).is_ok(), recorded, "{t:?}");
         }
     }
     assert!(Transition::tripped(0.0).check().is_ok());
@@ -312,7 +315,10 @@ fn every_command_takes_a_trip_at_the_leading_edge() {
             &cache,
         ],
     );
-    assert!(!ok && err.contains("coverage radius 2"), "{err}");
+    assert!(
+        !ok && err.contains("--outboard 2: must be a fraction in [0, 1]"),
+        "{err}"
+    );
     // Beyond the range, every command gives the same rule.
     let rule = "must be in [0, 1] (0 = leading edge, 1 = free)";
     for (tool, args) in [

@@ -34,8 +34,8 @@ PAPER_CD_AT_08 = {"naca8h12": (0.006, 0.012), "naca23012": (0.008, 0.012)}
 
 
 def lift_slope(pol: pg.Polar, lo: float = -2.0, hi: float = 6.0) -> float:
-    """dCl/dα [1/deg]: least squares over the converged points with lo ≤ α ≤ hi."""
-    keep = pol.converged & (pol.alpha >= lo) & (pol.alpha <= hi)
+    """dCl/dα [1/deg]: least squares over the usable points with lo ≤ α ≤ hi."""
+    keep = pol.usable & (pol.alpha >= lo) & (pol.alpha <= hi)
     return float(np.polyfit(pol.alpha[keep], pol.cl[keep], 1)[0])
 
 
@@ -76,7 +76,7 @@ def main() -> None:
     colours = {"naca8h12": "tab:blue", "naca23012": "tab:red"}
     for (foil, label), table in cases.items():
         pol = table.polars()[0]
-        ok = pol.converged  # unconverged points are not results: never drawn
+        ok = pol.usable  # unconverged points and those in massive separation are not results
         kw = dict(ls=styles[label], color=colours[foil], label=f"{pol.meta['airfoil']} {label}")
         ax[0, 0].plot(pol.alpha[ok], pol.cl[ok], **kw)
         ax[0, 1].plot(pol.cd[ok], pol.cl[ok], **kw)

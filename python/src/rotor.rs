@@ -6,8 +6,9 @@ use std::path::PathBuf;
 
 use numpy::IntoPyArray;
 use polargen::rotor::{
-    autorotate, check_altitude_m, check_mass_kg, check_speed_kt, simulate_takeoff, trim_aircraft,
-    tunnel_case, Aircraft, Atmosphere, Rotor, RotorPreset, TakeoffSample, TrimParams,
+    autorotate, autorotate_outcomes, check_altitude_m, check_mass_kg, check_speed_kt,
+    simulate_takeoff, trim_aircraft, tunnel_case, Aircraft, Atmosphere, Rotor, RotorPreset,
+    TakeoffSample, TrimParams,
 };
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -210,6 +211,49 @@ impl PyRotor {
         })?;
         let a = run.map_err(|e| raise(None, e))?;
         Ok((json(&a)?, a.notes()))
+    }
+
+    /// Every tunnel case (`alpha_deg[i]`, `speed_m_s[i]`) as `gyro autorotate --cases
+    /// --json` computes them: (JSON array of the rows, with `error` for a case without
+    /// autorotation; notes). Each case is checked as the command checks a row, before any solve.
+    fn autorotate_cases(
+        &self,
+        py: Python<'_>,
+        table: &Table,
+        alpha_deg: Vec<f64>,
+        speed_m_s: Vec<f64>,
+        pitch_deg: Option<f64>,
+        altitude_m: f64,
+    ) -> PyResult<(String, Vec<String>)> {
+        check_altitude_m("altitude_m", altitude_m).map_err(|e| raise(None, e))?;
+        if alpha_deg.len() != speed_m_s.len() || alpha_deg.is_empty() {
+            return Err(pyo3::exceptions::PyValueError::new_err(format!(
+                "autorotate_cases: alpha_deg and speed_m_s need the same number of cases, at \
+                 least one (got {} and {})",
+                alpha_deg.len(),
+                speed_m_s.len()
+            )));
+        }
+        let mut params = self.inner.rotor.clone();
+        if let Some(pitch) = pitch_deg {
+            params.incidence_deg = pitch;
+            params.validate().map_err(|e| raise(Some("pitch_deg"), e))?;
+        }
+        let names = ["alpha_deg", "speed_m_s", "mu", "reference_rpm"];
+        let cases = alpha_deg
+            .iter()
+            .zip(&speed_m_s)
+            .map(|(&a, &v)| tunnel_case(a, Some(v), None, params.radius_m, names))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| raise(None, e))?;
+        let section = section(table)?;
+        let rotor = Rotor::from_params(&params);
+        let atm = Atmosphere::isa(altitude_m);
+        let outcomes = py.detach(|| {
+            shielded(|| autorotate_outcomes(&rotor, section, &cases, &atm, &TrimParams::default()))
+        })?;
+        let notes = outcomes.iter().flat_map(|o| o.notes()).collect();
+        Ok((json(&outcomes)?, notes))
     }
 
     fn __repr__(&self) -> String {

@@ -4,13 +4,13 @@
 
 use std::path::PathBuf;
 
+use polargen::progress::Silent;
 use polargen::report::console::compare_rows;
+use polargen::report::ShippedInputs;
 use polargen::rotor::check_sweep_speeds;
 use polargen::studies::contamination::ContaminationOptions;
 use polargen::studies::paper::{paper_runs, SpeedSweep};
 use polargen::studies::wing::WingOptions;
-use polargen::progress::Silent;
-use polargen::report::ShippedInputs;
 use polargen::studies::{StudyKind, StudyRequest};
 use pyo3::prelude::*;
 

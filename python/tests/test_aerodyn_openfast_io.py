@@ -85,3 +85,24 @@ def test_a_grid_gives_one_file_per_mach_with_one_table_per_re(tmp_path):
     assert len(res) == 8
     for got, want in zip(res, [1e5, 2e5, 4e5, 7e5, 1e6, 1.5e6, 2e6, 3e6]):
         assert math.isclose(got, want, rel_tol=1e-12)
+
+
+def test_a_flap_sweep_is_one_file_with_one_table_per_deflection(tmp_path):
+    """--flap-deg with --format aerodyn: one file for the one (Re, M), one table per
+    deflection, as OpenFAST's AFTabMod 3 needs them (one Re, UserProp increasing)."""
+    out = tmp_path / "flap.dat"
+    subprocess.run([polargen(), "--airfoil", "naca0012", "--re", "1e6", "--alpha", "-4:8:4",
+                    "--flap", "0.75:0", "--flap-deg", "5,-5,0", "--format", "aerodyn",
+                    "--out", str(out), "-q"], check=True)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["flap.dat"]
+    tables = read_aerodyn(out)
+    # openfast_io 5.0 reads UserProp as an integer where it can (a string otherwise).
+    assert [t["UserProp"] for t in tables] == [-5, 0, 5]
+    assert [t["Re"] for t in tables] == [1e6, 1e6, 1e6]
+    assert all(t["InclUAdata"] is True for t in tables)
+    # The symmetric section's lift at alpha 0 is the flap's: -, 0, + (thin-airfoil theory for
+    # a 25 % flap: 0.33 for 5 degrees); the zero-lift angle moves the other way.
+    cl0 = [t["Cl"][t["Alpha"].index(0.0)] for t in tables]
+    assert cl0[0] < -0.25 and abs(cl0[1]) < 1e-3 and cl0[2] > 0.25
+    assert tables[0]["alpha0"] > 1.0 and abs(tables[1]["alpha0"]) < 0.1
+    assert tables[2]["alpha0"] < -1.0

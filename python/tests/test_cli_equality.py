@@ -5,6 +5,7 @@ operating point's distributions (``plot-point --csv``), and trim/takeoff (``gyro
 from __future__ import annotations
 
 import json
+import math
 import warnings
 
 import numpy as np
@@ -188,3 +189,32 @@ def test_autorotate_has_the_fields_and_values_of_gyro_autorotate_json(cli, repo)
         assert result.notes == notes
     with pytest.raises(ValueError, match="alpha_deg"):
         rotor.autorotate(table, alpha_deg=95.0, speed_m_s=20.0)
+
+
+def test_autorotate_cases_are_the_rows_of_gyro_autorotate_cases(cli, repo, tmp_path):
+    """Three Table III cases, one of them (α −20°) without autorotation: the records are the
+    rows of ``gyro autorotate --cases --json`` (NaN where the JSON has null), in order."""
+    table = pg.Table.read(repo / "polars" / "goe429_xtr0.07.csv")
+    rotor = pg.rotor.Rotor.read(repo / "aircraft" / "pca2.toml")
+    alphas, speeds = [8.3, 4.1, -20.0], [15.7, 25.0, 20.0]
+    cases = tmp_path / "cases.csv"
+    cases.write_text("alpha_deg,speed_m_s\n" +
+                     "".join(f"{a},{v}\n" for a, v in zip(alphas, speeds)))
+    run = cli.run("gyro", "autorotate", "--aircraft", "aircraft/pca2.toml", "--table",
+                  "polars/goe429_xtr0.07.csv", "--cases", str(cases), "--json")
+    expected = json.loads(run.stdout)
+    with warnings.catch_warnings(record=True):
+        warnings.simplefilter("always")
+        records = rotor.autorotate_cases(table, alphas, speeds)
+    assert len(records) == len(expected) == 3
+    for got, want in zip(records, expected):
+        assert list(got) == list(want)
+        for key, value in want.items():
+            if value is None:
+                assert math.isnan(got[key]), key
+            else:
+                assert got[key] == value, key
+    assert records[0]["error"] == "" and records[2]["error"] != ""
+    assert list(records.to_pandas().columns) == list(expected[0])
+    with pytest.raises(ValueError, match="same number of cases"):
+        rotor.autorotate_cases(table, [8.3], [15.7, 20.0])

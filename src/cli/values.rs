@@ -163,7 +163,7 @@ mod tests {
         assert_eq!(msg(reynolds("abc").unwrap_err()), "abc | not a number");
         assert_eq!(
             msg(reynolds("0").unwrap_err()),
-            "0 | the Reynolds number must be positive"
+            "0 | the Reynolds number must be positive and at most 1e10"
         );
         assert_eq!(
             msg(panels("-1").unwrap_err()),

@@ -183,6 +183,14 @@ pub(super) fn flight_test_section(o: &mut String, ac: &Aircraft, rotor: &RotorRe
          *Helicopter Theory*, ch. 5); `none` drops it (sensitivity table).",
         Change::YawedFlow(ac.rotor.yawed_flow).value()
     );
+    outln!(
+        o,
+        "- **Inflow `{}`:** with `drees`, Glauert's mean induced velocity with Drees' linear \
+         fore-aft and lateral gradients (Leishman, ch. 10); on the PCA-2's flight test (NACA \
+         Report 487, section \"The rotor model on a second rotor\") it gives the lateral \
+         flapping that uniform inflow misses. `glauert` (uniform) is in the sensitivity table.",
+        Change::Inflow(ac.rotor.inflow).value()
+    );
     outln!(o);
     outln!(o, "### Propeller");
     outln!(o);
@@ -195,13 +203,13 @@ pub(super) fn flight_test_section(o: &mut String, ac: &Aircraft, rotor: &RotorRe
          full-throttle torque curve through the 2.43 gear; its chart is checked against NACA \
          Report 594 in `tests/rotor_propeller.rs`. Full-throttle static thrust, predicted: \
          **{} N** at {} engine rpm{}, against ≈ {TABLE1_STATIC_THRUST_N} N in the paper's \
-         Table 1 ({}). There {:.0} % of its annuli are stalled beyond their table's computed α \
-         range (their data from the tables' 360° extension: Viterna & Corrigan to 90°, then a \
+         Table 1 ({}). There {:.0} % of its annuli are stalled beyond their table's usable α \
+         range (past stall, where the tables' points are in massive separation; their data from the tables' 360° extension: Viterna & Corrigan to 90°, then a \
          flat plate of broadside drag 2.0, Hoerner) and {:.0} % lean on supercritical table \
          points (locally supersonic, outside the section method's validity): the static point \
          is where the propeller model is least sure. A two-dimensional polar without rotational \
-         stall delay under-predicts a propeller's static power (NACA 594 at 30°: −37 %, at 45°: \
-         −28 %), so the engine may turn too fast and the static thrust be over-predicted. The \
+         stall delay under-predicts a propeller's static power (NACA 594 at 30°: −43 %, at 45°: \
+         −31 %), so the engine may turn too fast and the static thrust be over-predicted. The \
          same stall modelling makes the power coefficient rise with the advance ratio at low \
          J, where NACA 594 shows it flat or falling: at {LIFTOFF_SPEED_MS} m/s the \
          full-throttle rpm has fallen to {} and the thrust to {} N ({}), a faster thrust lapse \

@@ -326,7 +326,10 @@ fn check_table_case(
 /// Reads the free and fixed-transition tables of one airfoil and looks up Table 5.
 fn load_foil(dir: &Path, row: &'static Table5Row) -> Result<FoilTables, ReportError> {
     let paths = TRANSITIONS.map(|t| dir.join(format!("{}_{t}.csv", row.stem)));
-    let [free, fixed] = [shipped::table(&paths[0])?.table, shipped::table(&paths[1])?.table];
+    let [free, fixed] = [
+        shipped::table(&paths[0])?.table,
+        shipped::table(&paths[1])?.table,
+    ];
     for ((table, path), xtr) in [&free, &fixed].iter().zip(&paths).zip(TRANSITION_XTR) {
         check_table_case(table, path, row.stem, xtr)?;
     }

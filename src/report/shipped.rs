@@ -12,8 +12,8 @@
 use crate::input::exists;
 use crate::rotor::{Aircraft, AircraftError, RotorPreset};
 use crate::table::{
-    check_lookup_table, parse_table, read_lookup_table_with, PolarTable,
-    ReadOptions, TableError, TableFormat, TableRead,
+    check_lookup_table, parse_table, read_lookup_table_with, PolarTable, ReadOptions, TableError,
+    TableFormat, TableRead,
 };
 use std::path::{Path, PathBuf};
 

@@ -288,10 +288,10 @@ pub enum TableError {
         message: String,
     },
     /// The output format cannot be inferred from a file name.
-    #[error("cannot infer table format from '{0}' (use .csv, .json, .pol or .c81)")]
+    #[error("cannot infer table format from '{0}' (use .csv, .json, .jsonl, .pol or .c81)")]
     UnknownExtension(String),
     /// An explicit format name is not known.
-    #[error("unknown table format '{0}' (expected csv, json, xfoil, c81 or aerodyn)")]
+    #[error("unknown table format '{0}' (expected csv, json, jsonl, xfoil, c81 or aerodyn)")]
     UnknownFormat(String),
     /// A format that writes several files was asked to write to standard output.
     #[error("{format} writes one file per {per}: give a file name, not standard output")]

@@ -105,13 +105,13 @@ pub use build::{
 pub use census::TableCensus;
 pub use error::TableError;
 pub use fixed_condition::{alpha_at_cl, sample_polar, LiftMatch};
-pub use flap_sweep::flap_sweep;
+pub use flap_sweep::{FlapMember, FlapSweep};
 pub use grid::PolarTable;
 pub use io::{
-    check_lookup_table, check_table_output, parse_c81, parse_table, read_lookup_table,
-    read_lookup_table_with, read_table, read_table_with, table_files, with_cd_max, write_aerodyn,
-    write_c81, write_table, C81Options, ReadOptions, TableFormat, TableRead,
-    LOOKUP_ALPHA_COVER_DEG,
+    check_flap_sweep_output, check_lookup_table, check_table_output, flap_sweep_files, parse_c81,
+    parse_table, read_lookup_table, read_lookup_table_with, read_table, read_table_with,
+    table_files, with_cd_max, write_aerodyn, write_aerodyn_flap_sweep, write_c81, write_table,
+    C81Options, ReadOptions, TableFormat, TableRead, LOOKUP_ALPHA_COVER_DEG,
 };
 pub use lift_slope::{trusted, STALL_SLOPE_FRACTION};
 pub use meta::TableMeta;

@@ -156,6 +156,10 @@ class Rotor:
         self, table: PolarTable, alpha_deg: float, speed_m_s: Optional[float], mu: Optional[float],
         reference_rpm: Optional[float], pitch_deg: Optional[float], altitude_m: float,
     ) -> Tuple[str, List[str]]: ...
+    def autorotate_cases(
+        self, table: PolarTable, alpha_deg: List[float], speed_m_s: List[float],
+        pitch_deg: Optional[float], altitude_m: float,
+    ) -> Tuple[str, List[str]]: ...
 
 def alpha_range(text: str) -> npt.NDArray[np.float64]:
     """The α values of the range text ``A0:A1:DA`` (or one value), as the CLI's ``--alpha``."""

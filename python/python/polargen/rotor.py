@@ -171,6 +171,23 @@ class Rotor:
             warnings.warn(note, UserWarning, stacklevel=2)
         return AutorotationResult(json.loads(text), notes)
 
+    def autorotate_cases(self, table: Table, alpha_deg: Iterable[float],
+                         speed_m_s: Iterable[float], pitch_deg: Optional[float] = None,
+                         altitude_m: float = 0.0) -> Records:
+        """Every tunnel case (``alpha_deg[i]``, ``speed_m_s[i]``), in parallel, as ``gyro
+        autorotate --cases FILE --json``: records with the fields of :meth:`autorotate` and
+        ``error`` (empty when the case autorotates; the results are NaN when it does not),
+        ``to_pandas()`` for a DataFrame (Report 515's Table III in one call)."""
+        alphas = [float(a) for a in alpha_deg]
+        speeds = [float(v) for v in speed_m_s]
+        opt = None if pitch_deg is None else float(pitch_deg)
+        text, notes = self._core.autorotate_cases(_core(table), alphas, speeds, opt,
+                                                  float(altitude_m))
+        _warn(notes)
+        rows = [{k: (float("nan") if v is None else v) for k, v in r.items()}
+                for r in json.loads(text)]
+        return Records(rows, notes)
+
     def __repr__(self) -> str:
         return f"Rotor({self.name!r})"
 

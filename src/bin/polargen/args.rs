@@ -292,6 +292,9 @@ pub struct RunArgs {
 
     /// Flap sweep: one table per deflection [deg], comma-separated, about the hinge of --flap
     /// X:Y; each file named <stem>_flap<DEG><ext> (the deflection is the table's flap_deg).
+    /// With --format aerodyn several deflections go together: one file per Re and Mach
+    /// (<stem>_Re<RE>_M<MACH><ext>; --out itself for one), holding one table per deflection
+    /// in increasing order, its UserProp the deflection (OpenFAST's AFTabMod 3).
     #[arg(
         long,
         value_name = "LIST",
@@ -417,19 +420,19 @@ pub struct Shape {
     #[arg(long)]
     pub derotate: bool,
     /// Maximum thickness, chord units (XFOIL TSET: thickness line scaled, camber kept).
-    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = |s: &str| ShapeOp::thickness(s).map_err(|e| e.rule))]
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = ShapeOp::thickness)]
     pub thickness: Option<ShapeOp>,
     /// Maximum camber, chord units, signed (XFOIL TSET: camber line scaled, thickness kept).
-    #[arg(long, value_name = "C", allow_hyphen_values = true, value_parser = |s: &str| ShapeOp::camber(s).map_err(|e| e.rule))]
+    #[arg(long, value_name = "C", allow_hyphen_values = true, value_parser = ShapeOp::camber)]
     pub camber: Option<ShapeOp>,
     /// Trailing-edge gap G, blended over BLEND (0…1, default 1) of the chord (XFOIL TGAP).
-    #[arg(long, value_name = "G[:BLEND]", allow_hyphen_values = true, value_parser = |s: &str| ShapeOp::te_gap(s).map_err(|e| e.rule))]
+    #[arg(long, value_name = "G[:BLEND]", allow_hyphen_values = true, value_parser = ShapeOp::te_gap)]
     pub te_gap: Option<ShapeOp>,
     /// Plain flap, hinge x/c X, y/c Y, deflection DEG, + down (XFOIL FLAP; α, Cm unflapped).
-    #[arg(long, value_name = "X:Y[:DEG]", allow_hyphen_values = true, value_parser = |s: &str| ShapeOp::flap(s).map_err(|e| e.rule))]
+    #[arg(long, value_name = "X:Y[:DEG]", allow_hyphen_values = true, value_parser = ShapeOp::flap)]
     pub flap: Option<ShapeOp>,
     /// Blend: F of airfoil OTHER, 1 − F of this one, paired by chord station (XFOIL INTX).
-    #[arg(long, value_name = "OTHER:F", value_parser = |s: &str| ShapeOp::blend(s).map_err(|e| e.rule))]
+    #[arg(long, value_name = "OTHER:F", value_parser = ShapeOp::blend)]
     pub blend: Option<ShapeOp>,
 }
 

@@ -35,9 +35,9 @@ use polargen::progress::Progress;
 use polargen::section::{Transition, FREE_XTR};
 use polargen::table::check_table_output;
 use polargen::table::{
-    build_table, flap_sweep, read_table_with, summary_csv, summary_json, summary_text,
-    with_cd_max, write_table, Batch, BatchSettings, GridSpec, PolarTable, ReadOptions,
-    TableFormat, DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
+    build_table, read_table_with, summary_csv, summary_json, summary_text, with_cd_max,
+    write_table, Batch, BatchSettings, FlapSweep, GridSpec, PolarTable, ReadOptions, TableFormat,
+    DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE,
 };
 use polargen::viscous::distributions::write_distributions_file;
 use polargen::viscous::{ViscousParams, ViscousSolution, ViscousSolver};
@@ -180,19 +180,19 @@ fn grid_request(cli: &GridArgs) -> Result<(GridSpec, ViscousParams)> {
 /// The viscous polar(s) or table; with `--flap-deg` one table per flap deflection.
 fn run_viscous(cli: &RunArgs) -> Result<()> {
     let (grid, base) = grid_request(&cli.grid)?;
+    let out = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
+    check_output_path(out).context("--out")?;
     let format =
         TableFormat::for_output(cli.format, cli.out.as_deref()).context("--format/--out")?;
-    let out = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
     let ops = cli.grid.shape.ops();
-    let tables = match &cli.flap_deg {
-        Some(list) => flap_sweep(&ops, list, out)?,
-        None => vec![(ops, out.to_path_buf())],
-    };
-    for (_, path) in &tables {
-        check_table_output(path, format, &grid.reynolds, &grid.mach).context("--out")?;
-    }
+    let sweep = FlapSweep::new(&ops, cli.flap_deg.as_deref(), out, format)?;
+    sweep
+        .check_output(format, &grid.reynolds, &grid.mach)
+        .context("--out")?;
     let (spec, g) = (cli.airfoil.as_deref(), &cli.grid);
-    for (ops, path) in &tables {
+    let mut together = Vec::new();
+    for member in sweep.members() {
+        let ops = &member.ops;
         let foil = load_airfoil(spec, g.panels, g.shape.derotate, ops)?;
         let progress = TOOL.progress();
         progress.start(&grid.work(&foil.name, g.threads));
@@ -208,7 +208,13 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         let table =
             with_cd_max(table.with_geometry(ops), cli.extension.cd_max).context("--cd-max")?;
         // The result first: a summary that cannot be shown must not cost it.
-        let files = write_table(&table, path, Some(format))?;
+        let files = match &member.out {
+            Some(path) => write_table(&table, path, Some(format))?,
+            None => {
+                together.push(table);
+                Vec::new()
+            }
+        };
         TOOL.say(format!(
             "{census} in {:.1} s",
             start.elapsed().as_secs_f64()
@@ -216,6 +222,10 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         if files.len() > 1 {
             TOOL.say(format!("wrote {} files", files.len()));
         }
+    }
+    let files = sweep.write_together(&together)?;
+    if !files.is_empty() {
+        TOOL.say(format!("wrote {} files", files.len()));
     }
     Ok(())
 }

@@ -6,7 +6,8 @@
 
 use super::{StudyError, PAPER_TRIM_SPEED_KT};
 use crate::rotor::{
-    simulate_takeoff, trim_aircraft, Aircraft, HubParams, TipLoss, TrimParams, YawedFlow,
+    simulate_takeoff, trim_aircraft, Aircraft, HubParams, InflowModel, TipLoss, TrimParams,
+    YawedFlow,
 };
 use crate::section::SectionAero;
 use rayon::prelude::*;
@@ -32,6 +33,8 @@ pub enum Change {
     TipLoss(TipLoss),
     /// Yawed-flow profile drag.
     YawedFlow(YawedFlow),
+    /// Induced-inflow model of the rotor.
+    Inflow(InflowModel),
     /// Propeller chord scaled at every station.
     PropellerChord(f64),
     /// Propeller twist (blade angle relative to 0.75 R) scaled at every station.
@@ -57,6 +60,7 @@ impl Change {
             Self::InducedPowerFactor(v) => ac.rotor.induced_power_factor = v,
             Self::TipLoss(t) => ac.rotor.tip_loss = t,
             Self::YawedFlow(y) => ac.rotor.yawed_flow = y,
+            Self::Inflow(i) => ac.rotor.inflow = i,
             Self::PropellerChord(k) => ac
                 .propeller
                 .blade
@@ -94,6 +98,11 @@ impl Change {
                 YawedFlow::Ignored => "none",
             }
             .to_string(),
+            Self::Inflow(i) => match i {
+                InflowModel::Glauert => "glauert",
+                InflowModel::Drees => "drees",
+            }
+            .to_string(),
             Self::PropellerChord(k) | Self::PropellerTwist(k) | Self::EngineTorque(k) => {
                 format!("×{k}")
             }
@@ -116,7 +125,7 @@ pub struct Estimate {
 }
 
 /// The estimates of the MTOsport preset and their ranges.
-pub const ESTIMATES: [Estimate; 12] = [
+pub const ESTIMATES: [Estimate; 13] = [
     Estimate {
         name: "trim mass",
         preset: "450 kg",
@@ -178,6 +187,14 @@ pub const ESTIMATES: [Estimate; 12] = [
         preset: "radial_drag",
         range: "K = 4.6 (radial drag) or 3 (none) in the profile power (1 + Kμ²)",
         changes: &[Change::YawedFlow(YawedFlow::Ignored)],
+    },
+    Estimate {
+        name: "rotor inflow model",
+        preset: "drees",
+        range: "uniform momentum inflow (Glauert) instead of Drees' linear gradients (Leishman \
+                ch. 10); the PCA-2 flight test (NACA Report 487) favours Drees for the lateral \
+                flapping",
+        changes: &[Change::Inflow(InflowModel::Glauert)],
     },
     Estimate {
         name: "propeller chord",

@@ -21,7 +21,7 @@ use crate::limits::MAX_INPUT_BYTES;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
-pub use self::aerodyn::write_aerodyn;
+pub use self::aerodyn::{write_aerodyn, write_aerodyn_flap_sweep};
 pub use self::c81::{parse_c81, write_c81, C81Options};
 
 /// What a reader assumes where a file does not say, and which part of a file it reads.
@@ -84,8 +84,9 @@ pub enum TableFormat {
     XfoilPolar,
     /// C81 rotorcraft airfoil table, one file per Re (`.c81`); readable as a one-Re table.
     C81,
-    /// OpenFAST AeroDyn airfoil file, one table per Re, one file per Mach number (chosen
-    /// with `--format aerodyn`); readable as a one-Mach table, recognised by its content.
+    /// OpenFAST AeroDyn airfoil file, one table per Re, one file per Mach number (a flap
+    /// sweep: one table per deflection, one file per Re and Mach number; chosen with
+    /// `--format aerodyn`); readable as a one-Mach table, recognised by its content.
     #[cfg_attr(feature = "cli", value(name = "aerodyn"))]
     AeroDyn,
 }
@@ -295,7 +296,27 @@ pub fn check_table_output(
     re: &[f64],
     mach: &[f64],
 ) -> Result<(), crate::output::OutputError> {
-    let files = table_files(path, format, re, mach);
+    check_files(path, &table_files(path, format, re, mach))
+}
+
+/// The AeroDyn files [`write_aerodyn_flap_sweep`] writes for a flap sweep over Reynolds
+/// numbers `re` × Mach numbers `mach` at `path`: `path` itself for one (Re, M), else
+/// `<stem>_Re<re>_M<mach>.<ext>` beside it, Re by Re.
+pub fn flap_sweep_files(path: &Path, re: &[f64], mach: &[f64]) -> Vec<PathBuf> {
+    aerodyn::flap_sweep_files(path, re, mach)
+}
+
+/// [`check_table_output`] for the files of [`flap_sweep_files`].
+pub fn check_flap_sweep_output(
+    path: &Path,
+    re: &[f64],
+    mach: &[f64],
+) -> Result<(), crate::output::OutputError> {
+    check_files(path, &flap_sweep_files(path, re, mach))
+}
+
+/// Every one of `files`, named after `path`, can be written.
+fn check_files(path: &Path, files: &[PathBuf]) -> Result<(), crate::output::OutputError> {
     require_file_name(path, files.len())?;
     files
         .iter()

@@ -20,9 +20,14 @@
 //!   headers and the lines before the first value as the file's comment.
 //! * `RelThickness` (UA_Mod 7 needs it) when the table knows its airfoil's thickness, else
 //!   left out (OpenFAST then takes 0.2).
-//! * One table per Re of the grid, Re strictly increasing, `UserProp` 0 (AeroDyn interpolates
-//!   between tables in ln Re with `AFTabMod = 2`). A table with several Mach numbers gives one
-//!   file per Mach number (`<stem>_M<mach>.dat`), all together or none ([`OutputSet`]).
+//! * One table per Re of the grid, Re strictly increasing, `UserProp` the table's flap
+//!   deflection in degrees, 0 without a flap (AeroDyn interpolates between tables in ln Re
+//!   with `AFTabMod = 2`). A table with several Mach numbers gives one file per Mach number
+//!   (`<stem>_M<mach>.dat`), all together or none ([`OutputSet`]).
+//! * A flap sweep ([`write_aerodyn_flap_sweep`]) gives one file per (Re, M) with one table per
+//!   deflection, `UserProp` increasing (`AFTabMod = 3`; see the `flap` module for OpenFAST's
+//!   rule); a sixth comment line lists the deflections, and the `polargen-table` line also
+//!   holds each table's metadata.
 //! * `InclUAdata True` with the 32 lines `alpha0` … `filtCutOff` of [`UaParameters`], in the
 //!   order and number the `openfast_io` reader (5.0) reads them by position. OpenFAST itself
 //!   then computes only the four lines this set leaves out (`alphaUpper`, `alphaLower`,
@@ -50,13 +55,16 @@
 //! [`UaParameters`]: crate::table::UaParameters
 //! [`SectionAero::lookup`]: crate::section::SectionAero::lookup
 
+mod flap;
 mod read;
 mod write;
 
+pub(crate) use flap::flap_sweep_files;
+pub use flap::write_aerodyn_flap_sweep;
 pub(crate) use read::looks_like_aerodyn;
 pub use read::parse_aerodyn;
-pub use write::write_aerodyn;
 pub(crate) use write::mach_path;
+pub use write::write_aerodyn;
 
 use crate::table::{PolarTable, PostStallParams, TableMeta};
 use serde::{Deserialize, Serialize};
@@ -68,33 +76,54 @@ const LABEL_WIDTH: usize = 22;
 const HEADER_MARK: &str = "polargen-table";
 
 /// What a file written here says about itself beyond the AeroDyn fields: enough to give the
-/// table back.
+/// tables back.
 #[derive(Serialize, Deserialize)]
 struct Header {
     /// Mach number of the file.
     mach: f64,
-    /// The table's metadata.
+    /// The metadata of the file's tables (of its first table when they differ).
     meta: TableMeta,
     /// The 360°-extension parameters.
     post_stall: PostStallParams,
-    /// Per table (Re order): the converged α range, `[first, last]`.
+    /// Per table, in the file's order: the converged α range, `[first, last]`.
     computed_alpha: Vec<[f64; 2]>,
+    /// Per table, in the file's order, when the tables are of different sections (a flap
+    /// sweep): each one's metadata; empty otherwise.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    table_meta: Vec<TableMeta>,
 }
 
+/// One table of a file: grid row `i_re` of `table`.
+type Entry<'a> = (&'a PolarTable, usize);
+
 impl Header {
-    /// The header of `table`'s file at Mach number `mach`.
-    fn new(table: &PolarTable, i_mach: usize) -> Self {
+    /// The header of the file at Mach column `i_mach` holding `entries` in this order
+    /// (not empty).
+    fn new(entries: &[Entry], i_mach: usize) -> Self {
+        let first = entries[0].0;
+        let same = entries.iter().all(|(t, _)| t.meta() == first.meta());
         Self {
-            mach: table.mach()[i_mach],
-            meta: table.meta().clone(),
-            post_stall: *table.post_stall_params(),
-            computed_alpha: (0..table.re().len())
-                .map(|i_re| {
+            mach: first.mach()[i_mach],
+            meta: first.meta().clone(),
+            post_stall: *first.post_stall_params(),
+            computed_alpha: entries
+                .iter()
+                .map(|&(table, i_re)| {
                     let (lo, hi) = table.alpha_range(i_re, i_mach).unwrap_or((0.0, 0.0));
                     [lo, hi]
                 })
                 .collect(),
+            table_meta: if same {
+                Vec::new()
+            } else {
+                entries.iter().map(|(t, _)| t.meta().clone()).collect()
+            },
         }
+    }
+
+    /// The metadata of the file's table `k` (in the file's order).
+    fn meta_of(&self, k: usize) -> &TableMeta {
+        self.table_meta.get(k).unwrap_or(&self.meta)
     }
 
     /// The comment text: the mark and the JSON on one line.

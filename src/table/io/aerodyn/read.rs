@@ -156,6 +156,8 @@ struct AfTable {
     user_prop: f64,
     /// (α, cl, cd, cm) rows.
     rows: Vec<[f64; 4]>,
+    /// The table's computed α range and metadata, from a `polargen-table` line.
+    written: Option<([f64; 2], TableMeta)>,
 }
 
 /// Parse an AeroDyn airfoil file; `stem` names the airfoil when the file does not.
@@ -202,7 +204,7 @@ pub fn parse_aerodyn(
     lines.optional("BL_file");
     let n_tables = lines.count("NumTabs")?;
     let mut tables = Vec::with_capacity(n_tables.min(1000));
-    for _ in 0..n_tables {
+    for k in 0..n_tables {
         let re = lines.number("Re")? * 1e6;
         let user_prop = match lines
             .optional("UserProp")
@@ -231,10 +233,18 @@ pub fn parse_aerodyn(
                 }
             }
         }
+        let written = header.as_ref().map(|h: &Header| {
+            let range = h.computed_alpha.get(k).copied();
+            (
+                range.unwrap_or([f64::NEG_INFINITY, f64::INFINITY]),
+                h.meta_of(k).clone(),
+            )
+        });
         tables.push(AfTable {
             re,
             user_prop,
             rows,
+            written,
         });
     }
     let mut notes = Vec::new();
@@ -283,7 +293,8 @@ fn choose_tables(
     Ok(tables)
 }
 
-/// The table of the chosen AeroDyn tables.
+/// The table of the chosen AeroDyn tables (a file written here gives the metadata of the
+/// first and each table's computed α range; any other the options' Mach number and `stem`).
 fn build(
     tables: Vec<AfTable>,
     header: Option<Header>,
@@ -292,9 +303,13 @@ fn build(
     options: &ReadOptions,
     mut notes: Vec<String>,
 ) -> Result<TableRead, TableError> {
-    let (meta, mach, params, ranges) = match header {
-        Some(h) => (h.meta, h.mach, h.post_stall, Some(h.computed_alpha)),
-        None => {
+    let written_meta = tables
+        .first()
+        .and_then(|t| t.written.as_ref())
+        .map(|w| w.1.clone());
+    let (meta, mach, params) = match (header, written_meta) {
+        (Some(h), Some(meta)) => (meta, h.mach, h.post_stall),
+        _ => {
             let mach = options.mach.unwrap_or_else(|| {
                 notes.push(
                     "the AeroDyn file does not give its Mach number: M 0 assumed (set it \
@@ -307,22 +322,95 @@ fn build(
                 thickness,
                 ..TableMeta::unknown(stem, "AeroDyn airfoil file")
             };
-            (meta, mach, PostStallParams::default(), None)
+            (meta, mach, PostStallParams::default())
         }
     };
     let re: Vec<f64> = tables.iter().map(|t| t.re).collect();
     let polars: Vec<Vec<PolarPoint>> = tables
         .iter()
-        .enumerate()
-        .map(|(k, t)| {
-            let range = ranges.as_ref().and_then(|r| r.get(k));
+        .map(|t| {
+            let range = t.written.as_ref().map(|w| w.0);
             t.rows
                 .iter()
-                .filter(|r| range.map_or(true, |[lo, hi]| (*lo..=*hi).contains(&r[0])))
+                .filter(|r| range.is_none_or(|[lo, hi]| (lo..=hi).contains(&r[0])))
                 .map(|&[a, cl, cd, cm]| PolarPoint::from_coefficients(a, cl, cd, cm))
                 .collect()
         })
         .collect();
     let table = PolarTable::with_params(meta, re, vec![mach], polars, params)?;
     Ok(TableRead { table, notes })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A file of another tool with two tables at one Re and UserProp 5 before −5 (AeroDyn's
+    /// AFTabMod 3 needs them increasing; the reader does not).
+    const TWO_USER_PROPS: &str = "\
+! two flap settings
+\"DEFAULT\" InterpOrd
+1 NonDimArea
+0 NumCoords
+2 NumTabs
+! first table
+1.5 Re
+5 UserProp
+False InclUAdata
+3 NumAlf
+-180 0 0.02 0
+0 0.55 0.011 -0.07
+180 0 0.02 0
+! second table
+1.5 Re
+-5 UserProp
+False InclUAdata
+2 NumAlf
+-10 -1.1 0.012 0.01
+10 0.6 0.013 0.05
+";
+
+    fn read(user_prop: Option<f64>) -> Result<TableRead, TableError> {
+        let options = ReadOptions {
+            user_prop,
+            ..ReadOptions::default()
+        };
+        parse_aerodyn(TWO_USER_PROPS, "flaps", &options)
+    }
+
+    #[test]
+    fn a_two_user_prop_file_reads_the_chosen_table() {
+        let err = read(None).unwrap_err().to_string();
+        assert_eq!(
+            err,
+            "AeroDyn file: the tables are at UserProp -5, 5: choose one with --user-prop"
+        );
+        let err = read(Some(0.0)).unwrap_err().to_string();
+        assert!(
+            err.contains("no table at UserProp 0 (the file has -5, 5)"),
+            "{err}"
+        );
+        let five = read(Some(5.0)).unwrap();
+        assert_eq!(five.table.re(), &[1.5e6]);
+        let points = five.table.polar_at(0, 0).unwrap();
+        let rows: Vec<[f64; 4]> = points.iter().map(|p| [p.alpha, p.cl, p.cd, p.cm]).collect();
+        assert_eq!(
+            rows,
+            [
+                [-180.0, 0.0, 0.02, 0.0],
+                [0.0, 0.55, 0.011, -0.07],
+                [180.0, 0.0, 0.02, 0.0]
+            ]
+        );
+        assert!(five.notes[0].contains("UserProp 5"), "{:?}", five.notes);
+        let minus = read(Some(-5.0)).unwrap();
+        let alphas: Vec<f64> = minus
+            .table
+            .polar_at(0, 0)
+            .unwrap()
+            .iter()
+            .map(|p| p.alpha)
+            .collect();
+        assert_eq!(alphas, [-10.0, 10.0]);
+    }
 }

@@ -1,6 +1,6 @@
 //! Writing AeroDyn airfoil files (see the [module docs](super) for the layout).
 
-use super::{Header, LABEL_WIDTH};
+use super::{Entry, Header, LABEL_WIDTH};
 use crate::output::{write_output, OutputSet};
 use crate::section::SectionAero;
 use crate::table::io::xfoil_polar::re_label;
@@ -63,13 +63,27 @@ fn keyed(s: &mut String, value: &str, name: &str, comment: &str) {
     let _ = writeln!(s, "{value:<LABEL_WIDTH$} {name:<14} ! {comment}");
 }
 
-/// Write one AeroDyn airfoil file of `table` at Mach column `i_mach` to `w`.
+/// Write one AeroDyn airfoil file of `table` at Mach column `i_mach` to `w`: one table per Re.
 pub fn write_aerodyn_to(
     table: &PolarTable,
     i_mach: usize,
     w: &mut dyn Write,
 ) -> Result<(), TableError> {
     table.require_lookup()?;
+    let entries: Vec<Entry> = (0..table.re().len()).map(|i_re| (table, i_re)).collect();
+    write_file(&entries, i_mach, "one table per Reynolds number", w)
+}
+
+/// Write the AeroDyn airfoil file holding `entries` (not empty, all at the Mach number of
+/// column `i_mach`) as its tables in this order to `w`; `tabs` says on the `NumTabs` line
+/// what the tables are. The comment header and `RelThickness` are those of the first entry.
+pub(super) fn write_file(
+    entries: &[Entry],
+    i_mach: usize,
+    tabs: &str,
+    w: &mut dyn Write,
+) -> Result<(), TableError> {
+    let table = entries[0].0;
     let mach = table.mach()[i_mach];
     let meta = table.meta();
     let mut s = String::new();
@@ -108,7 +122,21 @@ pub fn write_aerodyn_to(
         "! UA coefficients: alpha0, alpha1, alpha2, C_nalpha, Cn1, Cn2, Cd0, Cm0, k0 from the \
          polar; the others OpenFAST's defaults\n",
     );
-    let _ = writeln!(s, "! {}", Header::new(table, i_mach).to_line());
+    if entries
+        .iter()
+        .any(|(t, _)| user_prop(t) != user_prop(table))
+    {
+        let degs: Vec<String> = entries
+            .iter()
+            .map(|(t, _)| user_prop(t).to_string())
+            .collect();
+        let _ = writeln!(
+            s,
+            "! One table per flap deflection (UserProp, deg): {}; the airfoil line names the first",
+            degs.join(", ")
+        );
+    }
+    let _ = writeln!(s, "! {}", Header::new(entries, i_mach).to_line());
     s.push_str(RULE);
     s.push('\n');
     keyed(
@@ -129,30 +157,32 @@ pub fn write_aerodyn_to(
     keyed(&mut s, "1", "NonDimArea", "unused by AeroDyn");
     keyed(&mut s, "0", "NumCoords", "no airfoil coordinates");
     keyed(&mut s, "\"unused\"", "BL_file", "aeroacoustics only");
-    keyed(
-        &mut s,
-        &table.re().len().to_string(),
-        "NumTabs",
-        "one table per Reynolds number",
-    );
-    for i_re in 0..table.re().len() {
-        write_table_block(&mut s, table, i_re, i_mach);
+    keyed(&mut s, &entries.len().to_string(), "NumTabs", tabs);
+    for (k, &(table, i_re)) in entries.iter().enumerate() {
+        write_table_block(&mut s, k, table, i_re, i_mach);
     }
     w.write_all(s.as_bytes()).map_err(TableError::Write)
 }
 
-/// The lines of one table: Re, UserProp, the UA block, NumAlf, the column headers and rows.
-fn write_table_block(s: &mut String, table: &PolarTable, i_re: usize, i_mach: usize) {
+/// The lines of the file's table `k` (0-based), grid row (`i_re`, `i_mach`) of `table`: Re,
+/// UserProp (the flap deflection in degrees, 0 without a flap), the UA block, NumAlf, the
+/// column headers and the rows.
+fn write_table_block(s: &mut String, k: usize, table: &PolarTable, i_re: usize, i_mach: usize) {
     let (re, mach) = (table.re()[i_re], table.mach()[i_mach]);
     let alphas = aerodyn_alphas(table, i_re, i_mach);
     let (lo, hi) = table.alpha_range(i_re, i_mach).unwrap_or((0.0, 0.0));
     s.push_str(RULE);
     s.push('\n');
+    let flap = user_prop(table);
     let _ = writeln!(
         s,
-        "! table {}: Re {}, computed alpha {lo} to {hi} deg",
-        i_re + 1,
-        re_label(re)
+        "! table {}: Re {}{}, computed alpha {lo} to {hi} deg",
+        k + 1,
+        re_label(re),
+        table
+            .meta()
+            .flap_deg()
+            .map_or(String::new(), |_| format!(", flap {flap} deg"))
     );
     s.push_str(RULE);
     s.push('\n');
@@ -162,7 +192,12 @@ fn write_table_block(s: &mut String, table: &PolarTable, i_re: usize, i_mach: us
         "Re",
         "Reynolds number in millions",
     );
-    keyed(s, "0", "UserProp", "no control setting");
+    let note = if table.meta().flap_deg().is_some() {
+        "flap deflection (deg, trailing edge down positive)"
+    } else {
+        "no flap: 0"
+    };
+    keyed(s, &flap.to_string(), "UserProp", note);
     match ua_parameters(table, i_re, i_mach) {
         Some(ua) => {
             keyed(s, "True", "InclUAdata", "unsteady-aero coefficients follow");
@@ -206,6 +241,11 @@ fn write_table_block(s: &mut String, table: &PolarTable, i_re: usize, i_mach: us
         };
         let _ = writeln!(s, "{a} {} {} {}", number(l.cl), number(l.cd), number(l.cm));
     }
+}
+
+/// A table's `UserProp`: its flap deflection in degrees, 0 without a flap (−0 written as 0).
+pub(super) fn user_prop(table: &PolarTable) -> f64 {
+    table.meta().flap_deg().unwrap_or(0.0) + 0.0
 }
 
 /// The file of the Mach number `mach` of a table of `count` Mach numbers written to `path`:

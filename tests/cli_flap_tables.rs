@@ -1,0 +1,150 @@
+//! Flap sweeps in the formats with a flap axis: AeroDyn files holding one table per
+//! deflection (`UserProp`, OpenFAST's AFTabMod 3), read back with `--user-prop`, and C81
+//! decks, one per deflection and Re.
+
+mod cli_support;
+
+use cli_support::{assert_one_line_error, ok, polargen, scratch};
+use polargen::section::SectionAero;
+use polargen::table::{read_table, read_table_with, PolarTable, ReadOptions};
+
+/// The coarse sweep of these tests: NACA 0012, a 25 % flap, one Re, α −4…8°.
+const SWEEP: [&str; 12] = [
+    "-q",
+    "--airfoil",
+    "naca0012",
+    "--re",
+    "1e6",
+    "--alpha",
+    "-4:8:4",
+    "--flap",
+    "0.75:0",
+    "--flap-deg",
+    "-5,0,5",
+    "--out",
+];
+
+/// (α, Cl, Cd, Cm) of the usable points of the table's only polar.
+fn rows(table: &PolarTable) -> Vec<[f64; 4]> {
+    table
+        .polar_at(0, 0)
+        .unwrap()
+        .iter()
+        .filter(|p| p.usable())
+        .map(|p| [p.alpha, p.cl, p.cd, p.cm])
+        .collect()
+}
+
+/// One AeroDyn file for the one (Re, M) with the three deflections in increasing order, each
+/// with its UA block; `--user-prop 5` reads the 5° table back equal to the sweep's 5° CSV
+/// table; without it a one-line error lists the deflections.
+#[test]
+fn an_aerodyn_flap_sweep_is_one_file_read_back_by_user_prop() {
+    let dir = scratch("flap-aerodyn");
+    let dat = dir.join("f.dat");
+    let csv = dir.join("t.csv");
+    let run = |out: &std::path::Path, extra: &[&str]| {
+        let mut args = SWEEP.to_vec();
+        args.push(out.to_str().unwrap());
+        args.extend_from_slice(extra);
+        ok(polargen(&args));
+    };
+    run(&dat, &["--format", "aerodyn"]);
+    run(&csv, &[]);
+    let names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with('f'))
+        .collect();
+    assert_eq!(names, ["f.dat"]);
+    let text = std::fs::read_to_string(&dat).unwrap();
+    let value = |name: &str| -> Vec<String> {
+        text.lines()
+            .filter(|l| l.split_whitespace().nth(1) == Some(name))
+            .map(|l| l.split_whitespace().next().unwrap().to_string())
+            .collect()
+    };
+    assert_eq!(value("NumTabs"), ["3"]);
+    assert_eq!(value("UserProp"), ["-5", "0", "5"]);
+    assert_eq!(value("Re"), ["1", "1", "1"]);
+    assert_eq!(value("InclUAdata"), ["True", "True", "True"]);
+
+    let options = ReadOptions {
+        user_prop: Some(5.0),
+        ..ReadOptions::default()
+    };
+    let back = read_table_with(&dat, &options).unwrap().table;
+    let five = read_table(&dir.join("t_flap5.csv")).unwrap();
+    assert_eq!(back.meta(), five.meta());
+    assert_eq!(back.meta().flap_deg(), Some(5.0));
+    assert_eq!((back.re(), back.mach()), (five.re(), five.mach()));
+    assert_eq!(rows(&back), rows(&five));
+    assert_eq!(rows(&five).len(), 4);
+
+    // The CLI: convert with --user-prop gives the 5° table; without it, one line naming the
+    // deflections.
+    let out = dir.join("back.csv");
+    let conv = |extra: &[&str]| {
+        let mut args = vec!["convert", dat.to_str().unwrap(), "--out"];
+        args.push(out.to_str().unwrap());
+        args.extend_from_slice(extra);
+        polargen(&args)
+    };
+    ok(conv(&["--user-prop", "5", "-q"]));
+    assert_eq!(rows(&read_table(&out).unwrap()), rows(&five));
+    let o = conv(&[]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_one_line_error(
+        "polargen",
+        &o,
+        "the tables are at UserProp -5, 0, 5: choose one with --user-prop",
+    );
+}
+
+/// C81 has no flap axis: one deck per deflection and Re, named after both; a path that
+/// cannot be written is found before the work, for the AeroDyn set as for the others.
+#[test]
+fn a_c81_flap_sweep_writes_one_deck_per_deflection_and_re() {
+    let dir = scratch("flap-c81");
+    let out = dir.join("d.c81");
+    let mut args = SWEEP.to_vec();
+    args[4] = "1e6,2e6";
+    args[10] = "-5,5";
+    args.push(out.to_str().unwrap());
+    ok(polargen(&args));
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(
+        names,
+        [
+            "d_flap-5_Re1e6.c81",
+            "d_flap-5_Re2e6.c81",
+            "d_flap5_Re1e6.c81",
+            "d_flap5_Re2e6.c81"
+        ]
+    );
+    let up = read_table(&dir.join("d_flap5_Re2e6.c81")).unwrap();
+    let down = read_table(&dir.join("d_flap-5_Re2e6.c81")).unwrap();
+    // At α 0 the symmetric section's lift is the flap's: opposite for ±5°.
+    let cl0 = |t: &PolarTable| t.lookup(0.0, 2e6, 0.0).cl;
+    assert!(
+        cl0(&up) > 0.25 && cl0(&down) < -0.25,
+        "{} {}",
+        cl0(&up),
+        cl0(&down)
+    );
+
+    // The AeroDyn set is checked before solving: a folder where a file must go.
+    let blocked = dir.join("blocked.dat");
+    std::fs::create_dir_all(dir.join("blocked_Re2e6_M0.dat")).unwrap();
+    let mut args = SWEEP.to_vec();
+    args[4] = "1e6,2e6";
+    args.extend_from_slice(&[blocked.to_str().unwrap(), "--format", "aerodyn"]);
+    let o = polargen(&args);
+    assert!(!o.status.success());
+    assert_one_line_error("polargen", &o, "blocked_Re2e6_M0.dat");
+    assert!(!dir.join("blocked_Re1e6_M0.dat").exists());
+}
