@@ -145,3 +145,37 @@ fn a_hinge_offset_stiffens_the_flapping() {
         central.flapping
     );
 }
+
+/// The result carries no solver memory: the same condition solved cold and warm-started from
+/// two different neighbours gives the same rotor state, to the Newton tolerance, and the warm
+/// state is the only thing a solve hands on (`RotorWarmStart`, opaque).
+#[test]
+fn a_solution_does_not_depend_on_the_path_that_reached_it() {
+    let rotor = pca2();
+    let cond = |kt: f64, aoa_deg: f64| FlightCondition {
+        airspeed: kt * 0.514_444,
+        hub_aoa: aoa_deg.to_radians(),
+        omega: rpm_to_rad_s(120.0),
+        atmosphere: Atmosphere::isa(0.0),
+    };
+    let section = linear();
+    let target = cond(60.0, 8.0);
+    let cold = rotor.solve(&section, &target, &mut None).unwrap();
+    let mut paths = Vec::new();
+    for (kt, aoa) in [(40.0, 12.0), (80.0, 4.0)] {
+        let mut warm = None;
+        rotor.solve(&section, &cond(kt, aoa), &mut warm).unwrap();
+        assert!(warm.is_some());
+        paths.push(rotor.solve(&section, &target, &mut warm).unwrap());
+    }
+    for s in &paths {
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-7 * (1.0 + a.abs().max(b.abs()));
+        assert!(close(s.thrust, cold.thrust), "{} {}", s.thrust, cold.thrust);
+        assert!(close(s.torque, cold.torque), "{} {}", s.torque, cold.torque);
+        assert!(close(s.induced_velocity, cold.induced_velocity));
+        assert!(close(s.flapping.beta0, cold.flapping.beta0));
+        assert!(close(s.flapping.beta1c, cold.flapping.beta1c));
+        assert!(close(s.flapping.beta1s, cold.flapping.beta1s));
+        assert_eq!(s.condition, cold.condition);
+    }
+}

@@ -192,11 +192,11 @@ def test_autorotate_has_the_fields_and_values_of_gyro_autorotate_json(cli, repo)
 
 
 def test_autorotate_cases_are_the_rows_of_gyro_autorotate_cases(cli, repo, tmp_path):
-    """Three Table III cases, one of them (α −20°) without autorotation: the records are the
+    """Three tunnel cases, one of them (α 1°, 10 m/s) without autorotation: the records are the
     rows of ``gyro autorotate --cases --json`` (NaN where the JSON has null), in order."""
     table = pg.Table.read(repo / "polars" / "goe429_xtr0.07.csv")
     rotor = pg.rotor.Rotor.read(repo / "aircraft" / "pca2.toml")
-    alphas, speeds = [8.3, 4.1, -20.0], [15.7, 25.0, 20.0]
+    alphas, speeds = [8.3, 4.1, 1.0], [15.7, 25.0, 10.0]
     cases = tmp_path / "cases.csv"
     cases.write_text("alpha_deg,speed_m_s\n" +
                      "".join(f"{a},{v}\n" for a, v in zip(alphas, speeds)))

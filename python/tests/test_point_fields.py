@@ -12,7 +12,7 @@ from conftest import floats, read_csv_columns, same
 
 # Columns of the CSV that describe the table, not the point (repeated on every row).
 TABLE_COLUMNS = {"airfoil", "re", "mach", "ncrit", "ncrit_top", "ncrit_bot", "xtr_top_set",
-                 "xtr_bot_set", "panels", "solver"}
+                 "xtr_bot_set", "panels", "solver", "thickness"}
 
 
 @pytest.fixture(scope="module")

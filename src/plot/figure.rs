@@ -24,7 +24,7 @@ pub struct Style {
     /// Line kind.
     pub line: Line,
     /// Draw a filled circle at every data point. Without it a line still gets them where its
-    /// data are sparse (the rule of [`sparse`](super::sparse)).
+    /// data are sparse (the rule of `sparse`).
     pub points: bool,
 }
 

@@ -161,7 +161,7 @@ pub(super) fn table(path: &Path) -> Result<TableRead, TableError> {
 }
 
 /// The inputs of a command that reads an aircraft and section tables: each file given, else
-/// the shipped one (the file in a checkout, else the built-in copy: [`aircraft`], [`table`]),
+/// the shipped one (the file in a checkout, else the built-in copy: `aircraft`, `table`),
 /// the rule of `gyro report` for every command; [`notes`](Self::notes) names the shipped
 /// inputs used, in one line, after what the table readers assumed.
 #[derive(Debug, Default)]

@@ -148,7 +148,7 @@ impl UaParameters {
 
 /// The parameters of the polar at grid row (`i_re`, `i_mach`), from its trusted points, else
 /// from its converged points; `None` when neither gives an attached range
-/// ([`attached_fit`]) in which f falls to 0.7 on both sides within 90° of α0.
+/// (`attached_fit`) in which f falls to 0.7 on both sides within 90° of α0.
 pub fn ua_parameters(table: &PolarTable, i_re: usize, i_mach: usize) -> Option<UaParameters> {
     let points = table.polar_at(i_re, i_mach)?;
     let converged: fn(&PolarPoint) -> bool = |p| p.converged;

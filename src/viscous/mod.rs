@@ -23,7 +23,10 @@
 //! MRCHDU mixed-mode re-march, each station solved by the `local_newton` loop), `newton`
 //! (SETBL assembly), `block_solver` (the structured solve, BLSOLV's role), `update`
 //! (UPDATE/DSLIM relaxation); `solution` and `forces` integrate Cl, Cm, Cd, cdf and xtr
-//! (CLCALC, CDCALC), and `solver` drives the iterations (VISCAL).
+//! (CLCALC, CDCALC), and `solver` drives the iterations (VISCAL). `params` holds the
+//! controls of `march` and `update` (their records, `MarchParams` and `UpdateLimits`, live
+//! beside the code they control) and those use the parameters in turn: one algorithm, one
+//! set of knobs, so that import cycle inside the folder is kept on purpose.
 
 mod block_solver;
 pub mod distributions;

@@ -116,6 +116,7 @@ def aero(airfoil: "AirfoilLike", alpha: ArrayLike, re: ArrayLike, mach: ArrayLik
     result = {"alpha": broadcast[0].reshape(shape).copy(), "re": broadcast[1].reshape(shape).copy(),
               "mach": broadcast[2].reshape(shape).copy()}
     for name, values in columns.items():
-        if name != "alpha":
+        # The per-point columns; the polars' summaries (a dict) are not points.
+        if name not in ("alpha", "summary"):
             result[name] = np.asarray(values).reshape(shape)
     return Aero(result)

@@ -42,7 +42,7 @@ pub(crate) fn flap_sweep_files(path: &Path, re: &[f64], mach: &[f64]) -> Vec<Pat
 /// Write the tables of a flap sweep (one per deflection, all on the same Re × Mach grid with
 /// the same 360°-extension parameters, deflections distinct: `UserProp` is each table's
 /// [`flap_deg`](crate::table::TableMeta::flap_deg), 0 without a flap) as AeroDyn files, one
-/// per (Re, M) ([`flap_sweep_path`]), each with one table per deflection in increasing
+/// per (Re, M) (`flap_sweep_path`), each with one table per deflection in increasing
 /// order; all files or none. Returns the files written.
 pub fn write_aerodyn_flap_sweep(
     tables: &[PolarTable],
