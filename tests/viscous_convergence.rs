@@ -53,6 +53,7 @@ fn run_foil(
             substep_levels: 0,
             fresh_retry: false,
             recover_limit: 0,
+            ..SweepParams::default()
         }
     };
     run_params(

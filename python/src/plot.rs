@@ -3,9 +3,9 @@
 //! Python module `polargen.plot` draws the result with matplotlib.
 
 use polargen::plot::drag_axis::CdAxis;
-use polargen::plot::polar_plots::{overlay_title, polar_figure_styled, PolarCurve};
+use polargen::plot::figure_spec;
+use polargen::plot::polar_plots::{overlay_figure, overlay_title};
 use polargen::plot::table_plots::table_label;
-use polargen::plot::{figure_spec, Style};
 use polargen::section::FlowCondition;
 use pyo3::exceptions::{PyKeyError, PyValueError};
 use pyo3::prelude::*;
@@ -55,16 +55,6 @@ pub fn polar_figure(
         let names: Vec<&str> = names.iter().map(String::as_str).collect();
         overlay_title(&names, &drawn, None)
     });
-    let curves: Vec<PolarCurve> = names
-        .iter()
-        .zip(&polars)
-        .enumerate()
-        .map(|(i, (label, points))| PolarCurve {
-            label,
-            points,
-            style: Style::solid(i),
-        })
-        .collect();
-    let spec = figure_spec(&polar_figure_styled(&curves, &title, cd_axis));
+    let spec = figure_spec(&overlay_figure(&names, &polars, &title, cd_axis));
     serde_json::to_string(&spec).map_err(|e| PyValueError::new_err(e.to_string()))
 }

@@ -5,10 +5,12 @@
 //!   equations are written once on them and their Jacobians follow exactly.
 //! * [`dense`] — matrix–vector and dot products with a fixed summation order.
 //! * [`small_dense`] — direct solves and inverses of 3×3 and 4×4 systems kept in registers.
+//! * [`cycle`] — detection of an iteration caught in a cycle.
 //! * [`roots`] — one-dimensional root finding on a bracket.
 //! * [`elementary`] — branch-free ln and atan2 that vectorise inside a kernel loop.
 //! * [`simd`] — AVX2 dispatch of a kernel and the vector-register hygiene around faer calls.
 
+pub(crate) mod cycle;
 pub(crate) mod dense;
 pub(crate) mod dual;
 pub(crate) mod elementary;

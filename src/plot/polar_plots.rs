@@ -39,6 +39,27 @@ pub fn polar_figure(polars: &[(&str, &[PolarPoint])], title: &str) -> Figure {
     polar_figure_styled(&curves, title, CdAxis::Attached)
 }
 
+/// The overlay of one polar per name (`names[i]` labels `polars[i]`), each in the next
+/// solid style: the figure of `polargen plot` and of Python's `plot.polars`.
+pub fn overlay_figure<P: AsRef<[PolarPoint]>>(
+    names: &[String],
+    polars: &[P],
+    title: &str,
+    cd_axis: CdAxis,
+) -> Figure {
+    let curves: Vec<PolarCurve> = names
+        .iter()
+        .zip(polars)
+        .enumerate()
+        .map(|(i, (label, points))| PolarCurve {
+            label,
+            points: points.as_ref(),
+            style: Style::solid(i),
+        })
+        .collect();
+    polar_figure_styled(&curves, title, cd_axis)
+}
+
 /// Polar overlay with the styles given per curve, the drag polar's Cd axis chosen by `cd_axis`.
 ///
 /// Panels: Cl–α, the drag polar Cl–Cd and the transition locations Cl–x_tr (Cl on y in all

@@ -5,8 +5,8 @@
 use std::path::{Path, PathBuf};
 
 use super::drag_axis::CdAxis;
-use super::figure::{Figure, Style};
-use super::polar_plots::{compact_number, overlay_title, polar_figure_styled, PolarCurve};
+use super::figure::Figure;
+use super::polar_plots::{compact_number, overlay_figure, overlay_title};
 use crate::limits::short_number;
 use crate::section::{FlowCondition, PolarPoint};
 use crate::table::{read_table_with, ReadOptions, TableError, TableMeta};
@@ -130,17 +130,7 @@ pub fn table_overlay_figure(overlay: &TableOverlay) -> Result<Figure, OverlayErr
             .map(|(r, m)| FlowCondition::new(r, m));
         overlay_title(&names, &conditions, asked)
     });
-    let curves: Vec<PolarCurve> = names
-        .iter()
-        .zip(&polars)
-        .enumerate()
-        .map(|(i, (label, points))| PolarCurve {
-            label,
-            points,
-            style: Style::solid(i),
-        })
-        .collect();
-    Ok(polar_figure_styled(&curves, &title, overlay.cd_axis))
+    Ok(overlay_figure(&names, &polars, &title, overlay.cd_axis))
 }
 
 /// The default legend label of a table's polars: airfoil and transition setting

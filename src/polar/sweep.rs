@@ -8,7 +8,8 @@
 //! fails (it has no converged neighbour yet) is retried the same way from the first point above
 //! it that converges, and the march down then starts from it. After a few failures
 //! in a row (deep stall) the remaining points of the branch are solved once each, without the
-//! costly recovery, so a sweep's cost stays bounded. A solve that repeats one already done from
+//! costly recovery, and the recovery of one point stops once the point has used its budget of
+//! Newton iterations, so a sweep's cost stays bounded. A solve that repeats one already done from
 //! the same converged state along the same α path is not redone: its outcome is replayed.
 
 use super::range::march_order;
@@ -42,6 +43,11 @@ pub struct SweepParams {
     /// After this many failures in a row along one branch (typically past stall), further
     /// points of that branch are still solved once each, but without the costly recovery.
     pub recover_limit: u32,
+    /// Newton iterations one point may use, its first solve and its recovery together, as the
+    /// solves report them ([`PolarPoint::iterations`]; a solve replayed from the anchor's
+    /// memory costs nothing). The recovery makes no further solve once the point has used
+    /// them, so a point costs at most this plus one solve.
+    pub point_budget: u32,
 }
 
 impl Default for SweepParams {
@@ -50,6 +56,7 @@ impl Default for SweepParams {
             substep_levels: 2,
             fresh_retry: true,
             recover_limit: 3,
+            point_budget: 500,
         }
     }
 }
@@ -175,9 +182,10 @@ fn retry_start<S: WarmStartSolver>(
 ) -> Option<(PolarPoint, S::State)> {
     let mut memo = AnchorMemo::default();
     solver.restore(&from.1);
-    let mut point = memo.solve(solver, &mut Vec::new(), alpha);
+    let mut spent = 0;
+    let mut point = memo.solve(solver, &mut Vec::new(), alpha, &mut spent);
     if !point.converged {
-        point = recover(solver, alpha, Some(&from), params, &mut memo)?;
+        point = recover(solver, alpha, Some(&from), params, &mut memo, spent)?;
     }
     point.converged.then(|| (point, solver.save()))
 }
@@ -200,12 +208,18 @@ fn march<S: WarmStartSolver>(
     for (k, &i) in order.iter().enumerate() {
         let alpha = alphas[i];
         // The solver holds the anchor's state here (or none before the first converged point).
+        let mut spent = 0;
         let mut point = match anchor {
-            Some(_) => memo.solve(solver, &mut Vec::new(), alpha),
-            None => solver.solve(alpha),
+            Some(_) => memo.solve(solver, &mut Vec::new(), alpha, &mut spent),
+            None => {
+                let p = solver.solve(alpha);
+                spent = p.iterations;
+                p
+            }
         };
         if !point.converged && failures_in_a_row < params.recover_limit {
-            point = recover(solver, alpha, anchor.as_ref(), params, &mut memo).unwrap_or(point);
+            point =
+                recover(solver, alpha, anchor.as_ref(), params, &mut memo, spent).unwrap_or(point);
         }
         if point.converged {
             failures_in_a_row = 0;
@@ -253,12 +267,13 @@ impl<T: Clone> AnchorMemo<T> {
 
     /// Solves `alpha` after the solves of `path` from the anchor (the solver holds the state
     /// they left), or replays the outcome if this path was solved before; `path` then ends with
-    /// `alpha`.
+    /// `alpha`. The iterations of a new solve are added to `spent`.
     fn solve<S: WarmStartSolver<State = T>>(
         &mut self,
         solver: &mut S,
         path: &mut Vec<u64>,
         alpha: f64,
+        spent: &mut u32,
     ) -> PolarPoint {
         path.push(alpha.to_bits());
         if let Some((_, point, state)) = self.entries.iter().find(|(p, _, _)| p == path) {
@@ -266,19 +281,23 @@ impl<T: Clone> AnchorMemo<T> {
             return *point;
         }
         let point = solver.solve(alpha);
+        *spent = spent.saturating_add(point.iterations);
         self.entries.push((path.clone(), point, solver.save()));
         point
     }
 }
 
-/// Retry a failed point: sub-steps from the last converged neighbour, then a fresh start.
+/// Retry a failed point: sub-steps from the last converged neighbour, then a fresh start, while
+/// the point has not used its budget ([`SweepParams::point_budget`]; `spent` iterations so far).
 pub(super) fn recover<S: WarmStartSolver>(
     solver: &mut S,
     alpha: f64,
     anchor: Option<&(f64, S::State)>,
     params: &SweepParams,
     memo: &mut AnchorMemo<S::State>,
+    mut spent: u32,
 ) -> Option<PolarPoint> {
+    let budget = params.point_budget;
     if let Some((a0, state)) = anchor {
         for level in 1..=params.substep_levels {
             let n = 1u32 << level;
@@ -287,20 +306,20 @@ pub(super) fn recover<S: WarmStartSolver>(
             let mut ok = true;
             for j in 1..n {
                 let a = a0 + (alpha - a0) * f64::from(j) / f64::from(n);
-                if !memo.solve(solver, &mut path, a).converged {
+                if spent >= budget || !memo.solve(solver, &mut path, a, &mut spent).converged {
                     ok = false;
                     break;
                 }
             }
-            if ok {
-                let p = memo.solve(solver, &mut path, alpha);
+            if ok && spent < budget {
+                let p = memo.solve(solver, &mut path, alpha, &mut spent);
                 if p.converged {
                     return Some(p);
                 }
             }
         }
     }
-    if params.fresh_retry {
+    if params.fresh_retry && spent < budget {
         solver.reset();
         let p = solver.solve(alpha);
         if p.converged {
@@ -323,6 +342,8 @@ mod tests {
         /// α where a fresh start (no state) fails.
         bad_fresh: Vec<f64>,
         calls: usize,
+        /// Newton iterations a failed solve reports (a converged one reports 1).
+        failed_iterations: u32,
     }
 
     impl WarmStartSolver for Mock {
@@ -346,7 +367,7 @@ mod tests {
                 xtr_top: 1.0,
                 xtr_bot: 1.0,
                 converged: ok,
-                iterations: 1,
+                iterations: if ok { 1 } else { self.failed_iterations },
                 residual: 0.0,
                 cpmin: -1.0,
                 supercritical: Some(false),
@@ -383,6 +404,7 @@ mod tests {
                 bad: bad.clone(),
                 bad_fresh: bad_fresh.clone(),
                 calls: 0,
+                failed_iterations: 1,
             };
             let params = SweepParams::default();
             let sequential = sweep(&mut mock(), &alphas, &params);
@@ -403,6 +425,7 @@ mod tests {
             bad: vec![],
             bad_fresh: vec![],
             calls: 0,
+            failed_iterations: 1,
         };
         let pts = sweep(&mut m, &alphas, &SweepParams::default());
         assert!(pts.iter().all(|p| p.converged));
@@ -418,6 +441,7 @@ mod tests {
             bad: vec![2.0, -1.0],
             bad_fresh: vec![],
             calls: 0,
+            failed_iterations: 1,
         };
         let pts = sweep(&mut m, &alphas, &SweepParams::default());
         let conv: Vec<bool> = pts.iter().map(|p| p.converged).collect();
@@ -437,11 +461,13 @@ mod tests {
             bad: vec![2.0, 3.0, 4.0, 5.0, 6.0],
             bad_fresh: vec![],
             calls: 0,
+            failed_iterations: 1,
         };
         let params = SweepParams {
             substep_levels: 1,
             fresh_retry: true,
             recover_limit: 2,
+            ..SweepParams::default()
         };
         let pts = sweep(&mut m, &alphas, &params);
         assert_eq!(pts.iter().filter(|p| p.converged).count(), 2);
@@ -459,6 +485,7 @@ mod tests {
             substep_levels: 2,
             fresh_retry: false,
             recover_limit: 3,
+            ..SweepParams::default()
         };
         let mut m = Mock {
             state: None,
@@ -466,6 +493,7 @@ mod tests {
             bad: vec![3.0],
             bad_fresh: vec![],
             calls: 0,
+            failed_iterations: 1,
         };
         let pts = sweep(&mut m, &alphas, &params);
         let conv: Vec<bool> = pts.iter().map(|p| p.converged).collect();
@@ -487,9 +515,40 @@ mod tests {
             bad: vec![],
             bad_fresh: vec![0.0, -1.0],
             calls: 0,
+            failed_iterations: 1,
         };
         let pts = sweep(&mut m, &alphas, &SweepParams::default());
         assert!(pts.iter().all(|p| p.converged), "{pts:?}");
         assert_eq!(pts.iter().map(|p| p.alpha).collect::<Vec<_>>(), alphas);
+    }
+
+    #[test]
+    fn recovery_stops_when_the_point_has_used_its_budget() {
+        // 2° fails from everywhere; each failed solve reports 100 iterations. Its first solve
+        // and recovery: 2° (100), half step 1.5° (1), 2° (100), quarters 1.25°, 1.5°, 1.75°
+        // (1 each), 2° (100), fresh 2° (100) = 8 solves and 403 iterations without a budget.
+        let run = |point_budget| {
+            let mut m = Mock {
+                state: None,
+                max_step: 1.0,
+                bad: vec![2.0],
+                bad_fresh: vec![],
+                calls: 0,
+                failed_iterations: 100,
+            };
+            let params = SweepParams {
+                point_budget,
+                ..SweepParams::default()
+            };
+            let pts = sweep(&mut m, &[0.0, 1.0, 2.0], &params);
+            assert!(!pts[2].converged);
+            m.calls - 2
+        };
+        assert_eq!(run(u32::MAX), 8);
+        // With 250: 2° (100), 1.5° (1), 2° (100), 1.25°, 1.5°, 1.75° (1 each), 2° (100): 304
+        // used, the fresh start is not tried.
+        assert_eq!(run(250), 7);
+        // With 100 the first solve has used it all: no recovery.
+        assert_eq!(run(100), 1);
     }
 }

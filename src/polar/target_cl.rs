@@ -83,7 +83,17 @@ pub fn solve_at_cl(
         let mut sol = solver.solve(alpha);
         if !sol.point.converged {
             let mut memo = AnchorMemo::default();
-            if recover(solver, alpha, anchor.as_ref(), &params.recovery, &mut memo).is_some() {
+            let spent = sol.point.iterations;
+            if recover(
+                solver,
+                alpha,
+                anchor.as_ref(),
+                &params.recovery,
+                &mut memo,
+                spent,
+            )
+            .is_some()
+            {
                 sol = solver.solve(alpha);
             }
             if !sol.point.converged {

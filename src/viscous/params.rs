@@ -60,6 +60,12 @@ pub struct ViscousParams {
     /// Newton iteration cap of an attempt from a predicted state; one that has not converged
     /// by then is repeated from the converged state itself (with `max_iterations`).
     pub predicted_iterations: u32,
+    /// An attempt stops as failed once its RMS relative Newton changes repeat twice, to six
+    /// digits, with a period of at most this many iterations: the iteration is caught in a
+    /// cycle (or sits on a fixed point above the tolerance) and would run to its cap without
+    /// converging. Not in XFOIL; 0 turns the check off. On the shipped tables no attempt that
+    /// converges triggers it (docs/performance.md).
+    pub cycle_period: u32,
 }
 
 impl Default for ViscousParams {
@@ -78,6 +84,7 @@ impl Default for ViscousParams {
             exploded_step: 1e6,
             tangent_predictor: true,
             predicted_iterations: 30,
+            cycle_period: 16,
         }
     }
 }

@@ -7,6 +7,7 @@ use std::sync::Arc;
 use crate::boundary_layer::BlModel;
 use crate::geometry::Airfoil;
 use crate::inviscid::PanelGeometry;
+use crate::numerics::cycle::repeating_period;
 use crate::section::PolarPoint;
 use crate::section::{Transition, FREE_XTR};
 
@@ -56,6 +57,15 @@ enum PanelSource {
 /// counts as at the stagnation point: a trip at x/c = 0 on a symmetric section at α = 0 acts
 /// on both surfaces, not on whichever side round-off puts the stagnation point.
 const TRIP_AT_STAGNATION: f64 = 1e-6;
+
+/// How many repeats of a block of RMS changes make a cycle ([`ViscousParams::cycle_period`]):
+/// two, so that the block is seen three times in a row.
+const CYCLE_REPEATS: usize = 2;
+
+/// Relative tolerance within which RMS changes count as repeats
+/// ([`ViscousParams::cycle_period`]). The cycles of failing attempts repeat to 1e-9…1e-12;
+/// the first attempt that converged anyway appears at 1e-2 (NACA 8-H-12 default table).
+const CYCLE_RTOL: f64 = 1e-6;
 
 /// Where in the first interval a trip between the stagnation point and the first station acts,
 /// as a fraction of the interval ([`ViscousSolver::forced_xi`]): at its start, just inside the
@@ -298,7 +308,9 @@ impl ViscousSolver {
         }
         match result {
             Ok(a) => {
-                let sol = solution(&self.panels, self.closures(), alpha_deg, &a);
+                let mut sol = solution(&self.panels, self.closures(), alpha_deg, &a);
+                // Every Newton iteration of the solve, a failed predicted attempt's included.
+                sol.point.iterations = iterations;
                 let physical = sol.point.cd - sol.point.cdf >= self.params.min_pressure_drag;
                 if a.converged && sol.point.cl.is_finite() && sol.point.cd.is_finite() && physical {
                     self.warm = Some(WarmState {
@@ -319,7 +331,7 @@ impl ViscousSolver {
                     }
                 }
             }
-            Err(_) => failed_solution(alpha_deg, self.params.max_iterations),
+            Err(_) => failed_solution(alpha_deg, iterations),
         }
     }
 
@@ -395,6 +407,8 @@ impl ViscousSolver {
         // Memory of the n × n Schur complement, reused by every iteration's solve.
         let mut schur = Vec::new();
         let mut transition = [None, None];
+        // RMS relative changes of the iterations so far, for the cycle check.
+        let mut changes = Vec::with_capacity(max_iterations as usize);
         for iter in 1..=max_iterations {
             *iterations += 1;
             // Mixed-mode re-march (XFOIL MRCHDU) while the iteration is still far from
@@ -444,6 +458,7 @@ impl ViscousSolver {
                 &self.params.limits,
             )?;
             residual = upd.rms_change;
+            changes.push(residual);
             // The converged state's tangent along α, from this iteration's factored matrix.
             let tangent = (residual < self.params.tolerance && self.params.tangent_predictor)
                 .then(|| {
@@ -487,12 +502,17 @@ impl ViscousSolver {
                     tangent,
                 });
             }
+            let period = self.params.cycle_period as usize;
+            if period > 0 && repeating_period(&changes, period, CYCLE_REPEATS, CYCLE_RTOL).is_some()
+            {
+                break;
+            }
         }
         Ok(Attempt {
             layout,
             state,
             converged: false,
-            iterations: max_iterations,
+            iterations: changes.len() as u32,
             residual,
             transition,
             turbulent_fraction,

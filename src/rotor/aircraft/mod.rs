@@ -228,14 +228,21 @@ pub struct TakeoffParams {
     pub max_time_s: f64,
 }
 
+/// The text of the preset file at `path` (a regular file within the input limits, UTF-8)
+/// and the name errors give it.
+pub(super) fn read_preset_text(path: &Path) -> Result<(String, String), AircraftError> {
+    let bytes = read_input(path).map_err(AircraftError::Input)?;
+    let origin = path.display().to_string();
+    let text = String::from_utf8(bytes).map_err(|_| AircraftError::NotText {
+        path: origin.clone(),
+    })?;
+    Ok((text, origin))
+}
+
 impl Aircraft {
     /// Reads and checks a TOML preset.
     pub fn from_toml_file(path: &Path) -> Result<Self, AircraftError> {
-        let bytes = read_input(path).map_err(AircraftError::Input)?;
-        let origin = path.display().to_string();
-        let text = String::from_utf8(bytes).map_err(|_| AircraftError::NotText {
-            path: origin.clone(),
-        })?;
+        let (text, origin) = read_preset_text(path)?;
         Self::from_toml_str(&text, &origin)
     }
 

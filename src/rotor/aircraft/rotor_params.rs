@@ -4,7 +4,6 @@
 use super::checks::{in_range, non_negative, positive};
 use super::AircraftError;
 use crate::arguments::ArgumentError;
-use crate::input::read_input;
 use crate::limits::{AZIMUTH_STEPS, MAX_ROTOR_CELLS, RADIAL_STRIPS};
 use crate::rotor::flapping::{FlapHinge, Hub};
 use crate::rotor::inflow::{InflowModel, TipLoss, YawedFlow};
@@ -381,11 +380,7 @@ const PRESET_KEYS: [&str; 8] = [
 impl RotorPreset {
     /// Reads and checks the rotor of a TOML preset.
     pub fn from_toml_file(path: &Path) -> Result<Self, AircraftError> {
-        let bytes = read_input(path).map_err(AircraftError::Input)?;
-        let origin = path.display().to_string();
-        let text = String::from_utf8(bytes).map_err(|_| AircraftError::NotText {
-            path: origin.clone(),
-        })?;
+        let (text, origin) = super::read_preset_text(path)?;
         Self::from_toml_str(&text, &origin)
     }
 
