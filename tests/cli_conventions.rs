@@ -6,25 +6,12 @@
 
 mod cli_support;
 
-use cli_support::{gyro, polargen, repo, scratch, stderr};
+use cli_support::{gyro, polargen, repo, run, scratch, stderr, text};
 use std::io::Read;
 use std::process::{Command, Output, Stdio};
 
 const POLARGEN: &str = env!("CARGO_BIN_EXE_polargen");
 const GYRO: &str = env!("CARGO_BIN_EXE_gyro");
-
-/// Runs `name` (`polargen` or `gyro`) with `args`.
-fn run(name: &str, args: &[&str]) -> Output {
-    if name == "polargen" {
-        polargen(args)
-    } else {
-        gyro(args)
-    }
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
 
 /// The run is a usage error: exit 2 and one line `<tool>: error: …` holding `expect`.
 fn usage_error(name: &str, args: &[&str], expect: &str) {

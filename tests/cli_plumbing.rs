@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
 mod cli_support;
-use cli_support::scratch;
+use cli_support::{scratch, text};
 
 const POLARGEN: &str = env!("CARGO_BIN_EXE_polargen");
 const GYRO: &str = env!("CARGO_BIN_EXE_gyro");
@@ -26,10 +26,6 @@ fn run_with_stdin(bin: &str, args: &[&str], input: &[u8]) -> Output {
         .expect("spawn");
     child.stdin.take().unwrap().write_all(input).unwrap();
     child.wait_with_output().unwrap()
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
 }
 
 fn data(rel: &str) -> PathBuf {

@@ -42,6 +42,20 @@ pub fn gyro(args: &[&str]) -> Output {
         .expect("gyro runs")
 }
 
+/// Runs the binary `name` (`polargen` or `gyro`) with `args`.
+pub fn run(name: &str, args: &[&str]) -> Output {
+    match name {
+        "polargen" => polargen(args),
+        "gyro" => gyro(args),
+        other => panic!("no binary {other}"),
+    }
+}
+
+/// Bytes of a run's output as text.
+pub fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
 /// The run's standard error as text.
 pub fn stderr(out: &Output) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
