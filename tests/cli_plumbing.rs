@@ -2,31 +2,15 @@
 //! error/exit-code convention, `--quiet`, completions and man pages, bare commands, the
 //! `--re`-alone rule, and `gyro report` outside the repository.
 
-use std::io::{Read, Write};
+use std::io::Read;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Stdio};
 
 mod cli_support;
-use cli_support::{scratch, text};
+use cli_support::{exe, run, run_with_stdin, scratch, text};
 
-const POLARGEN: &str = env!("CARGO_BIN_EXE_polargen");
-const GYRO: &str = env!("CARGO_BIN_EXE_gyro");
-
-fn run(bin: &str, args: &[&str]) -> Output {
-    Command::new(bin).args(args).output().expect("run binary")
-}
-
-fn run_with_stdin(bin: &str, args: &[&str], input: &[u8]) -> Output {
-    let mut child = Command::new(bin)
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("spawn");
-    child.stdin.take().unwrap().write_all(input).unwrap();
-    child.wait_with_output().unwrap()
-}
+const POLARGEN: &str = "polargen";
+const GYRO: &str = "gyro";
 
 fn data(rel: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -98,7 +82,7 @@ fn out_dash_is_standard_output_for_tables_only() {
 
 /// The reader of standard output goes away after the first line: exit 0, nothing on stderr.
 fn closed_pipe_is_quiet(bin: &str, args: &[&str]) {
-    let mut child = Command::new(bin)
+    let mut child = Command::new(exe(bin))
         .args(args)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -271,7 +255,7 @@ fn re_alone_is_one_polar_at_mach_0_and_mach_alone_is_refused() {
 #[test]
 fn gyro_report_runs_outside_the_repository() {
     let dir = scratch("report");
-    let o = Command::new(GYRO)
+    let o = Command::new(exe(GYRO))
         .args(["report", "--out", "r"])
         .current_dir(&dir)
         .output()

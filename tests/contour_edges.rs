@@ -5,6 +5,7 @@
 //! pass the spike test while real spikes and sawtooth contours do not; messages give the numbers
 //! (a contour of 1e-12, a Reynolds number above the cap).
 
+mod cli_support;
 mod xfoil_support;
 
 use polargen::geometry::{
@@ -14,7 +15,6 @@ use polargen::inviscid::PanelSystem;
 use polargen::section::PolarPoint;
 use polargen::viscous::{ViscousParams, ViscousSolver};
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/contours/");
 
@@ -264,15 +264,10 @@ fn real_spikes_and_sawtooth_contours_are_still_refused() {
     assert!(parse(&print(&saw(2e-5), 4)).is_ok());
 }
 
+/// `polargen` run with `args` (`cli_support::polargen`): success, stderr.
 fn polargen(args: &[&str]) -> (bool, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_polargen"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    let out = cli_support::polargen(args);
+    (out.status.success(), cli_support::stderr(&out))
 }
 
 #[test]

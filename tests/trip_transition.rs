@@ -6,13 +6,13 @@
 //! the first boundary-layer station acts at that station. And every way in (flags of each
 //! command, the studies, table metadata, the library's parameters) takes the same x/c range.
 
+mod cli_support;
 mod xfoil_support;
 
 use polargen::geometry::solver_airfoil;
 use polargen::section::{PolarPoint, Transition, TransitionField};
 use polargen::table::{read_table, write_table, PolarTable, TableFormat, TableMeta};
 use polargen::viscous::{ViscousParams, ViscousSolver};
-use std::process::Command;
 
 const AIRCRAFT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/aircraft/mtosport.toml");
 
@@ -200,16 +200,13 @@ fn every_layer_takes_the_same_transition_range() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// `tool` run with `args` (`cli_support::run`): success, stdout, stderr.
 fn run(tool: &str, args: &[&str]) -> (bool, String, String) {
-    let exe = match tool {
-        "polargen" => env!("CARGO_BIN_EXE_polargen"),
-        _ => env!("CARGO_BIN_EXE_gyro"),
-    };
-    let out = Command::new(exe).args(args).output().unwrap();
+    let out = cli_support::run(tool, args);
     (
         out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
+        cli_support::text(&out.stdout),
+        cli_support::stderr(&out),
     )
 }
 

@@ -42,6 +42,29 @@ pub fn gyro(args: &[&str]) -> Output {
         .expect("gyro runs")
 }
 
+/// The path of the binary `name` (`polargen` or `gyro`).
+pub fn exe(name: &str) -> &'static str {
+    match name {
+        "polargen" => env!("CARGO_BIN_EXE_polargen"),
+        "gyro" => env!("CARGO_BIN_EXE_gyro"),
+        other => panic!("no binary {other}"),
+    }
+}
+
+/// Runs the binary `name` with `args`, `input` on its standard input.
+pub fn run_with_stdin(name: &str, args: &[&str], input: &[u8]) -> Output {
+    use std::io::Write;
+    let mut child = Command::new(exe(name))
+        .args(args)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("spawn");
+    child.stdin.take().unwrap().write_all(input).unwrap();
+    child.wait_with_output().unwrap()
+}
+
 /// Runs the binary `name` (`polargen` or `gyro`) with `args`.
 pub fn run(name: &str, args: &[&str]) -> Output {
     match name {
