@@ -7,8 +7,8 @@ use std::path::PathBuf;
 use numpy::IntoPyArray;
 use polargen::rotor::{
     autorotate, autorotate_outcomes, check_altitude_m, check_mass_kg, check_speed_kt,
-    simulate_takeoff, trim_aircraft, tunnel_case, Aircraft, Atmosphere, Rotor, RotorPreset,
-    TakeoffSample, TrimParams,
+    simulate_takeoff, trim_aircraft, tunnel_case, Aircraft, Atmosphere, Rotor, RotorParams,
+    RotorPreset, TakeoffSample, TrimParams,
 };
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -149,6 +149,19 @@ pub struct PyRotor {
     inner: RotorPreset,
 }
 
+impl PyRotor {
+    /// The preset's rotor with the blade pitch setting `pitch_deg` when given (checked as the
+    /// preset is, the error naming `pitch_deg`).
+    fn tunnel_params(&self, pitch_deg: Option<f64>) -> PyResult<RotorParams> {
+        let mut params = self.inner.rotor.clone();
+        if let Some(pitch) = pitch_deg {
+            params.incidence_deg = pitch;
+            params.validate().map_err(|e| raise(Some("pitch_deg"), e))?;
+        }
+        Ok(params)
+    }
+}
+
 #[pymethods]
 impl PyRotor {
     /// Reads and checks the rotor of a TOML preset (e.g. `aircraft/pca2.toml`).
@@ -189,11 +202,7 @@ impl PyRotor {
         altitude_m: f64,
     ) -> PyResult<(String, Vec<String>)> {
         check_altitude_m("altitude_m", altitude_m).map_err(|e| raise(None, e))?;
-        let mut params = self.inner.rotor.clone();
-        if let Some(pitch) = pitch_deg {
-            params.incidence_deg = pitch;
-            params.validate().map_err(|e| raise(Some("pitch_deg"), e))?;
-        }
+        let params = self.tunnel_params(pitch_deg)?;
         let names = ["alpha_deg", "speed_m_s", "mu", "reference_rpm"];
         let case = tunnel_case(
             alpha_deg,
@@ -234,11 +243,7 @@ impl PyRotor {
                 speed_m_s.len()
             )));
         }
-        let mut params = self.inner.rotor.clone();
-        if let Some(pitch) = pitch_deg {
-            params.incidence_deg = pitch;
-            params.validate().map_err(|e| raise(Some("pitch_deg"), e))?;
-        }
+        let params = self.tunnel_params(pitch_deg)?;
         let names = ["alpha_deg", "speed_m_s", "mu", "reference_rpm"];
         let cases = alpha_deg
             .iter()

@@ -221,8 +221,6 @@ pub fn build_table_cancellable(
     on_points: impl Fn(usize) + Sync,
     cancel: &AtomicBool,
 ) -> Result<PolarTable, BuildError> {
-    // One panel store for the whole grid: the per-α inviscid model does not depend on Re or M.
-    let store = Arc::new(SharedPanels::new(foil).map_err(BuildError::Solver)?);
     let nodes: Vec<GridNode<'_>> = grid
         .conditions()
         .iter()
@@ -232,29 +230,12 @@ pub fn build_table_cancellable(
             alphas: &grid.alpha_deg,
         })
         .collect();
-    let polars = run_grid(
-        &nodes,
-        threads,
-        &SweepParams::default(),
-        |i| {
-            if cancel.load(Ordering::Relaxed) {
-                return Err(BuildError::Cancelled);
-            }
-            ViscousSolver::with_panels(
-                Arc::clone(&store),
-                ViscousParams {
-                    reynolds: nodes[i].re,
-                    mach: nodes[i].mach,
-                    ..*base
-                },
-            )
-            .map_err(BuildError::Solver)
-        },
-        |p: &GridPolar| on_points(p.points.len()),
-    )?;
-    if cancel.load(Ordering::Relaxed) {
-        return Err(BuildError::Cancelled);
-    }
+    let params = |i: usize| ViscousParams {
+        reynolds: nodes[i].re,
+        mach: nodes[i].mach,
+        ..*base
+    };
+    let polars = solve_nodes(foil, &nodes, params, threads, on_points, cancel)?;
     PolarTable::from_polars(
         table_meta(foil, panels, base),
         polars
@@ -263,6 +244,37 @@ pub fn build_table_cancellable(
             .collect(),
     )
     .map_err(BuildError::Table)
+}
+
+/// The polars of `nodes` on `foil`, node `i` solved with `params(i)` (one panel store for all:
+/// the per-α inviscid model does not depend on Re, M or trips), on at most `threads` threads,
+/// `on_points` called with each finished polar's point count; no polar starts once `cancel`
+/// is set, and the result is then [`BuildError::Cancelled`].
+pub(crate) fn solve_nodes(
+    foil: &Airfoil,
+    nodes: &[GridNode<'_>],
+    params: impl Fn(usize) -> ViscousParams + Sync,
+    threads: usize,
+    on_points: impl Fn(usize) + Sync,
+    cancel: &AtomicBool,
+) -> Result<Vec<GridPolar>, BuildError> {
+    let store = Arc::new(SharedPanels::new(foil).map_err(BuildError::Solver)?);
+    let polars = run_grid(
+        nodes,
+        threads,
+        &SweepParams::default(),
+        |i| {
+            if cancel.load(Ordering::Relaxed) {
+                return Err(BuildError::Cancelled);
+            }
+            ViscousSolver::with_panels(Arc::clone(&store), params(i)).map_err(BuildError::Solver)
+        },
+        |p: &GridPolar| on_points(p.points.len()),
+    )?;
+    if cancel.load(Ordering::Relaxed) {
+        return Err(BuildError::Cancelled);
+    }
+    Ok(polars)
 }
 
 /// The metadata of a table of `foil` (paneled with `panels` nodes) solved with `base`.

@@ -5,15 +5,15 @@
 
 use crate::section::Transition;
 use std::collections::HashMap;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
 
+use super::build::solve_nodes;
 use super::BuildError;
 use crate::geometry::Airfoil;
 use crate::limits::MAX_GRID_POINTS;
-use crate::polar::{run_grid, GridNode, GridPolar, SweepParams};
+use crate::polar::GridNode;
 use crate::section::PolarPoint;
-use crate::viscous::{SharedPanels, ViscousParams, ViscousSolver};
+use crate::viscous::ViscousParams;
 
 /// One operating point to solve.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -121,7 +121,6 @@ pub fn solve_points(
     cancel: &AtomicBool,
 ) -> Result<Vec<PolarPoint>, BuildError> {
     plan.check_size()?;
-    let store = Arc::new(SharedPanels::new(foil).map_err(BuildError::Solver)?);
     let nodes: Vec<GridNode<'_>> = plan
         .polars
         .iter()
@@ -131,35 +130,20 @@ pub fn solve_points(
             alphas,
         })
         .collect();
-    let polars = run_grid(
-        &nodes,
-        threads,
-        &SweepParams::default(),
-        |i| {
-            if cancel.load(Ordering::Relaxed) {
-                return Err(BuildError::Cancelled);
-            }
-            let q = &plan.polars[i].0;
-            ViscousSolver::with_panels(
-                Arc::clone(&store),
-                ViscousParams {
-                    reynolds: q.reynolds,
-                    mach: q.mach,
-                    transition: Transition {
-                        xtr_top: q.xtr_top,
-                        xtr_bot: q.xtr_bot,
-                        ..base.transition
-                    },
-                    ..*base
-                },
-            )
-            .map_err(BuildError::Solver)
-        },
-        |p: &GridPolar| on_points(p.points.len()),
-    )?;
-    if cancel.load(Ordering::Relaxed) {
-        return Err(BuildError::Cancelled);
-    }
+    let params = |i: usize| {
+        let q = &plan.polars[i].0;
+        ViscousParams {
+            reynolds: q.reynolds,
+            mach: q.mach,
+            transition: Transition {
+                xtr_top: q.xtr_top,
+                xtr_bot: q.xtr_bot,
+                ..base.transition
+            },
+            ..*base
+        }
+    };
+    let polars = solve_nodes(foil, &nodes, params, threads, on_points, cancel)?;
     Ok(plan
         .slots
         .iter()
