@@ -104,6 +104,16 @@ pub fn polar_columns<'py>(py: Python<'py>, points: &[PolarPoint]) -> PyResult<Bo
     d.set_item("xsep_top", column(|p| p.xsep_top))?;
     d.set_item("xsep_bot", column(|p| p.xsep_bot))?;
     d.set_item("massive_separation", flag(|p| p.massive_separation))?;
+    Ok(d)
+}
+
+/// [`polar_columns`] of the points of one polar, with its summary (`polargen summary`) under
+/// `summary`.
+pub fn polar_columns_with_summary<'py>(
+    py: Python<'py>,
+    points: &[PolarPoint],
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = polar_columns(py, points)?;
     d.set_item("summary", summary_dict(py, &summarize(points))?)?;
     Ok(d)
 }

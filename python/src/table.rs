@@ -13,7 +13,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 
 use crate::errors::{raise, shielded};
-use crate::solve::polar_columns;
+use crate::solve::polar_columns_with_summary;
 
 /// A table of polars, one per (Re, M) node (the library's `PolarTable`).
 #[pyclass(module = "polargen._polargen", name = "PolarTable", frozen)]
@@ -199,7 +199,7 @@ impl Table {
     fn polars<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         let list = PyList::empty(py);
         for (condition, points) in self.inner.polars() {
-            let columns = polar_columns(py, points)?;
+            let columns = polar_columns_with_summary(py, points)?;
             list.append(PyTuple::new(
                 py,
                 [
@@ -227,7 +227,7 @@ impl Table {
             .inner
             .polars()
             .find(|(_, points)| std::ptr::eq(*points, found));
-        node.map(|(c, points)| Ok((c.reynolds, c.mach, polar_columns(py, points)?)))
+        node.map(|(c, points)| Ok((c.reynolds, c.mach, polar_columns_with_summary(py, points)?)))
             .transpose()
     }
 

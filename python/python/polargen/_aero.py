@@ -116,7 +116,6 @@ def aero(airfoil: "AirfoilLike", alpha: ArrayLike, re: ArrayLike, mach: ArrayLik
     result = {"alpha": broadcast[0].reshape(shape).copy(), "re": broadcast[1].reshape(shape).copy(),
               "mach": broadcast[2].reshape(shape).copy()}
     for name, values in columns.items():
-        # The per-point columns; the polars' summaries (a dict) are not points.
-        if name not in ("alpha", "summary"):
+        if name != "alpha":
             result[name] = np.asarray(values).reshape(shape)
     return Aero(result)
