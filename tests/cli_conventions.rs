@@ -6,9 +6,8 @@
 
 mod cli_support;
 
-use cli_support::{gyro, polargen, repo, run, scratch, stderr, text};
-use std::io::Read;
-use std::process::{Command, Output, Stdio};
+use cli_support::{closed_pipe_is_quiet, gyro, polargen, repo, run, scratch, stderr, text};
+use std::process::{Command, Output};
 
 const POLARGEN: &str = env!("CARGO_BIN_EXE_polargen");
 const GYRO: &str = env!("CARGO_BIN_EXE_gyro");
@@ -382,22 +381,5 @@ fn a_takeoff_history_on_stdout_is_data_only_and_stops_quietly_when_the_reader_go
         text(&o.stderr)
     );
     // `| head -1`: the reader leaves after one line.
-    let mut child = Command::new(GYRO)
-        .args(["takeoff", "--history", "-", "--quiet"])
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let mut first = [0u8; 1];
-    child
-        .stdout
-        .as_mut()
-        .unwrap()
-        .read_exact(&mut first)
-        .unwrap();
-    drop(child.stdout.take());
-    let out = child.wait_with_output().unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
-    assert!(out.stderr.is_empty(), "{}", text(&out.stderr));
+    closed_pipe_is_quiet("gyro", &["takeoff", "--history", "-", "--quiet"]);
 }

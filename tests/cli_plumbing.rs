@@ -2,12 +2,11 @@
 //! error/exit-code convention, `--quiet`, completions and man pages, bare commands, the
 //! `--re`-alone rule, and `gyro report` outside the repository.
 
-use std::io::Read;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Command;
 
 mod cli_support;
-use cli_support::{exe, run, run_with_stdin, scratch, text};
+use cli_support::{closed_pipe_is_quiet, exe, run, run_with_stdin, scratch, text};
 
 const POLARGEN: &str = "polargen";
 const GYRO: &str = "gyro";
@@ -78,27 +77,6 @@ fn out_dash_is_standard_output_for_tables_only() {
         "{}",
         text(&pol.stderr)
     );
-}
-
-/// The reader of standard output goes away after the first line: exit 0, nothing on stderr.
-fn closed_pipe_is_quiet(bin: &str, args: &[&str]) {
-    let mut child = Command::new(exe(bin))
-        .args(args)
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("spawn");
-    let mut first = [0u8; 1];
-    child
-        .stdout
-        .as_mut()
-        .unwrap()
-        .read_exact(&mut first)
-        .unwrap();
-    drop(child.stdout.take());
-    let out = child.wait_with_output().unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
-    assert!(out.stderr.is_empty(), "{}", text(&out.stderr));
 }
 
 #[test]

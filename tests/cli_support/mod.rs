@@ -65,6 +65,30 @@ pub fn run_with_stdin(name: &str, args: &[&str], input: &[u8]) -> Output {
     child.wait_with_output().unwrap()
 }
 
+/// `name` run with `args` in the repository, its standard output read by a reader that goes
+/// away after the first byte (`| head -1`): exit 0 and nothing on stderr.
+pub fn closed_pipe_is_quiet(name: &str, args: &[&str]) {
+    use std::io::Read;
+    let mut child = Command::new(exe(name))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("spawn");
+    let mut first = [0u8; 1];
+    child
+        .stdout
+        .as_mut()
+        .unwrap()
+        .read_exact(&mut first)
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(out.stderr.is_empty(), "{}", text(&out.stderr));
+}
+
 /// Runs the binary `name` (`polargen` or `gyro`) with `args`.
 pub fn run(name: &str, args: &[&str]) -> Output {
     match name {
