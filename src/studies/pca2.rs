@@ -14,8 +14,8 @@
 //! each was made); nothing here is fitted to them.
 
 use crate::rotor::{
-    autorotate_outcomes, trim_rotor, Atmosphere, BladeSection, CaseOutcome, Rotor, TrimError,
-    TrimParams, TunnelCase,
+    autorotate_outcomes, trim_rotor, Atmosphere, BladeSection, CaseOutcome, ElasticTorsion, Rotor,
+    TrimError, TrimParams, TunnelCase,
 };
 use crate::section::{PolarPoint, Transition};
 use crate::table::{PolarTable, TableError, TableMeta};
@@ -46,6 +46,20 @@ pub const ALPHA_BAND_DEG: f64 = 4.0;
 /// ("corresponding to infinite aspect ratio ... a good average") and profile drag δ = 0.0120
 /// (one and a half times the section's minimum, Report 487 section 10).
 pub const REPORT_487_SECTION: (f64, f64) = (5.85, 0.012);
+
+/// The PCA-2 blade's elastic torsion as NACA Report 487 describes it (p. 13: the lift,
+/// offset from the blade's centre of gravity, twists the blade "approximately 2.4° (0.0419
+/// radian) at the tip" in flight; nose-up, as the measured pitch rises outboard, Fig. 5) for
+/// the preset's flight-measured twist: on the outer blade, where the measured pitch is linear
+/// (from 39.4 % R), at the mean rotor thrust of the report's flight points (Fig. 7: C_T ρπR²
+/// (ΩR)² at the tests' average density, 10.64 kN; the points span 6.3–12.4 kN, and the report
+/// does not say under which the pitch was measured). The preset leaves it out: with it the
+/// model's rotor turns faster still against Table III (`tests/rotor_pca2.rs`).
+pub const REPORT_487_TORSION: ElasticTorsion = ElasticTorsion {
+    tip: 0.0419,
+    reference_thrust: 10_640.0,
+    from_r_over_r: 0.394,
+};
 
 /// Angles of the [`report_487_section`] polar \[deg\]: the attached range of the rotor's blades.
 const REPORT_487_ALPHA_DEG: (i32, i32) = (-10, 14);
@@ -129,6 +143,23 @@ impl TunnelRow {
     }
 }
 
+/// Largest difference of shaft angle of a [`TunnelComparison::speed_trend`] pair \[deg\].
+pub const SPEED_PAIR_ALPHA_DEG: f64 = 0.15;
+
+/// Smallest ratio of the measured rotor speeds of a [`TunnelComparison::speed_trend`] pair.
+pub const SPEED_PAIR_RPM_RATIO: f64 = 1.25;
+
+/// [`TunnelComparison::speed_trend`]: the mean μ(slower) − μ(faster) of its pairs of rows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpeedTrend {
+    /// Pairs of rows.
+    pub pairs: usize,
+    /// Measured mean difference of μ.
+    pub measured: f64,
+    /// Predicted mean difference of μ.
+    pub predicted: f64,
+}
+
 /// The mean relative errors over the rows of an α band.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BandErrors {
@@ -172,6 +203,38 @@ impl TunnelComparison {
             lift_to_drag: mean(2),
             rotor_rpm_max: errors.iter().fold(0.0, |a, e| a.max(e[0].abs())),
         }
+    }
+
+    /// How μ changes with the wind speed at one shaft angle, measured and predicted: over the
+    /// pairs of rows with `lo ≤ α < hi` whose angles differ by at most
+    /// [`SPEED_PAIR_ALPHA_DEG`] and whose measured rotor speeds differ by more than
+    /// [`SPEED_PAIR_RPM_RATIO`], the mean of μ(slower row) − μ(faster row). The tunnel's rotor
+    /// reaches a higher μ at the lower speed; a rigid blade with the same coefficients at every
+    /// speed would not, apart from the Reynolds number. `None` without such pairs.
+    pub fn speed_trend(&self, lo: f64, hi: f64) -> Option<SpeedTrend> {
+        let rows: Vec<&TunnelRow> = self
+            .rows
+            .iter()
+            .filter(|r| (lo..hi).contains(&r.measured.alpha_deg) && r.errors().is_some())
+            .collect();
+        let (mut measured, mut predicted, mut pairs) = (0.0, 0.0, 0usize);
+        for slow in &rows {
+            for fast in &rows {
+                let (a, b) = (&slow.measured, &fast.measured);
+                if (a.alpha_deg - b.alpha_deg).abs() <= SPEED_PAIR_ALPHA_DEG
+                    && b.rotor_rpm > SPEED_PAIR_RPM_RATIO * a.rotor_rpm
+                {
+                    measured += a.mu - b.mu;
+                    predicted += slow.predicted.result.mu - fast.predicted.result.mu;
+                    pairs += 1;
+                }
+            }
+        }
+        (pairs > 0).then(|| SpeedTrend {
+            pairs,
+            measured: measured / pairs as f64,
+            predicted: predicted / pairs as f64,
+        })
     }
 }
 
