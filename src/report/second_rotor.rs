@@ -374,7 +374,18 @@ impl SecondRotor {
         };
         outln!(
             o,
-            "The preset's pitch is the one Report 487 measured in flight, its blade twisted              nose-up by the lift (about 2.4° at the tip, its Fig. 5 and p. 13). Made              proportional to the rotor thrust (2.4° at the flights' mean thrust,              `studies::pca2::REPORT_487_TORSION`; nothing fitted), the torsion turns the rotor              faster still (rotor rpm {} at α ≥ 4°, {} at α < 4°; C_L {}): the model's rotor              carries more thrust than the tunnel's, so its blade twists further. It does give              the tunnel's trend with the wind speed at one α the right order: at α < 4°, over              {} pairs of rows within 0.15° whose rotor speeds differ by more than 25 %, the              slower rotor reached a μ higher by {} measured, {} with the rigid blade (the              Reynolds number alone) and {} with the twisting one. A load-dependent pitch is in              the data; the preset leaves the torsion out because it moves the levels further              from them.",
+            "The preset's pitch is the one Report 487 measured in flight, its blade twisted \
+             nose-up by the lift (about 2.4° at the tip, its Fig. 5 and p. 13). Made \
+             proportional to the rotor thrust (2.4° at the flights' mean thrust, \
+             `studies::pca2::REPORT_487_TORSION`; nothing fitted), the torsion turns the rotor \
+             faster still (rotor rpm {} at α ≥ 4°, {} at α < 4°; C_L {}): the model's rotor \
+             carries more thrust than the tunnel's, so its blade twists further. It does give \
+             the tunnel's trend with the wind speed at one α the right order: at α < 4°, over \
+             {} pairs of rows within 0.15° whose rotor speeds differ by more than 25 %, the \
+             slower rotor reached a μ higher by {} measured, {} with the rigid blade (the \
+             Reynolds number alone) and {} with the twisting one. A load-dependent pitch is in \
+             the data; the preset leaves the torsion out because it moves the levels further \
+             from them.",
             pct(100.0 * twisted.rotor_rpm),
             pct(100.0 * twisted_low.rotor_rpm),
             pct(100.0 * twisted.cl),
