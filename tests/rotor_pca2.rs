@@ -25,7 +25,8 @@ mod xfoil_support;
 use polargen::rotor::{InflowModel, Rotor, RotorPreset};
 use polargen::studies::pca2::{
     flapping_errors, flight_comparison, report_487_section, tunnel_comparison, BandErrors,
-    FlightPoint, TunnelComparison, ALPHA_BAND_DEG, FLIGHT_PITCH_DEG, REPORT_487_TORSION,
+    FlightPoint, TunnelComparison, TunnelTable, ALPHA_BAND_DEG, FLIGHT_PITCH_DEG,
+    REPORT_487_TORSION,
 };
 use polargen::table::{read_lookup_table, PolarTable};
 use std::path::Path;
@@ -51,7 +52,26 @@ fn tunnel_rotor() -> Rotor {
 /// Table III with the tunnel rotor and the tripped table, computed once for the tests.
 fn rigid_tripped() -> &'static TunnelComparison {
     static C: OnceLock<TunnelComparison> = OnceLock::new();
-    C.get_or_init(|| tunnel_comparison(&tunnel_rotor(), &table("goe429_xtr0.07.csv")))
+    C.get_or_init(|| {
+        tunnel_comparison(
+            TunnelTable::III,
+            &tunnel_rotor(),
+            &table("goe429_xtr0.07.csv"),
+        )
+    })
+}
+
+/// Table II (pitch setting 0.8°) with the tunnel rotor at that pitch and the tripped table,
+/// computed once for the tests.
+fn table_ii_tripped() -> &'static TunnelComparison {
+    static C: OnceLock<TunnelComparison> = OnceLock::new();
+    C.get_or_init(|| {
+        tunnel_comparison(
+            TunnelTable::II,
+            &tunnel_rotor(),
+            &table("goe429_xtr0.07.csv"),
+        )
+    })
 }
 
 /// Table III with the tunnel rotor's blade twisting under load ([`REPORT_487_TORSION`]) and
@@ -63,7 +83,7 @@ fn twisting_tripped() -> &'static TunnelComparison {
             torsion: Some(REPORT_487_TORSION),
             ..tunnel_rotor()
         };
-        tunnel_comparison(&twisting, &table("goe429_xtr0.07.csv"))
+        tunnel_comparison(TunnelTable::III, &twisting, &table("goe429_xtr0.07.csv"))
     })
 }
 
@@ -98,7 +118,7 @@ fn preset_is_the_report_487_rotor() {
 #[test]
 fn tunnel_table_iii_with_polargen_tables() {
     let tripped = rigid_tripped();
-    let free = tunnel_comparison(&tunnel_rotor(), &table("goe429_free.csv"));
+    let free = tunnel_comparison(TunnelTable::III, &tunnel_rotor(), &table("goe429_free.csv"));
     assert_eq!(tripped.rows.len(), 81);
     let (t_hi, t_lo) = (
         tripped.band(ALPHA_BAND_DEG, 90.0),
@@ -118,13 +138,15 @@ fn tunnel_table_iii_with_polargen_tables() {
     // The README's sentence states these numbers and those of Report 487's constants.
     let hi = report_487_constants_band();
     let tw = twisting_tripped().band(ALPHA_BAND_DEG, 90.0);
+    let ii = table_ii_tripped().band(ALPHA_BAND_DEG, 90.0);
     let pct = |x: f64| format!("{:+.1} %", 100.0 * x).replace('-', "−");
     let sentence = format!(
         "At α ≥ 4° (40 of Table III's 81 rows) with our tripped Göttingen 429 table: rotor rpm \
          {}, C_L {}, L/D {}; with Report 487's own section constants: rpm {}, C_L {}, L/D {}; \
          with the blade's torsion following the load (Report 487's 2.4° at the tip, not in the \
-         preset): rpm {}, C_L {}, L/D {} (`tests/rotor_pca2.rs`; α < 4° and the flight tests \
-         in the report's section \"The rotor model on a second rotor\").\n",
+         preset): rpm {}, C_L {}, L/D {}. At the lower pitch setting of Table II (0.8°, 90 of \
+         108 rows at α ≥ 4°): rpm {}, C_L {}, L/D {} (`tests/rotor_pca2.rs`; α < 4° and the \
+         flight tests in the report's section \"The rotor model on a second rotor\").\n",
         pct(t_hi.rotor_rpm),
         pct(t_hi.cl),
         pct(t_hi.lift_to_drag),
@@ -134,6 +156,9 @@ fn tunnel_table_iii_with_polargen_tables() {
         pct(tw.rotor_rpm),
         pct(tw.cl),
         pct(tw.lift_to_drag),
+        pct(ii.rotor_rpm),
+        pct(ii.cl),
+        pct(ii.lift_to_drag),
     );
     xfoil_support::check_readme_block(
         "second rotor",
@@ -238,6 +263,32 @@ fn torsion_at_its_reference_thrust_changes_nothing() {
     assert!(c.thrust > 1.05 * a.thrust, "{} {}", a.thrust, c.thrust);
 }
 
+/// Measure with `cargo test --test rotor_pca2 table_ii -- --nocapture`.
+/// NACA Report 515's Table II (pitch setting 0.8°, 108 rows; data the model was not built
+/// from) with the tripped table, the preset at that pitch:
+/// * α ≥ 4° (90 rows): rotor rpm +17.2 %, C_L +61 %, L/D −0.7 %; α < 4° (18 rows): rpm +66 %;
+/// * against Table III (pitch 1.9°, α ≥ 4°: +7.6 %, +24 %, −5.8 %) the rpm error grows by 10
+///   points as the pitch falls: the tunnel's rotor slowed more than the model's when the pitch
+///   was lowered.
+#[test]
+fn tunnel_table_ii_at_the_lower_pitch() {
+    let c = tunnel_comparison(
+        TunnelTable::II,
+        &tunnel_rotor(),
+        &table("goe429_xtr0.07.csv"),
+    );
+    assert_eq!(c.rows.len(), 108);
+    let (hi, lo) = (c.band(ALPHA_BAND_DEG, 90.0), c.band(-90.0, ALPHA_BAND_DEG));
+    eprintln!("Table II: α ≥ 4° {hi:?}\nα < 4° {lo:?}");
+    assert_eq!((hi.rows, lo.rows, hi.failed + lo.failed), (90, 18, 0));
+    assert!((0.12..0.22).contains(&hi.rotor_rpm), "{hi:?}");
+    assert!((0.45..0.80).contains(&hi.cl), "{hi:?}");
+    assert!(hi.lift_to_drag.abs() < 0.05, "{hi:?}");
+    assert!(lo.rotor_rpm > 0.45, "{lo:?}");
+    let iii = rigid_tripped().band(ALPHA_BAND_DEG, 90.0);
+    assert!(hi.rotor_rpm > iii.rotor_rpm + 0.05, "{hi:?} {iii:?}");
+}
+
 /// A preset's `[rotor.blade.torsion]` table: read into the rotor model, its values checked.
 #[test]
 fn preset_torsion_table() {
@@ -282,7 +333,7 @@ fn report_487_constants_band() -> BandErrors {
     // Report 487 p. 13: lift slope 5.85 per rad, profile drag 0.0120 for this blade, as the
     // report's table of them (`studies::pca2::report_487_section`).
     let section = report_487_section().unwrap();
-    let c = tunnel_comparison(&tunnel_rotor(), &section);
+    let c = tunnel_comparison(TunnelTable::III, &tunnel_rotor(), &section);
     let hi = c.band(ALPHA_BAND_DEG, 90.0);
     assert_eq!(hi.failed, 0);
     // Within ±5 % and ±8 % with the blade's own constants: rpm −1.0 %, C_L −1.1 %.

@@ -8,8 +8,9 @@ use crate::plot::{Figure, Panel, Series, Style};
 use crate::rotor::{InflowModel, Rotor, RotorPreset, TrimError};
 use crate::studies::pca2::{
     flapping_errors, flight_comparison, flight_flapping, flight_points, report_487_section,
-    tunnel_comparison, BandErrors, FlappingErrors, FlightPoint, Table3Row, TunnelComparison,
-    TunnelRow, ALPHA_BAND_DEG, FLIGHT_PITCH_DEG, REPORT_487_SECTION, REPORT_487_TORSION,
+    tunnel_comparison, BandErrors, FlappingErrors, FlightPoint, TunnelComparison,
+    TunnelMeasurement, TunnelRow, TunnelTable, ALPHA_BAND_DEG, FLIGHT_PITCH_DEG,
+    REPORT_487_SECTION, REPORT_487_TORSION,
 };
 use crate::table::{PolarTable, TableError};
 
@@ -35,6 +36,8 @@ pub(super) struct SecondRotor {
     /// Table III with the tripped table and the blade's torsion under load
     /// ([`REPORT_487_TORSION`]).
     tunnel_torsion: TunnelComparison,
+    /// Table II (pitch setting 0.8°) with the tripped table.
+    tunnel_table2: TunnelComparison,
     /// The flight points with uniform and with Drees inflow (tripped table).
     flight: [Vec<Result<FlightPoint, TrimError>>; 2],
 }
@@ -61,21 +64,26 @@ pub(super) fn run(
         torsion: Some(REPORT_487_TORSION),
         ..rotor.clone()
     };
-    let (((free, tripped), tunnel_torsion), (tunnel_487, flight)) = rayon::join(
+    let (((free, tripped), (tunnel_torsion, tunnel_table2)), (tunnel_487, flight)) = rayon::join(
         || {
             rayon::join(
                 || {
                     rayon::join(
-                        || tunnel_comparison(&rotor, &tables[0]),
-                        || tunnel_comparison(&rotor, &tables[1]),
+                        || tunnel_comparison(TunnelTable::III, &rotor, &tables[0]),
+                        || tunnel_comparison(TunnelTable::III, &rotor, &tables[1]),
                     )
                 },
-                || tunnel_comparison(&twisting, &tables[1]),
+                || {
+                    rayon::join(
+                        || tunnel_comparison(TunnelTable::III, &twisting, &tables[1]),
+                        || tunnel_comparison(TunnelTable::II, &rotor, &tables[1]),
+                    )
+                },
             )
         },
         || {
             rayon::join(
-                || tunnel_comparison(&rotor, &section_487),
+                || tunnel_comparison(TunnelTable::III, &rotor, &section_487),
                 || {
                     INFLOWS.map(|(inflow, _)| {
                         let r = Rotor {
@@ -93,6 +101,7 @@ pub(super) fn run(
         tunnel: [free, tripped],
         tunnel_487,
         tunnel_torsion,
+        tunnel_table2,
         flight,
     })
 }
@@ -116,7 +125,7 @@ impl SecondRotor {
 
     fn tunnel_figure(&self) -> Figure {
         let rows = &self.tunnel[0].rows;
-        let measured = |y: fn(&Table3Row) -> f64| {
+        let measured = |y: fn(&TunnelMeasurement) -> f64| {
             Series::new(
                 "NACA Report 515, Table III",
                 rows.iter().map(|r| r.measured.mu).collect(),
@@ -289,6 +298,10 @@ impl SecondRotor {
                     &self.tunnel_torsion,
                     "7 % trip, blade torsion ∝ thrust (Report 487's 2.4°)",
                 ),
+                (
+                    &self.tunnel_table2,
+                    "7 % trip, Table II (pitch setting 0.8°, 108 rows)",
+                ),
             ])
             .collect();
         for (c, label) in &cases {
@@ -357,6 +370,21 @@ impl SecondRotor {
              constants above leave it), not the coning (free, modelled), not the blade's torsion under load (next paragraph).",
             num(max_mu(&self.tunnel[1]), 2),
             num(max_mu(&self.tunnel_487), 2),
+        );
+        outln!(o);
+        let low_pitch = band(&self.tunnel_table2, true);
+        outln!(
+            o,
+            "At the lower pitch setting of Table II (0.8°; the report's Table II, transcribed for \
+             this project) the same model is further off at α ≥ 4°: rotor rpm {}, C_L {}, L/D {} \
+             (Table III: {}, {}, {}). The tunnel's rotor slowed much more than the model's when \
+             the pitch was lowered: the model's rotor speed depends too little on the pitch.",
+            pct(100.0 * low_pitch.rotor_rpm),
+            pct(100.0 * low_pitch.cl),
+            pct(100.0 * low_pitch.lift_to_drag),
+            pct(100.0 * t.rotor_rpm),
+            pct(100.0 * t.cl),
+            pct(100.0 * t.lift_to_drag),
         );
         outln!(o);
         self.torsion_words(o);

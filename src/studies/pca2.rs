@@ -1,9 +1,9 @@
 //! The rotor model on a second rotor: the Pitcairn PCA-2 autogiro rotor against its
-//! full-scale tunnel tests (Wheatley & Hood, NACA Report 515, 1935, Table III: pitch setting
-//! 1.9°, protuberances faired) and its flight tests (Wheatley, NACA Report 487, 1934, Figs. 7
-//! and 8: thrust coefficient, rotor speed, coning and flapping against μ).
+//! full-scale tunnel tests (Wheatley & Hood, NACA Report 515, 1935, Tables III and II: pitch
+//! settings 1.9° and 0.8°, protuberances faired) and its flight tests (Wheatley, NACA Report
+//! 487, 1934, Figs. 7 and 8: thrust coefficient, rotor speed, coning and flapping against μ).
 //!
-//! * [`tunnel_comparison`] — every Table III row as a tunnel case (α and the wind speed
+//! * [`tunnel_comparison`] — every row of a table as a tunnel case (α and the wind speed
 //!   V = μ·Ω·R/cos α of the row), the autorotating rotor beside the measurement, and the mean
 //!   errors by α band ([`TunnelComparison::band`]).
 //! * [`flight_comparison`] — every flight point of Fig. 7 as a trim: the rotor at the flight's
@@ -23,6 +23,9 @@ use serde::Deserialize;
 
 /// NACA Report 515, Table III (μ, α, C_L, C_D, L/D, rpm) with the wind speed of each row.
 const TABLE3_CSV: &str = include_str!("../../tests/data/pca2/tr515_table3_pitch1.9_faired.csv");
+
+/// NACA Report 515, Table II (pitch setting 0.8°), the same columns.
+const TABLE2_CSV: &str = include_str!("../../tests/data/pca2/tr515_table2_pitch0.8_faired.csv");
 
 /// NACA Report 487, Fig. 7: measured thrust coefficient and rotor speed against μ.
 const FLIGHT_ROTOR_CSV: &str = include_str!("../../tests/data/pca2/tr487_flight_rotor.csv");
@@ -87,9 +90,9 @@ pub fn report_487_section() -> Result<PolarTable, TableError> {
     PolarTable::new(meta, vec![3e6], vec![0.0], vec![points])
 }
 
-/// One row of Table III.
+/// One row of a table of NACA Report 515.
 #[derive(Clone, Copy, Debug, PartialEq, Deserialize)]
-pub struct Table3Row {
+pub struct TunnelMeasurement {
     /// Tip-speed ratio μ.
     pub mu: f64,
     /// Rotor angle of attack α \[deg\].
@@ -106,9 +109,33 @@ pub struct Table3Row {
     pub speed_m_s: f64,
 }
 
-/// The rows of Table III, in the report's order.
-pub fn table3() -> Vec<Table3Row> {
-    parse_rows(TABLE3_CSV)
+/// The tables of NACA Report 515 in the repository, both with the protuberances faired. Table
+/// IV (pitch setting 2.7°) is kept out on purpose: an independent check held by the project's
+/// owners.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TunnelTable {
+    /// Table II: pitch setting 0.8° (108 rows).
+    II,
+    /// Table III: pitch setting 1.9° (81 rows), the preset's.
+    III,
+}
+
+impl TunnelTable {
+    /// The table's blade pitch setting \[deg\].
+    pub fn pitch_deg(self) -> f64 {
+        match self {
+            Self::II => 0.8,
+            Self::III => 1.9,
+        }
+    }
+
+    /// The table's rows, in the report's order.
+    pub fn rows(self) -> Vec<TunnelMeasurement> {
+        parse_rows(match self {
+            Self::II => TABLE2_CSV,
+            Self::III => TABLE3_CSV,
+        })
+    }
 }
 
 /// Rows of one of the embedded CSV files (checked by the tests that they parse).
@@ -119,11 +146,11 @@ fn parse_rows<T: for<'de> Deserialize<'de>>(text: &str) -> Vec<T> {
         .collect()
 }
 
-/// A Table III row and the model's rotor at it.
+/// A row of a tunnel table and the model's rotor at it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TunnelRow {
     /// The measurement.
-    pub measured: Table3Row,
+    pub measured: TunnelMeasurement,
     /// The model (NaN results and the reason when it found no autorotation).
     pub predicted: CaseOutcome,
 }
@@ -177,10 +204,10 @@ pub struct BandErrors {
     pub rotor_rpm_max: f64,
 }
 
-/// Table III against the model.
+/// A tunnel table against the model.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TunnelComparison {
-    /// Every row, in Table III's order.
+    /// Every row, in the table's order.
     pub rows: Vec<TunnelRow>,
 }
 
@@ -245,12 +272,18 @@ pub fn tunnel_atmosphere() -> Atmosphere {
     Atmosphere::isa(0.0)
 }
 
-/// Every Table III row with the autorotating `rotor` (blade section `section`), in parallel.
+/// Every row of `table` with the autorotating `rotor` at the table's pitch setting (blade
+/// section `section`), in parallel.
 pub fn tunnel_comparison<S: BladeSection + Sync + ?Sized>(
+    table: TunnelTable,
     rotor: &Rotor,
     section: &S,
 ) -> TunnelComparison {
-    let measured = table3();
+    let measured = table.rows();
+    let rotor = &Rotor {
+        pitch: table.pitch_deg().to_radians(),
+        ..rotor.clone()
+    };
     let cases: Vec<TunnelCase> = measured
         .iter()
         .map(|m| TunnelCase {
