@@ -36,8 +36,8 @@ pub(super) struct SecondRotor {
     /// Table III with the tripped table and the blade's torsion under load
     /// ([`REPORT_487_TORSION`]).
     tunnel_torsion: TunnelComparison,
-    /// Table II (pitch setting 0.8°) with the tripped table.
-    tunnel_table2: TunnelComparison,
+    /// Table II (pitch setting 0.8°) with the tripped table and with Report 487's constants.
+    tunnel_table2: [TunnelComparison; 2],
     /// The flight points with uniform and with Drees inflow (tripped table).
     flight: [Vec<Result<FlightPoint, TrimError>>; 2],
 }
@@ -76,7 +76,10 @@ pub(super) fn run(
                 || {
                     rayon::join(
                         || tunnel_comparison(TunnelTable::III, &twisting, &tables[1]),
-                        || tunnel_comparison(TunnelTable::II, &rotor, &tables[1]),
+                        || {
+                            [&tables[1], &section_487]
+                                .map(|t| tunnel_comparison(TunnelTable::II, &rotor, t))
+                        },
                     )
                 },
             )
@@ -299,8 +302,12 @@ impl SecondRotor {
                     "7 % trip, blade torsion ∝ thrust (Report 487's 2.4°)",
                 ),
                 (
-                    &self.tunnel_table2,
+                    &self.tunnel_table2[0],
                     "7 % trip, Table II (pitch setting 0.8°, 108 rows)",
+                ),
+                (
+                    &self.tunnel_table2[1],
+                    "Report 487's constants, Table II (pitch setting 0.8°)",
                 ),
             ])
             .collect();
@@ -372,19 +379,26 @@ impl SecondRotor {
             num(max_mu(&self.tunnel_487), 2),
         );
         outln!(o);
-        let low_pitch = band(&self.tunnel_table2, true);
+        let low_pitch = band(&self.tunnel_table2[0], true);
+        let low_pitch_487 = band(&self.tunnel_table2[1], true);
         outln!(
             o,
             "At the lower pitch setting of Table II (0.8°; the report's Table II, transcribed for \
-             this project) the same model is further off at α ≥ 4°: rotor rpm {}, C_L {}, L/D {} \
-             (Table III: {}, {}, {}). The tunnel's rotor slowed much more than the model's when \
-             the pitch was lowered: the model's rotor speed depends too little on the pitch.",
+             this project) the model with polargen's table is further off at α ≥ 4°: rotor rpm \
+             {}, C_L {}, L/D {} (Table III: {}, {}, {}); the tunnel's rotor slowed more than the \
+             model's when the pitch was lowered. With Report 487's constants the rotor speed \
+             holds at both settings ({} at 0.8°, {} at 1.9°; C_L {} at 0.8°): with a constant \
+             drag coefficient (and the lower lift slope) the rotor speed follows the pitch as \
+             the tunnel's did; with polargen's smooth section it does not.",
             pct(100.0 * low_pitch.rotor_rpm),
             pct(100.0 * low_pitch.cl),
             pct(100.0 * low_pitch.lift_to_drag),
             pct(100.0 * t.rotor_rpm),
             pct(100.0 * t.cl),
             pct(100.0 * t.lift_to_drag),
+            pct(100.0 * low_pitch_487.rotor_rpm),
+            pct(100.0 * r.rotor_rpm),
+            pct(100.0 * low_pitch_487.cl),
         );
         outln!(o);
         self.torsion_words(o);
