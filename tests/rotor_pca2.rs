@@ -52,41 +52,34 @@ fn tunnel_rotor() -> Rotor {
     Rotor::from_params(&preset().rotor)
 }
 
-/// Table III with the tunnel rotor and the tripped table, computed once for the tests.
-fn rigid_tripped() -> &'static TunnelComparison {
-    static C: OnceLock<TunnelComparison> = OnceLock::new();
-    C.get_or_init(|| {
-        tunnel_comparison(
-            TunnelTable::III,
-            &tunnel_rotor(),
-            &table("goe429_xtr0.07.csv"),
-        )
-    })
+/// `table` with `rotor` and the tripped table, computed once (in `cell`) for the tests.
+fn tripped_once(
+    cell: &'static OnceLock<TunnelComparison>,
+    tunnel: TunnelTable,
+    rotor: impl FnOnce() -> Rotor,
+) -> &'static TunnelComparison {
+    cell.get_or_init(|| tunnel_comparison(tunnel, &rotor(), &table("goe429_xtr0.07.csv")))
 }
 
-/// Table II (pitch setting 0.8°) with the tunnel rotor at that pitch and the tripped table,
-/// computed once for the tests.
+/// Table III with the tunnel rotor and the tripped table.
+fn rigid_tripped() -> &'static TunnelComparison {
+    static C: OnceLock<TunnelComparison> = OnceLock::new();
+    tripped_once(&C, TunnelTable::III, tunnel_rotor)
+}
+
+/// Table II (pitch setting 0.8°) with the tunnel rotor at that pitch and the tripped table.
 fn table_ii_tripped() -> &'static TunnelComparison {
     static C: OnceLock<TunnelComparison> = OnceLock::new();
-    C.get_or_init(|| {
-        tunnel_comparison(
-            TunnelTable::II,
-            &tunnel_rotor(),
-            &table("goe429_xtr0.07.csv"),
-        )
-    })
+    tripped_once(&C, TunnelTable::II, tunnel_rotor)
 }
 
 /// Table III with the tunnel rotor's blade twisting under load ([`REPORT_487_TORSION`]) and
-/// the tripped table, computed once for the tests.
+/// the tripped table.
 fn twisting_tripped() -> &'static TunnelComparison {
     static C: OnceLock<TunnelComparison> = OnceLock::new();
-    C.get_or_init(|| {
-        let twisting = Rotor {
-            torsion: Some(REPORT_487_TORSION),
-            ..tunnel_rotor()
-        };
-        tunnel_comparison(TunnelTable::III, &twisting, &table("goe429_xtr0.07.csv"))
+    tripped_once(&C, TunnelTable::III, || Rotor {
+        torsion: Some(REPORT_487_TORSION),
+        ..tunnel_rotor()
     })
 }
 
