@@ -52,7 +52,8 @@ fn tunnel_rotor() -> Rotor {
     Rotor::from_params(&preset().rotor)
 }
 
-/// `table` with `rotor` and the tripped table, computed once (in `cell`) for the tests.
+/// Tunnel table `tunnel` with `rotor` and the tripped table, computed once (in `cell`) for the
+/// tests.
 fn tripped_once(
     cell: &'static OnceLock<TunnelComparison>,
     tunnel: TunnelTable,
