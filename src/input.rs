@@ -69,11 +69,25 @@ pub fn read_input(path: &Path) -> Result<Vec<u8>, InputError> {
     if meta.len() > MAX_INPUT_BYTES {
         return Err(too_large(path));
     }
-    let file = File::open(path).map_err(|e| InputError::os(path, &e))?;
+    let file = open_without_blocking(path).map_err(|e| InputError::os(path, &e))?;
     // The path may have been replaced between the check and the open: check what was opened.
     let opened = file.metadata().map_err(|e| InputError::os(path, &e))?;
     check_kind(path, &opened)?;
     read_capped(path, file)
+}
+
+/// Opens `path` for reading without waiting for a writer: a FIFO put in place of the checked
+/// file between the check and the open would otherwise block the open until something writes
+/// to it (O_NONBLOCK; a regular file reads as without it).
+fn open_without_blocking(path: &Path) -> io::Result<File> {
+    let mut options = fs::OpenOptions::new();
+    options.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NONBLOCK);
+    }
+    options.open(path)
 }
 
 /// [`read_input`], or standard input when `path` is `-` (read through the same cap).
@@ -194,5 +208,31 @@ mod tests {
         assert_eq!(e.problem, InputProblem::Folder);
         let e = read_input(Path::new("/no/such/file")).unwrap_err();
         assert_eq!(e.problem, InputProblem::NotFound);
+    }
+
+    /// A FIFO without a writer opens at once (the open that follows the kind check cannot be
+    /// held by a FIFO swapped in after the check), and the check of what was opened refuses it.
+    #[cfg(unix)]
+    #[test]
+    fn a_fifo_opens_without_waiting_for_a_writer() {
+        let dir = std::env::temp_dir().join(format!("polargen-input-fifo-{}", std::process::id()));
+        fs::create_dir_all(&dir).unwrap();
+        let fifo = dir.join("swapped");
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+        if !made.is_ok_and(|s| s.success()) {
+            fs::remove_dir_all(&dir).ok();
+            return; // no mkfifo on this system: nothing to check
+        }
+        let (tx, rx) = std::sync::mpsc::channel();
+        let path = fifo.clone();
+        std::thread::spawn(move || {
+            let opened = open_without_blocking(&path).and_then(|f| f.metadata());
+            tx.send(opened.map(|m| check_kind(&path, &m).map_err(|e| e.problem)))
+                .ok();
+        });
+        let outcome = rx.recv_timeout(std::time::Duration::from_secs(10));
+        fs::remove_dir_all(&dir).ok();
+        let kind = outcome.expect("the open waited for a writer").unwrap();
+        assert!(matches!(kind, Err(InputProblem::NotRegular(_))), "{kind:?}");
     }
 }

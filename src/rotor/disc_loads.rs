@@ -16,6 +16,7 @@ use super::inflow::{
 };
 use super::planform::Planform;
 use super::spanwise::BladeSection;
+use super::torsion::ElasticTorsion;
 use std::f64::consts::TAU;
 
 /// Rotor geometry and discretisation.
@@ -35,6 +36,9 @@ pub struct Rotor {
     pub pitch: f64,
     /// Root cut-out radius \[m\].
     pub root_cutout: f64,
+    /// Elastic torsion of the blade under its load (the planform's twist is then the one
+    /// measured at the torsion's reference thrust); `None`: a rigid blade.
+    pub torsion: Option<ElasticTorsion>,
     /// How the blades are attached: teetering (fixed coning) or on flapping hinges.
     pub hub: Hub,
     /// Number of radial strips.
@@ -209,13 +213,33 @@ impl Rotor {
         (self.chord * ratio, self.pitch + twist)
     }
 
-    /// The radial strips of one evaluation.
-    fn strip_layout(&self) -> (Vec<Strip>, f64) {
+    /// Chord \[m\] and pitch \[rad\] at radius `r` \[m\] with the blade's elastic torsion
+    /// at the thrust momentum theory gives for the inflow `v0` (the thrust the converged
+    /// solution carries, so the torsion is part of the coupled solve).
+    fn loaded_chord_and_pitch(&self, cond: &FlightCondition, v0: f64, r: f64) -> (f64, f64) {
+        let (chord, pitch) = self.chord_and_pitch(r);
+        match &self.torsion {
+            None => (chord, pitch),
+            Some(torsion) => {
+                let thrust = glauert_thrust(
+                    v0 / self.induced_power_factor,
+                    cond.atmosphere.density,
+                    self.disc_area(),
+                    cond.airspeed,
+                    cond.hub_aoa,
+                );
+                (chord, pitch + torsion.pitch_change(r / self.radius, thrust))
+            }
+        }
+    }
+
+    /// The radial strips of one evaluation at inflow `v0`.
+    fn strip_layout(&self, cond: &FlightCondition, v0: f64) -> (Vec<Strip>, f64) {
         let (radii, dr) = self.strips();
         let strips = radii
             .into_iter()
             .map(|r| {
-                let (chord, pitch) = self.chord_and_pitch(r);
+                let (chord, pitch) = self.loaded_chord_and_pitch(cond, v0, r);
                 Strip {
                     r,
                     edges: ((r - 0.5 * dr) / self.radius, (r + 0.5 * dr) / self.radius),
@@ -305,7 +329,7 @@ impl Rotor {
         psi: f64,
     ) -> StripFlow {
         let stream = self.disc_stream(cond, v0);
-        let (chord, pitch) = self.chord_and_pitch(r);
+        let (chord, pitch) = self.loaded_chord_and_pitch(cond, v0, r);
         let strip = Strip {
             r,
             edges: (r / self.radius, r / self.radius),
@@ -338,7 +362,7 @@ impl Rotor {
         v0: f64,
         flapping: &Flapping,
     ) -> Loads {
-        let (strips, dr) = self.strip_layout();
+        let (strips, dr) = self.strip_layout(cond, v0);
         let hinge = self.hub.hinge_offset();
         let uniform = self.uniform_tip_loss(cond, v0);
         let rho = cond.atmosphere.density;
@@ -430,6 +454,7 @@ impl Rotor {
             blades: p.blades,
             pitch: p.incidence_deg.to_radians(),
             root_cutout: p.root_cutout_m,
+            torsion: p.torsion(),
             hub: p.hub(),
             radial_strips: p.radial_strips,
             azimuth_steps: p.azimuth_steps,

@@ -17,6 +17,7 @@
 //! * `flapping` — first-harmonic blade flapping and the hub: teetering (fixed coning) or
 //!   articulated (free coning from the blade's flapping inertia, hinge offset).
 //! * `planform` — chord and twist along the blade.
+//! * `torsion` — the blade's elastic torsion under its lift.
 //! * `disc_loads` — the rotor disc: azimuth-averaged forces and torque of the blade-element
 //!   sum.
 //! * `inflow_flapping` — the disc's induced inflow and blade flapping solved together with
@@ -48,14 +49,15 @@ mod propeller;
 mod solution;
 mod spanwise;
 mod takeoff;
+mod torsion;
 mod trim;
 mod tunnel;
 
 pub use aircraft::{
     check_altitude_m, check_azimuth_samples, check_blade_radius, check_mass_kg, check_speed_kt,
     Aircraft, AircraftError, BladeGeometry, BladeParams, EngineParams, HubParams, PropellerParams,
-    RotorParams, RotorPreset, SectionFile, TakeoffParams, WingError, WingLoads, WingParams,
-    MAX_BLADES, MAX_MASS_KG, MAX_SPEED_KT,
+    RotorParams, RotorPreset, SectionFile, TakeoffParams, TorsionParams, WingError, WingLoads,
+    WingParams, MAX_BLADES, MAX_MASS_KG, MAX_SPEED_KT,
 };
 pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};
@@ -76,6 +78,7 @@ pub use propeller::{
 pub use solution::{RotorSolution, RotorWarmStart};
 pub use spanwise::{BladeSection, SpanBand, SpanwiseSection};
 pub use takeoff::{simulate_takeoff, TakeoffError, TakeoffResult, TakeoffSample};
+pub use torsion::ElasticTorsion;
 pub use trim::{autorotation, trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
 pub use tunnel::{
     autorotate, autorotate_cases, autorotate_outcomes, cases_csv, check_alpha_deg, check_mu,

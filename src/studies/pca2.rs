@@ -1,9 +1,9 @@
 //! The rotor model on a second rotor: the Pitcairn PCA-2 autogiro rotor against its
-//! full-scale tunnel tests (Wheatley & Hood, NACA Report 515, 1935, Table III: pitch setting
-//! 1.9°, protuberances faired) and its flight tests (Wheatley, NACA Report 487, 1934, Figs. 7
-//! and 8: thrust coefficient, rotor speed, coning and flapping against μ).
+//! full-scale tunnel tests (Wheatley & Hood, NACA Report 515, 1935, Tables III and II: pitch
+//! settings 1.9° and 0.8°, protuberances faired) and its flight tests (Wheatley, NACA Report
+//! 487, 1934, Figs. 7 and 8: thrust coefficient, rotor speed, coning and flapping against μ).
 //!
-//! * [`tunnel_comparison`] — every Table III row as a tunnel case (α and the wind speed
+//! * [`tunnel_comparison`] — every row of a table as a tunnel case (α and the wind speed
 //!   V = μ·Ω·R/cos α of the row), the autorotating rotor beside the measurement, and the mean
 //!   errors by α band ([`TunnelComparison::band`]).
 //! * [`flight_comparison`] — every flight point of Fig. 7 as a trim: the rotor at the flight's
@@ -14,8 +14,8 @@
 //! each was made); nothing here is fitted to them.
 
 use crate::rotor::{
-    autorotate_outcomes, trim_rotor, Atmosphere, BladeSection, CaseOutcome, Rotor, TrimError,
-    TrimParams, TunnelCase,
+    autorotate_outcomes, trim_rotor, Atmosphere, BladeSection, CaseOutcome, ElasticTorsion, Rotor,
+    TrimError, TrimParams, TunnelCase,
 };
 use crate::section::{PolarPoint, Transition};
 use crate::table::{PolarTable, TableError, TableMeta};
@@ -23,6 +23,9 @@ use serde::Deserialize;
 
 /// NACA Report 515, Table III (μ, α, C_L, C_D, L/D, rpm) with the wind speed of each row.
 const TABLE3_CSV: &str = include_str!("../../tests/data/pca2/tr515_table3_pitch1.9_faired.csv");
+
+/// NACA Report 515, Table II (pitch setting 0.8°), the same columns.
+const TABLE2_CSV: &str = include_str!("../../tests/data/pca2/tr515_table2_pitch0.8_faired.csv");
 
 /// NACA Report 487, Fig. 7: measured thrust coefficient and rotor speed against μ.
 const FLIGHT_ROTOR_CSV: &str = include_str!("../../tests/data/pca2/tr487_flight_rotor.csv");
@@ -46,6 +49,20 @@ pub const ALPHA_BAND_DEG: f64 = 4.0;
 /// ("corresponding to infinite aspect ratio ... a good average") and profile drag δ = 0.0120
 /// (one and a half times the section's minimum, Report 487 section 10).
 pub const REPORT_487_SECTION: (f64, f64) = (5.85, 0.012);
+
+/// The PCA-2 blade's elastic torsion as NACA Report 487 describes it (p. 13: the lift,
+/// offset from the blade's centre of gravity, twists the blade "approximately 2.4° (0.0419
+/// radian) at the tip" in flight; nose-up, as the measured pitch rises outboard, Fig. 5) for
+/// the preset's flight-measured twist: on the outer blade, where the measured pitch is linear
+/// (from 39.4 % R), at the mean rotor thrust of the report's flight points (Fig. 7: C_T ρπR²
+/// (ΩR)² at the tests' average density, 10.64 kN; the points span 6.3–12.4 kN, and the report
+/// does not say under which the pitch was measured). The preset leaves it out: with it the
+/// model's rotor turns faster still against Table III (`tests/rotor_pca2.rs`).
+pub const REPORT_487_TORSION: ElasticTorsion = ElasticTorsion {
+    tip: 0.0419,
+    reference_thrust: 10_640.0,
+    from_r_over_r: 0.394,
+};
 
 /// Angles of the [`report_487_section`] polar \[deg\]: the attached range of the rotor's blades.
 const REPORT_487_ALPHA_DEG: (i32, i32) = (-10, 14);
@@ -73,9 +90,9 @@ pub fn report_487_section() -> Result<PolarTable, TableError> {
     PolarTable::new(meta, vec![3e6], vec![0.0], vec![points])
 }
 
-/// One row of Table III.
+/// One row of a table of NACA Report 515.
 #[derive(Clone, Copy, Debug, PartialEq, Deserialize)]
-pub struct Table3Row {
+pub struct TunnelMeasurement {
     /// Tip-speed ratio μ.
     pub mu: f64,
     /// Rotor angle of attack α \[deg\].
@@ -92,9 +109,33 @@ pub struct Table3Row {
     pub speed_m_s: f64,
 }
 
-/// The rows of Table III, in the report's order.
-pub fn table3() -> Vec<Table3Row> {
-    parse_rows(TABLE3_CSV)
+/// The tables of NACA Report 515 in the repository, both with the protuberances faired. Table
+/// IV (pitch setting 2.7°) is kept out on purpose: an independent check held by the project's
+/// owners.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TunnelTable {
+    /// Table II: pitch setting 0.8° (108 rows).
+    II,
+    /// Table III: pitch setting 1.9° (81 rows), the preset's.
+    III,
+}
+
+impl TunnelTable {
+    /// The table's blade pitch setting \[deg\].
+    pub fn pitch_deg(self) -> f64 {
+        match self {
+            Self::II => 0.8,
+            Self::III => 1.9,
+        }
+    }
+
+    /// The table's rows, in the report's order.
+    pub fn rows(self) -> Vec<TunnelMeasurement> {
+        parse_rows(match self {
+            Self::II => TABLE2_CSV,
+            Self::III => TABLE3_CSV,
+        })
+    }
 }
 
 /// Rows of one of the embedded CSV files (checked by the tests that they parse).
@@ -105,11 +146,11 @@ fn parse_rows<T: for<'de> Deserialize<'de>>(text: &str) -> Vec<T> {
         .collect()
 }
 
-/// A Table III row and the model's rotor at it.
+/// A row of a tunnel table and the model's rotor at it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TunnelRow {
     /// The measurement.
-    pub measured: Table3Row,
+    pub measured: TunnelMeasurement,
     /// The model (NaN results and the reason when it found no autorotation).
     pub predicted: CaseOutcome,
 }
@@ -129,6 +170,23 @@ impl TunnelRow {
     }
 }
 
+/// Largest difference of shaft angle of a [`TunnelComparison::speed_trend`] pair \[deg\].
+pub const SPEED_PAIR_ALPHA_DEG: f64 = 0.15;
+
+/// Smallest ratio of the measured rotor speeds of a [`TunnelComparison::speed_trend`] pair.
+pub const SPEED_PAIR_RPM_RATIO: f64 = 1.25;
+
+/// [`TunnelComparison::speed_trend`]: the mean μ(slower) − μ(faster) of its pairs of rows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpeedTrend {
+    /// Pairs of rows.
+    pub pairs: usize,
+    /// Measured mean difference of μ.
+    pub measured: f64,
+    /// Predicted mean difference of μ.
+    pub predicted: f64,
+}
+
 /// The mean relative errors over the rows of an α band.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BandErrors {
@@ -146,10 +204,10 @@ pub struct BandErrors {
     pub rotor_rpm_max: f64,
 }
 
-/// Table III against the model.
+/// A tunnel table against the model.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TunnelComparison {
-    /// Every row, in Table III's order.
+    /// Every row, in the table's order.
     pub rows: Vec<TunnelRow>,
 }
 
@@ -173,6 +231,38 @@ impl TunnelComparison {
             rotor_rpm_max: errors.iter().fold(0.0, |a, e| a.max(e[0].abs())),
         }
     }
+
+    /// How μ changes with the wind speed at one shaft angle, measured and predicted: over the
+    /// pairs of rows with `lo ≤ α < hi` whose angles differ by at most
+    /// [`SPEED_PAIR_ALPHA_DEG`] and whose measured rotor speeds differ by more than
+    /// [`SPEED_PAIR_RPM_RATIO`], the mean of μ(slower row) − μ(faster row). The tunnel's rotor
+    /// reaches a higher μ at the lower speed; a rigid blade with the same coefficients at every
+    /// speed would not, apart from the Reynolds number. `None` without such pairs.
+    pub fn speed_trend(&self, lo: f64, hi: f64) -> Option<SpeedTrend> {
+        let rows: Vec<&TunnelRow> = self
+            .rows
+            .iter()
+            .filter(|r| (lo..hi).contains(&r.measured.alpha_deg) && r.errors().is_some())
+            .collect();
+        let (mut measured, mut predicted, mut pairs) = (0.0, 0.0, 0usize);
+        for slow in &rows {
+            for fast in &rows {
+                let (a, b) = (&slow.measured, &fast.measured);
+                if (a.alpha_deg - b.alpha_deg).abs() <= SPEED_PAIR_ALPHA_DEG
+                    && b.rotor_rpm > SPEED_PAIR_RPM_RATIO * a.rotor_rpm
+                {
+                    measured += a.mu - b.mu;
+                    predicted += slow.predicted.result.mu - fast.predicted.result.mu;
+                    pairs += 1;
+                }
+            }
+        }
+        (pairs > 0).then(|| SpeedTrend {
+            pairs,
+            measured: measured / pairs as f64,
+            predicted: predicted / pairs as f64,
+        })
+    }
 }
 
 /// The tunnel's air: ISA sea level (NACA Report 515 gives coefficients; the tunnel ran near
@@ -182,12 +272,18 @@ pub fn tunnel_atmosphere() -> Atmosphere {
     Atmosphere::isa(0.0)
 }
 
-/// Every Table III row with the autorotating `rotor` (blade section `section`), in parallel.
+/// Every row of `table` with the autorotating `rotor` at the table's pitch setting (blade
+/// section `section`), in parallel.
 pub fn tunnel_comparison<S: BladeSection + Sync + ?Sized>(
+    table: TunnelTable,
     rotor: &Rotor,
     section: &S,
 ) -> TunnelComparison {
-    let measured = table3();
+    let measured = table.rows();
+    let rotor = &Rotor {
+        pitch: table.pitch_deg().to_radians(),
+        ..rotor.clone()
+    };
     let cases: Vec<TunnelCase> = measured
         .iter()
         .map(|m| TunnelCase {

@@ -29,11 +29,12 @@ pub const DEFAULT_MACH: [f64; 8] = [0.0, 0.2, 0.3, 0.4, 0.5, 0.55, 0.6, 0.65];
 pub const DEFAULT_ALPHA: &str = "-10:20:0.5";
 
 /// Measured cost of one table point on one core \[s\], for the estimate of a progress start
-/// line: 13 default-grid tables (50 752 points) of the 8-H-12 took 12 min 31 s on the
-/// project's two cores (`gyro study contamination`, docs/studies.md), ≈ 30 ms per point and
-/// core; single polars of the 8-H-12 at M 0.3 take 13–45 ms per point (Re 10⁶ … 10⁵,
-/// `polargen --threads 1`). An estimate, not a promise: the machine's load moves it by 2×.
-pub const SECONDS_PER_POINT_CORE: f64 = 0.03;
+/// line: the shipped default-grid tables rebuilt with `--threads 1` on a loaded two-core
+/// machine took 6.3 ms per point (NACA 8-H-12, free transition), 2.4–5.0 ms (8-H-12 tripped,
+/// 23012, Clark Y, GOE 429) and 8–22 ms (the thick Clark Y sections of the propeller, t/c
+/// 0.18–0.44, where a fifth of the points fail after their full recovery). An estimate, not a
+/// promise: the machine's load moves it by 2×, the airfoil by up to 3×.
+pub const SECONDS_PER_POINT_CORE: f64 = 0.007;
 
 /// Estimated time to solve `points` points in `polars` polars with `threads` workers (0 = all
 /// cores) \[s\]: [`SECONDS_PER_POINT_CORE`] per point, the workers busy as far as the polars

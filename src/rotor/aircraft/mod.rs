@@ -20,7 +20,9 @@ mod rotor_params;
 mod wing;
 
 pub use powerplant::{BladeGeometry, EngineParams, PropellerParams, SectionFile};
-pub use rotor_params::{BladeParams, HubParams, RotorParams, RotorPreset, MAX_BLADES};
+pub use rotor_params::{
+    BladeParams, HubParams, RotorParams, RotorPreset, TorsionParams, MAX_BLADES,
+};
 pub use wing::{WingError, WingLoads, WingParams};
 
 /// Errors while loading or checking an aircraft preset.

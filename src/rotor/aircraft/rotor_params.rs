@@ -8,6 +8,7 @@ use crate::limits::{AZIMUTH_STEPS, MAX_ROTOR_CELLS, RADIAL_STRIPS};
 use crate::rotor::flapping::{FlapHinge, Hub};
 use crate::rotor::inflow::{InflowModel, TipLoss, YawedFlow};
 use crate::rotor::planform::{Planform, PlanformStation};
+use crate::rotor::torsion::ElasticTorsion;
 use serde::Deserialize;
 use std::path::Path;
 
@@ -105,8 +106,25 @@ pub struct BladeParams {
     pub r_over_r: Vec<f64>,
     /// Chord at each station relative to `rotor.chord_m`.
     pub chord_ratio: Vec<f64>,
-    /// Pitch at each station relative to `rotor.incidence_deg` \[deg\].
+    /// Pitch at each station relative to `rotor.incidence_deg` \[deg\]; with `torsion`, as
+    /// measured under the torsion's reference thrust.
     pub twist_deg: Vec<f64>,
+    /// Elastic torsion of the blade under its lift (`[rotor.blade.torsion]`); absent: a rigid
+    /// blade.
+    #[serde(default)]
+    pub torsion: Option<TorsionParams>,
+}
+
+/// The blade's elastic torsion (`[rotor.blade.torsion]`, [`ElasticTorsion`]).
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TorsionParams {
+    /// Torsion at the tip under the reference thrust, positive nose-up \[deg\].
+    pub tip_deg: f64,
+    /// Rotor thrust under which `twist_deg` was measured \[N\].
+    pub reference_thrust_n: f64,
+    /// Radius fraction inboard of which the blade does not twist (linear from there to the tip).
+    pub from_r_over_r: f64,
 }
 
 impl RotorParams {
@@ -164,6 +182,16 @@ impl RotorParams {
                 .collect()
         });
         Planform { stations }
+    }
+
+    /// The blade's elastic torsion of the rotor model, if the preset gives one.
+    pub fn torsion(&self) -> Option<ElasticTorsion> {
+        let t = self.blade.as_ref()?.torsion?;
+        Some(ElasticTorsion {
+            tip: t.tip_deg.to_radians(),
+            reference_thrust: t.reference_thrust_n,
+            from_r_over_r: t.from_r_over_r,
+        })
     }
 
     /// Sets the blade pitch setting `incidence_deg` to `pitch_deg` (flag `--pitch-deg`) and
@@ -335,6 +363,24 @@ impl BladeParams {
                 t,
                 (-MAX_PITCH_DEG, MAX_PITCH_DEG),
                 "must be within ±20°",
+            )?;
+        }
+        if let Some(t) = &self.torsion {
+            in_range(
+                "rotor.blade.torsion.tip_deg",
+                t.tip_deg,
+                (-MAX_PITCH_DEG, MAX_PITCH_DEG),
+                "must be within ±20°",
+            )?;
+            positive(
+                "rotor.blade.torsion.reference_thrust_n",
+                t.reference_thrust_n,
+            )?;
+            in_range(
+                "rotor.blade.torsion.from_r_over_r",
+                t.from_r_over_r,
+                (0.0, 0.99),
+                "must be between 0 and 0.99",
             )?;
         }
         Ok(())
