@@ -1,12 +1,11 @@
 //! Unix plumbing of both binaries: standard input and output as files, closed pipes, the one
 //! error/exit-code convention, `--quiet`, completions and man pages, bare commands, the
-//! `--re`-alone rule, and `gyro report` outside the repository.
+//! `--re`-alone rule (`gyro report` outside the repository: tests/gyro_report.rs).
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 mod cli_support;
-use cli_support::{closed_pipe_is_quiet, exe, run, run_with_stdin, scratch, text};
+use cli_support::{closed_pipe_is_quiet, run, run_with_stdin, scratch, text};
 
 const POLARGEN: &str = "polargen";
 const GYRO: &str = "gyro";
@@ -228,32 +227,6 @@ fn re_alone_is_one_polar_at_mach_0_and_mach_alone_is_refused() {
     let m = run(POLARGEN, &["--airfoil", "naca0012", "--mach", "0.3"]);
     assert_eq!(m.status.code(), Some(2));
     assert!(text(&m.stderr).contains("--re"), "{}", text(&m.stderr));
-}
-
-#[test]
-fn gyro_report_runs_outside_the_repository() {
-    let dir = scratch("report");
-    let o = Command::new(exe(GYRO))
-        .args(["report", "--out", "r"])
-        .current_dir(&dir)
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", text(&o.stderr));
-    let readme = std::fs::read_to_string(dir.join("r/README.md")).unwrap();
-    let shipped =
-        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("report/README.md"))
-            .unwrap();
-    // The same report as the shipped one: after its first lines, which name the command, and
-    // before the section the shipped one adds with `--studies`.
-    let body = |s: &str| {
-        let lines = s
-            .lines()
-            .skip(3)
-            .take_while(|l| *l != "## Beyond the paper");
-        lines.collect::<Vec<_>>().join("\n").trim_end().to_string()
-    };
-    assert_eq!(body(&readme), body(&shipped));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

@@ -2,15 +2,20 @@
 
 mod rotor_support;
 
-use polargen::rotor::{simulate_takeoff, TakeoffError};
+use polargen::rotor::{simulate_takeoff, TakeoffError, TakeoffResult};
 use rotor_support::{mtosport, AnalyticSection};
+use std::sync::LazyLock;
+
+/// The MTOsport's takeoff on the clean analytic section, simulated once for the tests here.
+static CLEAN: LazyLock<TakeoffResult> =
+    LazyLock::new(|| simulate_takeoff(&mtosport(), &AnalyticSection::clean()).unwrap());
 
 #[test]
 fn takeoff_clean_and_contaminated() {
     let ac = mtosport();
-    let c = simulate_takeoff(&ac, &AnalyticSection::clean()).unwrap();
+    let c = &*CLEAN;
     let d = simulate_takeoff(&ac, &AnalyticSection::contaminated()).unwrap();
-    for r in [&c, &d] {
+    for r in [c, &d] {
         // Paper Table 4 orders of magnitude: 121 m / 218 m, lift-off at 43 kt, β_max 3.5°.
         assert!(
             (60.0..300.0).contains(&r.takeoff_roll_m),
@@ -75,8 +80,7 @@ fn takeoff_clean_and_contaminated() {
 
 #[test]
 fn history_csv_has_the_documented_columns() {
-    let ac = mtosport();
-    let r = simulate_takeoff(&ac, &AnalyticSection::clean()).unwrap();
+    let r = &*CLEAN;
     let mut buf = Vec::new();
     r.write_history_csv(&mut buf).unwrap();
     let text = String::from_utf8(buf).unwrap();
@@ -100,8 +104,8 @@ fn too_heavy_never_reaches_the_screen_height() {
 
 #[test]
 fn time_step_is_converged() {
+    let a = &*CLEAN;
     let mut ac = mtosport();
-    let a = simulate_takeoff(&ac, &AnalyticSection::clean()).unwrap();
     ac.takeoff.time_step_s /= 2.0;
     let b = simulate_takeoff(&ac, &AnalyticSection::clean()).unwrap();
     // Lift-off is detected at step ends: the roll may move by about one step's travel
