@@ -213,22 +213,32 @@ impl Rotor {
         (self.chord * ratio, self.pitch + twist)
     }
 
-    /// Chord \[m\] and pitch \[rad\] at radius `r` \[m\] with the blade's elastic torsion
-    /// at the thrust momentum theory gives for the inflow `v0` (the thrust the converged
-    /// solution carries, so the torsion is part of the coupled solve).
-    fn loaded_chord_and_pitch(&self, cond: &FlightCondition, v0: f64, r: f64) -> (f64, f64) {
-        let (chord, pitch) = self.chord_and_pitch(r);
-        match &self.torsion {
-            None => (chord, pitch),
-            Some(torsion) => {
-                let thrust = glauert_thrust(
-                    v0 / self.induced_power_factor,
-                    cond.atmosphere.density,
-                    self.disc_area(),
-                    cond.airspeed,
-                    cond.hub_aoa,
-                );
-                (chord, pitch + torsion.pitch_change(r / self.radius, thrust))
+    /// The rotor thrust momentum theory gives for the mean inflow `v0` \[N\]: Glauert's
+    /// T = 2ρA·v_i·V′ with v_i = v0/κ (the induced-power factor taken out).
+    fn momentum_thrust(&self, cond: &FlightCondition, v0: f64) -> f64 {
+        glauert_thrust(
+            v0 / self.induced_power_factor,
+            cond.atmosphere.density,
+            self.disc_area(),
+            cond.airspeed,
+            cond.hub_aoa,
+        )
+    }
+
+    /// Chord \[m\] and pitch \[rad\] at radius `r` \[m\] with the blade's elastic torsion at
+    /// the thrust momentum theory gives for the inflow `v0` (the thrust the converged solution
+    /// carries, so the torsion is part of the coupled solve).
+    fn loaded_chord_and_pitch(
+        &self,
+        cond: &FlightCondition,
+        v0: f64,
+    ) -> impl Fn(f64) -> (f64, f64) + '_ {
+        let torsion = self.torsion.map(|t| (t, self.momentum_thrust(cond, v0)));
+        move |r| {
+            let (chord, pitch) = self.chord_and_pitch(r);
+            match torsion {
+                None => (chord, pitch),
+                Some((t, thrust)) => (chord, pitch + t.pitch_change(r / self.radius, thrust)),
             }
         }
     }
@@ -236,10 +246,11 @@ impl Rotor {
     /// The radial strips of one evaluation at inflow `v0`.
     fn strip_layout(&self, cond: &FlightCondition, v0: f64) -> (Vec<Strip>, f64) {
         let (radii, dr) = self.strips();
+        let chord_and_pitch = self.loaded_chord_and_pitch(cond, v0);
         let strips = radii
             .into_iter()
             .map(|r| {
-                let (chord, pitch) = self.loaded_chord_and_pitch(cond, v0, r);
+                let (chord, pitch) = chord_and_pitch(r);
                 Strip {
                     r,
                     edges: ((r - 0.5 * dr) / self.radius, (r + 0.5 * dr) / self.radius),
@@ -269,8 +280,7 @@ impl Rotor {
             TipLoss::Chord => Some(1.0 - 0.5 * self.chord_and_pitch(self.radius).0 / self.radius),
             TipLoss::GessowMyers => {
                 let rho = cond.atmosphere.density;
-                let v_ideal = v0 / self.induced_power_factor;
-                let t = glauert_thrust(v_ideal, rho, self.disc_area(), cond.airspeed, cond.hub_aoa);
+                let t = self.momentum_thrust(cond, v0);
                 let tip = cond.omega * self.radius;
                 Some(gessow_myers_tip_loss(
                     t / (rho * self.disc_area() * tip * tip),
@@ -329,7 +339,7 @@ impl Rotor {
         psi: f64,
     ) -> StripFlow {
         let stream = self.disc_stream(cond, v0);
-        let (chord, pitch) = self.loaded_chord_and_pitch(cond, v0, r);
+        let (chord, pitch) = self.loaded_chord_and_pitch(cond, v0)(r);
         let strip = Strip {
             r,
             edges: (r / self.radius, r / self.radius),
