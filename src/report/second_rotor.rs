@@ -64,44 +64,24 @@ pub(super) fn run(
         torsion: Some(REPORT_487_TORSION),
         ..rotor.clone()
     };
-    let (((free, tripped), (tunnel_torsion, tunnel_table2)), (tunnel_487, flight)) = rayon::join(
-        || {
-            rayon::join(
-                || {
-                    rayon::join(
-                        || tunnel_comparison(TunnelTable::III, &rotor, &tables[0]),
-                        || tunnel_comparison(TunnelTable::III, &rotor, &tables[1]),
-                    )
-                },
-                || {
-                    rayon::join(
-                        || tunnel_comparison(TunnelTable::III, &twisting, &tables[1]),
-                        || {
-                            [&tables[1], &section_487]
-                                .map(|t| tunnel_comparison(TunnelTable::II, &rotor, t))
-                        },
-                    )
-                },
-            )
-        },
-        || {
-            rayon::join(
-                || tunnel_comparison(TunnelTable::III, &rotor, &section_487),
-                || {
-                    INFLOWS.map(|(inflow, _)| {
-                        let r = Rotor {
-                            inflow,
-                            ..Rotor::from_params(&flight_params)
-                        };
-                        flight_comparison(&r, &tables[1])
-                    })
-                },
-            )
-        },
-    );
+    // Each comparison solves its rows (and flight points) in parallel itself.
+    let tunnel = tables
+        .each_ref()
+        .map(|t| tunnel_comparison(TunnelTable::III, &rotor, t));
+    let tunnel_487 = tunnel_comparison(TunnelTable::III, &rotor, &section_487);
+    let tunnel_torsion = tunnel_comparison(TunnelTable::III, &twisting, &tables[1]);
+    let tunnel_table2 =
+        [&tables[1], &section_487].map(|t| tunnel_comparison(TunnelTable::II, &rotor, t));
+    let flight = INFLOWS.map(|(inflow, _)| {
+        let r = Rotor {
+            inflow,
+            ..Rotor::from_params(&flight_params)
+        };
+        flight_comparison(&r, &tables[1])
+    });
     Ok(SecondRotor {
         name: preset.name.clone(),
-        tunnel: [free, tripped],
+        tunnel,
         tunnel_487,
         tunnel_torsion,
         tunnel_table2,
@@ -374,7 +354,8 @@ impl SecondRotor {
              487's constants), so its rotor speed is far too high there. Report 487's own \
              theory shows the same, its errors \"becoming important above a tip-speed ratio \
              of about 0.40\" in flight. The cause is not found here: not the section data (the \
-             constants above leave it), not the coning (free, modelled), not the blade's torsion under load (next paragraph).",
+             constants above leave it), not the coning (free, modelled), not the blade's \
+             torsion under load (below).",
             num(max_mu(&self.tunnel[1]), 2),
             num(max_mu(&self.tunnel_487), 2),
         );
