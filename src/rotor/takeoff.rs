@@ -4,7 +4,9 @@
 //! Procedure (paper §Takeoff): rotor prerotated to 200 rpm, brake released, full throttle,
 //! stick full aft (rotor head pitch 15°, fuselage level, so the hub angle of attack is 15° on
 //! the ground roll). Ground roll: m·u̇ = F_prop − D − μ_r·(G − L). Lift-off when the lift
-//! exceeds the weight. Airborne: forces along and normal to the flight path,
+//! exceeds the weight, placed inside its step where the lift excess, linear over the step,
+//! crosses zero (distance, speed and rotor speed interpolated alike), so that s_TO does not
+//! move with the step. Airborne: forces along and normal to the flight path,
 //! m·a = (F_prop − D)·e_V + L·e_L − G·e_z. L is the rotor lift plus that of a fixed wing, D the
 //! rotor, airframe and wing drag; the wing flies at its incidence (the fuselage level on the
 //! ground and along the flight path in the air, as in the trim). Rotor speed throughout: I_R·Ω̇ = Q_aero (the
@@ -343,15 +345,29 @@ pub fn simulate_takeoff<S: BladeSection + ?Sized>(
     let mut history = Vec::new();
     let mut beta_max: f64 = 0.0;
     let mut liftoff: Option<(f64, f64, f64, f64)> = None;
+    // The ground roll's last state and its lift excess L − W (< 0), to place the lift-off
+    // inside the step in which the excess turned positive.
+    let mut rolling: Option<(State, f64)> = None;
     let weight = aircraft.weight_n();
     while t < to.max_time_s {
         let (next, s) = model.rk4_step(t, &y, dt, airborne)?;
         history.push(sample(t, &y, &s));
         beta_max = beta_max.max(s.flapping.amplitude().to_degrees());
-        if !airborne && s.lift + model.wing_at(&y)?.lift_n >= weight {
-            airborne = true;
-            liftoff = Some((y[0], t, y[2], y[4]));
-            model.liftoff_speed = y[2];
+        if !airborne {
+            let excess = s.lift + model.wing_at(&y)?.lift_n - weight;
+            if excess >= 0.0 {
+                airborne = true;
+                // Lift-off where the lift excess, linear over the step, crosses zero.
+                let (before, frac) = match rolling {
+                    Some((before, e0)) => (before, e0 / (e0 - excess)),
+                    None => (y, 1.0),
+                };
+                let at = |i: usize| before[i] + frac * (y[i] - before[i]);
+                liftoff = Some((at(0), t - (1.0 - frac) * dt, at(2), at(4)));
+                model.liftoff_speed = at(2);
+            } else {
+                rolling = Some((y, excess));
+            }
         }
         if airborne && next[1] >= to.screen_height_m {
             let frac = (to.screen_height_m - y[1]) / (next[1] - y[1]);
