@@ -10,8 +10,6 @@
 //! * `batch` — [`Batch`]: one table per airfoil of a list of files, folders and names, with
 //!   an index; shards and resumed runs.
 //! * `build` — solving a table: the viscous polars of one airfoil on a Re × M × α grid.
-//! * `point_cases` — [`solve_point_cases`]: one operating point under several transition
-//!   settings, each solution kept whole (Cp and boundary-layer distributions).
 //! * `points` — [`solve_points`]: scattered (α, Re, M, trip) points, one warm-started polar per
 //!   distinct condition, in the order asked.
 //! * `census` — [`TableCensus`]: points, converged, supercritical.
@@ -93,7 +91,6 @@ mod job;
 mod lift_slope;
 mod lookup;
 mod meta;
-mod point_cases;
 mod points;
 mod post_stall;
 mod summary;
@@ -122,7 +119,6 @@ pub use io::{
 pub use job::{TableJob, TableJobError};
 pub use lift_slope::{trusted, STALL_SLOPE_FRACTION};
 pub use meta::TableMeta;
-pub use point_cases::{solve_point_cases, PointCaseError};
 pub use points::{solve_points, PointPlan, PointQuery};
 pub use post_stall::PostStallParams;
 pub use summary::{

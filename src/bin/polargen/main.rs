@@ -29,13 +29,12 @@ use polargen::output::{check_output_path, write_output_bytes, write_stdout, STDO
 use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
 use polargen::plot::table_plots::{table_overlay_figure, TableOverlay};
 use polargen::plot::{check_image_path, render};
-use polargen::polar::OperatingPoint;
+use polargen::polar::{solve_point_cases, OperatingPoint};
 use polargen::section::{Transition, FREE_XTR};
 use polargen::table::check_table_output;
 use polargen::table::{
-    read_table_with, solve_point_cases, summary_csv, summary_json, summary_text, with_cd_max,
-    write_table, Batch, BatchSettings, FlapSweep, GridSpec, PolarTable, ReadOptions, TableFormat,
-    TableJob,
+    read_table_with, summary_csv, summary_json, summary_text, with_cd_max, write_table, Batch,
+    BatchSettings, FlapSweep, GridSpec, PolarTable, ReadOptions, TableFormat, TableJob,
 };
 use polargen::viscous::distributions::write_distributions_file;
 use polargen::viscous::{ViscousParams, ViscousSolution};

@@ -2,8 +2,8 @@
 //! whole (Cp and boundary-layer distributions, not only the coefficients): the cases that
 //! `polargen point` writes and `polargen plot-point` draws side by side.
 
+use super::{solve_operating_point, OperatingPoint, OperatingPointError, TargetClParams};
 use crate::geometry::Airfoil;
-use crate::polar::{solve_operating_point, OperatingPoint, OperatingPointError, TargetClParams};
 use crate::section::{Transition, FREE_XTR};
 use crate::viscous::{ViscousError, ViscousParams, ViscousSolution, ViscousSolver};
 
