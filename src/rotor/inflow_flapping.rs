@@ -16,6 +16,13 @@
 //! iteration fails to contract the residual
 //! ([`RotorSolverParams::broyden_contraction`](super::RotorSolverParams::broyden_contraction));
 //! the converged state is the same root to the step tolerance, only the path to it differs.
+//!
+//! A blade that twists under load ([`ElasticTorsion`](super::ElasticTorsion)) makes the
+//! momentum balance feed back on itself: more inflow, more momentum thrust, more torsion, more
+//! blade thrust. Solved from rest, the iteration can then cycle across the torsion's load limit
+//! ([`MAX_LOAD_RATIO`](super::torsion::MAX_LOAD_RATIO); PCA-2 in the tunnel at 200–450 rpm),
+//! so such a solve without a warm start begins at the rigid blade's solution, from which it
+//! converges to the same root.
 
 use super::disc_loads::{FlightCondition, Loads, Rotor};
 use super::flapping::{FlapHinge, Flapping, Hub};
@@ -145,7 +152,24 @@ impl Rotor {
             return Err(RotorError::InvalidCondition("air density must be positive"));
         }
         let tip = cond.omega * self.radius;
-        let start = warm.as_ref();
+        // A blade that twists under load, without a warm start, starts from the rigid blade's
+        // solution (if it has one): from rest its iteration can cycle across the torsion's
+        // load limit (module documentation).
+        let (rigid_start, rigid_iterations) = match (warm.as_ref(), self.torsion) {
+            (None, Some(_)) => {
+                let rigid = Rotor {
+                    torsion: None,
+                    ..self.clone()
+                };
+                let mut start = None;
+                let iterations = rigid
+                    .solve(section, cond, &mut start)
+                    .map_or(0, |s| s.iterations);
+                (start, iterations)
+            }
+            _ => (None, 0),
+        };
+        let start = warm.as_ref().or(rigid_start.as_ref());
         let v0 = start.map_or(0.0, |w| w.induced_velocity / tip);
         let (v0_scaled, flapping, loads, iterations, jacobian) = match self.hub {
             Hub::Teetering { precone } => {
@@ -193,7 +217,13 @@ impl Rotor {
                 )
             }
         };
-        let solution = self.package(cond, v0_scaled, flapping, loads, iterations);
+        let solution = self.package(
+            cond,
+            v0_scaled,
+            flapping,
+            loads,
+            rigid_iterations + iterations,
+        );
         *warm = Some(RotorWarmStart {
             induced_velocity: solution.induced_velocity,
             flapping,
