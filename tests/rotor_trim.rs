@@ -46,6 +46,38 @@ fn autorotation_has_zero_torque_and_is_stable() {
     }
 }
 
+/// The rpm scan starts where the advancing tip reaches Mach 1 (it started at 900 rpm, an
+/// advancing-tip Mach number of 1.25 at 60 kt): the same equilibrium to the rpm tolerance; a
+/// cap below every rpm searched is an error that says so.
+#[test]
+fn autorotation_scan_starts_below_a_supersonic_tip() {
+    let r = rotor();
+    let atm = Atmosphere::isa(0.0);
+    let section = AnalyticSection::clean();
+    let v = 60.0 * KT_TO_MS;
+    let aoa = 5f64.to_radians();
+    let rpm = |params: &TrimParams| {
+        let s = autorotation(&r, &section, v, aoa, &atm, params).unwrap();
+        s.condition.omega * 30.0 / std::f64::consts::PI
+    };
+    let capped = TrimParams::default();
+    let uncapped = TrimParams {
+        max_tip_mach: f64::INFINITY,
+        ..capped
+    };
+    let (a, b) = (rpm(&capped), rpm(&uncapped));
+    assert!((a - b).abs() < capped.rpm_tolerance, "{a} vs {b}");
+    let none = TrimParams {
+        max_tip_mach: 0.05,
+        ..capped
+    };
+    let err = autorotation(&r, &section, v, aoa, &atm, &none).unwrap_err();
+    assert!(
+        matches!(err, TrimError::NoAutorotation { .. }) && err.to_string().contains("Mach"),
+        "{err}"
+    );
+}
+
 #[test]
 fn trim_balances_forces() {
     let ac = mtosport();

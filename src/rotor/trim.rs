@@ -82,8 +82,13 @@ pub enum TrimError {
 /// Search ranges and tolerances of the trim solvers.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TrimParams {
-    /// Highest rotor speed searched \[rpm\] (the scan starts here).
+    /// Highest rotor speed searched \[rpm\]; the scan starts here or where the advancing tip
+    /// reaches [`max_tip_mach`](Self::max_tip_mach), whichever is lower.
     pub rpm_max: f64,
+    /// Highest Mach number of the advancing blade tip, (ΩR + V)/a, searched: the section
+    /// tables end below Mach 1 (lookups beyond are clamped to their edge), so the scan does not
+    /// start where every tip lookup would be.
+    pub max_tip_mach: f64,
     /// Lowest rotor speed searched \[rpm\].
     pub rpm_min: f64,
     /// Scan factor between successive rpm samples (< 1).
@@ -106,6 +111,7 @@ impl Default for TrimParams {
     fn default() -> Self {
         Self {
             rpm_max: 900.0,
+            max_tip_mach: 1.0,
             rpm_min: 60.0,
             rpm_scan_factor: 0.85,
             rpm_tolerance: 1e-3,
@@ -260,8 +266,10 @@ impl TrimResult {
 }
 
 /// Autorotation: the rotor speed at which the aerodynamic torque vanishes, for airspeed `v`
-/// \[m/s\] and hub angle `hub_aoa` \[rad\]. The scan starts at the highest rpm and moves down, so
-/// the equilibrium found is the stable one (torque falls with rpm there).
+/// \[m/s\] and hub angle `hub_aoa` \[rad\]. The scan starts at the highest rpm searched
+/// ([`TrimParams::rpm_max`], lower where the advancing tip would pass
+/// [`TrimParams::max_tip_mach`]) and moves down, so the equilibrium found is the stable one
+/// (torque falls with rpm there).
 pub fn autorotation<S: BladeSection + ?Sized>(
     rotor: &Rotor,
     section: &S,
@@ -281,7 +289,14 @@ pub fn autorotation<S: BladeSection + ?Sized>(
         aoa_deg: hub_aoa.to_degrees(),
         reason,
     };
-    let mut hi = params.rpm_max;
+    let tip_mach_rpm =
+        rad_s_to_rpm((params.max_tip_mach * atmosphere.speed_of_sound - v) / rotor.radius);
+    let mut hi = params.rpm_max.min(tip_mach_rpm);
+    if hi.is_nan() || hi <= params.rpm_min {
+        return Err(no_auto(
+            "the advancing blade tip passes the highest Mach number searched at every rpm",
+        ));
+    }
     let mut warm = None;
     let first = rotor.solve(section, &cond(hi), &mut warm)?;
     if first.torque > 0.0 {
