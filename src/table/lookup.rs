@@ -31,18 +31,15 @@ use crate::section::{wrap_deg, Lookup, SectionAero};
 pub(crate) struct AlphaCurve {
     /// α of the usable points (deg), strictly increasing.
     alpha: Vec<f64>,
-    /// (cl, cd, cm) at each usable point.
-    value: Vec<[f64; 3]>,
-    /// Supercritical flag of each usable point ([`Criticality`]).
-    criticality: Vec<Criticality>,
-    /// Each usable point's table does not say whether it is in massive separation.
-    separation_unknown: Vec<bool>,
-    /// d(cl, cd, cm)/dα (1/deg) at each usable point.
-    slope: Vec<[f64; 3]>,
-    /// Interval k (between usable points k and k+1) spans other points.
-    bridged: Vec<bool>,
-    /// Interval k spans converged points in massive separation.
-    separated_gap: Vec<bool>,
+    /// Interval k, between usable points k and k+1: its cubic and its flags.
+    segments: Vec<Segment>,
+    /// (cl, cd, cm) at the last usable point (the interpolant's value there, exactly).
+    last_value: [f64; 3],
+    /// Supercritical flag of the first and the last usable point ([`Criticality`]).
+    end_criticality: [Criticality; 2],
+    /// The first and the last usable point's table does not say whether it is in massive
+    /// separation.
+    end_separation_unknown: [bool; 2],
     /// The α span of the converged points in massive separation beyond the first and the last
     /// usable point (deg): lookups in it are flagged. Empty spans are (α₀, α₀) and (αₙ, αₙ).
     separated_beyond: (f64, f64),
@@ -110,6 +107,63 @@ pub(crate) struct CurveValue {
     pub(crate) separation_unknown: bool,
 }
 
+/// One interval of an [`AlphaCurve`]: the PCHIP cubic of each coefficient in the interval's
+/// own variable t = (α − α_k)/(α_{k+1} − α_k), and what a value inside it leans on.
+#[derive(Clone, Debug, PartialEq)]
+struct Segment {
+    /// α at the interval's start (deg).
+    alpha0: f64,
+    /// 1/(α_{k+1} − α_k) (1/deg).
+    inv_width: f64,
+    /// (cl, cd, cm) = Σ c_j t^j, j = 0…3: the Hermite cubic through both ends' values and
+    /// slopes (Fritsch & Carlson 1980, eq. 2) in power form.
+    cubic: [[f64; 4]; 3],
+    /// The interval spans other points (bridged).
+    bridged: bool,
+    /// The interval spans converged points in massive separation.
+    separated_gap: bool,
+    /// Either end is supercritical; either end does not say ([`Criticality::flags`]).
+    supercritical: (bool, bool),
+    /// Either end's table does not say whether it is in massive separation.
+    separation_unknown: bool,
+}
+
+impl Segment {
+    /// The interval from usable point `k` to `k + 1` of the curve's points.
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        alpha: &[f64],
+        value: &[[f64; 3]],
+        slope: &[[f64; 3]],
+        criticality: &[Criticality],
+        separation_unknown: &[bool],
+        bridged: bool,
+        separated_gap: bool,
+        k: usize,
+    ) -> Self {
+        let h = alpha[k + 1] - alpha[k];
+        let cubic = std::array::from_fn(|i| {
+            let (y0, y1) = (value[k][i], value[k + 1][i]);
+            let (d0, d1) = (h * slope[k][i], h * slope[k + 1][i]);
+            [
+                y0,
+                d0,
+                3.0 * (y1 - y0) - 2.0 * d0 - d1,
+                2.0 * (y0 - y1) + d0 + d1,
+            ]
+        });
+        Self {
+            alpha0: alpha[k],
+            inv_width: 1.0 / h,
+            cubic,
+            bridged,
+            separated_gap,
+            supercritical: Criticality::flags(criticality[k], criticality[k + 1]),
+            separation_unknown: separation_unknown[k] || separation_unknown[k + 1],
+        }
+    }
+}
+
 impl AlphaCurve {
     /// Prepare a polar (points sorted by α). `None` if it has fewer than two usable points.
     pub(crate) fn new(points: &[PolarPoint], params: PostStallParams) -> Option<Self> {
@@ -162,14 +216,26 @@ impl AlphaCurve {
         };
         let ext = Extension360::new(params, junction(0), junction(n - 1));
         let (bucket_scale, bucket) = interval_index(&alpha);
+        let segments = (0..n - 1)
+            .map(|k| {
+                Segment::new(
+                    &alpha,
+                    &value,
+                    &slope,
+                    &criticality,
+                    &separation_unknown,
+                    bridged[k],
+                    separated_gap[k],
+                    k,
+                )
+            })
+            .collect();
         Some(Self {
             alpha,
-            value,
-            criticality,
-            separation_unknown,
-            slope,
-            bridged,
-            separated_gap,
+            segments,
+            last_value: value[n - 1],
+            end_criticality: [criticality[0], criticality[n - 1]],
+            end_separation_unknown: [separation_unknown[0], separation_unknown[n - 1]],
             separated_beyond,
             substitute: false,
             ext,
@@ -183,16 +249,16 @@ impl AlphaCurve {
         (self.alpha[0], self.alpha[self.alpha.len() - 1])
     }
 
-    /// (cl, cd, cm) at `a` (deg, within ±180°): cubic Hermite inside the usable range
-    /// (Fritsch & Carlson 1980, eq. 2 basis), the 360° extension outside.
+    /// (cl, cd, cm) at `a` (deg, within ±180°): the interval's cubic Hermite inside the usable
+    /// range ([`Segment`]), the 360° extension outside.
     /// `trig` caches (sin α, cos α) across the polars of one lookup.
     pub(crate) fn eval(&self, a: f64, trig: &mut Option<(f64, f64)>) -> CurveValue {
         let n = self.alpha.len();
         if !(a >= self.alpha[0] && a <= self.alpha[n - 1]) {
             let (s, c) = *trig.get_or_insert_with(|| super::post_stall::sin_cos_deg(a));
-            let k = if a < self.alpha[0] { 0 } else { n - 1 };
-            let (supercritical, supercritical_unknown) =
-                Criticality::flags(self.criticality[k], self.criticality[k]);
+            let end = if a < self.alpha[0] { 0 } else { 1 };
+            let at_end = self.end_criticality[end];
+            let (supercritical, supercritical_unknown) = Criticality::flags(at_end, at_end);
             let (below, above) = self.separated_beyond;
             return CurveValue {
                 v: self.ext.eval_sc(a, s, c),
@@ -201,7 +267,7 @@ impl AlphaCurve {
                 supercritical,
                 supercritical_unknown,
                 massive_separation: a >= below && a <= above,
-                separation_unknown: self.separation_unknown[k],
+                separation_unknown: self.end_separation_unknown[end],
             };
         }
         let b = (((a - self.alpha[0]) * self.bucket_scale) as usize).min(self.bucket.len() - 1);
@@ -212,27 +278,24 @@ impl AlphaCurve {
         while k > 0 && self.alpha[k] > a {
             k -= 1;
         }
-        let h = self.alpha[k + 1] - self.alpha[k];
-        let t = (a - self.alpha[k]) / h;
-        let t2 = t * t;
-        let t3 = t2 * t;
-        let h00 = 2.0 * t3 - 3.0 * t2 + 1.0;
-        let h10 = t3 - 2.0 * t2 + t;
-        let h01 = -2.0 * t3 + 3.0 * t2;
-        let h11 = t3 - t2;
-        let (y0, y1) = (&self.value[k], &self.value[k + 1]);
-        let (m0, m1) = (&self.slope[k], &self.slope[k + 1]);
-        let f = |i: usize| h00 * y0[i] + h * h10 * m0[i] + h01 * y1[i] + h * h11 * m1[i];
-        let (supercritical, supercritical_unknown) =
-            Criticality::flags(self.criticality[k], self.criticality[k + 1]);
+        let seg = &self.segments[k];
+        let t = (a - seg.alpha0) * seg.inv_width;
+        // The last node exactly (elsewhere t = 0 at a node, where the cubic is its value).
+        let v = if a == self.alpha[n - 1] {
+            self.last_value
+        } else {
+            seg.cubic
+                .map(|[c0, c1, c2, c3]| c0 + t * (c1 + t * (c2 + t * c3)))
+        };
+        let (supercritical, supercritical_unknown) = seg.supercritical;
         CurveValue {
-            v: [f(0), f(1), f(2)],
+            v,
             post_stall: false,
-            bridged: self.bridged[k] || self.substitute,
+            bridged: seg.bridged || self.substitute,
             supercritical,
             supercritical_unknown,
-            massive_separation: self.separated_gap[k],
-            separation_unknown: self.separation_unknown[k] || self.separation_unknown[k + 1],
+            massive_separation: seg.separated_gap,
+            separation_unknown: seg.separation_unknown,
         }
     }
 }
