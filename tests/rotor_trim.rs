@@ -47,8 +47,9 @@ fn autorotation_has_zero_torque_and_is_stable() {
 }
 
 /// The rpm scan starts where the advancing tip reaches Mach 1 (it started at 900 rpm, an
-/// advancing-tip Mach number of 1.25 at 60 kt): the same equilibrium to the rpm tolerance; a
-/// cap below every rpm searched is an error that says so.
+/// advancing-tip Mach number of 1.25 at 60 kt): the same equilibrium to the rpm tolerance. A
+/// cap just below the equilibrium leaves the rotor accelerating where the scan starts, one
+/// below every rpm searched leaves no scan; both errors say so.
 #[test]
 fn autorotation_scan_starts_below_a_supersonic_tip() {
     let r = rotor();
@@ -56,26 +57,39 @@ fn autorotation_scan_starts_below_a_supersonic_tip() {
     let section = AnalyticSection::clean();
     let v = 60.0 * KT_TO_MS;
     let aoa = 5f64.to_radians();
-    let rpm = |params: &TrimParams| {
-        let s = autorotation(&r, &section, v, aoa, &atm, params).unwrap();
-        s.condition.omega * 30.0 / std::f64::consts::PI
-    };
+    let solve = |params: &TrimParams| autorotation(&r, &section, v, aoa, &atm, params);
     let capped = TrimParams::default();
     let uncapped = TrimParams {
         max_tip_mach: f64::INFINITY,
         ..capped
     };
-    let (a, b) = (rpm(&capped), rpm(&uncapped));
-    assert!((a - b).abs() < capped.rpm_tolerance, "{a} vs {b}");
-    let none = TrimParams {
-        max_tip_mach: 0.05,
-        ..capped
-    };
-    let err = autorotation(&r, &section, v, aoa, &atm, &none).unwrap_err();
-    assert!(
-        matches!(err, TrimError::NoAutorotation { .. }) && err.to_string().contains("Mach"),
-        "{err}"
+    let (a, b) = (
+        solve(&capped).unwrap().condition.omega,
+        solve(&uncapped).unwrap().condition.omega,
     );
+    let rpm = 30.0 / std::f64::consts::PI;
+    assert!(
+        ((a - b) * rpm).abs() < capped.rpm_tolerance,
+        "{} vs {}",
+        a * rpm,
+        b * rpm
+    );
+    // The cap at 0.9 of the equilibrium's rotor speed, then at 0.05.
+    let just_below = (0.9 * a * r.radius + v) / atm.speed_of_sound;
+    for (mach, says) in [
+        (just_below, "still accelerates where its advancing tip"),
+        (0.05, "passes the highest Mach number searched at every rpm"),
+    ] {
+        let params = TrimParams {
+            max_tip_mach: mach,
+            ..capped
+        };
+        let err = solve(&params).unwrap_err();
+        assert!(
+            matches!(err, TrimError::NoAutorotation { .. }) && err.to_string().contains(says),
+            "{mach}: {err}"
+        );
+    }
 }
 
 #[test]

@@ -151,25 +151,42 @@ impl Rotor {
         if cond.atmosphere.density.is_nan() || cond.atmosphere.density <= 0.0 {
             return Err(RotorError::InvalidCondition("air density must be positive"));
         }
-        let tip = cond.omega * self.radius;
         // A blade that twists under load, without a warm start, starts from the rigid blade's
-        // solution (if it has one): from rest its iteration can cycle across the torsion's
-        // load limit (module documentation).
-        let (rigid_start, rigid_iterations) = match (warm.as_ref(), self.torsion) {
+        // solution: from rest its iteration can cycle across the torsion's load limit (module
+        // documentation). From rest after all if that start leads nowhere.
+        let (solution, next) = match (warm.as_ref(), self.torsion) {
             (None, Some(_)) => {
                 let rigid = Rotor {
                     torsion: None,
                     ..self.clone()
                 };
                 let mut start = None;
-                let iterations = rigid
+                let rigid_iterations = rigid
                     .solve(section, cond, &mut start)
                     .map_or(0, |s| s.iterations);
-                (start, iterations)
+                match start.map(|s| self.solve_from(section, cond, Some(&s))) {
+                    Some(Ok((mut solution, next))) => {
+                        solution.iterations += rigid_iterations;
+                        (solution, next)
+                    }
+                    _ => self.solve_from(section, cond, None)?,
+                }
             }
-            _ => (None, 0),
+            _ => self.solve_from(section, cond, warm.as_ref())?,
         };
-        let start = warm.as_ref().or(rigid_start.as_ref());
+        *warm = Some(next);
+        Ok(solution)
+    }
+
+    /// [`solve`](Self::solve) from the state and Jacobian of `start`, or from rest: the
+    /// solution and the warm start it hands on.
+    fn solve_from<S: BladeSection + ?Sized>(
+        &self,
+        section: &S,
+        cond: &FlightCondition,
+        start: Option<&RotorWarmStart>,
+    ) -> Result<(RotorSolution, RotorWarmStart), RotorError> {
+        let tip = cond.omega * self.radius;
         let v0 = start.map_or(0.0, |w| w.induced_velocity / tip);
         let (v0_scaled, flapping, loads, iterations, jacobian) = match self.hub {
             Hub::Teetering { precone } => {
@@ -217,19 +234,13 @@ impl Rotor {
                 )
             }
         };
-        let solution = self.package(
-            cond,
-            v0_scaled,
-            flapping,
-            loads,
-            rigid_iterations + iterations,
-        );
-        *warm = Some(RotorWarmStart {
+        let solution = self.package(cond, v0_scaled, flapping, loads, iterations);
+        let next = RotorWarmStart {
             induced_velocity: solution.induced_velocity,
             flapping,
             jacobian,
-        });
-        Ok(solution)
+        };
+        Ok((solution, next))
     }
 
     /// Newton–Broyden iteration on the scaled unknowns `z` (v0/ΩR first, the flap coefficients

@@ -48,7 +48,8 @@ pub struct RotorSolution {
     /// Fraction of the strip-azimuth samples at whose α the table's points are in massive
     /// separation (outside the validity of the section method; the 360° extension stands in).
     pub table_separated_fraction: f64,
-    /// Newton iterations used.
+    /// Newton iterations used (for a twisting blade solved without a warm start, with those
+    /// of the rigid blade's solution it starts from).
     pub iterations: usize,
 }
 

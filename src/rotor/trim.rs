@@ -291,18 +291,28 @@ pub fn autorotation<S: BladeSection + ?Sized>(
     };
     let tip_mach_rpm =
         rad_s_to_rpm((params.max_tip_mach * atmosphere.speed_of_sound - v) / rotor.radius);
-    let mut hi = params.rpm_max.min(tip_mach_rpm);
+    // The start, and whether the tip Mach number rather than rpm_max sets it.
+    let (mut hi, tip_limited) = if tip_mach_rpm < params.rpm_max {
+        (tip_mach_rpm, true)
+    } else {
+        (params.rpm_max, false)
+    };
     if hi.is_nan() || hi <= params.rpm_min {
-        return Err(no_auto(
-            "the advancing blade tip passes the highest Mach number searched at every rpm",
-        ));
+        return Err(no_auto(if tip_limited {
+            "the advancing blade tip passes the highest Mach number searched at every rpm"
+        } else {
+            "the highest rpm searched is not above the lowest"
+        }));
     }
     let mut warm = None;
     let first = rotor.solve(section, &cond(hi), &mut warm)?;
     if first.torque > 0.0 {
-        return Err(no_auto(
-            "the rotor still accelerates at the highest rpm searched",
-        ));
+        return Err(no_auto(if tip_limited {
+            "the rotor still accelerates where its advancing tip reaches the highest Mach number \
+             searched"
+        } else {
+            "the rotor still accelerates at the highest rpm searched"
+        }));
     }
     let mut f_hi = first.torque;
     let (lo, f_lo) = loop {
