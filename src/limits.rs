@@ -70,8 +70,9 @@ pub const MAX_ROTOR_CELLS: usize = 2_880;
 /// Most takeoff integration steps (`takeoff.max_time_s / takeoff.time_step_s`).
 pub const MAX_TAKEOFF_STEPS: usize = 20_000;
 
-/// Most takeoff steps × rotor cells: 8.64·10⁶, four times the shipped preset (6 000 steps ×
-/// 360 cells, a 4.9 s takeoff), so that a takeoff stays below about 20 s.
+/// Most takeoff steps × rotor cells: 8.64·10⁶, ten times the shipped preset's (2 400 steps of
+/// 0.05 s to its 120 s limit × 360 cells), so that a takeoff stays below about 20 s (6 000
+/// steps × 360 cells took 4.9 s).
 pub const MAX_TAKEOFF_CELL_STEPS: usize = 8_640_000;
 
 /// Most trims one speed sweep (`gyro sweep`, `gyro plot power`) may ask for.

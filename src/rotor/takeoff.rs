@@ -6,7 +6,8 @@
 //! the ground roll). Ground roll: m·u̇ = F_prop − D − μ_r·(G − L). Lift-off when the lift
 //! exceeds the weight, placed inside its step where the lift excess, linear over the step,
 //! crosses zero (distance, speed and rotor speed interpolated alike), so that s_TO does not
-//! move with the step. Airborne: forces along and normal to the flight path,
+//! move with the step; the airborne equations take over at the end of that step, and the
+//! pilot's airspeed schedule starts from the interpolated lift-off speed. Airborne: forces along and normal to the flight path,
 //! m·a = (F_prop − D)·e_V + L·e_L − G·e_z. L is the rotor lift plus that of a fixed wing, D the
 //! rotor, airframe and wing drag; the wing flies at its incidence (the fuselage level on the
 //! ground and along the flight path in the air, as in the trim). Rotor speed throughout: I_R·Ω̇ = Q_aero (the
@@ -359,8 +360,10 @@ pub fn simulate_takeoff<S: BladeSection + ?Sized>(
                 airborne = true;
                 // Lift-off where the lift excess, linear over the step, crosses zero.
                 let (before, frac) = match rolling {
-                    Some((before, e0)) => (before, e0 / (e0 - excess)),
-                    None => (y, 1.0),
+                    Some((before, e0)) if e0.is_finite() && excess.is_finite() => {
+                        (before, e0 / (e0 - excess))
+                    }
+                    _ => (y, 1.0),
                 };
                 let at = |i: usize| before[i] + frac * (y[i] - before[i]);
                 liftoff = Some((at(0), t - (1.0 - frac) * dt, at(2), at(4)));

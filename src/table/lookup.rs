@@ -25,8 +25,8 @@ use super::PolarTable;
 use crate::section::PolarPoint;
 use crate::section::{wrap_deg, Lookup, SectionAero};
 
-/// One polar prepared for fast lookups: usable points sorted by α, PCHIP slopes, bridged
-/// intervals and the 360° extension.
+/// One polar prepared for fast lookups: usable points sorted by α, each interval's PCHIP cubic
+/// and flags ([`Segment`]) and the 360° extension.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct AlphaCurve {
     /// α of the usable points (deg), strictly increasing.

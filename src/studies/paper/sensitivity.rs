@@ -388,8 +388,8 @@ mod tests {
     use std::path::Path;
 
     /// What [`Change::moves`] leaves out is the preset's run: on the shipped 8-H-12 tables, a
-    /// change that does not move the trims gives the preset's trims bit for bit, one that does
-    /// not move the takeoff the preset's takeoff.
+    /// change that does not move the trims gives the preset's trims bit for bit; one that does
+    /// not move the takeoff leaves the aircraft the takeoff reads unchanged.
     #[test]
     fn a_change_leaves_alone_what_it_does_not_move() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -397,7 +397,6 @@ mod tests {
         let [clean, dirty] = ["naca8h12_free.csv", "naca8h12_xtr0.07.csv"]
             .map(|f| read_table(&root.join("polars").join(f)).unwrap());
         let trims = trim_outcome(&ac, ac.mass_kg, &clean, &dirty).unwrap();
-        let takeoff = takeoff_outcome(&ac, &clean).unwrap();
         let changes: Vec<Change> = ESTIMATES.iter().flat_map(|e| e.changes).copied().collect();
         let mut checked = (0, 0);
         for change in changes {
@@ -410,7 +409,9 @@ mod tests {
                     checked.0 += 1;
                 }
                 (true, false) => {
-                    assert_eq!(takeoff_outcome(&changed, &clean).unwrap(), takeoff);
+                    // The takeoff reads the aircraft alone: the change must leave it as it is
+                    // (the trim mass enters the trims as an argument).
+                    assert_eq!(format!("{changed:?}"), format!("{ac:?}"), "{change:?}");
                     checked.1 += 1;
                 }
                 _ => {}
