@@ -128,42 +128,6 @@ struct Segment {
     separation_unknown: bool,
 }
 
-impl Segment {
-    /// The interval from usable point `k` to `k + 1` of the curve's points.
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        alpha: &[f64],
-        value: &[[f64; 3]],
-        slope: &[[f64; 3]],
-        criticality: &[Criticality],
-        separation_unknown: &[bool],
-        bridged: bool,
-        separated_gap: bool,
-        k: usize,
-    ) -> Self {
-        let h = alpha[k + 1] - alpha[k];
-        let cubic = std::array::from_fn(|i| {
-            let (y0, y1) = (value[k][i], value[k + 1][i]);
-            let (d0, d1) = (h * slope[k][i], h * slope[k + 1][i]);
-            [
-                y0,
-                d0,
-                3.0 * (y1 - y0) - 2.0 * d0 - d1,
-                2.0 * (y0 - y1) + d0 + d1,
-            ]
-        });
-        Self {
-            alpha0: alpha[k],
-            inv_width: 1.0 / h,
-            cubic,
-            bridged,
-            separated_gap,
-            supercritical: Criticality::flags(criticality[k], criticality[k + 1]),
-            separation_unknown: separation_unknown[k] || separation_unknown[k + 1],
-        }
-    }
-}
-
 impl AlphaCurve {
     /// Prepare a polar (points sorted by α). `None` if it has fewer than two usable points.
     pub(crate) fn new(points: &[PolarPoint], params: PostStallParams) -> Option<Self> {
@@ -216,20 +180,30 @@ impl AlphaCurve {
         };
         let ext = Extension360::new(params, junction(0), junction(n - 1));
         let (bucket_scale, bucket) = interval_index(&alpha);
-        let segments = (0..n - 1)
-            .map(|k| {
-                Segment::new(
-                    &alpha,
-                    &value,
-                    &slope,
-                    &criticality,
-                    &separation_unknown,
-                    bridged[k],
-                    separated_gap[k],
-                    k,
-                )
-            })
-            .collect();
+        // Interval k: the Hermite cubic of its ends' values and slopes in power form.
+        let segment = |k: usize| {
+            let h = alpha[k + 1] - alpha[k];
+            let cubic = std::array::from_fn(|i| {
+                let (y0, y1) = (value[k][i], value[k + 1][i]);
+                let (d0, d1) = (h * slope[k][i], h * slope[k + 1][i]);
+                [
+                    y0,
+                    d0,
+                    3.0 * (y1 - y0) - 2.0 * d0 - d1,
+                    2.0 * (y0 - y1) + d0 + d1,
+                ]
+            });
+            Segment {
+                alpha0: alpha[k],
+                inv_width: 1.0 / h,
+                cubic,
+                bridged: bridged[k],
+                separated_gap: separated_gap[k],
+                supercritical: Criticality::flags(criticality[k], criticality[k + 1]),
+                separation_unknown: separation_unknown[k] || separation_unknown[k + 1],
+            }
+        };
+        let segments = (0..n - 1).map(segment).collect();
         Some(Self {
             alpha,
             segments,
