@@ -10,7 +10,7 @@ use crate::studies::pca2::{
     flapping_errors, flight_comparison, flight_flapping, flight_points, report_487_section,
     tunnel_comparison, BandErrors, FlappingErrors, FlightPoint, TunnelComparison,
     TunnelMeasurement, TunnelRow, TunnelTable, ALPHA_BAND_DEG, FLIGHT_PITCH_DEG,
-    REPORT_487_SECTION, REPORT_487_TORSION,
+    REPORT_487_SECTION, REPORT_487_TORSION, SPEED_PAIR_ALPHA_DEG, SPEED_PAIR_RPM_RATIO,
 };
 use crate::table::{PolarTable, TableError};
 
@@ -404,8 +404,8 @@ impl SecondRotor {
              faster still (rotor rpm {} at α ≥ 4°, {} at α < 4°; C_L {}): the model's rotor \
              carries more thrust than the tunnel's, so its blade twists further. It does give \
              the tunnel's trend with the wind speed at one α the right order: at α < 4°, over \
-             {} pairs of rows within 0.15° whose rotor speeds differ by more than 25 %, the \
-             slower rotor reached a μ higher by {} measured, {} with the rigid blade (the \
+             {} pairs of rows within {SPEED_PAIR_ALPHA_DEG}° whose rotor speeds differ by more \
+             than {} %, the slower rotor reached a μ higher by {} measured, {} with the rigid blade (the \
              Reynolds number alone) and {} with the twisting one. A load-dependent pitch is in \
              the data; the preset leaves the torsion out because it moves the levels further \
              from them.",
@@ -413,6 +413,7 @@ impl SecondRotor {
             pct(100.0 * twisted_low.rotor_rpm),
             pct(100.0 * twisted.cl),
             rigid.pairs,
+            num(100.0 * (SPEED_PAIR_RPM_RATIO - 1.0), 0),
             num(rigid.measured, 3),
             num(rigid.predicted, 3),
             num(torsion.predicted, 3),
