@@ -175,8 +175,13 @@ fn zero_thrust_j(points: &[(f64, f64)]) -> f64 {
 ///   static C_T is low as well (−12.8 % and −19.4 %). Static C_P at 15°: −10.3 %, C_T +1.4 %.
 ///   A rotational stall delay that carries drag (Chaviaropoulos & Hansen 2000, ΔC_l and ΔC_d
 ///   ∝ 2.2 (c/r)^1.3 cos⁴β, tried on this chart) raises the thrust more than the power: static
-///   C_P −36 % and −28 %, the level at 30° +30 … +40 %, so it is not in the model. These are
-///   findings, asserted below at the measured values with a guard, not tuned;
+///   C_P −36 % and −28 %, the level at 30° +30 … +40 %, so it is not in the model. Nor is
+///   Du & Selig's (1998; f_L and f_D with a = b = d = 1, Λ = ΩR/√(V² + (ΩR)²), c_l,pot =
+///   2π(α − α₀), ΔC_d = f_D (C_d − C_d,0), tried on this chart): static C_T +14 % and +24 %,
+///   C_P −35.8 % and −24.2 %, the level at 30° +37 … +53 % and at 45° +34 … +49 % (with its
+///   drag term taken as a reduction instead: C_P −40 % and −30 %). Every stall delay tried
+///   raises the thrust more than the power. These are findings, asserted below at the measured
+///   values with a guard, not tuned;
 /// * the 15° attached branch the MTOsport propeller cruises on (J 0…0.6): C_T −2 … +9 %, C_P
 ///   −10 … +2 %; the zero-thrust advance ratio 0.81 against 0.85 (the thinner outboard
 ///   sections of the Clark Y family carry less camber);
