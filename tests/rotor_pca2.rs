@@ -174,8 +174,10 @@ fn tunnel_table_iii_with_polargen_tables() {
 /// C_L / L/D: uniform inflow +5.6 / +20.0 / −3.8 %, Report 487's chord tip loss +6.5 / +12.5 /
 /// −5.5 %, no tip loss +7.3 / +26.4 / −5.3 %, no yawed-flow drag +8.4 / +25.7 / −0.8 %, κ = 1
 /// +12.4 / +36.8 / −4.2 %, setting read at 0.75 R +5.6 / +5.7 / −4.2 %, no root cut-out
-/// +7.5 / +24.4 / −8.0 %; the blade untwisted +4.6 / +2.8 / −3.0 %. No change but the last
-/// brings the rotor speed within 5 %; the test pins that and the untwisted row to ±1 point.
+/// +7.5 / +24.4 / −8.0 %; Report 487's own modelling (uniform inflow and its chord tip loss
+/// together) +4.7 / +8.9 / −3.7 %; the blade untwisted +4.6 / +2.8 / −3.0 %. No single change
+/// but the untwisted blade brings the rotor speed within 5 %; the test pins that and the two
+/// named rows to ±1 point.
 #[test]
 fn tunnel_table_iii_preset_changes() {
     let rotor = tunnel_rotor();
@@ -185,12 +187,20 @@ fn tunnel_table_iii_preset_changes() {
             .band(ALPHA_BAND_DEG, 90.0);
         eprintln!("{change:?}: {b:?}");
         assert_eq!(b.failed, 0, "{change:?}");
-        if change == PresetChange::Untwisted {
-            assert!((b.rotor_rpm - 0.046).abs() < 0.01, "{b:?}");
-            assert!((b.cl - 0.028).abs() < 0.01, "{b:?}");
-            assert!((b.lift_to_drag + 0.030).abs() < 0.01, "{b:?}");
-        } else {
-            assert!(b.rotor_rpm > 0.05, "{change:?}: {b:?}");
+        let pinned = match change {
+            PresetChange::Untwisted => Some([0.046, 0.028, -0.030]),
+            PresetChange::Report487Modelling => Some([0.047, 0.089, -0.037]),
+            _ => None,
+        };
+        match pinned {
+            Some(m) => {
+                let got = [b.rotor_rpm, b.cl, b.lift_to_drag];
+                assert!(
+                    got.iter().zip(m).all(|(g, m)| (g - m).abs() < 0.01),
+                    "{b:?}"
+                );
+            }
+            None => assert!(b.rotor_rpm > 0.05, "{change:?}: {b:?}"),
         }
     }
     // The 0.75 R reading lowers the pitch by the twist there (0.647°), the untwisted blade

@@ -429,29 +429,38 @@ impl SecondRotor {
         }
         outln!(o);
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-        let mut untwisted = preset;
+        let (mut untwisted, mut report_487) = (preset, preset);
         for (change, c) in &self.variations {
             let b = high(c);
-            if *change == PresetChange::Untwisted {
-                untwisted = b;
-            } else {
-                lo = lo.min(b.rotor_rpm);
-                hi = hi.max(b.rotor_rpm);
+            match change {
+                PresetChange::Untwisted => untwisted = b,
+                PresetChange::Report487Modelling => report_487 = b,
+                _ => {
+                    lo = lo.min(b.rotor_rpm);
+                    hi = hi.max(b.rotor_rpm);
+                }
             }
         }
         outln!(
             o,
-            "No choice of the inflow, the tip loss, the yawed-flow drag, the induced power, the \
-             root cut-out or where the setting is read brings the rotor speed within 5 %: they \
-             leave its error between {} and {} (preset {}). The blade's pitch along the span \
-             matters most: taken untwisted, all at its 1.9° setting, the blade would give rotor \
-             rpm {}, C_L {}, L/D {}. Report 487 measured the blade twisted in flight (the tip \
-             1.9° above the inboard pitch; the lift's torsion alone about 2.4° at the tip), and \
-             the tunnel did not measure the pitch under load, so the preset keeps the measured twist; the \
+            "No single choice of the inflow, the tip loss, the yawed-flow drag, the induced \
+             power, the root cut-out or where the setting is read brings the rotor speed within \
+             5 %: they leave its error between {} and {} (preset {}). Report 487's own modelling \
+             of this rotor, uniform inflow with its tip-loss rule together, gives rotor rpm {}, \
+             C_L {}, L/D {}. The presets keep Drees' inflow, which the flight's lateral flapping \
+             supports (below), and the MTOsport's Prandtl tip loss: choosing either on this \
+             table would be fitting the model to it. The blade's pitch along the span matters \
+             most: taken untwisted, all at its 1.9° setting, the blade would give rotor rpm {}, \
+             C_L {}, L/D {}. Report 487 measured the blade twisted in flight (the tip 1.9° above \
+             the inboard pitch; the lift's torsion alone about 2.4° at the tip), and the tunnel \
+             did not measure the pitch under load, so the preset keeps the measured twist; the \
              row shows how much the comparison hangs on the pitch the blades took in the tunnel.",
             pct(100.0 * lo),
             pct(100.0 * hi),
             pct(100.0 * preset.rotor_rpm),
+            pct(100.0 * report_487.rotor_rpm),
+            pct(100.0 * report_487.cl),
+            pct(100.0 * report_487.lift_to_drag),
             pct(100.0 * untwisted.rotor_rpm),
             pct(100.0 * untwisted.cl),
             pct(100.0 * untwisted.lift_to_drag),

@@ -275,6 +275,9 @@ pub enum PresetChange {
     /// NACA Report 487's tip loss: the blade lift-free over half the tip chord, B = 1 − c/(2R)
     /// (its B = 0.959), instead of Prandtl's factor.
     ChordTipLoss,
+    /// Report 487's own modelling of this rotor together: uniform inflow and its tip-loss rule
+    /// (the two changes above at once).
+    Report487Modelling,
     /// No tip loss (a bound).
     NoTipLoss,
     /// Profile drag on the chord-normal speed only: no yawed-flow drag.
@@ -293,9 +296,10 @@ pub enum PresetChange {
 
 impl PresetChange {
     /// Every change, in the report's order.
-    pub const ALL: [Self; 8] = [
+    pub const ALL: [Self; 9] = [
         Self::UniformInflow,
         Self::ChordTipLoss,
+        Self::Report487Modelling,
         Self::NoTipLoss,
         Self::NoYawedFlowDrag,
         Self::IdealInducedPower,
@@ -309,6 +313,7 @@ impl PresetChange {
         match self {
             Self::UniformInflow => "uniform inflow (Glauert)",
             Self::ChordTipLoss => "tip loss B = 1 − c/(2R) (Report 487's rule)",
+            Self::Report487Modelling => "both: Report 487's modelling",
             Self::NoTipLoss => "no tip loss",
             Self::NoYawedFlowDrag => "no yawed-flow drag",
             Self::IdealInducedPower => "induced-power factor 1",
@@ -324,6 +329,10 @@ impl PresetChange {
         match self {
             Self::UniformInflow => r.inflow = InflowModel::Glauert,
             Self::ChordTipLoss => r.tip_loss = TipLoss::Chord,
+            Self::Report487Modelling => {
+                r.inflow = InflowModel::Glauert;
+                r.tip_loss = TipLoss::Chord;
+            }
             Self::NoTipLoss => r.tip_loss = TipLoss::NoLoss,
             Self::NoYawedFlowDrag => r.yawed_flow = YawedFlow::Ignored,
             Self::IdealInducedPower => r.induced_power_factor = 1.0,
