@@ -100,6 +100,16 @@ pub(super) fn run(
     })
 }
 
+/// A band's mean errors as the report words them: "rotor rpm …, C_L …, L/D …".
+fn errors_in_words(b: &BandErrors) -> String {
+    format!(
+        "rotor rpm {}, C_L {}, L/D {}",
+        pct(100.0 * b.rotor_rpm),
+        pct(100.0 * b.cl),
+        pct(100.0 * b.lift_to_drag)
+    )
+}
+
 /// The trimmed flight points of `runs`.
 fn trimmed(runs: &[Result<FlightPoint, TrimError>]) -> Vec<FlightPoint> {
     runs.iter()
@@ -376,15 +386,13 @@ impl SecondRotor {
         outln!(
             o,
             "At the lower pitch setting of Table II (0.8°; the report's Table II, transcribed for \
-             this project) the model with polargen's table is further off at α ≥ 4°: rotor rpm \
-             {}, C_L {}, L/D {} (Table III: {}, {}, {}); the tunnel's rotor slowed more than the \
+             this project) the model with polargen's table is further off at α ≥ 4°: {} \
+             (Table III: {}, {}, {}); the tunnel's rotor slowed more than the \
              model's when the pitch was lowered. With Report 487's constants the rotor speed \
              holds at both settings ({} at 0.8°, {} at 1.9°; C_L {} at 0.8°): with a constant \
              drag coefficient (and the lower lift slope) the rotor speed follows the pitch as \
              the tunnel's did; with polargen's smooth section it does not.",
-            pct(100.0 * low_pitch.rotor_rpm),
-            pct(100.0 * low_pitch.cl),
-            pct(100.0 * low_pitch.lift_to_drag),
+            errors_in_words(&low_pitch),
             pct(100.0 * t.rotor_rpm),
             pct(100.0 * t.cl),
             pct(100.0 * t.lift_to_drag),
@@ -446,24 +454,20 @@ impl SecondRotor {
             "No single choice of the inflow, the tip loss, the yawed-flow drag, the induced \
              power, the root cut-out or where the setting is read brings the rotor speed within \
              5 %: they leave its error between {} and {} (preset {}). Report 487's own modelling \
-             of this rotor, uniform inflow with its tip-loss rule together, gives rotor rpm {}, \
-             C_L {}, L/D {}. The presets keep Drees' inflow, which the flight's lateral flapping \
+             of this rotor, uniform inflow with its tip-loss rule together, gives {}. The \
+             presets keep Drees' inflow, which the flight's lateral flapping \
              supports (below), and the MTOsport's Prandtl tip loss: choosing either on this \
              table would be fitting the model to it. The blade's pitch along the span matters \
-             most: taken untwisted, all at its 1.9° setting, the blade would give rotor rpm {}, \
-             C_L {}, L/D {}. Report 487 measured the blade twisted in flight (the tip 1.9° above \
+             most: taken untwisted, all at its 1.9° setting, the blade would give {}. \
+             Report 487 measured the blade twisted in flight (the tip 1.9° above \
              the inboard pitch; the lift's torsion alone about 2.4° at the tip), and the tunnel \
              did not measure the pitch under load, so the preset keeps the measured twist; the \
              row shows how much the comparison hangs on the pitch the blades took in the tunnel.",
             pct(100.0 * lo),
             pct(100.0 * hi),
             pct(100.0 * preset.rotor_rpm),
-            pct(100.0 * report_487.rotor_rpm),
-            pct(100.0 * report_487.cl),
-            pct(100.0 * report_487.lift_to_drag),
-            pct(100.0 * untwisted.rotor_rpm),
-            pct(100.0 * untwisted.cl),
-            pct(100.0 * untwisted.lift_to_drag),
+            errors_in_words(&report_487),
+            errors_in_words(&untwisted),
         );
         outln!(o);
     }
