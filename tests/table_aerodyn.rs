@@ -113,6 +113,55 @@ fn layout_follows_openfast_and_values_are_exact_lookups() {
     std::fs::remove_dir_all(dir).unwrap();
 }
 
+/// A table computed by polargen whose polars stop converging at different α (as every
+/// shipped table does: the usable range grows with Re) reads back from its AeroDyn file: each
+/// table gives back its own usable points, though the polars then differ in their α lists.
+#[test]
+fn polars_of_different_usable_ranges_read_back() {
+    let alphas = alpha_range(-6.0, 12.0, 0.5);
+    let res = [5e5, 1e6];
+    let polars = res
+        .iter()
+        .map(|&re| {
+            let last_usable = if re < 1e6 { 9.0 } else { 11.0 };
+            analytic_polar(re, 0.2, &alphas)
+                .into_iter()
+                .map(|p| {
+                    if p.alpha > last_usable {
+                        failed(p.alpha)
+                    } else {
+                        p
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let t = PolarTable::new(meta("NACA 8-H-12"), res.to_vec(), vec![0.2], polars).unwrap();
+    let dir = scratch("aerodyn-ranges");
+    let path = dir.join("foil.dat");
+    write_table(&t, &path, Some(TableFormat::AeroDyn)).unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    let back = parse_table(text.as_bytes(), TableFormat::AeroDyn).unwrap();
+    assert_eq!(back.meta(), t.meta());
+    for ((_, a), (_, b)) in back.polars().zip(t.polars()) {
+        let usable: Vec<[f64; 4]> = b
+            .iter()
+            .filter(|q| q.converged)
+            .map(|q| [q.alpha, q.cl, q.cd, q.cm])
+            .collect();
+        let read: Vec<[f64; 4]> = a.iter().map(|q| [q.alpha, q.cl, q.cd, q.cm]).collect();
+        assert_eq!(read, usable);
+    }
+    assert_eq!(back.polars().nth(1).unwrap().1.last().unwrap().alpha, 11.0);
+    // A table read so may be given other extension parameters (the table is rebuilt).
+    let cd_max = polargen::table::PostStallParams {
+        cd_max: 1.5,
+        ..*back.post_stall_params()
+    };
+    assert!(back.with_post_stall(cd_max).is_ok());
+    std::fs::remove_dir_all(dir).unwrap();
+}
+
 /// The UA block of a linear polar: C_nalpha is the slope of Cn = Cl·cos α + (Cd − Cd0)·sin α
 /// over the polar, α0 its zero, Cd0 and Cm0 the values there, OpenFAST's defaults elsewhere.
 #[test]

@@ -102,9 +102,10 @@ impl PolarTable {
     /// characters); non-empty, strictly increasing axes; 0 < Re ≤ [`MAX_RE`]; 0 ≤ M < 1; no
     /// empty polar; finite α within ±180°, unique within each polar; finite coefficients,
     /// cd ≥ 0 and the [`COEFFICIENT_BOUNDS`](super::COEFFICIENT_BOUNDS) at converged points; at
-    /// most [`MAX_TABLE_POINTS`](crate::limits::MAX_TABLE_POINTS) points; one α list in every
-    /// polar of a table computed by polargen (its solver name starts with `polargen`). So every
-    /// table that exists can be written and read back. Points are sorted by α. A table in which no polar has two converged points
+    /// most [`MAX_TABLE_POINTS`](crate::limits::MAX_TABLE_POINTS) points. So every table that
+    /// exists can be written and read back. (The readers of the formats that keep every
+    /// computed point, CSV and JSON, also require one α list in every polar of a table
+    /// computed by polargen: [`require_every_alpha`](Self::require_every_alpha).) Points are sorted by α. A table in which no polar has two converged points
     /// is accepted (see [`has_lookup`](Self::has_lookup)).
     pub fn new(
         meta: TableMeta,
@@ -147,7 +148,6 @@ impl PolarTable {
             let (r, m) = (re[k / mach.len()], mach[k % mach.len()]);
             check_polar(r, m, polar)?;
         }
-        check_shared_alphas(&meta, &re, &mach, &polars)?;
         let ln_re = re.iter().map(|r| r.ln()).collect();
         let curves = build_curves(&re, &mach, &polars, params)?;
         Ok(Self {
@@ -212,6 +212,16 @@ impl PolarTable {
             }
         }
         Self::new(meta, re, mach, grid)
+    }
+
+    /// The table, refused when it was computed by polargen (its solver name starts with
+    /// `polargen`) and its polars do not all have one α list: polargen keeps every α of its
+    /// grid in every polar, converged or not, so a CSV or JSON file read so is cut short or
+    /// edited. A format that keeps only the usable points of each polar (AeroDyn) is not
+    /// checked so.
+    pub(crate) fn require_every_alpha(self) -> Result<Self, TableError> {
+        check_shared_alphas(&self.meta, &self.re, &self.mach, &self.polars)?;
+        Ok(self)
     }
 
     /// The same table with other 360°-extension parameters.

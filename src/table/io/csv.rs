@@ -311,7 +311,7 @@ pub fn parse_csv<R: Read>(r: R) -> Result<PolarTable, TableError> {
             message: "no data rows (empty table)".into(),
         });
     };
-    PolarTable::from_polars(meta, polars)
+    PolarTable::from_polars(meta, polars)?.require_every_alpha()
 }
 
 /// Parse a CSV holding one polar, such as the XFOIL reference polars: columns `alpha`, `cl`,

@@ -26,9 +26,12 @@ pub fn write_json(table: &PolarTable, path: &Path) -> Result<(), TableError> {
     })
 }
 
-/// Parse a table from JSON text (validated like [`PolarTable::new`]).
+/// Parse a table from JSON text (validated like [`PolarTable::new`], and a table computed by
+/// polargen must keep every α in every polar: [`PolarTable::require_every_alpha`]).
 pub fn parse_json(text: &str) -> Result<PolarTable, TableError> {
-    serde_json::from_str(text).map_err(|e| json_error(&e))
+    serde_json::from_str::<PolarTable>(text)
+        .map_err(|e| json_error(&e))?
+        .require_every_alpha()
 }
 
 /// A serde_json error as a one-line [`TableError::Json`].
