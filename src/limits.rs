@@ -82,6 +82,11 @@ pub const MAX_SWEEP_SPEEDS: usize = 1000;
 /// (about a minute), or the default 13 speeds at 2 770 cells.
 pub const MAX_SWEEP_CELL_SPEEDS: usize = 36_000;
 
+/// Most cases of one tunnel cases file (`gyro autorotate --cases`): with the PCA-2 preset's
+/// 960 rotor cells a case takes about 15 ms of CPU (NACA Report 515's Table III, 81 rows,
+/// 1.2 s), so the largest file runs for about 2.5 min on one core.
+pub const MAX_TUNNEL_CASES: usize = 10_000;
+
 /// Azimuth samples of a blade α(ψ) curve (`--samples`).
 pub const AZIMUTH_SAMPLES: (usize, usize) = (4, 3600);
 

@@ -9,7 +9,8 @@
 //!   Renaming over such a path would replace whatever the descriptor is connected to: with
 //!   `( echo a; polargen … --out /dev/stdout; echo b ) > f` the shell's file `f` would be
 //!   swapped for a new one and lose `a` and `b`.
-//! * An existing device or FIFO — opened and written in place (streamed), never renamed over.
+//! * An existing device or FIFO — opened and written in place (streamed), never renamed over;
+//!   a FIFO that no process opens for reading within 2 s is an error.
 //! * Anything else names a regular file, written atomically as a one-file [`OutputSet`]: into
 //!   a hidden staging folder beside the target (`.polargen-set-<pid>.<random>/`, a short
 //!   name, so any legal file name can be staged under its own name), flushed and synced, then
@@ -276,13 +277,67 @@ where
             w.flush().map_err(io_err)
         }
         Target::InPlace(p) | Target::File(p) => {
-            // Append: never truncate what is connected to a device, pipe or descriptor.
-            let file = OpenOptions::new().append(true).open(p).map_err(io_err)?;
+            let file = open_in_place(p).map_err(io_err)?;
             let mut w = BufWriter::new(file);
             body(&mut w)?;
             w.flush().map_err(io_err)
         }
     }
+}
+
+/// How long a write into a FIFO waits for a process to open it for reading.
+const FIFO_READER_WAIT: std::time::Duration = std::time::Duration::from_secs(2);
+
+/// Open the stream `p` for appending (never truncate what is connected to a device, pipe or
+/// descriptor). A FIFO is opened without blocking, so that one nobody reads is an error after
+/// [`FIFO_READER_WAIT`] instead of a process that waits for ever; once open, writes block as
+/// usual while the reader is slow.
+#[cfg(unix)]
+fn open_in_place(p: &Path) -> io::Result<File> {
+    use std::os::unix::fs::{FileTypeExt, OpenOptionsExt};
+    use std::os::unix::io::AsRawFd;
+    if !fs::metadata(p).is_ok_and(|m| m.file_type().is_fifo()) {
+        return OpenOptions::new().append(true).open(p);
+    }
+    let deadline = std::time::Instant::now() + FIFO_READER_WAIT;
+    loop {
+        match OpenOptions::new()
+            .append(true)
+            .custom_flags(libc::O_NONBLOCK)
+            .open(p)
+        {
+            Ok(file) => {
+                let fd = file.as_raw_fd();
+                // SAFETY: F_GETFL/F_SETFL on a descriptor this function owns change only its
+                // status flags (clearing O_NONBLOCK: writes then wait for a slow reader).
+                let cleared = unsafe {
+                    let flags = libc::fcntl(fd, libc::F_GETFL);
+                    flags != -1 && libc::fcntl(fd, libc::F_SETFL, flags & !libc::O_NONBLOCK) != -1
+                };
+                return if cleared {
+                    Ok(file)
+                } else {
+                    Err(io::Error::last_os_error())
+                };
+            }
+            Err(e) if e.raw_os_error() == Some(libc::ENXIO) => {
+                if std::time::Instant::now() >= deadline {
+                    return Err(io::Error::other(format!(
+                        "a FIFO that no process reads (waited {} s for a reader)",
+                        FIFO_READER_WAIT.as_secs()
+                    )));
+                }
+                std::thread::sleep(std::time::Duration::from_millis(20));
+            }
+            Err(e) => return Err(e),
+        }
+    }
+}
+
+/// Open the stream `p` for appending (never truncate what is connected to a device).
+#[cfg(not(unix))]
+fn open_in_place(p: &Path) -> io::Result<File> {
+    OpenOptions::new().append(true).open(p)
 }
 
 /// `Ok` when standard output is open. A process started with standard output closed (`>&-`)
@@ -442,6 +497,31 @@ fn own_descriptor(path: &Path) -> Option<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A FIFO nobody reads is an error after the wait, not a hang; one with a reader gets the
+    /// bytes.
+    #[cfg(unix)]
+    #[test]
+    fn a_fifo_without_a_reader_is_an_error() {
+        let dir = tempfile::tempdir().unwrap();
+        let fifo = dir.path().join("out.fifo");
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+        if !made.is_ok_and(|s| s.success()) {
+            return; // no mkfifo on this system: nothing to check
+        }
+        let started = std::time::Instant::now();
+        let err = write_output_bytes(&fifo, b"x").unwrap_err().to_string();
+        assert!(err.contains("no process reads"), "{err}");
+        assert!(
+            started.elapsed() < FIFO_READER_WAIT * 3,
+            "{:?}",
+            started.elapsed()
+        );
+        let path = fifo.clone();
+        let reader = std::thread::spawn(move || fs::read(path).unwrap());
+        write_output_bytes(&fifo, b"polar").unwrap();
+        assert_eq!(reader.join().unwrap(), b"polar");
+    }
 
     #[test]
     fn dash_and_own_descriptors_are_streams() {

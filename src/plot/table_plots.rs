@@ -79,8 +79,9 @@ pub struct TableOverlay<'a> {
     pub read: ReadOptions,
 }
 
-/// The polar figure of [`polar_figure_styled`] with one polar from each table (palette colour
-/// `i` for table `i`, solid). The label count is checked before any file is read.
+/// The polar figure of [`polar_figure_styled`](super::polar_plots::polar_figure_styled) with
+/// one polar from each table (palette colour `i` for table `i`, solid). The label count is
+/// checked before any file is read.
 pub fn table_overlay_figure(overlay: &TableOverlay) -> Result<Figure, OverlayError> {
     let (tables, labels) = (overlay.tables, overlay.labels);
     if !labels.is_empty() && labels.len() != tables.len() {

@@ -34,7 +34,7 @@ pub struct ElasticTorsion {
 impl ElasticTorsion {
     /// Change of the pitch at radius fraction `x` from the planform's (measured at the
     /// reference thrust) when the rotor carries `thrust` \[N\] (held within 0 …
-    /// [`MAX_LOAD_RATIO`] times the reference) \[rad\].
+    /// twice the reference, `MAX_LOAD_RATIO`) \[rad\].
     pub fn pitch_change(&self, x: f64, thrust: f64) -> f64 {
         let span = 1.0 - self.from_r_over_r;
         let shape = if span > 0.0 {

@@ -29,8 +29,7 @@ pub const TUNNEL_ALPHA_RANGE_DEG: (f64, f64) = (-10.0, 85.0);
 /// Highest wind speed of a tunnel case \[m/s\] (about 300 kt).
 pub const MAX_TUNNEL_SPEED_M_S: f64 = 150.0;
 
-/// Most cases of one cases file.
-pub const MAX_TUNNEL_CASES: usize = 10_000;
+pub use crate::limits::MAX_TUNNEL_CASES;
 
 /// One tunnel condition: shaft angle and wind speed.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize)]

@@ -105,7 +105,7 @@ impl PolarTable {
     /// most [`MAX_TABLE_POINTS`](crate::limits::MAX_TABLE_POINTS) points. So every table that
     /// exists can be written and read back. (The readers of the formats that keep every
     /// computed point, CSV and JSON, also require one α list in every polar of a table
-    /// computed by polargen: [`require_every_alpha`](Self::require_every_alpha).) Points are sorted by α. A table in which no polar has two converged points
+    /// computed by polargen.) Points are sorted by α. A table in which no polar has two converged points
     /// is accepted (see [`has_lookup`](Self::has_lookup)).
     pub fn new(
         meta: TableMeta,
