@@ -148,3 +148,56 @@ fn a_c81_flap_sweep_writes_one_deck_per_deflection_and_re() {
     assert_one_line_error("polargen", &o, "blocked_Re2e6_M0.dat");
     assert!(!dir.join("blocked_Re1e6_M0.dat").exists());
 }
+
+/// One deflection to standard output is the table on standard output (no file named `-…`);
+/// a sweep whose last deflection's contour is refused, a deflection given twice (−0 is 0) or
+/// a sweep over the points limit is an error before any solve, with no file written.
+#[test]
+fn a_sweep_is_checked_whole_before_any_solve() {
+    let dir = scratch("flap-whole");
+    let run_in = |args: &[&str]| {
+        std::process::Command::new(cli_support::exe("polargen"))
+            .args(args)
+            .current_dir(&dir)
+            .output()
+            .unwrap()
+    };
+    let base = [
+        "-q",
+        "--airfoil",
+        "naca2412",
+        "--re",
+        "1e6",
+        "--alpha",
+        "0:2:2",
+        "--flap",
+        "0.75:0",
+    ];
+    let stdout = ok(run_in(&[&base[..], &["--flap-deg", "10"]].concat()));
+    assert!(stdout.starts_with("airfoil,re,mach"), "{stdout}");
+    assert!(stdout.contains("flap 0.75:0:10"), "{stdout}");
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
+    let started = std::time::Instant::now();
+    let folds = run_in(&[&base[..], &["--flap-deg", "-10,0,89", "--out", "f.csv"]].concat());
+    assert_one_line_error("polargen", &folds, "(flap 0.75:0:89)");
+    assert!(started.elapsed().as_secs_f64() < 5.0);
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
+    let twice = run_in(&[&base[..], &["--flap-deg", "0,-0", "--out", "f.csv"]].concat());
+    assert_one_line_error("polargen", &twice, "--flap-deg 0: given twice");
+    assert_eq!(twice.status.code(), Some(2));
+    // The default grid (3 904 points) thirteen times is more than 50 000 points.
+    let many = run_in(&[
+        "-q",
+        "--airfoil",
+        "naca2412",
+        "--flap",
+        "0.75:0",
+        "--flap-deg",
+        "-30,-25,-20,-15,-10,-5,0,5,10,15,20,25,30",
+        "--out",
+        "f.csv",
+    ]);
+    assert_one_line_error("polargen", &many, "13 tables of 3904 points");
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
+    let _ = std::fs::remove_dir_all(&dir);
+}

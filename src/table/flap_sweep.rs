@@ -33,8 +33,9 @@ impl FlapSweep {
     /// flap among `ops`. In `format` AeroDyn, several deflections are written together
     /// ([`write_aerodyn_flap_sweep`]: one file per (Re, M) named after `out`, one table per
     /// deflection); otherwise each table goes to `<stem>_flap<DEG>.<ext>` beside `out` (for
-    /// `out` = `tables/t.csv` and 10°: `tables/t_flap10.csv`). Several tables need a file,
-    /// not standard output.
+    /// `out` = `tables/t.csv` and 10°: `tables/t_flap10.csv`; one deflection with `out` = `-`
+    /// goes to standard output). Several tables need a file, not standard output; a
+    /// deflection may not be given twice (−0 is 0).
     pub fn new(
         ops: &[ShapeOp],
         list: Option<&str>,
@@ -67,6 +68,18 @@ impl FlapSweep {
                 })
             })
             .collect::<Result<Vec<f64>, _>>()?;
+        // −0 is 0: one table, one file name.
+        let degs: Vec<f64> = degs.into_iter().map(|d| d + 0.0).collect();
+        crate::arguments::distinct(name, &degs)?;
+        if out == Path::new(STDOUT_PATH) && degs.len() == 1 {
+            return Ok(Self {
+                members: vec![FlapMember {
+                    ops: with_flap_deflection(ops, degs[0]),
+                    out: Some(out.to_path_buf()),
+                }],
+                together: None,
+            });
+        }
         if degs.len() > 1 && out == Path::new(STDOUT_PATH) {
             return Err(ArgumentError::with_text(
                 name,
@@ -95,6 +108,27 @@ impl FlapSweep {
     /// The tables to solve, in the order of the list.
     pub fn members(&self) -> &[FlapMember] {
         &self.members
+    }
+
+    /// Refuses a sweep whose tables together hold more than
+    /// [`MAX_GRID_POINTS`](crate::limits::MAX_GRID_POINTS) points on `grid` (the limit is per
+    /// run, not per table), before any solve.
+    pub fn check_size(&self, grid: &super::GridSpec) -> Result<(), ArgumentError> {
+        let limit = crate::limits::MAX_GRID_POINTS;
+        let points = self.members.len() * grid.point_count();
+        if points <= limit {
+            return Ok(());
+        }
+        Err(ArgumentError::with_text(
+            "--flap-deg",
+            "",
+            format!(
+                "{} tables of {} points = {points} points: more than the limit of {limit} \
+                 points per run",
+                self.members.len(),
+                grid.point_count()
+            ),
+        ))
     }
 
     /// Checks, before anything is solved, that every file of the sweep over the grid `re` ×

@@ -1,6 +1,7 @@
 //! The table job of `polargen`: the tables of a [`FlapSweep`] solved one after another on one
-//! grid, each refused when no point converged, given its post-stall Cd_max and written — to
-//! its own output, or with the others at the end ([`FlapSweep::write_together`]).
+//! grid (every section shaped first, every table solved before any is written), each refused
+//! when no point converged, given its post-stall Cd_max and written — to its own output, or
+//! with the others at the end ([`FlapSweep::write_together`]).
 
 use super::{build_table, with_cd_max, write_table, BuildError, FlapSweep, GridSpec};
 use super::{TableCensus, TableError, TableFormat};
@@ -52,56 +53,60 @@ pub enum TableJobError {
 }
 
 impl TableJob<'_> {
-    /// Solves and writes every table of `sweep` in its order. `progress` follows each table's
-    /// build; `say` gets the notes of reading the airfoil (`note: …`), each table's census and
-    /// time (`… in 1.2 s`, after the table is written) and the file count of a table or set
-    /// written as several files (`wrote 4 files`). Returns the files written.
+    /// Solves and writes every table of `sweep` in its order. Every member's section is
+    /// shaped and checked first, and every table solved before any is written, so a
+    /// deflection whose contour is refused, or a table without a converged point, leaves no
+    /// file. `progress` follows each table's build; `say` gets the notes of reading the
+    /// airfoil (`note: …`), each table's census and time (`… in 1.2 s`) and the file count
+    /// of a table or set written as several files (`wrote 4 files`). Returns the files
+    /// written.
     pub fn run(
         &self,
         sweep: &FlapSweep,
         progress: &dyn Progress,
         say: &dyn Fn(String),
     ) -> Result<Vec<PathBuf>, TableJobError> {
-        let mut together = Vec::new();
-        let mut written = Vec::new();
+        let mut foils = Vec::with_capacity(sweep.members().len());
         for member in sweep.members() {
-            let ops = &member.ops;
-            let (foil, notes) = solver_airfoil(self.airfoil, self.panels, self.derotate, ops)
-                .map_err(TableJobError::Airfoil)?;
+            let (foil, notes) =
+                solver_airfoil(self.airfoil, self.panels, self.derotate, &member.ops)
+                    .map_err(TableJobError::Airfoil)?;
             notes.iter().for_each(|n| say(format!("note: {n}")));
+            foils.push(foil);
+        }
+        let mut tables = Vec::with_capacity(foils.len());
+        for (member, foil) in sweep.members().iter().zip(&foils) {
             progress.start(&self.grid.work(&foil.name, self.threads));
             let start = Instant::now();
-            let table = build_table(
-                &foil,
-                self.panels,
-                self.grid,
-                self.base,
-                self.threads,
-                |n| progress.advance(n),
-            )?;
+            let table = build_table(foil, self.panels, self.grid, self.base, self.threads, |n| {
+                progress.advance(n)
+            })?;
             progress.finish();
             let census = table.census();
             if census.converged == 0 {
                 return Err(TableJobError::NoneConverged(census));
             }
-            let table =
-                with_cd_max(table.with_geometry(ops), self.cd_max).map_err(TableJobError::CdMax)?;
-            // The result first: a summary that cannot be shown must not cost it.
-            let files = match &member.out {
-                Some(path) => write_table(&table, path, Some(self.format))?,
-                None => {
-                    together.push(table);
-                    Vec::new()
-                }
-            };
             say(format!(
                 "{census} in {:.1} s",
                 start.elapsed().as_secs_f64()
             ));
-            if files.len() > 1 {
-                say(format!("wrote {} files", files.len()));
+            let table = with_cd_max(table.with_geometry(&member.ops), self.cd_max)
+                .map_err(TableJobError::CdMax)?;
+            tables.push(table);
+        }
+        let mut together = Vec::new();
+        let mut written = Vec::new();
+        for (member, table) in sweep.members().iter().zip(tables) {
+            match &member.out {
+                Some(path) => {
+                    let files = write_table(&table, path, Some(self.format))?;
+                    if files.len() > 1 {
+                        say(format!("wrote {} files", files.len()));
+                    }
+                    written.extend(files);
+                }
+                None => together.push(table),
             }
-            written.extend(files);
         }
         let files = sweep.write_together(&together)?;
         if !files.is_empty() {

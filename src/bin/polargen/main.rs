@@ -139,6 +139,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
         TableFormat::for_output(cli.format, cli.out.as_deref()).context("--format/--out")?;
     let ops = cli.grid.shape.ops();
     let sweep = FlapSweep::new(&ops, cli.flap_deg.as_deref(), out, format)?;
+    sweep.check_size(&grid)?;
     sweep
         .check_output(format, &grid.reynolds, &grid.mach)
         .context("--out")?;
