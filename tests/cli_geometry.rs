@@ -54,6 +54,19 @@ fn geometry_writes_the_shaped_contour_and_says_its_thickness() {
     ]));
     let back = polargen::geometry::read_airfoil_file(&file).unwrap();
     assert_eq!(back.len(), 249);
+    // A contour that would not read back as a section (the blend of a 12 % and a 99 %
+    // section: a nose the spline cannot locate) is refused, and nothing is written.
+    let blend = dir.join("blend.dat");
+    let o = polargen(&[
+        "geometry",
+        "naca2412",
+        "--blend",
+        "naca9999:0.5",
+        "--out",
+        blend.to_str().unwrap(),
+    ]);
+    assert_one_line_error("polargen", &o, "reading back the contour written for");
+    assert!(!blend.exists());
 }
 
 #[test]

@@ -31,7 +31,7 @@ pub use ops::{
 };
 pub use paneling::{PaneledAirfoil, PanelingParams, DEFAULT_PANEL_NODES};
 pub use registry::{
-    airfoil_by_name_or_path, airfoil_key, naca8h12, shaped_airfoil, solver_airfoil,
+    airfoil_by_name_or_path, airfoil_key, naca8h12, selig_file_text, shaped_airfoil, solver_airfoil,
 };
 pub use spline::{ContourSpline, CubicSpline, EndCondition, MEAN_LINE_STEPS};
 pub use validation::{

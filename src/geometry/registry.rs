@@ -3,10 +3,11 @@
 
 use std::path::Path;
 
-use super::coordinates::{parse_airfoil_text, read_airfoil_file};
+use super::coordinates::{parse_airfoil_text, read_airfoil_file, to_selig_string};
 use super::error::GeometryError;
 use super::naca::{naca, NacaOptions};
 use super::ops::{apply_shape_ops, ShapeOp};
+use super::paneling::DEFAULT_PANEL_NODES;
 use super::Airfoil;
 use crate::input;
 
@@ -123,6 +124,29 @@ pub fn shaped_airfoil(
         Ok(foil.in_chord_units()?.0)
     };
     Ok((apply_shape_ops(&base, ops, &partner)?, notes))
+}
+
+/// The Selig coordinate file of `airfoil` (as [`to_selig_string`]), checked to read back as a
+/// section the solvers take: parsed, its chord located and paneled to
+/// [`DEFAULT_PANEL_NODES`] as a coordinate file given to `--airfoil` would be. A shaped
+/// contour that would be refused when read (a blend of unlike noses, an extreme flap) is
+/// refused here, before anything is written.
+pub fn selig_file_text(airfoil: &Airfoil) -> Result<String, GeometryError> {
+    let text = to_selig_string(airfoil);
+    let read_back = || -> Result<(), GeometryError> {
+        let (foil, _) = parse_airfoil_text(&text, &airfoil.name, &airfoil.name)?;
+        foil.chord_angle_deg()?;
+        foil.in_chord_units()?
+            .0
+            .prepared_nodes(DEFAULT_PANEL_NODES)?;
+        Ok(())
+    };
+    read_back().map_err(|e| GeometryError::Preparing {
+        step: "reading back the contour written for",
+        airfoil: airfoil.name.clone(),
+        source: Box::new(e),
+    })?;
+    Ok(text)
 }
 
 /// The airfoil the solvers get from a user's `spec` and operations: the

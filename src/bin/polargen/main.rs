@@ -23,7 +23,7 @@ use clap::CommandFactory;
 
 use polargen::arguments::{self, trip_flags, ArgumentError, TransitionArgs};
 use polargen::cli::{self, Tool};
-use polargen::geometry::{shaped_airfoil, solver_airfoil, to_selig_string, Airfoil, ShapeOp};
+use polargen::geometry::{selig_file_text, shaped_airfoil, solver_airfoil, Airfoil, ShapeOp};
 use polargen::inviscid::{inviscid_polar_csv, PanelSystem};
 use polargen::output::{check_output_path, write_output_bytes, write_stdout, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
@@ -86,10 +86,11 @@ fn write_geometry(spec: &str, shape: &Shape, out: &Path) -> Result<()> {
     let (foil, notes) =
         shaped_airfoil(spec, shape.derotate, &shape.ops()).context(spec.to_string())?;
     notes.iter().for_each(|n| TOOL.say(format!("note: {n}")));
+    let text = selig_file_text(&foil)?;
     let gap = foil.te_gap();
     let measured = foil.thickness_camber()?;
     TOOL.say(format!("{}: {measured}, TE gap {gap:.5}", foil.name));
-    Ok(write_output_bytes(out, to_selig_string(&foil).as_bytes())?)
+    Ok(write_output_bytes(out, text.as_bytes())?)
 }
 
 /// `--inviscid`: the panel solution at one Mach number.
