@@ -190,3 +190,26 @@ fn coordinates_in_other_units_are_normalised() {
     );
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+/// The viscous table's flags that change nothing in the panel solution, and formats other
+/// than CSV, are usage errors under `--inviscid` (they were ignored: a `.c81` file held CSV).
+#[test]
+fn viscous_flags_and_other_formats_are_refused() {
+    let base = ["--airfoil", "naca2412", "--inviscid", "--alpha", "0"];
+    for (extra, needle) in [
+        (&["--re", "1e6"][..], "--re: does not apply to --inviscid"),
+        (&["--xtr", "0.1"][..], "--xtr: does not apply"),
+        (&["--cd-max", "1.5"][..], "--cd-max: does not apply"),
+        (
+            &["--flap", "0.75:0", "--flap-deg", "-5,5", "--out", "f.csv"][..],
+            "--flap-deg: does not apply",
+        ),
+        (&["--format", "json"][..], "--inviscid writes CSV"),
+        (&["--out", "x.c81"][..], "--inviscid writes CSV"),
+    ] {
+        let o = polargen(&[&base[..], extra].concat());
+        cli_support::assert_one_line_error("polargen", &o, needle);
+        assert_eq!(o.status.code(), Some(2), "{extra:?}");
+    }
+    assert!(!std::path::Path::new("x.c81").exists() && !std::path::Path::new("f.csv").exists());
+}

@@ -269,7 +269,8 @@ pub struct RunArgs {
     #[arg(long, value_name = "NAME|PATH|-", required = true)]
     pub airfoil: Option<String>,
 
-    /// Inviscid panel solution only (cd = 0); output `alpha,cl,cd,cm,converged`.
+    /// Inviscid panel solution only (cd = 0); output `alpha,cl,cd,cm,converged` as CSV (the
+    /// viscous flags --re, --xtr*, --cd-max, --flap-deg and other formats are refused).
     #[arg(long)]
     pub inviscid: bool,
 
@@ -294,9 +295,9 @@ pub struct RunArgs {
     /// X:Y; each file named <stem>_flap<DEG><ext> (the deflection is the table's flap_deg;
     /// one deflection may go to standard output). Every section is checked and every table
     /// solved before any file is written; the tables together count against the points
-    /// limit of a run. With --format aerodyn several deflections go together: one file per Re and Mach
-    /// (<stem>_Re<RE>_M<MACH><ext>; --out itself for one), holding one table per deflection
-    /// in increasing order, its UserProp the deflection (OpenFAST's AFTabMod 3).
+    /// limit of a run. With --format aerodyn several deflections go together: one file per
+    /// Re and Mach (<stem>_Re<RE>_M<MACH><ext>; --out itself for one), holding one table per
+    /// deflection in increasing order, its UserProp the deflection (OpenFAST's AFTabMod 3).
     #[arg(
         long,
         value_name = "LIST",

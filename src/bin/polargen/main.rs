@@ -93,8 +93,35 @@ fn write_geometry(spec: &str, shape: &Shape, out: &Path) -> Result<()> {
     Ok(write_output_bytes(out, text.as_bytes())?)
 }
 
-/// `--inviscid`: the panel solution at one Mach number.
+/// `--inviscid`: the panel solution at one Mach number, as CSV. The flags of the viscous
+/// table that would change nothing here are refused, not ignored.
 fn run_inviscid(cli: &RunArgs) -> Result<()> {
+    let g = &cli.grid;
+    let viscous_only = [
+        ("--re", g.re.is_some()),
+        ("--xtr", g.xtr.is_some()),
+        ("--xtr-top", g.xtr_top.is_some()),
+        ("--xtr-bot", g.xtr_bot.is_some()),
+        ("--cd-max", cli.extension.cd_max.is_some()),
+        ("--flap-deg", cli.flap_deg.is_some()),
+    ];
+    if let Some((flag, _)) = viscous_only.iter().find(|f| f.1) {
+        Err(ArgumentError::with_text(
+            flag,
+            "",
+            "does not apply to --inviscid (the panel solution has no Reynolds number, \
+             transition, post-stall extension or flap sweep)",
+        ))?;
+    }
+    let format =
+        TableFormat::for_output(cli.format, cli.out.as_deref()).context("--format/--out")?;
+    if format != TableFormat::Csv {
+        Err(ArgumentError::with_text(
+            "--format/--out",
+            format.name(),
+            "--inviscid writes CSV (alpha,cl,cd,cm,converged) only",
+        ))?;
+    }
     let mach = cli.grid.mach.clone().unwrap_or(vec![0.0]);
     arguments::distinct("--mach", &mach)?;
     let mach = match mach.as_slice() {
