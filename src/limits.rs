@@ -87,6 +87,11 @@ pub const MAX_SWEEP_CELL_SPEEDS: usize = 36_000;
 /// 1.2 s), so the largest file runs for about 2.5 min on one core.
 pub const MAX_TUNNEL_CASES: usize = 10_000;
 
+/// Largest broadside drag coefficient `cd_max` of the 360° extension (`--cd-max`, a table's
+/// `post_stall`): a two-dimensional flat plate has about 2.0 (Hoerner 1965, ch. 3) and
+/// Viterna & Corrigan's finite-blade rule at most 2.01; 3 leaves room for a measured value.
+pub const MAX_CD_MAX: f64 = 3.0;
+
 /// Azimuth samples of a blade α(ψ) curve (`--samples`).
 pub const AZIMUTH_SAMPLES: (usize, usize) = (4, 3600);
 

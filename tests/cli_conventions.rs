@@ -71,6 +71,10 @@ fn every_bad_value_is_a_usage_error_naming_the_flag() {
             "--mach: give the Reynolds numbers with --re",
         ),
         (grid(&["--re", "1e6", "--cd-max", "-2"]), "--cd-max -2"),
+        (
+            grid(&["--re", "1e6", "--cd-max", "1e308"]),
+            "--cd-max 1e308: must be in (0, 3]",
+        ),
         (grid(&["--inviscid", "--mach", "0.1,0.2"]), "--mach"),
     ] {
         usage_error("polargen", &args, expect);

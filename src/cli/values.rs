@@ -61,6 +61,20 @@ fn checked(
     nameless(check("", v)).map(|()| v)
 }
 
+/// The broadside drag of the 360° extension (the rule of
+/// [`PostStallParams::validate`](crate::table::PostStallParams::validate)).
+pub fn cd_max(text: &str) -> Result<f64, ArgumentError> {
+    checked(text, |name, v| {
+        let params = crate::table::PostStallParams {
+            cd_max: v,
+            ..Default::default()
+        };
+        params
+            .validate()
+            .map_err(|_| ArgumentError::new(name, v, "must be in (0, 3] (docs/limits.md)"))
+    })
+}
+
 /// A chord Reynolds number ([`arguments::reynolds`]).
 pub fn reynolds(text: &str) -> Result<f64, ArgumentError> {
     checked(text, arguments::reynolds)

@@ -58,11 +58,16 @@ impl Default for PostStallParams {
 }
 
 impl PostStallParams {
-    /// Check the ranges: `cd_max` > 0, `cd_reverse` ≥ 0, 0 ≤ `vc_min_junction_deg` < 90, all
-    /// finite.
+    /// Check the ranges: 0 < `cd_max` ≤ [`MAX_CD_MAX`](crate::limits::MAX_CD_MAX),
+    /// `cd_reverse` ≥ 0, 0 ≤ `vc_min_junction_deg` < 90, all finite.
     pub fn validate(&self) -> Result<(), TableError> {
         let checks = [
-            ("cd_max", self.cd_max, self.cd_max > 0.0, "positive"),
+            (
+                "cd_max",
+                self.cd_max,
+                self.cd_max > 0.0 && self.cd_max <= crate::limits::MAX_CD_MAX,
+                "in (0, 3] (docs/limits.md)",
+            ),
             (
                 "cd_reverse",
                 self.cd_reverse,

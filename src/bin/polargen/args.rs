@@ -214,8 +214,9 @@ pub struct ConvertArgs {
 pub struct Extension {
     /// Post-stall drag coefficient broadside to the flow (α = ±90°, the flat-plate normal
     /// force) of the 360° extension (Viterna–Corrigan, then a flat plate); default 2.0
-    /// (Hoerner's 2-D plate); for a finite blade Viterna–Corrigan give 1.11 + 0.018·AR.
-    #[arg(long, value_name = "CD", allow_hyphen_values = true, value_parser = values::positive)]
+    /// (Hoerner's 2-D plate); for a finite blade Viterna–Corrigan give 1.11 + 0.018·AR; at
+    /// most 3.
+    #[arg(long, value_name = "CD", allow_hyphen_values = true, value_parser = values::cd_max)]
     pub cd_max: Option<f64>,
 }
 
