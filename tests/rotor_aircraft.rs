@@ -82,10 +82,18 @@ fn unknown_field_and_bad_values_are_rejected() {
         ),
         "{err}"
     );
+    // A malformed value is named by its line and column (of the value).
     let text = preset_text().replace("inflow = \"drees\"", "inflow = \"vortex\"");
+    let line = 1 + text
+        .lines()
+        .position(|l| l.starts_with("inflow = \"vortex\""))
+        .unwrap();
     assert_eq!(
         Aircraft::from_toml_str(&text, "t").unwrap_err().to_string(),
-        "bad aircraft file t: unknown variant `vortex`, expected `glauert` or `drees`"
+        format!(
+            "bad aircraft file t: line {line}, column 10: unknown variant `vortex`, expected \
+             `glauert` or `drees`"
+        )
     );
     // Takeoff integration: a step that would take millions of steps, one too coarse to
     // resolve the rotor, a field above the ISA troposphere.
@@ -166,10 +174,10 @@ fn unknown_field_and_bad_values_are_rejected() {
     let ac = Aircraft::from_toml_str(&text, &preset_path()).unwrap();
     assert_eq!(ac.rotor.induced_power_factor, 1.0);
     // The propeller's section tables are read relative to the preset's folder, and a missing
-    // one is named.
+    // one is named by its field.
     let err = Aircraft::from_toml_str(&preset_text(), "elsewhere/t.toml").unwrap_err();
     assert!(
-        err.to_string() == "aircraft file elsewhere/t.toml: propeller.section_table"
+        err.to_string() == "aircraft file elsewhere/t.toml: propeller.sections[0].table"
             && err
                 .source()
                 .unwrap()

@@ -99,11 +99,12 @@ const TABLES: [(&str, &str); 6] = [
 pub(super) fn aircraft(path: &Path) -> Result<Aircraft, AircraftError> {
     if path == Path::new(SHIPPED_AIRCRAFT) && !exists(path) {
         let aircraft = Aircraft::parse_toml(AIRCRAFT_TOML, SHIPPED_AIRCRAFT)?;
-        let fail = |source| AircraftError::PropellerSection {
-            path: SHIPPED_AIRCRAFT.to_string(),
-            source,
-        };
-        let embedded = |file: &Path| {
+        let embedded = |k: usize, file: &Path| {
+            let fail = |source| AircraftError::PropellerSection {
+                path: SHIPPED_AIRCRAFT.to_string(),
+                field: format!("propeller.sections[{k}].table"),
+                source,
+            };
             let name = file.file_name().and_then(|n| n.to_str()).unwrap_or("");
             let (_, text) = PROPELLER_TABLES
                 .iter()
@@ -120,7 +121,8 @@ pub(super) fn aircraft(path: &Path) -> Result<Aircraft, AircraftError> {
         let sections = aircraft.propeller.sections.clone().unwrap_or_default();
         let tables = sections
             .iter()
-            .map(|s| Ok((s.thickness_ratio, embedded(&s.table)?)))
+            .enumerate()
+            .map(|(k, s)| Ok((s.thickness_ratio, embedded(k, &s.table)?)))
             .collect::<Result<Vec<_>, AircraftError>>()?;
         return Ok(aircraft.with_propeller_sections(tables));
     }

@@ -46,10 +46,13 @@ pub enum AircraftError {
         message: String,
     },
     /// The propeller's section table cannot be read.
-    #[error("aircraft file {path}: propeller.section_table")]
+    #[error("aircraft file {path}: {field}")]
     PropellerSection {
         /// The aircraft file.
         path: String,
+        /// The field that names the table: `propeller.section_table`, or
+        /// `propeller.sections[K].table` (K from 0).
+        field: String,
         /// Why.
         #[source]
         source: TableError,
@@ -254,20 +257,28 @@ impl Aircraft {
     pub fn from_toml_str(text: &str, origin: &str) -> Result<Self, AircraftError> {
         let mut aircraft = Self::parse_toml(text, origin)?;
         let folder = Path::new(origin).parent().unwrap_or(Path::new(""));
-        let read = |file: &Path| {
+        let read = |file: &Path, field: String| {
             read_lookup_table(&folder.join(file)).map_err(|source| {
                 AircraftError::PropellerSection {
                     path: origin.to_string(),
+                    field,
                     source,
                 }
             })
         };
         let p = &aircraft.propeller;
         let sections = match (&p.section_table, &p.sections) {
-            (Some(file), _) => vec![(f64::NAN, Arc::new(read(file)?))],
+            (Some(file), _) => vec![(
+                f64::NAN,
+                Arc::new(read(file, "propeller.section_table".into())?),
+            )],
             (None, Some(list)) => list
                 .iter()
-                .map(|s| Ok((s.thickness_ratio, Arc::new(read(&s.table)?))))
+                .enumerate()
+                .map(|(k, s)| {
+                    let field = format!("propeller.sections[{k}].table");
+                    Ok((s.thickness_ratio, Arc::new(read(&s.table, field)?)))
+                })
                 .collect::<Result<_, AircraftError>>()?,
             (None, None) => Vec::new(),
         };
@@ -306,7 +317,7 @@ impl Aircraft {
             }
             AircraftError::Parse {
                 path: origin.to_string(),
-                message: e.message().replace('\n', " "),
+                message: toml_error_line(&e, text),
             }
         })?;
         aircraft.validate()?;
@@ -484,4 +495,16 @@ impl Aircraft {
         }
         Ok(())
     }
+}
+
+/// A TOML error as one line: where it is (line and column of its span in `text`, the key or
+/// value at fault) and what.
+pub(crate) fn toml_error_line(e: &toml::de::Error, text: &str) -> String {
+    let what = e.message().replace('\n', " ");
+    let Some(before) = e.span().and_then(|span| text.get(..span.start)) else {
+        return what;
+    };
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    format!("line {line}, column {column}: {what}")
 }

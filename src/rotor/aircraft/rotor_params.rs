@@ -437,14 +437,16 @@ impl RotorPreset {
             path: origin.to_string(),
             message: message.replace('\n', " "),
         };
-        let table: toml::Table = toml::from_str(text).map_err(|e| parse(e.message().into()))?;
+        let table: toml::Table =
+            toml::from_str(text).map_err(|e| parse(super::toml_error_line(&e, text)))?;
         if let Some(key) = table.keys().find(|k| !PRESET_KEYS.contains(&k.as_str())) {
             return Err(parse(format!(
                 "unknown field `{key}`, expected one of {}",
                 PRESET_KEYS.map(|k| format!("`{k}`")).join(", ")
             )));
         }
-        let preset: Self = toml::from_str(text).map_err(|e| parse(e.message().into()))?;
+        let preset: Self =
+            toml::from_str(text).map_err(|e| parse(super::toml_error_line(&e, text)))?;
         preset.rotor.validate()?;
         Ok(preset)
     }
