@@ -189,3 +189,27 @@ fn bad_arguments_are_one_line_errors() {
     let out = gyro(&["trim", "--aircraft", &a, "--table", &t]);
     assert_one_line_error("gyro", &out, "describes a rotor alone");
 }
+
+/// A case without an autorotation is an error that says why (the rotor near broadside to
+/// the wind: the inflow/flapping iteration does not converge), not only that none was found.
+#[test]
+fn a_failed_case_says_why() {
+    let o = gyro(&[
+        "-q",
+        "autorotate",
+        "--aircraft",
+        &pca2(),
+        "--table",
+        &goe429(),
+        "--alpha-deg",
+        "85",
+        "--speed-m-s",
+        "30",
+    ]);
+    assert_one_line_error(
+        "gyro",
+        &o,
+        "no autorotating rotor speed: rotor inflow/flapping",
+    );
+    assert_eq!(o.status.code(), Some(1));
+}

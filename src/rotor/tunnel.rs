@@ -403,10 +403,23 @@ pub fn autorotate_outcomes<S: BladeSection + Sync + ?Sized>(
         .collect()
 }
 
-/// No case of a tunnel run found an autorotating rotor speed.
+/// No case of a tunnel run found an autorotating rotor speed: the number of cases and the
+/// reason the first gave (the reason of each is in its note).
 #[derive(Debug, thiserror::Error)]
-#[error("no case found an autorotating rotor speed")]
-pub struct NoAutorotation;
+#[error(
+    "{}",
+    if *cases == 1 {
+        format!("no autorotating rotor speed: {first}")
+    } else {
+        format!("none of the {cases} cases found an autorotating rotor speed (the first: {first})")
+    }
+)]
+pub struct NoAutorotation {
+    /// Cases run.
+    pub cases: usize,
+    /// Why the first case found none.
+    pub first: String,
+}
 
 /// The rotor of `params` in the tunnel at ISA `altitude_m` \[m\]: every case of `cases` with
 /// `section` ([`autorotate_outcomes`], default trim settings); `say` gets each case's notes.
@@ -424,7 +437,10 @@ pub fn tunnel_run<S: BladeSection + Sync + ?Sized>(
     outcomes.iter().flat_map(|o| o.notes()).for_each(say);
     match outcomes.iter().any(CaseOutcome::found) {
         true => Ok(outcomes),
-        false => Err(NoAutorotation),
+        false => Err(NoAutorotation {
+            cases: outcomes.len(),
+            first: outcomes.first().map_or(String::new(), |o| o.error.clone()),
+        }),
     }
 }
 
