@@ -455,3 +455,63 @@ fn trim_notes_clamped_lookups_and_engine_limit() {
     );
     assert!(String::from_utf8_lossy(&out.stdout).contains("above max"));
 }
+
+/// Every command that runs the rotor says where its section data are not to be trusted: the
+/// takeoff (the largest share of one rotor solution, also in its JSON), both cases of
+/// `compare`, a sweep (with the speeds beyond the engine) and the blade α trim.
+#[test]
+fn every_rotor_command_says_its_lookup_shares() {
+    let a = aircraft();
+    let shipped = cli_support::polars("naca8h12_free.csv");
+    let stderr_of = |args: &[&str]| {
+        let out = gyro(args);
+        assert_ok(&out);
+        String::from_utf8_lossy(&out.stderr).into_owned()
+    };
+    // The XFOIL polar is a single node (Re 1.9e6, M 0.41): most lookups lie off it.
+    let t = table("free");
+    let out = gyro(&["takeoff", "--aircraft", &a, "--table", &t, "--json"]);
+    assert_ok(&out);
+    let v = json(&out);
+    assert!(v["table_clamped_fraction"].as_f64().unwrap() > 0.5, "{v}");
+    for key in ["table_supercritical_fraction", "table_separated_fraction"] {
+        assert!(v[key].is_number(), "{key} missing: {v}");
+    }
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("note: during the takeoff (the largest share of one rotor solution), ")
+            && err.contains("lookups lie outside the table's Reynolds/Mach range"),
+        "{err}"
+    );
+    // The shipped table: some lookups in massive separation during the run.
+    let err = stderr_of(&["takeoff", "--aircraft", &a, "--table", &shipped]);
+    assert!(err.contains("in massive separation"), "{err}");
+    let err = stderr_of(&["compare", "--aircraft", &a, "--clean", &shipped]);
+    for case in ["clean", "contaminated"] {
+        assert!(
+            err.contains(&format!("note: {case}: during the takeoff"))
+                && err.contains(&format!("note: {case}: at 60.0 kt, ")),
+            "{case}: {err}"
+        );
+    }
+    let err = stderr_of(&[
+        "sweep",
+        "--aircraft",
+        &a,
+        "--table",
+        &shipped,
+        "--from-kt",
+        "100",
+        "--to-kt",
+        "150",
+        "--step-kt",
+        "25",
+    ]);
+    assert!(
+        err.contains("at 3 of 3 speeds (100.0 to 150.0 kt) the propeller needs more than")
+            && err.contains("lean on supercritical table points"),
+        "{err}"
+    );
+    let err = stderr_of(&["alpha", "--aircraft", &a, "--table", &shipped]);
+    assert!(err.contains("note: at 60 kt, "), "{err}");
+}

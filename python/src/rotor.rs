@@ -109,13 +109,14 @@ impl PyAircraft {
         Ok((json(&t)?, t.notes()))
     }
 
-    /// The takeoff as `gyro takeoff --json` computes it: (JSON text, time history columns).
+    /// The takeoff as `gyro takeoff --json` computes it: (JSON text, time history columns,
+    /// notes).
     fn takeoff<'py>(
         &self,
         py: Python<'py>,
         table: &Table,
         mass_kg: Option<f64>,
-    ) -> PyResult<(String, Bound<'py, PyDict>)> {
+    ) -> PyResult<(String, Bound<'py, PyDict>, Vec<String>)> {
         let aircraft = self.with_mass(mass_kg)?;
         let section = section(table)?;
         let run = py.detach(|| shielded(|| simulate_takeoff(&aircraft, section)))?;
@@ -135,7 +136,7 @@ impl PyAircraft {
         history.set_item("rotor_rpm", column(|s| s.rotor_rpm))?;
         history.set_item("alpha_r_deg", column(|s| s.alpha_r_deg))?;
         history.set_item("beta_deg", column(|s| s.beta_deg))?;
-        Ok((json(&t)?, history))
+        Ok((json(&t)?, history, t.notes()))
     }
 
     fn __repr__(&self) -> String {

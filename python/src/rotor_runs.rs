@@ -9,7 +9,7 @@ use polargen::report::console::compare_rows;
 use polargen::report::ShippedInputs;
 use polargen::rotor::check_sweep_speeds;
 use polargen::studies::contamination::ContaminationOptions;
-use polargen::studies::paper::{paper_runs, SpeedSweep};
+use polargen::studies::paper::{paper_runs, SpeedSweep, CASE_LABELS};
 use polargen::studies::wing::WingOptions;
 use polargen::studies::{StudyKind, StudyRequest};
 use pyo3::prelude::*;
@@ -37,18 +37,25 @@ pub fn rotor_sweep(
 }
 
 /// Clean versus contaminated as `gyro compare --json` prints it: JSON
-/// `{"trim": [rows], "takeoff": [rows]}`, each row the paper's and our value of a quantity.
+/// `{"trim": [rows], "takeoff": [rows]}`, each row the paper's and our value of a quantity;
+/// and the notes `gyro compare` prints (the trims' and takeoffs' lookup shares).
 #[pyfunction]
 pub fn rotor_compare(
     py: Python<'_>,
     aircraft: &PyAircraft,
     clean: &Table,
     contaminated: &Table,
-) -> PyResult<String> {
+) -> PyResult<(String, Vec<String>)> {
     let (c, d) = (section(clean)?, section(contaminated)?);
     let ac = &aircraft.inner;
     let runs = py.detach(|| shielded(|| paper_runs(ac, c, d)))?;
-    json(&compare_rows(&runs.map_err(|e| raise(None, e))?))
+    let runs = runs.map_err(|e| raise(None, e))?;
+    let notes = runs
+        .iter()
+        .zip(CASE_LABELS)
+        .flat_map(|(run, case)| run.notes(case))
+        .collect();
+    Ok((json(&compare_rows(&runs))?, notes))
 }
 
 /// A study as `gyro study KIND --json` runs it: (JSON records, notes, files written). The

@@ -161,8 +161,16 @@ def test_takeoff_has_the_fields_values_and_history_of_gyro_takeoff(cli, tmp_path
     expected = json.loads(cli.run(
         "gyro", "takeoff", "--aircraft", "aircraft/mtosport.toml", "--table",
         "polars/naca8h12_free.csv", "--json", "--history", str(history)).stdout)
-    result = pg.rotor.takeoff(aircraft, section)
+    run = cli.run("gyro", "takeoff", "--aircraft", "aircraft/mtosport.toml", "--table",
+                  "polars/naca8h12_free.csv")
+    printed = [line.removeprefix("gyro: ") for line in run.stderr.splitlines()
+               if "during the takeoff" in line]
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        result = pg.rotor.takeoff(aircraft, section)
     assert result.to_dict() == expected
+    assert printed and result.notes == printed
+    assert [str(w.message) for w in caught] == printed
     columns = read_csv_columns(history.read_text())
     for name, values in result.history.items():
         assert same(values, floats(columns[name])), name

@@ -48,8 +48,11 @@ def test_compare_is_gyro_compare_json(cli, aircraft, clean, tripped):
         "gyro", "compare", "--aircraft", "aircraft/mtosport.toml", "--clean",
         "polars/naca8h12_free.csv", "--contaminated", "polars/naca8h12_xtr0.07.csv",
         "--json").stdout)
-    result = pg.rotor.compare(aircraft, clean, tripped)
+    with pytest.warns(UserWarning, match="clean: during the takeoff"):
+        result = pg.rotor.compare(aircraft, clean, tripped)
     assert {k: [dict(r) for r in v] for k, v in result.items()} == expected
+    # The notes gyro compare prints: each case's trim and takeoff lookup shares.
+    assert any(n.startswith("note: contaminated: at 60.0 kt, ") for n in result["trim"].notes)
     assert set(result["trim"].to_pandas().columns) == {
         "quantity", "paper_clean", "paper_contaminated", "ours_clean", "ours_contaminated"}
 

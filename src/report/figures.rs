@@ -11,7 +11,9 @@ use crate::rotor::{Aircraft, TakeoffResult};
 use crate::studies::paper::published::{
     FIG10_MAX_ALPHA_DEG, FIG10_PSI_DEG, SECTION_MACH, SECTION_RE, TABLE5_CL,
 };
-use crate::studies::paper::{blade_alpha_cases, sweep_cases, takeoff_cases, SpeedSweep};
+use crate::studies::paper::{
+    blade_alpha_cases, case_notes, sweep_cases, takeoff_cases, SpeedSweep,
+};
 use crate::studies::paper::{StudyError, CASE_LABELS, PAPER_TRIM_SPEED_KT};
 use crate::table::{sample_polar, PolarTable};
 
@@ -65,10 +67,14 @@ pub fn rotor_figure(
             samples,
         } => {
             let curves = blade_alpha_cases(aircraft, sections, labels, speed_kt, radius, samples)?;
+            for (label, c) in labels.iter().zip(&curves) {
+                let at = c.lookup_shares.notes(&format!("at {speed_kt} kt"));
+                case_notes(label, &at, &[]).into_iter().for_each(say);
+            }
             let refs: Vec<(&str, &[(f64, f64)])> = labels
                 .iter()
                 .zip(&curves)
-                .map(|(l, c)| (*l, c.as_slice()))
+                .map(|(l, c)| (*l, c.points.as_slice()))
                 .collect();
             let default =
                 format!("Blade α at r = {radius:.2} R, level flight at {speed_kt} kt — {subject}");
@@ -76,6 +82,11 @@ pub fn rotor_figure(
         }
         RotorFigure::Takeoff => {
             let runs = takeoff_cases(aircraft, sections, labels)?;
+            for (label, run) in labels.iter().zip(&runs) {
+                case_notes(label, &[], &run.notes())
+                    .into_iter()
+                    .for_each(say);
+            }
             takeoff_figure(&runs, &title(format!("Takeoff to 15 m — {subject}")))
         }
         RotorFigure::Power { speeds_kt } => {
@@ -148,7 +159,7 @@ pub(super) fn fig10(rotor: &RotorResults, subject: &str) -> Figure {
     let curves: Vec<(&str, &[(f64, f64)])> = CASE_LABELS
         .iter()
         .zip(&rotor.alpha)
-        .map(|(l, a)| (*l, a.as_slice()))
+        .map(|(l, a)| (*l, a.points.as_slice()))
         .collect();
     let mut fig = alpha_figure(
         &curves,

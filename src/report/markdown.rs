@@ -192,6 +192,23 @@ pub(super) fn markdown(
         }
     );
     outln!(o);
+    let shares = |t: &TakeoffResult| t.lookup_shares().values();
+    let (sc, sd) = (shares(c), shares(d));
+    outln!(
+        o,
+        "Table coverage during the takeoff, the largest share of one rotor solution's \
+         blade-element lookups over the run: {:.1} % (clean) and {:.1} % (contaminated) \
+         outside the tables' range, {:.1} % and {:.1} % on supercritical points, {:.1} % and \
+         {:.1} % where the table's points are in massive separation (the 360° extension stands \
+         in for them).",
+        100.0 * sc[0],
+        100.0 * sd[0],
+        100.0 * sc[1],
+        100.0 * sd[1],
+        100.0 * sc[2],
+        100.0 * sd[2],
+    );
+    outln!(o);
     outln!(o, "![Takeoff time histories](takeoff.png)");
     outln!(o);
 
@@ -205,7 +222,7 @@ pub(super) fn markdown(
     outln!(o, "| | paper max α [deg] | ours max α [deg] | ours vs paper | paper ψ of max [deg] | ours ψ of max [deg] |");
     outln!(o, "|---|---:|---:|---:|---:|---:|");
     let paper_max = FIG10_MAX_ALPHA_DEG.both();
-    let ours_max: Vec<(f64, f64)> = rotor.alpha.iter().map(|c| alpha_max(c)).collect();
+    let ours_max: Vec<(f64, f64)> = rotor.alpha.iter().map(|c| alpha_max(&c.points)).collect();
     for i in 0..2 {
         outln!(
             o,
@@ -478,7 +495,7 @@ fn summary(o: &mut String, foils: &[FoilTables], rotor: &RotorResults) {
         num_pct(vs_xfoil),
         num_pct(vs_paper),
     );
-    let ours_max: Vec<(f64, f64)> = rotor.alpha.iter().map(|c| alpha_max(c)).collect();
+    let ours_max: Vec<(f64, f64)> = rotor.alpha.iter().map(|c| alpha_max(&c.points)).collect();
     let (pc, pd) = (FIG10_MAX_ALPHA_DEG.clean, FIG10_MAX_ALPHA_DEG.contaminated);
     outln!(
         o,

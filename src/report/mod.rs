@@ -40,12 +40,13 @@ use crate::output::{check_output_path, OutputError, OutputSet};
 use crate::plot::{render_into_set, Figure, PlotError};
 use crate::progress::{Progress, Work};
 use crate::rotor::{
-    sweep_speeds, Aircraft, AircraftError, Powerplant, PropellerError, TakeoffResult, TrimResult,
+    sweep_speeds, Aircraft, AircraftError, BladeAlpha, Powerplant, PropellerError, TakeoffResult,
+    TrimResult,
 };
 use crate::studies::paper::published::{Table5Row, SECTION_MACH, SECTION_RE, TABLE5, TABLE5_CL};
 use crate::studies::paper::sensitivity::{sensitivity, Sensitivity};
 use crate::studies::paper::{
-    blade_alpha_cases, paper_runs, sweep_cases, SpeedSweep, StudyError, CASE_LABELS,
+    blade_alpha_cases, case_notes, paper_runs, sweep_cases, SpeedSweep, StudyError, CASE_LABELS,
     PAPER_TRIM_SPEED_KT,
 };
 use crate::table::{alpha_at_cl, LiftMatch, PolarTable, TableError};
@@ -176,8 +177,8 @@ struct FoilTables {
 struct RotorResults {
     trims: [TrimResult; 2],
     takeoffs: [TakeoffResult; 2],
-    /// Blade α(ψ) samples (ψ, α) \[deg\] per case.
-    alpha: Vec<Vec<(f64, f64)>>,
+    /// Blade α(ψ) samples (ψ, α) \[deg\] per case, with the trims' lookup shares.
+    alpha: Vec<BladeAlpha>,
     /// The power-required sweep per case.
     sweeps: Vec<SpeedSweep>,
     /// The calibrated propeller and its static thrust.
@@ -248,7 +249,12 @@ pub fn write_report(
         source,
     })?;
     let written = set.commit()?;
-    let mut notes: Vec<String> = rotor.sweeps.iter().flat_map(SpeedSweep::notes).collect();
+    let mut notes: Vec<String> = CASE_LABELS
+        .iter()
+        .enumerate()
+        .flat_map(|(k, case)| case_notes(case, &rotor.trims[k].notes(), &rotor.takeoffs[k].notes()))
+        .collect();
+    notes.extend(rotor.sweeps.iter().flat_map(SpeedSweep::notes));
     notes.extend(beyond.into_iter().flat_map(|b| b.cache_notes));
     Ok(ReportOutcome { written, notes })
 }

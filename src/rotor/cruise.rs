@@ -5,6 +5,7 @@
 use super::aircraft::Aircraft;
 use super::atmosphere::Atmosphere;
 use super::disc_loads::Rotor;
+use super::lookup_shares::LookupShares;
 use super::spanwise::BladeSection;
 use super::trim::{trim_aircraft, trim_rotor, TrimError, TrimParams, TrimResult};
 use super::{check_speed_kt, KT_TO_MS};
@@ -113,7 +114,8 @@ pub fn speed_sweep<S: BladeSection + Sync + ?Sized>(
 /// Blade section angle of attack α(ψ) at radius fraction `r_over_r` in trimmed level flight at
 /// `speed_kt` (ISA `altitude_m`, the preset's mass): the rotor is trimmed with [`trim_rotor`]
 /// and its converged inflow and flapping give α at `samples` azimuths ψ_k = 360°·k/samples,
-/// ψ = 0 with the blade pointing to the rear (paper Fig. 10). Returns (ψ \[deg\], α \[deg\]) pairs.
+/// ψ = 0 with the blade pointing to the rear (paper Fig. 10). Returns the (ψ \[deg\],
+/// α \[deg\]) pairs and the trim's lookup shares.
 pub fn cruise_blade_alpha<S: BladeSection + ?Sized>(
     aircraft: &Aircraft,
     section: &S,
@@ -122,7 +124,7 @@ pub fn cruise_blade_alpha<S: BladeSection + ?Sized>(
     r_over_r: f64,
     samples: usize,
     params: &TrimParams,
-) -> Result<Vec<(f64, f64)>, TrimError> {
+) -> Result<BladeAlpha, TrimError> {
     let rotor = Rotor::from_params(&aircraft.rotor);
     let solution = trim_rotor(
         &rotor,
@@ -132,5 +134,17 @@ pub fn cruise_blade_alpha<S: BladeSection + ?Sized>(
         &Atmosphere::isa(altitude_m),
         params,
     )?;
-    Ok(rotor.alpha_at_radius(&solution, r_over_r, samples))
+    Ok(BladeAlpha {
+        points: rotor.alpha_at_radius(&solution, r_over_r, samples),
+        lookup_shares: solution.lookup_shares(),
+    })
+}
+
+/// Blade α(ψ) at one radius in trimmed cruise ([`cruise_blade_alpha`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BladeAlpha {
+    /// (ψ \[deg\], α \[deg\]) pairs.
+    pub points: Vec<(f64, f64)>,
+    /// The trim's blade-element lookups outside the table or the method's validity.
+    pub lookup_shares: LookupShares,
 }

@@ -44,6 +44,7 @@ mod engine;
 mod flapping;
 mod inflow;
 mod inflow_flapping;
+mod lookup_shares;
 mod planform;
 mod propeller;
 mod solution;
@@ -63,13 +64,14 @@ pub use atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 pub use blade_element::{strip_load, AirState, StripFlow, StripLoad};
 pub use cruise::{
     check_sweep_speeds, checked_sweep_speeds, cruise_blade_alpha, speed_sweep, sweep_speeds,
-    SweepPoint,
+    BladeAlpha, SweepPoint,
 };
 pub use disc_loads::{FlightCondition, Rotor, RotorSolverParams};
 pub use engine::Engine;
 pub use flapping::{FlapHinge, Flapping, Hub};
 pub use inflow::{InflowModel, TipLoss, YawedFlow};
 pub use inflow_flapping::RotorError;
+pub use lookup_shares::LookupShares;
 pub use planform::{Planform, PlanformStation};
 pub use propeller::{
     FullThrottle, Powerplant, Propeller, PropellerError, PropellerPoint, PropellerSections,

@@ -4,6 +4,7 @@
 
 use super::disc_loads::{FlightCondition, Rotor};
 use super::flapping::Flapping;
+use super::lookup_shares::LookupShares;
 use std::f64::consts::TAU;
 
 /// Converged rotor state and its azimuth-averaged loads.
@@ -54,6 +55,15 @@ pub struct RotorSolution {
 }
 
 impl RotorSolution {
+    /// The solution's lookup shares ([`LookupShares`]).
+    pub fn lookup_shares(&self) -> LookupShares {
+        LookupShares {
+            clamped: self.table_clamped_fraction,
+            supercritical: self.table_supercritical_fraction,
+            separated: self.table_separated_fraction,
+        }
+    }
+
     /// Angle of attack of the tip-path plane α_R = α_H − β1c \[rad\] (the "rotor AoA").
     pub fn disc_aoa(&self) -> f64 {
         self.condition.hub_aoa + self.flapping.tilt_back()

@@ -29,6 +29,7 @@ use super::aircraft::{Aircraft, WingError, WingLoads};
 use super::atmosphere::Atmosphere;
 use super::disc_loads::{FlightCondition, Rotor};
 use super::inflow_flapping::RotorError;
+use super::lookup_shares::LookupShares;
 use super::propeller::{FullThrottle, Powerplant, PropellerError};
 use super::solution::{RotorSolution, RotorWarmStart};
 use super::spanwise::BladeSection;
@@ -94,8 +95,9 @@ pub struct TakeoffSample {
 }
 
 /// Result of a takeoff run. Its serde form (what `gyro takeoff --json` prints) holds the paper's
-/// Table 4 quantities, the lift-off and screen speeds, the lift-off rotor speed and the time to
-/// the screen height; the other fields are left out of it.
+/// Table 4 quantities, the lift-off and screen speeds, the lift-off rotor speed, the time to
+/// the screen height and the largest shares of section lookups outside the table or the
+/// method's validity; the other fields are left out of it.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TakeoffResult {
     /// Ground roll to lift-off s_TO \[m\].
@@ -121,9 +123,35 @@ pub struct TakeoffResult {
     /// Time history (every integration step).
     #[serde(skip)]
     pub history: Vec<TakeoffSample>,
+    /// Largest share, over the run's rotor solutions, of blade-element lookups whose Reynolds
+    /// or Mach number lay outside the section table and were clamped to its edge.
+    pub table_clamped_fraction: f64,
+    /// Largest share over the run of lookups that lean on supercritical table points
+    /// (locally supersonic flow, outside the section method's validity).
+    pub table_supercritical_fraction: f64,
+    /// Largest share over the run of lookups at whose α the table's points are in massive
+    /// separation (outside the method's validity; the 360° extension stands in).
+    pub table_separated_fraction: f64,
 }
 
 impl TakeoffResult {
+    /// What a user should read beside the run: the rotor's section data outside the table or
+    /// the method's validity at some point of it (the largest share of the run's lookups).
+    /// One line each, starting `note: `.
+    pub fn notes(&self) -> Vec<String> {
+        self.lookup_shares()
+            .notes("during the takeoff (the largest share of one rotor solution)")
+    }
+
+    /// The run's largest lookup shares ([`LookupShares`]).
+    pub fn lookup_shares(&self) -> LookupShares {
+        LookupShares {
+            clamped: self.table_clamped_fraction,
+            supercritical: self.table_supercritical_fraction,
+            separated: self.table_separated_fraction,
+        }
+    }
+
     /// Writes the history as CSV with header `t,x,h,v,rotor_rpm,alpha_r_deg,beta_deg`.
     pub fn write_history_csv<W: std::io::Write>(&self, out: W) -> Result<(), csv::Error> {
         let mut w = csv::Writer::from_writer(out);
@@ -160,6 +188,8 @@ struct Model<'a, S: BladeSection + ?Sized> {
     warm: Option<RotorWarmStart>,
     /// Airspeed at lift-off \[m/s\] (start of the pilot's airspeed schedule).
     liftoff_speed: f64,
+    /// The largest lookup shares of the solutions so far.
+    validity_peaks: LookupShares,
 }
 
 impl<S: BladeSection + ?Sized> Model<'_, S> {
@@ -183,9 +213,12 @@ impl<S: BladeSection + ?Sized> Model<'_, S> {
                 reason: "the rotor stopped",
             });
         }
-        self.rotor
+        let solution = self
+            .rotor
             .solve(self.section, &cond, &mut self.warm)
-            .map_err(|source| TakeoffError::Rotor { time_s: t, source })
+            .map_err(|source| TakeoffError::Rotor { time_s: t, source })?;
+        self.validity_peaks = self.validity_peaks.max(solution.lookup_shares());
+        Ok(solution)
     }
 
     /// The wing's lift and drag in state `y`.
@@ -326,6 +359,7 @@ pub fn simulate_takeoff<S: BladeSection + ?Sized>(
         inertia: aircraft.rotor.polar_inertia(),
         warm: None,
         liftoff_speed: 0.0,
+        validity_peaks: LookupShares::default(),
     };
     let dt = to.time_step_s;
     let kt = super::KT_TO_MS;
@@ -396,6 +430,9 @@ pub fn simulate_takeoff<S: BladeSection + ?Sized>(
                 liftoff_time_s: t_to,
                 screen_time_s: t15,
                 history,
+                table_clamped_fraction: model.validity_peaks.clamped,
+                table_supercritical_fraction: model.validity_peaks.supercritical,
+                table_separated_fraction: model.validity_peaks.separated,
             });
         }
         y = next;

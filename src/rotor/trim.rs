@@ -16,6 +16,7 @@ use super::aircraft::{Aircraft, WingError, WingLoads};
 use super::atmosphere::{Atmosphere, MAX_ISA_ALTITUDE_M};
 use super::disc_loads::{FlightCondition, Rotor};
 use super::inflow_flapping::RotorError;
+use super::lookup_shares::LookupShares;
 use super::propeller::{Powerplant, PropellerError};
 use super::solution::RotorSolution;
 use super::spanwise::BladeSection;
@@ -204,6 +205,15 @@ pub struct TrimResult {
 }
 
 impl TrimResult {
+    /// The trim point's lookup shares ([`LookupShares`]).
+    pub fn lookup_shares(&self) -> LookupShares {
+        LookupShares {
+            clamped: self.table_clamped_fraction,
+            supercritical: self.table_supercritical_fraction,
+            separated: self.table_separated_fraction,
+        }
+    }
+
     /// Share of the weight the rotor carries, L_R/(L_R + L_W) (1 without a wing).
     pub fn rotor_lift_share(&self) -> f64 {
         let wing = self.wing.map_or(0.0, |w| w.lift_n);
@@ -222,31 +232,10 @@ impl TrimResult {
                 self.airspeed_kt, self.prop_thrust_n
             ));
         }
-        if self.table_clamped_fraction > 0.0 {
-            notes.push(format!(
-                "note: at {:.1} kt, {:.1} % of the blade-element lookups lie outside the \
-                 table's Reynolds/Mach range and use its edge values",
-                self.airspeed_kt,
-                100.0 * self.table_clamped_fraction
-            ));
-        }
-        if self.table_supercritical_fraction > 0.0 {
-            notes.push(format!(
-                "note: at {:.1} kt, {:.1} % of the blade-element lookups lean on supercritical \
-                 table points (locally supersonic, outside the section method's validity)",
-                self.airspeed_kt,
-                100.0 * self.table_supercritical_fraction
-            ));
-        }
-        if self.table_separated_fraction > 0.0 {
-            notes.push(format!(
-                "note: at {:.1} kt, {:.1} % of the blade-element lookups fall where the table's \
-                 points are in massive separation (outside the section method's validity): the \
-                 360-degree extension stands in for them",
-                self.airspeed_kt,
-                100.0 * self.table_separated_fraction
-            ));
-        }
+        notes.extend(
+            self.lookup_shares()
+                .notes(&format!("at {:.1} kt", self.airspeed_kt)),
+        );
         if let Some(w) = self.wing.filter(|w| w.stalled) {
             notes.push(format!(
                 "note: at {:.1} kt the wing works beyond its linear range (C_L {:.3}: capped at \

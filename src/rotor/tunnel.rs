@@ -13,6 +13,7 @@
 use super::aircraft::RotorParams;
 use super::atmosphere::Atmosphere;
 use super::disc_loads::Rotor;
+use super::lookup_shares::LookupShares;
 use super::spanwise::BladeSection;
 use super::trim::{autorotation, TrimError, TrimParams};
 use super::{rad_s_to_rpm, rpm_to_rad_s};
@@ -203,31 +204,15 @@ impl Autorotation {
     /// What a user should read beside the result: lookups outside the table, on
     /// supercritical points or in massive separation. One line each, starting `note: `.
     pub fn notes(&self) -> Vec<String> {
-        let at = format!("α {} deg, V {} m/s", self.alpha_deg, self.speed_m_s);
-        let mut notes = Vec::new();
-        if self.table_clamped_fraction > 0.0 {
-            notes.push(format!(
-                "note: at {at}, {:.1} % of the blade-element lookups lie outside the table's \
-                 Reynolds/Mach range and use its edge values",
-                100.0 * self.table_clamped_fraction
-            ));
+        LookupShares {
+            clamped: self.table_clamped_fraction,
+            supercritical: self.table_supercritical_fraction,
+            separated: self.table_separated_fraction,
         }
-        if self.table_supercritical_fraction > 0.0 {
-            notes.push(format!(
-                "note: at {at}, {:.1} % of the blade-element lookups lean on supercritical \
-                 table points (locally supersonic, outside the section method's validity)",
-                100.0 * self.table_supercritical_fraction
-            ));
-        }
-        if self.table_separated_fraction > 0.0 {
-            notes.push(format!(
-                "note: at {at}, {:.1} % of the blade-element lookups fall where the table's \
-                 points are in massive separation (outside the section method's validity): the \
-                 360-degree extension stands in for them",
-                100.0 * self.table_separated_fraction
-            ));
-        }
-        notes
+        .notes(&format!(
+            "at α {} deg, V {} m/s",
+            self.alpha_deg, self.speed_m_s
+        ))
     }
 }
 

@@ -141,7 +141,7 @@ class Aircraft:
     ) -> Tuple[str, List[str]]: ...
     def takeoff(
         self, table: PolarTable, mass_kg: Optional[float]
-    ) -> Tuple[str, Dict[str, np.ndarray]]: ...
+    ) -> Tuple[str, Dict[str, np.ndarray], List[str]]: ...
 
 class Rotor:
     """The rotor of a preset alone."""
@@ -192,7 +192,9 @@ def polar_figure(
 def rotor_sweep(
     aircraft: Aircraft, table: PolarTable, speeds_kt: List[float], mass_kg: Optional[float]
 ) -> Tuple[str, List[str]]: ...
-def rotor_compare(aircraft: Aircraft, clean: PolarTable, contaminated: PolarTable) -> str: ...
+def rotor_compare(
+    aircraft: Aircraft, clean: PolarTable, contaminated: PolarTable
+) -> Tuple[str, List[str]]: ...
 def rotor_study(
     kind: str, aircraft: PathLike, airfoil: Optional[str], airfoils: Optional[List[str]],
     trips: Optional[List[float]], ncrits: Optional[List[float]],

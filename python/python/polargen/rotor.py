@@ -86,13 +86,18 @@ class TrimResult(_Fields):
 class TakeoffResult(_Fields):
     """A takeoff run with the fields of ``gyro takeoff --json`` (``takeoff_roll_m``,
     ``distance_15m_m``, ``max_flapping_deg``, ``liftoff_speed_kt``, ``screen_speed_kt``,
-    ``liftoff_rotor_rpm``, ``screen_time_s``) and ``history``, the time history of
-    ``gyro takeoff --history`` as NumPy columns (t, x, h, v, rotor_rpm, alpha_r_deg,
-    beta_deg)."""
+    ``liftoff_rotor_rpm``, ``screen_time_s``, and the largest shares of one rotor solution's
+    blade-element lookups over the run ``table_clamped_fraction``,
+    ``table_supercritical_fraction``, ``table_separated_fraction``) and ``history``, the time
+    history of ``gyro takeoff --history`` as NumPy columns (t, x, h, v, rotor_rpm, alpha_r_deg,
+    beta_deg). ``notes`` holds what ``gyro`` prints beside the result (also issued as
+    warnings)."""
 
-    def __init__(self, fields: Dict[str, Any], history: Dict[str, np.ndarray]) -> None:
+    def __init__(self, fields: Dict[str, Any], history: Dict[str, np.ndarray],
+                 notes: Optional[List[str]] = None) -> None:
         super().__init__(fields)
         self.__dict__["history"] = history
+        self.__dict__["notes"] = list(notes or [])
 
     def history_to_pandas(self):
         """The time history as a ``pandas.DataFrame``."""
@@ -233,9 +238,10 @@ class Aircraft:
 
     def takeoff(self, table: Table, mass_kg: Optional[float] = None) -> TakeoffResult:
         """The takeoff from brake release to the screen height, as ``gyro takeoff``."""
-        text, history = self._core.takeoff(_core(table),
-                                           None if mass_kg is None else float(mass_kg))
-        return TakeoffResult(json.loads(text), history)
+        text, history, notes = self._core.takeoff(_core(table),
+                                                  None if mass_kg is None else float(mass_kg))
+        _warn(notes)
+        return TakeoffResult(json.loads(text), history, notes)
 
     def sweep(self, table: Table, speeds_kt: Union[float, Sequence[float], np.ndarray],
               mass_kg: Optional[float] = None) -> Records:
@@ -279,9 +285,11 @@ def sweep(aircraft: Aircraft, table: Table, speeds_kt: Union[float, Sequence[flo
 def compare(aircraft: Aircraft, clean: Table, contaminated: Table) -> Dict[str, Records]:
     """The clean and the contaminated rotor against the paper, as ``gyro compare --json``:
     ``{"trim": Records, "takeoff": Records}``, each record a quantity with ``paper_clean``,
-    ``paper_contaminated``, ``ours_clean`` and ``ours_contaminated``."""
-    text = _polargen.rotor_compare(aircraft._core, _core(clean), _core(contaminated))
-    return {part: Records(rows) for part, rows in json.loads(text).items()}
+    ``paper_contaminated``, ``ours_clean`` and ``ours_contaminated``. Each part's ``notes``
+    holds what ``gyro compare`` prints beside the tables (also issued as warnings)."""
+    text, notes = _polargen.rotor_compare(aircraft._core, _core(clean), _core(contaminated))
+    _warn(notes)
+    return {part: Records(rows, notes) for part, rows in json.loads(text).items()}
 
 
 STUDIES = ("contamination", "airfoil", "speed", "wing")

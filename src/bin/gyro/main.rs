@@ -20,7 +20,7 @@ use polargen::rotor::{
     check_blade_radius, checked_sweep_speeds, cruise_blade_alpha, simulate_takeoff, trim_aircraft,
     Aircraft, TrimParams, MAX_ISA_ALTITUDE_M,
 };
-use polargen::studies::paper::{paper_runs, SpeedSweep};
+use polargen::studies::paper::{paper_runs, SpeedSweep, CASE_LABELS};
 use polargen::table::PolarTable;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -253,6 +253,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             }
             let (ac, (), section) = load(&inputs, mass, |_| Ok(()))?;
             let t = simulate_takeoff(&ac, &section)?;
+            t.notes().iter().for_each(|n| TOOL.say(n));
             // The history is data: when it takes standard output, the summary goes to stderr.
             let mut summary = String::new();
             match json {
@@ -279,6 +280,9 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             let d = shipped.table(&contaminated, SHIPPED_CONTAMINATED_TABLE)?;
             note_shipped(shipped);
             let runs = paper_runs(&ac, &c, &d)?;
+            for (run, case) in runs.iter().zip(CASE_LABELS) {
+                run.notes(case).iter().for_each(|n| TOOL.say(n));
+            }
             if json {
                 print::compare_json(buf, &runs)?;
             } else {
@@ -310,7 +314,13 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             let (ac, (), section) = load(&inputs, None, check)?;
             let params = TrimParams::default();
             let curve = cruise_blade_alpha(&ac, &section, speed_kt, 0.0, radius, samples, &params)?;
-            print::blade_alpha(buf, &curve);
+            let at = format!("at {speed_kt} kt");
+            curve
+                .lookup_shares
+                .notes(&at)
+                .iter()
+                .for_each(|n| TOOL.say(n));
+            print::blade_alpha(buf, &curve.points);
         }
         Command::Autorotate(args) => autorotate::run(args, buf, &|n| TOOL.say(n))?,
         Command::Plot { kind } => plot::run(kind)?,

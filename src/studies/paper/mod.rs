@@ -16,8 +16,8 @@ pub mod published;
 pub mod sensitivity;
 
 use crate::rotor::{
-    cruise_blade_alpha, simulate_takeoff, speed_sweep, trim_aircraft, Aircraft, BladeSection,
-    TakeoffError, TakeoffResult, TrimError, TrimParams, TrimResult,
+    cruise_blade_alpha, simulate_takeoff, speed_sweep, trim_aircraft, Aircraft, BladeAlpha,
+    BladeSection, LookupShares, TakeoffError, TakeoffResult, TrimError, TrimParams, TrimResult,
 };
 use rayon::prelude::*;
 
@@ -68,6 +68,26 @@ pub struct PaperRun {
     pub trim: TrimResult,
     /// Takeoff (Table 4).
     pub takeoff: TakeoffResult,
+}
+
+impl PaperRun {
+    /// The trim's and the takeoff's notes ([`case_notes`]).
+    pub fn notes(&self, case: &str) -> Vec<String> {
+        case_notes(case, &self.trim.notes(), &self.takeoff.notes())
+    }
+}
+
+/// Notes of one case (`note: …`, [`TrimResult::notes`], [`TakeoffResult::notes`] or a
+/// [`BladeAlpha`]'s), each after `case: `.
+pub fn case_notes(case: &str, first: &[String], second: &[String]) -> Vec<String> {
+    first
+        .iter()
+        .chain(second)
+        .map(|n| match n.strip_prefix("note: ") {
+            Some(rest) => format!("note: {case}: {rest}"),
+            None => format!("{case}: {n}"),
+        })
+        .collect()
 }
 
 /// The paper's trim and takeoff with `section`; `case` names it in errors.
@@ -153,8 +173,11 @@ impl SpeedSweep {
         Ok(())
     }
 
-    /// What a user should read beside the results: each skipped speed and why, and (as a note)
-    /// how many trims used lookups outside the table's Reynolds/Mach range. One line each.
+    /// What a user should read beside the results: each skipped speed and why, and (as
+    /// notes) at how many speeds the aircraft cannot fly level (the engine's rpm is not
+    /// enough) and at how many the blade-element lookups lie outside the table's
+    /// Reynolds/Mach range, on supercritical points or in massive separation, with the worst
+    /// speed. One line each.
     pub fn notes(&self) -> Vec<String> {
         let prefix = prefix(self.case.as_deref());
         let mut notes: Vec<String> = self
@@ -162,23 +185,37 @@ impl SpeedSweep {
             .iter()
             .map(|(v, e)| format!("{prefix}skipped {v:.1} kt: {e}"))
             .collect();
-        let clamped: Vec<&TrimResult> = self
+        let n = self.trims.len();
+        let beyond_engine: Vec<f64> = self
             .trims
             .iter()
-            .filter(|t| t.table_clamped_fraction > 0.0)
+            .filter(|t| t.engine_rpm.is_none())
+            .map(|t| t.airspeed_kt)
             .collect();
-        if let Some(worst) = clamped.iter().max_by(|a, b| {
-            a.table_clamped_fraction
-                .total_cmp(&b.table_clamped_fraction)
-        }) {
-            notes.push(format!(
-                "note: {prefix}at {} of {} speeds some blade-element lookups lie outside the \
-                 table's Reynolds/Mach range and use its edge values (most: {:.1} % at {:.1} kt)",
-                clamped.len(),
-                self.trims.len(),
-                100.0 * worst.table_clamped_fraction,
-                worst.airspeed_kt
-            ));
+        match beyond_engine.as_slice() {
+            [] => {}
+            [v] => notes.push(format!(
+                "note: {prefix}at {v:.1} kt the propeller needs more than the engine's maximum \
+                 rpm: the aircraft cannot fly this speed level"
+            )),
+            [lo, .., hi] => notes.push(format!(
+                "note: {prefix}at {} of {n} speeds ({lo:.1} to {hi:.1} kt) the propeller needs \
+                 more than the engine's maximum rpm: the aircraft cannot fly them level",
+                beyond_engine.len()
+            )),
+        }
+        for (k, meaning) in LookupShares::MEANINGS.iter().enumerate() {
+            let share = |t: &TrimResult| t.lookup_shares().values()[k];
+            let flagged: Vec<&TrimResult> = self.trims.iter().filter(|t| share(t) > 0.0).collect();
+            if let Some(worst) = flagged.iter().max_by(|a, b| share(a).total_cmp(&share(b))) {
+                notes.push(format!(
+                    "note: {prefix}at {} of {n} speeds some blade-element lookups {meaning} \
+                     (most: {:.1} % at {:.1} kt)",
+                    flagged.len(),
+                    100.0 * share(worst),
+                    worst.airspeed_kt
+                ));
+            }
         }
         notes
     }
@@ -208,7 +245,7 @@ pub fn blade_alpha_cases<S: BladeSection + Sync>(
     speed_kt: f64,
     r_over_r: f64,
     samples: usize,
-) -> Result<Vec<Vec<(f64, f64)>>, StudyError> {
+) -> Result<Vec<BladeAlpha>, StudyError> {
     sections
         .par_iter()
         .zip(cases)
