@@ -184,7 +184,10 @@ fn bad_arguments_are_one_line_errors() {
     let row = dir.path().join("row.csv");
     std::fs::write(&row, "alpha_deg,speed_m_s\n5,20\n5,1e6\n").unwrap();
     let row = row.display().to_string();
-    assert_one_line_error("gyro", &run(&["--cases", &row]), "line 3");
+    let out = run(&["--cases", &row]);
+    assert_one_line_error("gyro", &out, "line 3");
+    // A bad file, not a bad command line: exit status 1 as for a file without the columns.
+    assert_eq!(out.status.code(), Some(1));
     // The rotor-only preset cannot be trimmed as an aircraft.
     let out = gyro(&["trim", "--aircraft", &a, "--table", &t]);
     assert_one_line_error("gyro", &out, "describes a rotor alone");

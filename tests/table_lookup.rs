@@ -340,7 +340,7 @@ fn custom_post_stall_parameters_are_used() {
     };
     assert_eq!(
         t.clone().with_post_stall(bad).unwrap_err().to_string(),
-        "post-stall parameter cd_max = -1 is invalid (must be positive)"
+        "post-stall parameter cd_max = -1 is invalid (must be in (0, 3])"
     );
     let bad = PostStallParams {
         vc_min_junction_deg: f64::NAN,

@@ -52,8 +52,8 @@ pub struct CompletionsArgs {
 /// The man pages of `man` (shared by both tools).
 #[derive(clap::Args, Debug)]
 pub struct ManArgs {
-    /// The subcommand whose page to print (e.g. `batch`, `plot alpha`); the tool's own page
-    /// when absent.
+    /// The subcommand whose page to print (e.g. `convert` or `point` for polargen,
+    /// `study wing` for gyro); the tool's own page when absent.
     #[arg(value_name = "SUBCOMMAND")]
     pub subcommand: Vec<String>,
     /// Write every page (`<tool>.1`, `<tool>-<subcommand>.1`, …) into this folder instead.

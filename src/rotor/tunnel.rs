@@ -283,16 +283,16 @@ pub enum TunnelCasesError {
         /// What is wrong, with the line.
         message: String,
     },
-    /// A case is out of range.
-    #[error("cases file {path}, line {line}: {source}")]
+    /// A case is out of range: a bad input file (exit status 1), so the value's rule is kept
+    /// as text, not as the [`ArgumentError`] of a bad command-line value.
+    #[error("cases file {path}, line {line}: {rule}")]
     Case {
         /// The file.
         path: String,
         /// Line number (the header is line 1).
         line: u64,
         /// Which value and why.
-        #[source]
-        source: ArgumentError,
+        rule: String,
     },
 }
 
@@ -317,10 +317,10 @@ pub fn read_tunnel_cases(path: &Path) -> Result<Vec<TunnelCase>, TunnelCasesErro
             return Err(format(format!("more than {MAX_TUNNEL_CASES} cases")));
         }
         case.check("alpha_deg", "speed_m_s")
-            .map_err(|source| TunnelCasesError::Case {
+            .map_err(|e| TunnelCasesError::Case {
                 path: name.clone(),
                 line,
-                source,
+                rule: e.to_string(),
             })?;
         cases.push(case);
     }

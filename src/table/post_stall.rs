@@ -66,7 +66,7 @@ impl PostStallParams {
                 "cd_max",
                 self.cd_max,
                 self.cd_max > 0.0 && self.cd_max <= crate::limits::MAX_CD_MAX,
-                "in (0, 3] (docs/limits.md)",
+                "in (0, 3]",
             ),
             (
                 "cd_reverse",

@@ -25,7 +25,9 @@ use polargen::arguments::{self, trip_flags, ArgumentError, TransitionArgs};
 use polargen::cli::{self, Tool};
 use polargen::geometry::{selig_file_text, shaped_airfoil, solver_airfoil, Airfoil, ShapeOp};
 use polargen::inviscid::{inviscid_polar_csv, PanelSystem};
-use polargen::output::{check_output_path, write_output_bytes, write_stdout, STDOUT_PATH};
+use polargen::output::{
+    check_output_path, names_a_file, write_output_bytes, write_stdout, STDOUT_PATH,
+};
 use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
 use polargen::plot::table_plots::{table_overlay_figure, TableOverlay};
 use polargen::plot::{check_image_path, render};
@@ -113,8 +115,14 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
              transition, post-stall extension or flap sweep)",
         ))?;
     }
-    let format =
-        TableFormat::for_output(cli.format, cli.out.as_deref()).context("--format/--out")?;
+    // A stream (standard output, a device, a FIFO) takes the CSV whatever its name.
+    let format = match (cli.format, cli.out.as_deref()) {
+        (Some(f), _) => f,
+        (None, Some(path)) if names_a_file(path) => {
+            TableFormat::from_path(path).context("--out")?
+        }
+        _ => TableFormat::Csv,
+    };
     if format != TableFormat::Csv {
         Err(ArgumentError::with_text(
             "--format/--out",
