@@ -72,6 +72,23 @@ pub fn reynolds(name: &str, re: f64) -> Result<(), ArgumentError> {
     )
 }
 
+/// A Reynolds number the viscous solver is asked to solve at: as [`reynolds`], and at least
+/// [`MIN_SOLVER_RE`](crate::limits::MIN_SOLVER_RE) (below it the boundary layer is no longer
+/// thin: Cd of several tenths came out "converged" at Re 100).
+pub fn solver_reynolds(name: &str, re: f64) -> Result<(), ArgumentError> {
+    reynolds(name, re)?;
+    let min = crate::limits::MIN_SOLVER_RE;
+    require(
+        re >= min,
+        name,
+        re,
+        format!(
+            "the viscous solver takes Reynolds numbers from {} (the boundary layer must be thin)",
+            short_number(min)
+        ),
+    )
+}
+
 /// A free-stream Mach number: in [0, 1).
 pub fn mach(name: &str, mach: f64) -> Result<(), ArgumentError> {
     require(

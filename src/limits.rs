@@ -82,6 +82,12 @@ pub const MAX_SWEEP_SPEEDS: usize = 1000;
 /// (about a minute), or the default 13 speeds at 2 770 cells.
 pub const MAX_SWEEP_CELL_SPEEDS: usize = 36_000;
 
+/// Lowest Reynolds number the viscous solver is asked to solve at (`--re`, Python's `re`):
+/// the thin-boundary-layer equations need δ/c ≪ 1, and a laminar layer is δ/c ≈ 5/√Re thick
+/// at the trailing edge (Blasius), 0.16 at 10³. Tables read from other codes may have lower
+/// Reynolds numbers.
+pub const MIN_SOLVER_RE: f64 = 1e3;
+
 /// Most cases of one tunnel cases file (`gyro autorotate --cases`): with the PCA-2 preset's
 /// 960 rotor cells a case takes about 15 ms of CPU (NACA Report 515's Table III, 81 rows,
 /// 1.2 s), so the largest file runs for about 2.5 min on one core.

@@ -41,6 +41,10 @@ fn every_bad_value_is_a_usage_error_naming_the_flag() {
             "--re 0: the Reynolds number must be positive",
         ),
         (
+            grid(&["--re", "1e6,500"]),
+            "--re 500: the viscous solver takes Reynolds numbers from 1000",
+        ),
+        (
             grid(&["--re", "1e6", "--panels", "5"]),
             "--panels 5: must be between",
         ),
@@ -97,7 +101,7 @@ fn every_bad_value_is_a_usage_error_naming_the_flag() {
             "--airfoil",
             "naca0012",
             "--re",
-            "1,2,3,4,5,6,7,8",
+            "1e4,2e4,3e4,4e4,5e4,6e4,7e4,8e4",
             "--alpha",
             "-180:180:0.05",
         ],

@@ -55,7 +55,7 @@ pub fn aero<'py>(
     // Each distinct value checked as the CLI checks its flag, before any solve.
     let input = |r: Result<(), arguments::ArgumentError>| r.map_err(|e| raise(None, e));
     for (q, alphas) in plan.polars() {
-        input(arguments::reynolds("re", q.reynolds))?;
+        input(arguments::solver_reynolds("re", q.reynolds))?;
         input(arguments::mach("mach", q.mach))?;
         // The transition rule of the CLI, on this polar's trips.
         Settings::checked(q.xtr_top, q.xtr_bot, ncrit, tolerance)?;

@@ -314,7 +314,7 @@ pub fn table(
     progress: Option<Py<PyAny>>,
 ) -> PyResult<Table> {
     let grid = GridSpec {
-        reynolds: checked_axis("re", re, arguments::reynolds)?,
+        reynolds: checked_axis("re", re, arguments::solver_reynolds)?,
         mach: checked_axis("mach", mach, arguments::mach)?,
         alpha_deg: alpha,
     };

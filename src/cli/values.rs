@@ -80,6 +80,11 @@ pub fn reynolds(text: &str) -> Result<f64, ArgumentError> {
     checked(text, arguments::reynolds)
 }
 
+/// A Reynolds number to solve at ([`arguments::solver_reynolds`]).
+pub fn solver_reynolds(text: &str) -> Result<f64, ArgumentError> {
+    checked(text, arguments::solver_reynolds)
+}
+
 /// A Mach number ([`arguments::mach`]).
 pub fn mach(text: &str) -> Result<f64, ArgumentError> {
     checked(text, arguments::mach)

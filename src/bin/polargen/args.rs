@@ -105,8 +105,8 @@ pub struct PointCase {
     #[command(flatten)]
     pub shape: Shape,
 
-    /// Chord Reynolds number.
-    #[arg(long, allow_hyphen_values = true, value_parser = values::reynolds)]
+    /// Chord Reynolds number (at least 1000).
+    #[arg(long, allow_hyphen_values = true, value_parser = values::solver_reynolds)]
     pub re: f64,
 
     /// Mach number, 0 ≤ M < 1.
@@ -350,8 +350,8 @@ pub struct GridArgs {
     pub shape: Shape,
 
     /// Chord Reynolds numbers, comma-separated. Without --re and --mach: the rotor grid of
-    /// 8 Re 1e5…3e6 × 8 M 0…0.65; --re alone runs at M 0 (as XFOIL).
-    #[arg(long, value_name = "LIST", allow_hyphen_values = true, value_delimiter = ',', value_parser = values::reynolds)]
+    /// 8 Re 1e5…3e6 × 8 M 0…0.65; --re alone runs at M 0 (as XFOIL). At least 1000.
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true, value_delimiter = ',', value_parser = values::solver_reynolds)]
     pub re: Option<Vec<f64>>,
 
     /// Mach numbers, comma-separated, 0 ≤ M < 1 (needs --re; inviscid: one value, default 0).
