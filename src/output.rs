@@ -50,6 +50,10 @@ pub const STDOUT_PATH: &str = "-";
 /// of Linux and the BSDs, the limit of ext4, XFS, btrfs, APFS).
 pub const MAX_FILE_NAME_BYTES: usize = 255;
 
+/// Longest output path, in bytes: Linux's PATH_MAX (4096 with the terminating NUL) less room
+/// for the staging folder a file passes through (`.polargen-set-<pid>.<random>/`).
+pub const MAX_PATH_BYTES: usize = 4000;
+
 /// Longest chain of symbolic links followed when looking for an open descriptor.
 const MAX_LINK_HOPS: usize = 40;
 
@@ -419,6 +423,12 @@ fn resolve(path: &Path) -> Result<Target, OutputError> {
     if path.file_name().is_none() {
         return Err(OutputError::bad(path, "not a file name"));
     }
+    if path.as_os_str().len() > MAX_PATH_BYTES {
+        return Err(OutputError::bad(
+            path,
+            "the path is longer than 4000 bytes, more than the system takes with a staging folder",
+        ));
+    }
     if path.iter().any(|c| c.len() > MAX_FILE_NAME_BYTES) {
         return Err(OutputError::bad(
             path,
@@ -497,6 +507,19 @@ fn own_descriptor(path: &Path) -> Option<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A path longer than the system takes is refused before any work (it failed only when
+    /// the result was written).
+    #[test]
+    fn an_overlong_path_is_refused_up_front() {
+        let long = format!("{}/t.csv", ["d"; 2100].join("/"));
+        let err = check_output_path(Path::new(&long)).unwrap_err().to_string();
+        assert!(
+            err.contains("longer than 4000 bytes"),
+            "{}",
+            &err[err.len() - 120..]
+        );
+    }
 
     /// A FIFO nobody reads is an error after the wait, not a hang; one with a reader gets the
     /// bytes.
