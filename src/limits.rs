@@ -88,6 +88,10 @@ pub const MAX_SWEEP_CELL_SPEEDS: usize = 36_000;
 /// Reynolds numbers.
 pub const MIN_SOLVER_RE: f64 = 1e3;
 
+/// Most transition settings (cases) of one `polargen point` or `plot-point` run (`--xtr`):
+/// the cases are overlaid in one figure.
+pub const MAX_POINT_CASES: usize = 20;
+
 /// Most cases of one tunnel cases file (`gyro autorotate --cases`): with the PCA-2 preset's
 /// 960 rotor cells a case takes about 15 ms of CPU (NACA Report 515's Table III, 81 rows,
 /// 1.2 s), so the largest file runs for about 2.5 min on one core.

@@ -186,3 +186,34 @@ fn bad_per_side_ncrit_names_the_flag() {
         }
     }
 }
+
+/// `point`'s α is within ±180° and its cases at most 20, checked before any solve.
+#[test]
+fn point_alpha_and_case_count_are_bounded() {
+    let base = [
+        "point",
+        "--airfoil",
+        "naca0012",
+        "--re",
+        "1e6",
+        "--csv",
+        "-",
+    ];
+    let many: Vec<String> = (1..=21)
+        .map(|i| format!("{}", f64::from(i) / 100.0))
+        .collect();
+    for (extra, needle) in [
+        (
+            vec!["--alpha", "1e308"],
+            "--alpha 1e308: outside -180…180 deg".to_string(),
+        ),
+        (
+            vec!["--alpha", "2", "--xtr", &many.join(",")],
+            "--xtr: 21 transition settings: at most 20".to_string(),
+        ),
+    ] {
+        let o = polargen(&[&base[..], &extra[..]].concat());
+        cli_support::assert_one_line_error("polargen", &o, &needle);
+        assert_eq!(o.status.code(), Some(2));
+    }
+}

@@ -80,6 +80,11 @@ pub fn reynolds(text: &str) -> Result<f64, ArgumentError> {
     checked(text, arguments::reynolds)
 }
 
+/// One angle of attack in degrees, within ±180° ([`crate::polar::check_alphas`]).
+pub fn alpha_deg(text: &str) -> Result<f64, ArgumentError> {
+    checked(text, |name, v| crate::polar::check_alphas(name, &[v]))
+}
+
 /// A Reynolds number to solve at ([`arguments::solver_reynolds`]).
 pub fn solver_reynolds(text: &str) -> Result<f64, ArgumentError> {
     checked(text, arguments::solver_reynolds)

@@ -113,13 +113,13 @@ pub struct PointCase {
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = values::mach)]
     pub mach: f64,
 
-    /// Angle of attack in degrees.
+    /// Angle of attack in degrees, within ±180.
     #[arg(
         long,
         allow_hyphen_values = true,
         required_unless_present = "cl",
         conflicts_with = "cl",
-        value_parser = values::number
+        value_parser = values::alpha_deg
     )]
     pub alpha: Option<f64>,
 
@@ -128,7 +128,7 @@ pub struct PointCase {
     pub cl: Option<f64>,
 
     /// Transition settings, one case each (overlaid by plot-point): comma-separated x/c on
-    /// both surfaces (0 = leading edge, 1 = free).
+    /// both surfaces (0 = leading edge, 1 = free); at most 20.
     #[arg(
         long,
         value_name = "LIST",

@@ -25,6 +25,7 @@ use polargen::arguments::{self, trip_flags, ArgumentError, TransitionArgs};
 use polargen::cli::{self, Tool};
 use polargen::geometry::{selig_file_text, shaped_airfoil, solver_airfoil, Airfoil, ShapeOp};
 use polargen::inviscid::{inviscid_polar_csv, PanelSystem};
+use polargen::limits::MAX_POINT_CASES;
 use polargen::output::{
     check_output_path, names_a_file, write_output_bytes, write_stdout, STDOUT_PATH,
 };
@@ -323,6 +324,16 @@ fn point(case: &PointCase, csv: &Path) -> Result<()> {
 /// solution per setting.
 fn solve_cases(args: &PointCase) -> Result<(Airfoil, Vec<(String, ViscousSolution)>)> {
     arguments::distinct("--xtr", &args.xtr)?;
+    if args.xtr.len() > MAX_POINT_CASES {
+        Err(ArgumentError::with_text(
+            "--xtr",
+            "",
+            format!(
+                "{} transition settings: at most {MAX_POINT_CASES} cases per run",
+                args.xtr.len()
+            ),
+        ))?;
+    }
     let settings = args
         .xtr
         .iter()
