@@ -106,7 +106,7 @@ impl OutputError {
         }
     }
 
-    fn bad(path: impl Into<PathBuf>, reason: &'static str) -> Self {
+    pub(crate) fn bad(path: impl Into<PathBuf>, reason: &'static str) -> Self {
         Self::BadPath {
             path: path.into(),
             reason,

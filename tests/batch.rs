@@ -294,3 +294,43 @@ fn bad_input_is_one_line_before_any_solve() {
         assert!(!out.exists(), "{args:?} wrote {}", out.display());
     }
 }
+
+/// A table whose name in the output folder is a folder, or a link to a device, is refused
+/// before any solve, with no index written (it was found after the solves, leaving an index
+/// of pending airfoils, or the table went into the device).
+#[cfg(unix)]
+#[test]
+fn a_table_name_that_is_not_a_file_is_refused_before_any_solve() {
+    let root = tempfile::tempdir().unwrap();
+    let foils = airfoil_folder(root.path());
+    for (tag, make) in [
+        (
+            "folder",
+            (|p: &Path| fs::create_dir_all(p).unwrap()) as fn(&Path),
+        ),
+        ("device", |p: &Path| {
+            std::os::unix::fs::symlink("/dev/null", p).unwrap()
+        }),
+    ] {
+        let out = root.path().join(tag);
+        fs::create_dir(&out).unwrap();
+        make(&out.join("n2412.csv"));
+        let o = batch(&[
+            "--airfoils",
+            foils.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let text = stderr(&o);
+        assert!(!o.status.success(), "{tag}: {text}");
+        assert!(
+            text.contains("n2412.csv") && text.lines().count() == 1,
+            "{tag}: {text}"
+        );
+        let names: Vec<String> = fs::read_dir(&out)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(names, ["n2412.csv"], "{tag}");
+    }
+}

@@ -37,7 +37,7 @@ use super::{
 };
 use crate::diagnostics::error_line;
 use crate::geometry::{solver_airfoil, Airfoil, GeometryError, ShapeOp};
-use crate::output::{check_output_path, OutputError};
+use crate::output::{check_output_path, names_a_file, OutputError};
 use crate::progress::{Progress, Work};
 use crate::viscous::ViscousParams;
 use std::path::{Path, PathBuf};
@@ -272,6 +272,15 @@ impl Batch {
                 source,
             })?;
             notes.extend(more);
+            let table = out.join(format!("{name}.{}", settings.format.name()));
+            check_output_path(&table)?;
+            if !names_a_file(&table) {
+                return Err(BatchError::Output(OutputError::bad(
+                    &table,
+                    "is not a regular file (a device, FIFO or descriptor): a batch writes its \
+                     tables as files",
+                )));
+            }
             airfoils.push((name, spec, foil));
         }
         if let (Some(s), true) = (settings.shard, airfoils.is_empty()) {
