@@ -45,6 +45,10 @@ fn every_bad_value_is_a_usage_error_naming_the_flag() {
             "--re 500: the viscous solver takes Reynolds numbers from 1000",
         ),
         (
+            grid(&["--re", "1e6", "--out", "x.c81"]),
+            "--format c81 needs at least two angles of attack",
+        ),
+        (
             grid(&["--re", "1e6", "--panels", "5"]),
             "--panels 5: must be between",
         ),

@@ -174,6 +174,17 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     check_output_path(out).context("--out")?;
     let format =
         TableFormat::for_output(cli.format, cli.out.as_deref()).context("--format/--out")?;
+    if matches!(format, TableFormat::C81 | TableFormat::AeroDyn) && grid.alpha_deg.len() < 2 {
+        Err(ArgumentError::with_text(
+            "--alpha",
+            "",
+            format!(
+                "--format {} needs at least two angles of attack (its rows are the table's \
+                 lookups, which need two converged points)",
+                format.name()
+            ),
+        ))?;
+    }
     let ops = cli.grid.shape.ops();
     let sweep = FlapSweep::new(&ops, cli.flap_deg.as_deref(), out, format)?;
     sweep.check_size(&grid)?;
