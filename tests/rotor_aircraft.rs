@@ -119,6 +119,29 @@ fn unknown_field_and_bad_values_are_rejected() {
             "takeoff.max_time_s",
         ),
         ("mass_kg = 450.0", "mass_kg = 1e300", "mass_kg"),
+        // Sanity bounds: a typo, not a design.
+        ("radius_m = 4.2", "radius_m = 1000", "rotor.radius_m"),
+        ("chord_m = 0.2", "chord_m = 1e-12", "rotor.chord_m"),
+        (
+            "blade_mass_kg = 14.0",
+            "blade_mass_kg = 1e300",
+            "rotor.blade_mass_kg",
+        ),
+        (
+            "parasitic_drag_area_m2 = 1.0",
+            "parasitic_drag_area_m2 = 1e6",
+            "parasitic_drag_area_m2",
+        ),
+        (
+            "rolling_friction = 0.04",
+            "rolling_friction = 10",
+            "takeoff.rolling_friction",
+        ),
+        (
+            "screen_height_m = 15.0",
+            "screen_height_m = 1e6",
+            "takeoff.screen_height_m",
+        ),
         ("max_rpm = 5800.0", "max_rpm = 1000.0", "engine.max_rpm"),
         (
             "torque_rpm = [4000.0, 4500.0",

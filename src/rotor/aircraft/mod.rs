@@ -244,6 +244,13 @@ pub(super) fn read_preset_text(path: &Path) -> Result<(String, String), Aircraft
     Ok((text, origin))
 }
 
+/// Largest parasitic drag area accepted \[m²\] (a gyroplane's is below 1 m²; 100 m² bounds a
+/// typo).
+const MAX_DRAG_AREA_M2: f64 = 100.0;
+
+/// Largest takeoff screen height accepted \[m\] (the certification screens are 15 m and
+/// 50 ft).
+const MAX_SCREEN_HEIGHT_M: f64 = 100.0;
 impl Aircraft {
     /// Reads and checks a TOML preset.
     pub fn from_toml_file(path: &Path) -> Result<Self, AircraftError> {
@@ -403,7 +410,12 @@ impl Aircraft {
             (f64::MIN_POSITIVE, MAX_MASS_KG),
             "must be positive and at most 100000 kg",
         )?;
-        non_negative("parasitic_drag_area_m2", self.parasitic_drag_area_m2)?;
+        in_range(
+            "parasitic_drag_area_m2",
+            self.parasitic_drag_area_m2,
+            (0.0, MAX_DRAG_AREA_M2),
+            "must be 0 to 100 m² (a gyroplane's is below 1 m²)",
+        )?;
         self.rotor.validate()?;
         let whole_aircraft = |field: &'static str, value: Option<f64>| {
             value.map(|_| ()).ok_or(AircraftError::Missing {
@@ -428,7 +440,12 @@ impl Aircraft {
                 reason: "must be below head_angle_max_deg".into(),
             });
         }
-        non_negative("takeoff.rolling_friction", t.rolling_friction)?;
+        in_range(
+            "takeoff.rolling_friction",
+            t.rolling_friction,
+            (0.0, 1.0),
+            "must be 0 to 1 (tyres on grass are about 0.05 to 0.1)",
+        )?;
         in_range(
             "takeoff.climb_speed_kt",
             t.climb_speed_kt,
@@ -437,7 +454,12 @@ impl Aircraft {
         )?;
         non_negative("takeoff.pilot_gain_deg_per_ms", t.pilot_gain_deg_per_ms)?;
         positive("takeoff.pilot_time_constant_s", t.pilot_time_constant_s)?;
-        positive("takeoff.screen_height_m", t.screen_height_m)?;
+        in_range(
+            "takeoff.screen_height_m",
+            t.screen_height_m,
+            (f64::MIN_POSITIVE, MAX_SCREEN_HEIGHT_M),
+            "must be positive and at most 100 m (the certification screens are 15 m and 50 ft)",
+        )?;
         in_range(
             "takeoff.field_altitude_m",
             t.field_altitude_m,

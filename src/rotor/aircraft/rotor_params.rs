@@ -4,7 +4,7 @@
 use super::checks::{in_range, non_negative, positive};
 use super::AircraftError;
 use crate::arguments::ArgumentError;
-use crate::limits::{AZIMUTH_STEPS, MAX_ROTOR_CELLS, RADIAL_STRIPS};
+use crate::limits::{AZIMUTH_STEPS, MAX_MASS_KG, MAX_ROTOR_CELLS, RADIAL_STRIPS};
 use crate::rotor::flapping::{FlapHinge, Hub};
 use crate::rotor::inflow::{InflowModel, TipLoss, YawedFlow};
 use crate::rotor::planform::{Planform, PlanformStation};
@@ -127,6 +127,15 @@ pub struct TorsionParams {
     pub from_r_over_r: f64,
 }
 
+/// Largest rotor radius accepted \[m\]: the largest rotors flown (Mil Mi-26) have 16 m; 50 m
+/// bounds a typo, not a design.
+const MAX_ROTOR_RADIUS_M: f64 = 50.0;
+
+/// Smallest and largest reference chord as a fraction of the radius (blade aspect ratios
+/// R/c from 200 to 2; the MTOsport's is 21, the PCA-2's 12).
+const MIN_CHORD_RATIO: f64 = 0.005;
+const MAX_CHORD_RATIO: f64 = 0.5;
+
 impl RotorParams {
     /// Blade-element cells of one rotor evaluation: radial strips × azimuth steps.
     pub fn cells(&self) -> usize {
@@ -204,8 +213,21 @@ impl RotorParams {
 
     /// Checks every value of the `[rotor]` table for its physical range.
     pub fn validate(&self) -> Result<(), AircraftError> {
-        positive("rotor.radius_m", self.radius_m)?;
-        positive("rotor.chord_m", self.chord_m)?;
+        in_range(
+            "rotor.radius_m",
+            self.radius_m,
+            (f64::MIN_POSITIVE, MAX_ROTOR_RADIUS_M),
+            "must be positive and at most 50 m (the largest rotors have 16 m)",
+        )?;
+        in_range(
+            "rotor.chord_m",
+            self.chord_m,
+            (
+                MIN_CHORD_RATIO * self.radius_m,
+                MAX_CHORD_RATIO * self.radius_m,
+            ),
+            "must be 0.5 % to 50 % of the radius (a blade aspect ratio R/c of 2 to 200)",
+        )?;
         non_negative("rotor.root_cutout_m", self.root_cutout_m)?;
         if self.root_cutout_m >= self.radius_m {
             return Err(invalid(
@@ -225,7 +247,12 @@ impl RotorParams {
         if let Some(b) = &self.blade {
             b.validate(self.root_cutout_m / self.radius_m)?;
         }
-        positive("rotor.blade_mass_kg", self.blade_mass_kg)?;
+        in_range(
+            "rotor.blade_mass_kg",
+            self.blade_mass_kg,
+            (f64::MIN_POSITIVE, MAX_MASS_KG),
+            "must be positive and at most 100000 kg",
+        )?;
         if let Some(i) = self.hub_inertia_kg_m2 {
             non_negative("rotor.hub_inertia_kg_m2", i)?;
         }

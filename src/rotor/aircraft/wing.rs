@@ -108,8 +108,18 @@ impl WingParams {
 
     /// Checks the planform, the efficiency and that exactly one section model is given.
     pub(super) fn validate(&self) -> Result<(), AircraftError> {
-        non_negative("wing.area_m2", self.area_m2)?;
-        positive("wing.span_m", self.span_m)?;
+        super::checks::in_range(
+            "wing.area_m2",
+            self.area_m2,
+            (0.0, 100.0),
+            "must be 0 to 100 m² (a gyroplane's stub wing has a few)",
+        )?;
+        super::checks::in_range(
+            "wing.span_m",
+            self.span_m,
+            (f64::MIN_POSITIVE, 50.0),
+            "must be positive and at most 50 m",
+        )?;
         if !(self.incidence_deg.is_finite() && self.incidence_deg.abs() <= 20.0) {
             return Err(AircraftError::Invalid {
                 field: "wing.incidence_deg",
