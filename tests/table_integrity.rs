@@ -107,7 +107,7 @@ fn a_polargen_table_cut_inside_its_last_polar_is_refused() {
     let err = parse_table(cut.as_bytes(), TableFormat::Csv).unwrap_err();
     assert_eq!(
         err.to_string(),
-        "polar Re 2000000, M 0 has 3 of the 5 alpha values of the table's first polar and \
+        "polar Re 2000000, M 0 has 3 alpha values where the table's first polar has 5 and \
          ends at alpha 2: a table computed by polargen keeps every alpha in every polar, so \
          the file is cut short or was edited"
     );

@@ -133,7 +133,7 @@ pub enum TableError {
     },
     /// A polar of a table computed by polargen lacks α values its other polars have.
     #[error(
-        "polar Re {}, M {} has {got} of the {expected} alpha values of the table's first polar \
+        "polar Re {}, M {} has {got} alpha values where the table's first polar has {expected} \
          and ends at alpha {}: a table computed by polargen keeps every alpha in every polar, \
          so the file is cut short or was edited",
         short_number(*re),

@@ -326,7 +326,7 @@ fn build(
         }
     };
     let re: Vec<f64> = tables.iter().map(|t| t.re).collect();
-    let polars: Vec<Vec<PolarPoint>> = tables
+    let mut polars: Vec<Vec<PolarPoint>> = tables
         .iter()
         .map(|t| {
             let range = t.written.as_ref().map(|w| w.0);
@@ -337,8 +337,32 @@ fn build(
                 .collect()
         })
         .collect();
+    if tables.iter().any(|t| t.written.is_some()) {
+        pad_to_shared_alphas(&mut polars);
+    }
     let table = PolarTable::with_params(meta, re, vec![mach], polars, params)?;
     Ok(TableRead { table, notes })
+}
+
+/// A table computed by polargen keeps every α of its grid in every polar; its AeroDyn file
+/// keeps only each polar's usable rows. Each polar gets back the α values the others have as
+/// unconverged points (no coefficients), so that the table holds one α list again and writes
+/// to, and reads back from, the formats that keep every point.
+fn pad_to_shared_alphas(polars: &mut [Vec<PolarPoint>]) {
+    let mut alphas: Vec<f64> = polars.iter().flatten().map(|p| p.alpha).collect();
+    alphas.sort_by(f64::total_cmp);
+    alphas.dedup();
+    for polar in polars.iter_mut() {
+        for &a in &alphas {
+            if !polar.iter().any(|p| p.alpha == a) {
+                polar.push(PolarPoint {
+                    converged: false,
+                    ..PolarPoint::from_coefficients(a, f64::NAN, f64::NAN, f64::NAN)
+                });
+            }
+        }
+        polar.sort_by(|p, q| p.alpha.total_cmp(&q.alpha));
+    }
 }
 
 #[cfg(test)]
