@@ -251,7 +251,8 @@ fn format_is_a_value_enum_listed_in_help_and_completions() {
             "-",
         ],
     );
-    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
+    // A per-polar format to standard output: flags that contradict each other, exit 2.
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o.stderr));
     assert!(
         text(&o.stderr).contains("give a file name"),
         "{}",

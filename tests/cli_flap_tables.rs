@@ -173,9 +173,19 @@ fn a_sweep_is_checked_whole_before_any_solve() {
         "--flap",
         "0.75:0",
     ];
-    let stdout = ok(run_in(&[&base[..], &["--flap-deg", "10"]].concat()));
-    assert!(stdout.starts_with("airfoil,re,mach"), "{stdout}");
-    assert!(stdout.contains("flap 0.75:0:10"), "{stdout}");
+    for out in ["-", "/dev/stdout"] {
+        let stdout = ok(run_in(
+            &[&base[..], &["--flap-deg", "10", "--out", out]].concat(),
+        ));
+        assert!(stdout.starts_with("airfoil,re,mach"), "{out}: {stdout}");
+        assert!(stdout.contains("flap 0.75:0:10"), "{out}: {stdout}");
+    }
+    let two = run_in(&[&base[..], &["--flap-deg", "5,10", "--out", "/dev/stdout"]].concat());
+    assert_one_line_error(
+        "polargen",
+        &two,
+        "one table per deflection needs --out FILE",
+    );
     assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
     let started = std::time::Instant::now();
     let folds = run_in(&[&base[..], &["--flap-deg", "-10,0,89", "--out", "f.csv"]].concat());

@@ -204,7 +204,12 @@ fn viscous_flags_and_other_formats_are_refused() {
             &["--flap", "0.75:0", "--flap-deg", "-5,5", "--out", "f.csv"][..],
             "--flap-deg: does not apply",
         ),
+        (&["--ncrit-top", "5"][..], "--ncrit-top: does not apply"),
         (&["--format", "json"][..], "--inviscid writes CSV"),
+        (
+            &["--out", "p.dat"][..],
+            "cannot infer table format from 'p.dat'",
+        ),
         (&["--out", "x.c81"][..], "--inviscid writes CSV"),
     ] {
         let o = polargen(&[&base[..], extra].concat());

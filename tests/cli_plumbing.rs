@@ -69,7 +69,8 @@ fn out_dash_is_standard_output_for_tables_only() {
             "xfoil",
         ],
     );
-    assert_eq!(pol.status.code(), Some(1));
+    // A per-polar format to standard output: contradicting flags, a usage error.
+    assert_eq!(pol.status.code(), Some(2));
     assert!(
         text(&pol.stderr).starts_with("polargen: error: ")
             && text(&pol.stderr).contains("give a file name"),

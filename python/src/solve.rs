@@ -342,8 +342,11 @@ pub fn point<'py>(
     panels: usize,
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
-    arguments::reynolds("re", re).map_err(|e| raise(None, e))?;
+    arguments::solver_reynolds("re", re).map_err(|e| raise(None, e))?;
     arguments::mach("mach", mach).map_err(|e| raise(None, e))?;
+    if let Some(a) = alpha {
+        polargen::polar::check_alphas("alpha", &[a]).map_err(|e| raise(None, e))?;
+    }
     let settings = Settings::checked(xtr_top, xtr_bot, ncrit, tolerance)?;
     let at = match (alpha, cl) {
         (Some(a), None) => OperatingPoint::Alpha(a),

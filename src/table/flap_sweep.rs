@@ -6,7 +6,7 @@ use super::io::{check_flap_sweep_output, check_table_output, write_aerodyn_flap_
 use super::{PolarTable, TableError, TableFormat};
 use crate::arguments::ArgumentError;
 use crate::geometry::{flap_deflection, flap_deg, with_flap_deflection, ShapeOp};
-use crate::output::{OutputError, STDOUT_PATH};
+use crate::output::{names_a_file, OutputError};
 use std::path::{Path, PathBuf};
 
 /// One table of a [`FlapSweep`].
@@ -71,7 +71,7 @@ impl FlapSweep {
         // −0 is 0: one table, one file name.
         let degs: Vec<f64> = degs.into_iter().map(|d| d + 0.0).collect();
         crate::arguments::distinct(name, &degs)?;
-        if out == Path::new(STDOUT_PATH) && degs.len() == 1 {
+        if !names_a_file(out) && degs.len() == 1 {
             return Ok(Self {
                 members: vec![FlapMember {
                     ops: with_flap_deflection(ops, degs[0]),
@@ -80,7 +80,7 @@ impl FlapSweep {
                 together: None,
             });
         }
-        if degs.len() > 1 && out == Path::new(STDOUT_PATH) {
+        if degs.len() > 1 && !names_a_file(out) {
             return Err(ArgumentError::with_text(
                 name,
                 list,

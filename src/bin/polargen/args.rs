@@ -271,7 +271,8 @@ pub struct RunArgs {
     pub airfoil: Option<String>,
 
     /// Inviscid panel solution only (cd = 0); output `alpha,cl,cd,cm,converged` as CSV (the
-    /// viscous flags --re, --xtr*, --cd-max, --flap-deg and other formats are refused).
+    /// viscous flags --re, --xtr*, --ncrit-top/-bot, --cd-max, --flap-deg and other formats
+    /// are refused; --ncrit and --tolerance are not read).
     #[arg(long)]
     pub inviscid: bool,
 

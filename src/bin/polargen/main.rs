@@ -26,9 +26,7 @@ use polargen::cli::{self, Tool};
 use polargen::geometry::{selig_file_text, shaped_airfoil, solver_airfoil, Airfoil, ShapeOp};
 use polargen::inviscid::{inviscid_polar_csv, PanelSystem};
 use polargen::limits::MAX_POINT_CASES;
-use polargen::output::{
-    check_output_path, names_a_file, write_output_bytes, write_stdout, STDOUT_PATH,
-};
+use polargen::output::{check_output_path, write_output_bytes, write_stdout, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
 use polargen::plot::table_plots::{table_overlay_figure, TableOverlay};
 use polargen::plot::{check_image_path, render};
@@ -96,6 +94,18 @@ fn write_geometry(spec: &str, shape: &Shape, out: &Path) -> Result<()> {
     Ok(write_output_bytes(out, text.as_bytes())?)
 }
 
+/// The table format of `--format` and `--out` ([`TableFormat::for_output`]); a name whose
+/// format cannot be told, or a per-polar format to a stream, is a usage error.
+fn output_format(format: Option<TableFormat>, out: Option<&Path>) -> Result<TableFormat> {
+    TableFormat::for_output(format, out).map_err(|e| {
+        anyhow::Error::from(ArgumentError::with_text(
+            "--format/--out",
+            "",
+            e.to_string(),
+        ))
+    })
+}
+
 /// `--inviscid`: the panel solution at one Mach number, as CSV. The flags of the viscous
 /// table that would change nothing here are refused, not ignored.
 fn run_inviscid(cli: &RunArgs) -> Result<()> {
@@ -105,6 +115,8 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
         ("--xtr", g.xtr.is_some()),
         ("--xtr-top", g.xtr_top.is_some()),
         ("--xtr-bot", g.xtr_bot.is_some()),
+        ("--ncrit-top", g.ncrit.ncrit_top.is_some()),
+        ("--ncrit-bot", g.ncrit.ncrit_bot.is_some()),
         ("--cd-max", cli.extension.cd_max.is_some()),
         ("--flap-deg", cli.flap_deg.is_some()),
     ];
@@ -113,17 +125,11 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
             flag,
             "",
             "does not apply to --inviscid (the panel solution has no Reynolds number, \
-             transition, post-stall extension or flap sweep)",
+             transition, post-stall extension or flap sweep; --ncrit and --tolerance, which \
+             have defaults, are not read either)",
         ))?;
     }
-    // A stream (standard output, a device, a FIFO) takes the CSV whatever its name.
-    let format = match (cli.format, cli.out.as_deref()) {
-        (Some(f), _) => f,
-        (None, Some(path)) if names_a_file(path) => {
-            TableFormat::from_path(path).context("--out")?
-        }
-        _ => TableFormat::Csv,
-    };
+    let format = output_format(cli.format, cli.out.as_deref())?;
     if format != TableFormat::Csv {
         Err(ArgumentError::with_text(
             "--format/--out",
@@ -172,8 +178,7 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     let (grid, base) = grid_request(&cli.grid)?;
     let out = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
     check_output_path(out).context("--out")?;
-    let format =
-        TableFormat::for_output(cli.format, cli.out.as_deref()).context("--format/--out")?;
+    let format = output_format(cli.format, cli.out.as_deref())?;
     if matches!(format, TableFormat::C81 | TableFormat::AeroDyn) && grid.alpha_deg.len() < 2 {
         Err(ArgumentError::with_text(
             "--alpha",
@@ -260,7 +265,7 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
 
 /// `polargen convert`: read a table and write it in another format.
 fn convert_table(args: &ConvertArgs) -> Result<()> {
-    let format = TableFormat::for_output(args.format, Some(&args.out)).context("--format/--out")?;
+    let format = output_format(args.format, Some(&args.out))?;
     check_output_path(&args.out).context("--out")?;
     let table =
         with_cd_max(read(&args.table, &args.read)?, args.extension.cd_max).context("--cd-max")?;

@@ -113,7 +113,8 @@ impl TableFormat {
     /// CSV for standard output (`out` absent or `-`). XFOIL polars and C81 write one file
     /// per polar or per Re and need a file name.
     pub fn for_output(format: Option<Self>, out: Option<&Path>) -> Result<Self, TableError> {
-        let stdout = out.is_none_or(|p| p.as_os_str() == crate::output::STDOUT_PATH);
+        // Standard output, a device or a FIFO: one stream, CSV unless told otherwise.
+        let stdout = out.is_none_or(|p| !crate::output::names_a_file(p));
         let chosen = match (format, out) {
             (Some(f), _) => f,
             (None, Some(path)) if !stdout => Self::from_path(path)?,
