@@ -10,7 +10,7 @@
 //!   `( echo a; polargen … --out /dev/stdout; echo b ) > f` the shell's file `f` would be
 //!   swapped for a new one and lose `a` and `b`.
 //! * An existing device or FIFO — opened and written in place (streamed), never renamed over;
-//!   a FIFO that no process opens for reading within 2 s is an error.
+//!   a FIFO that no process opens for reading within 30 s is an error.
 //! * Anything else names a regular file, written atomically as a one-file [`OutputSet`]: into
 //!   a hidden staging folder beside the target (`.polargen-set-<pid>.<random>/`, a short
 //!   name, so any legal file name can be staged under its own name), flushed and synced, then
@@ -289,8 +289,9 @@ where
     }
 }
 
-/// How long a write into a FIFO waits for a process to open it for reading.
-const FIFO_READER_WAIT: std::time::Duration = std::time::Duration::from_secs(2);
+/// How long a write into a FIFO waits for a process to open it for reading: long enough for
+/// a reader started after the run (`cat fifo` in another shell), short of a hang.
+const FIFO_READER_WAIT: std::time::Duration = std::time::Duration::from_secs(30);
 
 /// Open the stream `p` for appending (never truncate what is connected to a device, pipe or
 /// descriptor). A FIFO is opened without blocking, so that one nobody reads is an error after
@@ -298,12 +299,18 @@ const FIFO_READER_WAIT: std::time::Duration = std::time::Duration::from_secs(2);
 /// usual while the reader is slow.
 #[cfg(unix)]
 fn open_in_place(p: &Path) -> io::Result<File> {
+    open_in_place_within(p, FIFO_READER_WAIT)
+}
+
+/// [`open_in_place`] waiting at most `wait` for a FIFO's reader.
+#[cfg(unix)]
+fn open_in_place_within(p: &Path, wait: std::time::Duration) -> io::Result<File> {
     use std::os::unix::fs::{FileTypeExt, OpenOptionsExt};
     use std::os::unix::io::AsRawFd;
     if !fs::metadata(p).is_ok_and(|m| m.file_type().is_fifo()) {
         return OpenOptions::new().append(true).open(p);
     }
-    let deadline = std::time::Instant::now() + FIFO_READER_WAIT;
+    let deadline = std::time::Instant::now() + wait;
     loop {
         match OpenOptions::new()
             .append(true)
@@ -327,8 +334,8 @@ fn open_in_place(p: &Path) -> io::Result<File> {
             Err(e) if e.raw_os_error() == Some(libc::ENXIO) => {
                 if std::time::Instant::now() >= deadline {
                     return Err(io::Error::other(format!(
-                        "a FIFO that no process reads (waited {} s for a reader)",
-                        FIFO_READER_WAIT.as_secs()
+                        "a FIFO that no process reads (waited {:.1} s for a reader)",
+                        wait.as_secs_f64()
                     )));
                 }
                 std::thread::sleep(std::time::Duration::from_millis(20));
@@ -532,14 +539,11 @@ mod tests {
         if !made.is_ok_and(|s| s.success()) {
             return; // no mkfifo on this system: nothing to check
         }
+        let wait = std::time::Duration::from_millis(300);
         let started = std::time::Instant::now();
-        let err = write_output_bytes(&fifo, b"x").unwrap_err().to_string();
+        let err = open_in_place_within(&fifo, wait).unwrap_err().to_string();
         assert!(err.contains("no process reads"), "{err}");
-        assert!(
-            started.elapsed() < FIFO_READER_WAIT * 3,
-            "{:?}",
-            started.elapsed()
-        );
+        assert!(started.elapsed() < wait * 10, "{:?}", started.elapsed());
         let path = fifo.clone();
         let reader = std::thread::spawn(move || fs::read(path).unwrap());
         write_output_bytes(&fifo, b"polar").unwrap();

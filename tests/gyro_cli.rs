@@ -473,8 +473,14 @@ fn every_rotor_command_says_its_lookup_shares() {
     let out = gyro(&["takeoff", "--aircraft", &a, "--table", &t, "--json"]);
     assert_ok(&out);
     let v = json(&out);
-    assert!(v["table_clamped_fraction"].as_f64().unwrap() > 0.5, "{v}");
-    for key in ["table_supercritical_fraction", "table_separated_fraction"] {
+    assert!(
+        v["max_table_clamped_fraction"].as_f64().unwrap() > 0.5,
+        "{v}"
+    );
+    for key in [
+        "max_table_supercritical_fraction",
+        "max_table_separated_fraction",
+    ] {
         assert!(v[key].is_number(), "{key} missing: {v}");
     }
     let err = String::from_utf8_lossy(&out.stderr);
@@ -513,5 +519,5 @@ fn every_rotor_command_says_its_lookup_shares() {
         "{err}"
     );
     let err = stderr_of(&["alpha", "--aircraft", &a, "--table", &shipped]);
-    assert!(err.contains("note: at 60 kt, "), "{err}");
+    assert!(err.contains("note: at 60.0 kt, "), "{err}");
 }

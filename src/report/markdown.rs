@@ -192,8 +192,7 @@ pub(super) fn markdown(
         }
     );
     outln!(o);
-    let shares = |t: &TakeoffResult| t.lookup_shares().values();
-    let (sc, sd) = (shares(c), shares(d));
+    let (sc, sd) = (c.lookup_shares(), d.lookup_shares());
     outln!(
         o,
         "Table coverage during the takeoff, the largest share of one rotor solution's \
@@ -201,12 +200,12 @@ pub(super) fn markdown(
          outside the tables' range, {:.1} % and {:.1} % on supercritical points, {:.1} % and \
          {:.1} % where the table's points are in massive separation (the 360° extension stands \
          in for them).",
-        100.0 * sc[0],
-        100.0 * sd[0],
-        100.0 * sc[1],
-        100.0 * sd[1],
-        100.0 * sc[2],
-        100.0 * sd[2],
+        100.0 * sc.clamped,
+        100.0 * sd.clamped,
+        100.0 * sc.supercritical,
+        100.0 * sd.supercritical,
+        100.0 * sc.separated,
+        100.0 * sd.separated,
     );
     outln!(o);
     outln!(o, "![Takeoff time histories](takeoff.png)");

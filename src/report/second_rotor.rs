@@ -457,7 +457,7 @@ impl SecondRotor {
              of this rotor, uniform inflow with its tip-loss rule together, gives {}. The \
              presets keep Drees' inflow, which the flight's lateral flapping \
              supports (below), and the MTOsport's Prandtl tip loss: choosing either on this \
-             table would be fitting the model to it. The blade's pitch along the span matters \
+             table would be fitting the model to it. The blade's pitch along the span moves C_L \
              most: taken untwisted, all at its 1.9° setting, the blade would give {}. \
              Report 487 measured the blade twisted in flight (the tip 1.9° above \
              the inboard pitch; the lift's torsion alone about 2.4° at the tip), and the tunnel \

@@ -125,13 +125,13 @@ pub struct TakeoffResult {
     pub history: Vec<TakeoffSample>,
     /// Largest share, over the run's rotor solutions, of blade-element lookups whose Reynolds
     /// or Mach number lay outside the section table and were clamped to its edge.
-    pub table_clamped_fraction: f64,
+    pub max_table_clamped_fraction: f64,
     /// Largest share over the run of lookups that lean on supercritical table points
     /// (locally supersonic flow, outside the section method's validity).
-    pub table_supercritical_fraction: f64,
+    pub max_table_supercritical_fraction: f64,
     /// Largest share over the run of lookups at whose α the table's points are in massive
     /// separation (outside the method's validity; the 360° extension stands in).
-    pub table_separated_fraction: f64,
+    pub max_table_separated_fraction: f64,
 }
 
 impl TakeoffResult {
@@ -146,9 +146,9 @@ impl TakeoffResult {
     /// The run's largest lookup shares ([`LookupShares`]).
     pub fn lookup_shares(&self) -> LookupShares {
         LookupShares {
-            clamped: self.table_clamped_fraction,
-            supercritical: self.table_supercritical_fraction,
-            separated: self.table_separated_fraction,
+            clamped: self.max_table_clamped_fraction,
+            supercritical: self.max_table_supercritical_fraction,
+            separated: self.max_table_separated_fraction,
         }
     }
 
@@ -430,9 +430,9 @@ pub fn simulate_takeoff<S: BladeSection + ?Sized>(
                 liftoff_time_s: t_to,
                 screen_time_s: t15,
                 history,
-                table_clamped_fraction: model.validity_peaks.clamped,
-                table_supercritical_fraction: model.validity_peaks.supercritical,
-                table_separated_fraction: model.validity_peaks.separated,
+                max_table_clamped_fraction: model.validity_peaks.clamped,
+                max_table_supercritical_fraction: model.validity_peaks.supercritical,
+                max_table_separated_fraction: model.validity_peaks.separated,
             });
         }
         y = next;

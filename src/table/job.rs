@@ -57,9 +57,9 @@ impl TableJob<'_> {
     /// shaped and checked first, and every table solved before any is written, so a
     /// deflection whose contour is refused, or a table without a converged point, leaves no
     /// file. `progress` follows each table's build; `say` gets the notes of reading the
-    /// airfoil (`note: …`), each table's census and time (`… in 1.2 s`) and the file count
-    /// of a table or set written as several files (`wrote 4 files`). Returns the files
-    /// written.
+    /// airfoil (`note: …`), each table's census and time (`… in 1.2 s`, after the table is
+    /// written) and the file count of a table or set written as several files (`wrote 4
+    /// files`). Returns the files written.
     pub fn run(
         &self,
         sweep: &FlapSweep,
@@ -86,29 +86,33 @@ impl TableJob<'_> {
             if census.converged == 0 {
                 return Err(TableJobError::NoneConverged(census));
             }
-            say(format!(
-                "{census} in {:.1} s",
-                start.elapsed().as_secs_f64()
-            ));
+            let summary = format!("{census} in {:.1} s", start.elapsed().as_secs_f64());
             let table = with_cd_max(table.with_geometry(&member.ops), self.cd_max)
                 .map_err(TableJobError::CdMax)?;
-            tables.push(table);
+            tables.push((table, summary));
         }
+        // The results first: each table's summary after it is written.
         let mut together = Vec::new();
+        let mut summaries = Vec::new();
         let mut written = Vec::new();
-        for (member, table) in sweep.members().iter().zip(tables) {
+        for (member, (table, summary)) in sweep.members().iter().zip(tables) {
             match &member.out {
                 Some(path) => {
                     let files = write_table(&table, path, Some(self.format))?;
+                    say(summary);
                     if files.len() > 1 {
                         say(format!("wrote {} files", files.len()));
                     }
                     written.extend(files);
                 }
-                None => together.push(table),
+                None => {
+                    together.push(table);
+                    summaries.push(summary);
+                }
             }
         }
         let files = sweep.write_together(&together)?;
+        summaries.into_iter().for_each(say);
         if !files.is_empty() {
             say(format!("wrote {} files", files.len()));
         }

@@ -87,10 +87,10 @@ class TakeoffResult(_Fields):
     """A takeoff run with the fields of ``gyro takeoff --json`` (``takeoff_roll_m``,
     ``distance_15m_m``, ``max_flapping_deg``, ``liftoff_speed_kt``, ``screen_speed_kt``,
     ``liftoff_rotor_rpm``, ``screen_time_s``, and the largest shares of one rotor solution's
-    blade-element lookups over the run ``table_clamped_fraction``,
-    ``table_supercritical_fraction``, ``table_separated_fraction``) and ``history``, the time
-    history of ``gyro takeoff --history`` as NumPy columns (t, x, h, v, rotor_rpm, alpha_r_deg,
-    beta_deg). ``notes`` holds what ``gyro`` prints beside the result (also issued as
+    blade-element lookups over the run ``max_table_clamped_fraction``,
+    ``max_table_supercritical_fraction``, ``max_table_separated_fraction``) and ``history``,
+    the time history of ``gyro takeoff --history`` as NumPy columns (t, x, h, v, rotor_rpm,
+    alpha_r_deg, beta_deg). ``notes`` holds what ``gyro`` prints beside the result (also issued as
     warnings)."""
 
     def __init__(self, fields: Dict[str, Any], history: Dict[str, np.ndarray],

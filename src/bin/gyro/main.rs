@@ -314,7 +314,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             let (ac, (), section) = load(&inputs, None, check)?;
             let params = TrimParams::default();
             let curve = cruise_blade_alpha(&ac, &section, speed_kt, 0.0, radius, samples, &params)?;
-            let at = format!("at {speed_kt} kt");
+            let at = format!("at {speed_kt:.1} kt");
             curve
                 .lookup_shares
                 .notes(&at)

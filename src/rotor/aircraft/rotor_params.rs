@@ -127,8 +127,8 @@ pub struct TorsionParams {
     pub from_r_over_r: f64,
 }
 
-/// Largest rotor radius accepted \[m\]: the largest rotors flown (Mil Mi-26) have 16 m; 50 m
-/// bounds a typo, not a design.
+/// Largest rotor radius accepted \[m\]: the largest rotors flown (Mil V-12, Mi-26) have 16 to
+/// 17.5 m; 50 m bounds a typo, not a design.
 const MAX_ROTOR_RADIUS_M: f64 = 50.0;
 
 /// Smallest and largest reference chord as a fraction of the radius (blade aspect ratios
@@ -217,7 +217,7 @@ impl RotorParams {
             "rotor.radius_m",
             self.radius_m,
             (f64::MIN_POSITIVE, MAX_ROTOR_RADIUS_M),
-            "must be positive and at most 50 m (the largest rotors have 16 m)",
+            "must be positive and at most 50 m (the largest rotors flown have 17.5 m)",
         )?;
         in_range(
             "rotor.chord_m",

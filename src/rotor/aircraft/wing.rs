@@ -88,6 +88,11 @@ pub struct WingLoads {
     pub table_clamped: bool,
 }
 
+/// Largest wing area accepted \[m²\] (a gyroplane's stub wing has a few; a sanity bound).
+const MAX_WING_AREA_M2: f64 = 100.0;
+
+/// Largest wing span accepted \[m\] (a sanity bound).
+const MAX_WING_SPAN_M: f64 = 50.0;
 impl WingLoads {
     /// No wing: zero lift and drag.
     pub const NONE: Self = Self {
@@ -111,13 +116,13 @@ impl WingParams {
         super::checks::in_range(
             "wing.area_m2",
             self.area_m2,
-            (0.0, 100.0),
+            (0.0, MAX_WING_AREA_M2),
             "must be 0 to 100 m² (a gyroplane's stub wing has a few)",
         )?;
         super::checks::in_range(
             "wing.span_m",
             self.span_m,
-            (f64::MIN_POSITIVE, 50.0),
+            (f64::MIN_POSITIVE, MAX_WING_SPAN_M),
             "must be positive and at most 50 m",
         )?;
         if !(self.incidence_deg.is_finite() && self.incidence_deg.abs() <= 20.0) {

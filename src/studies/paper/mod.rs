@@ -77,12 +77,11 @@ impl PaperRun {
     }
 }
 
-/// Notes of one case (`note: …`, [`TrimResult::notes`], [`TakeoffResult::notes`] or a
-/// [`BladeAlpha`]'s), each after `case: `.
-pub fn case_notes(case: &str, first: &[String], second: &[String]) -> Vec<String> {
-    first
-        .iter()
-        .chain(second)
+/// The notes of one case (`note: …` lines: a trim's, a takeoff's, a blade α trim's lookup
+/// shares), the `trim` ones first, each after `case: `.
+pub fn case_notes(case: &str, trim: &[String], takeoff: &[String]) -> Vec<String> {
+    trim.iter()
+        .chain(takeoff)
         .map(|n| match n.strip_prefix("note: ") {
             Some(rest) => format!("note: {case}: {rest}"),
             None => format!("{case}: {n}"),
@@ -192,13 +191,18 @@ impl SpeedSweep {
             .filter(|t| t.engine_rpm.is_none())
             .map(|t| t.airspeed_kt)
             .collect();
+        let lo = beyond_engine.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = beyond_engine
+            .iter()
+            .copied()
+            .fold(f64::NEG_INFINITY, f64::max);
         match beyond_engine.as_slice() {
             [] => {}
             [v] => notes.push(format!(
                 "note: {prefix}at {v:.1} kt the propeller needs more than the engine's maximum \
                  rpm: the aircraft cannot fly this speed level"
             )),
-            [lo, .., hi] => notes.push(format!(
+            [..] => notes.push(format!(
                 "note: {prefix}at {} of {n} speeds ({lo:.1} to {hi:.1} kt) the propeller needs \
                  more than the engine's maximum rpm: the aircraft cannot fly them level",
                 beyond_engine.len()
