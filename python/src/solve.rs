@@ -344,7 +344,8 @@ pub fn point<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     arguments::solver_reynolds("re", re).map_err(|e| raise(None, e))?;
     arguments::mach("mach", mach).map_err(|e| raise(None, e))?;
-    if let Some(a) = alpha {
+    // A finite α beyond ±180° (a non-finite one is named further on).
+    if let Some(a) = alpha.filter(|a| a.is_finite()) {
         polargen::polar::check_alphas("alpha", &[a]).map_err(|e| raise(None, e))?;
     }
     let settings = Settings::checked(xtr_top, xtr_bot, ncrit, tolerance)?;

@@ -132,6 +132,11 @@ def test_a_point_that_does_not_converge_is_an_error_not_a_result():
         pg.point("naca0012", re=1e6)
     with pytest.raises(ValueError, match="alpha NaN: not a finite angle"):
         pg.point("naca0012", re=1e6, alpha=float("nan"))
+    # The CLI's bounds: α within ±180°, Re from 10³.
+    with pytest.raises(ValueError, match="alpha 1e\\+?308: outside -180"):
+        pg.point("naca0012", re=1e6, alpha=1e308)
+    with pytest.raises(ValueError, match="re 500: the viscous solver takes Reynolds numbers from"):
+        pg.point("naca0012", re=500, alpha=2.0)
 
 
 def test_unconverged_polar_points_are_flagged_never_dropped():
