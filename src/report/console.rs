@@ -67,8 +67,8 @@ pub fn autorotation(buf: &mut String, a: &Autorotation) {
     outln!(
         buf,
         "autorotation at alpha {} deg, V {} m/s",
-        a.alpha_deg,
-        a.speed_m_s
+        crate::limits::short_number(a.alpha_deg),
+        crate::limits::short_number(a.speed_m_s)
     );
     outln!(buf, "  rotor rpm                {:9.2}", a.rotor_rpm);
     outln!(buf, "  tip-speed ratio mu       {:9.4}", a.mu);

@@ -19,6 +19,7 @@ use super::trim::{autorotation, TrimError, TrimParams};
 use super::{rad_s_to_rpm, rpm_to_rad_s};
 use crate::arguments::ArgumentError;
 use crate::input::{read_input_or_stdin, InputError};
+use crate::limits::short_number;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::path::Path;
@@ -211,7 +212,8 @@ impl Autorotation {
         }
         .notes(&format!(
             "at α {} deg, V {} m/s",
-            self.alpha_deg, self.speed_m_s
+            short_number(self.alpha_deg),
+            short_number(self.speed_m_s)
         ))
     }
 }
@@ -357,7 +359,9 @@ impl CaseOutcome {
         }
         let (alpha, v) = (self.result.alpha_deg, self.result.speed_m_s);
         vec![format!(
-            "note: alpha {alpha} deg, V {v} m/s: {}",
+            "note: alpha {} deg, V {} m/s: {}",
+            short_number(alpha),
+            short_number(v),
             self.error
         )]
     }
