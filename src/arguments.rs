@@ -89,6 +89,33 @@ pub fn solver_reynolds(name: &str, re: f64) -> Result<(), ArgumentError> {
     )
 }
 
+/// The first flag of `given` (name, whether it was given) that was given, refused with `rule`:
+/// flags a mode does not read are an error, not ignored.
+pub fn refuse_given(given: &[(&str, bool)], rule: &'static str) -> Result<(), ArgumentError> {
+    match given.iter().find(|(_, on)| *on) {
+        Some((flag, _)) => Err(ArgumentError::with_text(flag, "", rule)),
+        None => Ok(()),
+    }
+}
+
+/// The transition settings of one `point` or `plot-point` run (flag `--xtr`): distinct, and
+/// at most [`MAX_POINT_CASES`](crate::limits::MAX_POINT_CASES) cases.
+pub fn point_cases(xtr: &[f64]) -> Result<(), ArgumentError> {
+    distinct("--xtr", xtr)?;
+    let limit = crate::limits::MAX_POINT_CASES;
+    if xtr.len() > limit {
+        return Err(ArgumentError::with_text(
+            "--xtr",
+            "",
+            format!(
+                "{} transition settings: at most {limit} cases per run",
+                xtr.len()
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// A free-stream Mach number: in [0, 1).
 pub fn mach(name: &str, mach: f64) -> Result<(), ArgumentError> {
     require(

@@ -25,7 +25,6 @@ use polargen::arguments::{self, trip_flags, ArgumentError, TransitionArgs};
 use polargen::cli::{self, Tool};
 use polargen::geometry::{selig_file_text, shaped_airfoil, solver_airfoil, Airfoil, ShapeOp};
 use polargen::inviscid::{inviscid_polar_csv, PanelSystem};
-use polargen::limits::MAX_POINT_CASES;
 use polargen::output::{check_output_path, write_output_bytes, write_stdout, STDOUT_PATH};
 use polargen::plot::point_plots::{solutions_figure, solutions_title, with_airfoil_contour};
 use polargen::plot::table_plots::{table_overlay_figure, TableOverlay};
@@ -94,18 +93,6 @@ fn write_geometry(spec: &str, shape: &Shape, out: &Path) -> Result<()> {
     Ok(write_output_bytes(out, text.as_bytes())?)
 }
 
-/// The table format of `--format` and `--out` ([`TableFormat::for_output`]); a name whose
-/// format cannot be told, or a per-polar format to a stream, is a usage error.
-fn output_format(format: Option<TableFormat>, out: Option<&Path>) -> Result<TableFormat> {
-    TableFormat::for_output(format, out).map_err(|e| {
-        anyhow::Error::from(ArgumentError::with_text(
-            "--format/--out",
-            "",
-            e.to_string(),
-        ))
-    })
-}
-
 /// `--inviscid`: the panel solution at one Mach number, as CSV. The flags of the viscous
 /// table that would change nothing here are refused, not ignored.
 fn run_inviscid(cli: &RunArgs) -> Result<()> {
@@ -120,16 +107,13 @@ fn run_inviscid(cli: &RunArgs) -> Result<()> {
         ("--cd-max", cli.extension.cd_max.is_some()),
         ("--flap-deg", cli.flap_deg.is_some()),
     ];
-    if let Some((flag, _)) = viscous_only.iter().find(|f| f.1) {
-        Err(ArgumentError::with_text(
-            flag,
-            "",
-            "does not apply to --inviscid (the panel solution has no Reynolds number, \
-             transition, post-stall extension or flap sweep; --ncrit and --tolerance, which \
-             have defaults, are not read either)",
-        ))?;
-    }
-    let format = output_format(cli.format, cli.out.as_deref())?;
+    arguments::refuse_given(
+        &viscous_only,
+        "does not apply to --inviscid (the panel solution has no Reynolds number, transition, \
+         post-stall extension or flap sweep; --ncrit and --tolerance, which have defaults, are \
+         not read either)",
+    )?;
+    let format = TableFormat::for_flags(cli.format, cli.out.as_deref())?;
     if format != TableFormat::Csv {
         Err(ArgumentError::with_text(
             "--format/--out",
@@ -178,18 +162,8 @@ fn run_viscous(cli: &RunArgs) -> Result<()> {
     let (grid, base) = grid_request(&cli.grid)?;
     let out = cli.out.as_deref().unwrap_or(Path::new(STDOUT_PATH));
     check_output_path(out).context("--out")?;
-    let format = output_format(cli.format, cli.out.as_deref())?;
-    if matches!(format, TableFormat::C81 | TableFormat::AeroDyn) && grid.alpha_deg.len() < 2 {
-        Err(ArgumentError::with_text(
-            "--alpha",
-            "",
-            format!(
-                "--format {} needs at least two angles of attack (its rows are the table's \
-                 lookups, which need two converged points)",
-                format.name()
-            ),
-        ))?;
-    }
+    let format = TableFormat::for_flags(cli.format, cli.out.as_deref())?;
+    format.check_alpha_count(grid.alpha_deg.len())?;
     let ops = cli.grid.shape.ops();
     let sweep = FlapSweep::new(&ops, cli.flap_deg.as_deref(), out, format)?;
     sweep.check_size(&grid)?;
@@ -265,7 +239,7 @@ fn plot_tables(args: &PlotArgs) -> Result<()> {
 
 /// `polargen convert`: read a table and write it in another format.
 fn convert_table(args: &ConvertArgs) -> Result<()> {
-    let format = output_format(args.format, Some(&args.out))?;
+    let format = TableFormat::for_flags(args.format, Some(&args.out))?;
     check_output_path(&args.out).context("--out")?;
     let table =
         with_cd_max(read(&args.table, &args.read)?, args.extension.cd_max).context("--cd-max")?;
@@ -339,17 +313,7 @@ fn point(case: &PointCase, csv: &Path) -> Result<()> {
 /// Solve each transition setting at the α (or Cl) asked for: the airfoil and one labelled
 /// solution per setting.
 fn solve_cases(args: &PointCase) -> Result<(Airfoil, Vec<(String, ViscousSolution)>)> {
-    arguments::distinct("--xtr", &args.xtr)?;
-    if args.xtr.len() > MAX_POINT_CASES {
-        Err(ArgumentError::with_text(
-            "--xtr",
-            "",
-            format!(
-                "{} transition settings: at most {MAX_POINT_CASES} cases per run",
-                args.xtr.len()
-            ),
-        ))?;
-    }
+    arguments::point_cases(&args.xtr)?;
     let settings = args
         .xtr
         .iter()

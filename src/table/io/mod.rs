@@ -15,6 +15,7 @@ mod json_lines;
 mod xfoil_polar;
 
 use super::{PolarTable, TableError};
+use crate::arguments::ArgumentError;
 use crate::compressibility::KarmanTsien;
 use crate::input::read_input;
 use crate::limits::MAX_INPUT_BYTES;
@@ -107,6 +108,30 @@ impl TableFormat {
             "c81" => Ok(Self::C81),
             _ => Err(TableError::UnknownExtension(path.display().to_string())),
         }
+    }
+
+    /// [`for_output`](Self::for_output) for the flags `--format` and `--out`: a name whose
+    /// format cannot be told, or a per-polar format to a stream, is a usage error.
+    pub fn for_flags(format: Option<Self>, out: Option<&Path>) -> Result<Self, ArgumentError> {
+        Self::for_output(format, out)
+            .map_err(|e| ArgumentError::with_text("--format/--out", "", e.to_string()))
+    }
+
+    /// Refuses, as a usage error, a format whose rows are the table's lookups (C81, AeroDyn)
+    /// for a grid of fewer than two angles of attack: lookups need two converged points.
+    pub fn check_alpha_count(self, alphas: usize) -> Result<(), ArgumentError> {
+        if alphas >= 2 || !matches!(self, Self::C81 | Self::AeroDyn) {
+            return Ok(());
+        }
+        Err(ArgumentError::with_text(
+            "--alpha",
+            "",
+            format!(
+                "--format {} needs at least two angles of attack (its rows are the table's \
+                 lookups, which need two converged points)",
+                self.name()
+            ),
+        ))
     }
 
     /// The format a table is written in: `format` when given, else the extension of `out`;
