@@ -211,3 +211,75 @@ fn a_sweep_is_checked_whole_before_any_solve() {
     assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Progress that puts a folder where the sweep's last table is to be written once that table
+/// is solved: the checks before the solves passed, the write then fails.
+struct BlockLastTable {
+    tables: std::sync::atomic::AtomicUsize,
+    count: usize,
+    obstacle: std::path::PathBuf,
+}
+
+impl polargen::progress::Progress for BlockLastTable {
+    fn start(&self, _: &polargen::progress::Work) {}
+    fn advance(&self, _: usize) {}
+    fn finish(&self) {
+        let done = 1 + self
+            .tables
+            .fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+        if done == self.count {
+            std::fs::create_dir_all(self.obstacle.join("inside")).unwrap();
+        }
+    }
+}
+
+/// The tables of a sweep are written together or not at all: when the last table's file
+/// cannot be written, the tables already solved leave no file either (the folder in the way
+/// is all the folder holds).
+#[test]
+fn a_sweep_whose_last_write_fails_leaves_no_table() {
+    use polargen::geometry::ShapeOp;
+    use polargen::table::{FlapSweep, GridSpec, TableFormat, TableJob};
+    let dir = scratch("flap-set");
+    let out = dir.join("t.csv");
+    let ops = [ShapeOp::flap("0.75:0").unwrap()];
+    let sweep = FlapSweep::new(&ops, Some("0,5"), &out, TableFormat::Csv).unwrap();
+    let grid = GridSpec {
+        reynolds: vec![1e6],
+        mach: vec![0.0],
+        alpha_deg: vec![0.0, 2.0],
+    };
+    sweep
+        .check_output(TableFormat::Csv, &grid.reynolds, &grid.mach)
+        .unwrap();
+    let job = TableJob {
+        airfoil: "naca2412",
+        derotate: false,
+        panels: 160,
+        grid: &grid,
+        base: &polargen::viscous::ViscousParams::default(),
+        threads: 1,
+        cd_max: None,
+        format: TableFormat::Csv,
+    };
+    let progress = BlockLastTable {
+        tables: 0.into(),
+        count: 2,
+        obstacle: dir.join("t_flap5.csv"),
+    };
+    let said = std::sync::Mutex::new(Vec::new());
+    let err = job
+        .run(&sweep, &progress, &|line| said.lock().unwrap().push(line))
+        .unwrap_err();
+    let chain: Vec<String> = anyhow::Error::from(err)
+        .chain()
+        .map(|e| e.to_string())
+        .collect();
+    assert!(chain.join(": ").contains("t_flap5.csv"), "{chain:?}");
+    let names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    assert_eq!(names, ["t_flap5.csv"]);
+    assert!(said.lock().unwrap().iter().all(|l| !l.contains(" in ")));
+}

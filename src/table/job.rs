@@ -3,9 +3,12 @@
 //! when no point converged, given its post-stall Cd_max and written — to its own output, or
 //! with the others at the end ([`FlapSweep::write_together`]).
 
-use super::{build_table, with_cd_max, write_table, BuildError, FlapSweep, GridSpec};
+use super::{
+    build_table, with_cd_max, write_table, write_table_into, BuildError, FlapSweep, GridSpec,
+};
 use super::{TableCensus, TableError, TableFormat};
 use crate::geometry::{solver_airfoil, GeometryError};
+use crate::output::{names_a_file, OutputSet};
 use crate::progress::Progress;
 use crate::viscous::ViscousParams;
 use std::path::PathBuf;
@@ -56,10 +59,11 @@ impl TableJob<'_> {
     /// Solves and writes every table of `sweep` in its order. Every member's section is
     /// shaped and checked first, and every table solved before any is written, so a
     /// deflection whose contour is refused, or a table without a converged point, leaves no
-    /// file. `progress` follows each table's build; `say` gets the notes of reading the
-    /// airfoil (`note: …`), each table's census and time (`… in 1.2 s`, after the table is
-    /// written) and the file count of a table or set written as several files (`wrote 4
-    /// files`). Returns the files written.
+    /// file. The files of all tables are then written together or not at all (an
+    /// [`OutputSet`]; one table may go to a stream). `progress` follows each table's build;
+    /// `say` gets the notes of reading the airfoil (`note: …`), each table's census and time
+    /// (`… in 1.2 s`, after every file is written) and the file count of a table or set
+    /// written as several files (`wrote 4 files`). Returns the files written.
     pub fn run(
         &self,
         sweep: &FlapSweep,
@@ -91,28 +95,36 @@ impl TableJob<'_> {
                 .map_err(TableJobError::CdMax)?;
             tables.push((table, summary));
         }
-        // The results first: each table's summary after it is written.
+        // The results first: each table's summary after every file is written. Tables with
+        // files of their own are staged in one set, so that a failed write (a full disk)
+        // leaves none of the sweep's files; one table may go to a stream.
+        let mut set = OutputSet::new();
         let mut together = Vec::new();
         let mut summaries = Vec::new();
-        let mut written = Vec::new();
         for (member, (table, summary)) in sweep.members().iter().zip(tables) {
             match &member.out {
+                Some(path) if !names_a_file(path) => {
+                    write_table(&table, path, Some(self.format))?;
+                    summaries.push((summary, 1));
+                }
                 Some(path) => {
-                    let files = write_table(&table, path, Some(self.format))?;
-                    say(summary);
-                    if files.len() > 1 {
-                        say(format!("wrote {} files", files.len()));
-                    }
-                    written.extend(files);
+                    let files = write_table_into(&table, path, self.format, &mut set)?;
+                    summaries.push((summary, files.len()));
                 }
                 None => {
                     together.push(table);
-                    summaries.push(summary);
+                    summaries.push((summary, 0));
                 }
             }
         }
+        let mut written = set.commit().map_err(TableError::from)?;
         let files = sweep.write_together(&together)?;
-        summaries.into_iter().for_each(say);
+        for (summary, count) in summaries {
+            say(summary);
+            if count > 1 {
+                say(format!("wrote {count} files"));
+            }
+        }
         if !files.is_empty() {
             say(format!("wrote {} files", files.len()));
         }

@@ -114,7 +114,7 @@ pub use io::{
     check_flap_sweep_output, check_lookup_table, check_table_output, flap_sweep_files, parse_c81,
     parse_table, read_lookup_table, read_lookup_table_with, read_table, read_table_with,
     table_files, with_cd_max, write_aerodyn, write_aerodyn_flap_sweep, write_c81, write_table,
-    C81Options, ReadOptions, TableFormat, TableRead, LOOKUP_ALPHA_COVER_DEG,
+    write_table_into, C81Options, ReadOptions, TableFormat, TableRead, LOOKUP_ALPHA_COVER_DEG,
 };
 pub use job::{TableJob, TableJobError};
 pub use lift_slope::{trusted, STALL_SLOPE_FRACTION};

@@ -19,6 +19,7 @@ use crate::arguments::ArgumentError;
 use crate::compressibility::KarmanTsien;
 use crate::input::read_input;
 use crate::limits::MAX_INPUT_BYTES;
+use crate::output::OutputSet;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
@@ -232,6 +233,13 @@ pub fn write_table(
         path,
         table_files(path, format, table.re(), table.mach()).len(),
     )?;
+    if crate::output::names_a_file(path) {
+        let mut set = OutputSet::new();
+        let files = write_table_into(table, path, format, &mut set)?;
+        set.commit()?;
+        return Ok(files);
+    }
+    // A stream: the one file of a one-file table.
     check_readable_size(table, format)?;
     match format {
         TableFormat::Csv => csv::write_csv(table, path).map(|()| vec![path.to_path_buf()]),
@@ -242,6 +250,32 @@ pub fn write_table(
         TableFormat::XfoilPolar => xfoil_polar::write_xfoil_polars(table, path),
         TableFormat::C81 => c81::write_c81(table, path, &C81Options::default()),
         TableFormat::AeroDyn => aerodyn::write_aerodyn(table, path),
+    }
+}
+
+/// The files [`write_table`] writes for `table` at `path` (a file name, not a stream) in
+/// `format`, staged in `set`: they appear when the set is committed, together with its other
+/// files (the tables of a flap sweep), or not at all. Returns the files staged.
+pub fn write_table_into(
+    table: &PolarTable,
+    path: &Path,
+    format: TableFormat,
+    set: &mut OutputSet,
+) -> Result<Vec<PathBuf>, TableError> {
+    check_readable_size(table, format)?;
+    let one =
+        |set: &mut OutputSet,
+         write: fn(&PolarTable, &mut dyn std::io::Write) -> Result<(), TableError>| {
+            set.write(path, |w| write(table, w).map_err(|e| e.in_output(path)))
+                .map(|()| vec![path.to_path_buf()])
+        };
+    match format {
+        TableFormat::Csv => one(set, csv::write_csv_to),
+        TableFormat::Json => one(set, json::write_json_to),
+        TableFormat::JsonLines => one(set, json_lines::write_json_lines_to),
+        TableFormat::XfoilPolar => xfoil_polar::stage_xfoil_polars(table, path, set),
+        TableFormat::C81 => c81::stage_c81(table, path, C81Options::default().outer_step_deg, set),
+        TableFormat::AeroDyn => aerodyn::stage_aerodyn(table, path, set),
     }
 }
 

@@ -178,16 +178,29 @@ pub fn re_label(re: f64) -> String {
 /// ([`OutputSet`]). Two α that the F8.3 field would merge are refused. Returns the files
 /// written.
 pub fn write_xfoil_polars(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf>, TableError> {
-    let polars = table.re().len() * table.mach().len();
     let mut set = OutputSet::new();
+    stage_xfoil_polars(table, path, &mut set)?;
+    Ok(set.commit()?)
+}
+
+/// The files of [`write_xfoil_polars`], staged in `set` (written when it is committed).
+/// Returns the files staged.
+pub(crate) fn stage_xfoil_polars(
+    table: &PolarTable,
+    path: &Path,
+    set: &mut OutputSet,
+) -> Result<Vec<PathBuf>, TableError> {
+    let polars = table.re().len() * table.mach().len();
+    let mut files = Vec::with_capacity(polars);
     for (FlowCondition { reynolds: re, mach }, points) in table.polars() {
         check_alpha_resolution(re, mach, points)?;
         let file = polar_path(path, polars, re, mach);
         set.write(&file, |w| {
             write_polar_to(table.meta(), re, mach, points, w).map_err(|e| e.in_output(&file))
         })?;
+        files.push(file);
     }
-    Ok(set.commit()?)
+    Ok(files)
 }
 
 /// The file of the polar at (`re`, `mach`) of a table of `polars` polars written to `path`:

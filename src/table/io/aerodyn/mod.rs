@@ -63,8 +63,8 @@ pub(crate) use flap::flap_sweep_files;
 pub use flap::write_aerodyn_flap_sweep;
 pub(crate) use read::looks_like_aerodyn;
 pub use read::parse_aerodyn;
-pub(crate) use write::mach_path;
 pub use write::write_aerodyn;
+pub(crate) use write::{mach_path, stage_aerodyn};
 
 use crate::table::{PolarTable, PostStallParams, TableMeta};
 use serde::{Deserialize, Serialize};

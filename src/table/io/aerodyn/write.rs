@@ -268,11 +268,24 @@ pub fn write_aerodyn(table: &PolarTable, path: &Path) -> Result<Vec<PathBuf>, Ta
         return Ok(vec![path.to_path_buf()]);
     }
     let mut set = OutputSet::new();
+    stage_aerodyn(table, path, &mut set)?;
+    Ok(set.commit()?)
+}
+
+/// The files of [`write_aerodyn`], staged in `set` (written when it is committed). Returns
+/// the files staged.
+pub(crate) fn stage_aerodyn(
+    table: &PolarTable,
+    path: &Path,
+    set: &mut OutputSet,
+) -> Result<Vec<PathBuf>, TableError> {
+    let mut files = Vec::with_capacity(table.mach().len());
     for (i_mach, &mach) in table.mach().iter().enumerate() {
         let file = mach_path(path, table.mach().len(), mach);
         set.write(&file, |w| {
             write_aerodyn_to(table, i_mach, w).map_err(|e| e.in_output(&file))
         })?;
+        files.push(file);
     }
-    Ok(set.commit()?)
+    Ok(files)
 }

@@ -63,6 +63,7 @@ mod write;
 pub(crate) use read::looks_like_c81;
 pub use read::{parse_c81, parse_c81_with};
 pub(in crate::table::io) use write::re_path;
+pub(crate) use write::stage_c81;
 pub use write::{write_c81, C81Options};
 
 /// Width of every C81 field.

@@ -249,13 +249,27 @@ pub fn write_c81(
         return Ok(vec![path.to_path_buf()]);
     }
     let mut set = OutputSet::new();
+    stage_c81(table, path, options.outer_step_deg, &mut set)?;
+    Ok(set.commit()?)
+}
+
+/// The files of [`write_c81`] for every Re of `table` (α step `outer_step_deg` outside
+/// ±20°), staged in `set` (written when it is committed). Returns the files staged.
+pub(crate) fn stage_c81(
+    table: &PolarTable,
+    path: &Path,
+    outer_step_deg: f64,
+    set: &mut OutputSet,
+) -> Result<Vec<PathBuf>, TableError> {
+    let mut files = Vec::with_capacity(table.re().len());
     for &re in table.re() {
         let file = re_path(path, table.re().len(), re);
         set.write(&file, |w| {
-            write_c81_to(table, re, options.outer_step_deg, w).map_err(|e| e.in_output(&file))
+            write_c81_to(table, re, outer_step_deg, w).map_err(|e| e.in_output(&file))
         })?;
+        files.push(file);
     }
-    Ok(set.commit()?)
+    Ok(files)
 }
 
 /// The file of the deck at `re` of a table of `count` Reynolds numbers written to `path`:
