@@ -117,6 +117,19 @@ pub struct ViscousSolver {
     fresh_failed_at: Option<f64>,
     /// Work done so far.
     work: SolverWork,
+    /// The attempts' n × n matrices, kept between attempts.
+    memory: AttemptMemory,
+}
+
+/// Memory of an attempt's two n × n matrices (n ≈ 200 stations, ≈ 0.3 MB each), kept by the
+/// solver from one attempt to the next: a new allocation of that size is fresh pages from the
+/// system at every α (page faults and zero-filling were ≈ 10 % of a single polar's time).
+#[derive(Debug, Default)]
+struct AttemptMemory {
+    /// The Schur complement of the block solve ([`BlockSystem::factor_and_solve`]).
+    schur: Vec<f64>,
+    /// dUe/dm between the stations ([`PanelModel::edge_speed_influence_into`]).
+    dv: Vec<f64>,
 }
 
 /// The work a solver has done since it was built: what the cost of a sweep is counted in
@@ -149,6 +162,7 @@ impl ViscousSolver {
             warm: None,
             fresh_failed_at: None,
             work: SolverWork::default(),
+            memory: AttemptMemory::default(),
         })
     }
 
@@ -179,6 +193,7 @@ impl ViscousSolver {
             warm: None,
             fresh_failed_at: None,
             work: SolverWork::default(),
+            memory: AttemptMemory::default(),
         })
     }
 
@@ -284,24 +299,30 @@ impl ViscousSolver {
         let converged = |r: &Result<Attempt, ViscousError>| matches!(r, Ok(a) if a.converged);
         let (max, cap) = (self.params.max_iterations, self.params.predicted_iterations);
         let mut iterations = 0;
+        let mut extra_attempts = 0;
+        let mut memory = std::mem::take(&mut self.memory);
+        let mut attempt = |warm, cap, iterations: &mut u32| {
+            self.attempt(alpha_deg, warm, cap, iterations, &mut memory)
+        };
         let result = match warm {
             // From the predicted state first; where that does not converge within its shorter
             // cap, from the converged state itself, as without a predictor.
             Some(w) => match self.predicted(&w, alpha_deg) {
                 Some(p) => {
-                    let r = self.attempt(alpha_deg, Some(p), cap, &mut iterations);
+                    let r = attempt(Some(p), cap, &mut iterations);
                     if converged(&r) {
                         r
                     } else {
-                        self.work.attempts += 1;
-                        self.attempt(alpha_deg, Some(w), max, &mut iterations)
+                        extra_attempts += 1;
+                        attempt(Some(w), max, &mut iterations)
                     }
                 }
-                None => self.attempt(alpha_deg, Some(w), max, &mut iterations),
+                None => attempt(Some(w), max, &mut iterations),
             },
-            None => self.attempt(alpha_deg, None, max, &mut iterations),
+            None => attempt(None, max, &mut iterations),
         };
-        self.work.attempts += 1;
+        self.memory = memory;
+        self.work.attempts += 1 + extra_attempts;
         self.work.newton_iterations += u64::from(iterations);
         if fresh && !converged(&result) {
             self.fresh_failed_at = Some(alpha_deg);
@@ -361,6 +382,7 @@ impl ViscousSolver {
         warm: Option<WarmState>,
         max_iterations: u32,
         iterations: &mut u32,
+        memory: &mut AttemptMemory,
     ) -> Result<Attempt, ViscousError> {
         let n_af = self.panels.n_airfoil();
         let q_inv = self.panels.speeds(alpha_deg);
@@ -376,7 +398,8 @@ impl ViscousSolver {
         };
         let mut layout = StationLayout::new(&self.panels, &q_start[..n_af])?;
         let mut ue_inv = layout.edge_speed(&q_inv);
-        let mut dv = self.panels.edge_speed_influence(&layout);
+        let dv = &mut memory.dv;
+        self.panels.edge_speed_influence_into(&layout, dv);
         let mut xi_forced = self.forced_xi(&layout);
         let mut state = match warm {
             Some(w) => {
@@ -405,7 +428,7 @@ impl ViscousSolver {
         let mut stagnation_terms =
             !predicted.is_some_and(|p| p.max_change >= self.params.exploded_step);
         // Memory of the n × n Schur complement, reused by every iteration's solve.
-        let mut schur = Vec::new();
+        let schur = &mut memory.schur;
         let mut transition = [None, None];
         // RMS relative changes of the iterations so far, for the cycle check.
         let mut changes = Vec::with_capacity(max_iterations as usize);
@@ -432,7 +455,7 @@ impl ViscousSolver {
             let coupling = Coupling {
                 layout: &layout,
                 ue_inv: &ue_inv,
-                dv: &dv,
+                dv,
                 xi_forced,
                 ante: self.panels.te_gap(),
                 ctau_sqrt_initial: self.params.march.ctau_sqrt_initial,
@@ -448,7 +471,7 @@ impl ViscousSolver {
             turbulent_fraction = asm
                 .transition
                 .map(|t| t.map(|t| t.turbulent_fraction(&layout)));
-            let (system, w) = asm.system.factor_and_solve(&mut schur)?;
+            let (system, w) = asm.system.factor_and_solve(schur)?;
             let upd = apply_update(
                 self.closures(),
                 &coupling,
@@ -463,7 +486,7 @@ impl ViscousSolver {
             let tangent = (residual < self.params.tolerance && self.params.tangent_predictor)
                 .then(|| {
                     let ue_unit = self.panels.q_unit.each_ref().map(|q| layout.edge_speed(q));
-                    Tangent::new(&system, &ue_unit, &dv, alpha_deg).ok()
+                    Tangent::new(&system, &ue_unit, dv, alpha_deg).ok()
                 })
                 .flatten();
             drop(system);
@@ -485,7 +508,7 @@ impl ViscousSolver {
                     fix_crossed(&mut s, &map, &layout, &new_layout, &ue_new);
                     state = s;
                     ue_inv = new_layout.edge_speed(&q_inv);
-                    self.panels.edge_speed_influence_into(&new_layout, &mut dv);
+                    self.panels.edge_speed_influence_into(&new_layout, dv);
                 }
                 layout = new_layout;
                 xi_forced = self.forced_xi(&layout);
