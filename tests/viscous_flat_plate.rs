@@ -2,7 +2,7 @@
 //! Newton machinery (march, assembly, structured solve, update) must reproduce the Blasius
 //! boundary layer, θ = 0.664·x/√Re_x, H = 2.59, Cf = 0.664/√Re_x.
 
-use polargen::inviscid::{PanelGeometry, PanelParams};
+use polargen::inviscid::{PanelGeometry, PanelParams, SourceInfluence};
 use polargen::viscous::{PanelModel, ViscousParams, ViscousSolver};
 
 /// Zero-thickness plate 0 ≤ x ≤ 1 with cosine-clustered nodes, XFOIL node order, and a wake
@@ -45,7 +45,7 @@ fn flat_plate(n_side: usize, n_wake: usize) -> PanelModel {
         wake_x,
         wake_y: vec![0.0; n_wake],
         q_unit: [q0, vec![0.0; nn]],
-        dij: vec![0.0; nn * nn],
+        dij: SourceInfluence::zeros(x.len(), n_wake),
     }
 }
 

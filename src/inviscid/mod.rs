@@ -45,6 +45,6 @@ pub use error::InviscidError;
 pub use polar::inviscid_polar_csv;
 pub use system::{InviscidSolution, PanelSystem, MAX_SECTION_CL, MAX_UNIT_SPEED};
 
-pub(crate) use source_influence::SourceInfluence;
+pub use source_influence::SourceInfluence;
 pub(crate) use system::superpose;
 pub(crate) use wake::Wake;

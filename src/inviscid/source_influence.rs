@@ -18,31 +18,44 @@
 //! * As in XFOIL, wake sources do not enter the Kutta row nor, for a sharp TE, the bisector
 //!   row of the panel system.
 
+use std::sync::Arc;
+
 use faer::linalg::matmul::matmul;
-use faer::{Accum, Mat, MatMut, MatRef, Par};
+use faer::{Accum, Mat, MatRef, Par};
 
 use super::influence::{wake_source_influence, wake_source_psi, LineFrames};
 use super::system::PanelSystem;
 use super::wake::Wake;
 use crate::numerics::simd::reset_simd_state;
 
-/// The source influence matrix D for one airfoil and wake.
+/// The source influence matrix D for one airfoil and wake, (N+NW) × (N+NW), in three blocks:
+/// the airfoil rows' airfoil columns, which do not depend on α and are shared by the models of
+/// every α ([`PanelSystem::airfoil_source_sensitivity`]); the airfoil rows' wake columns; and
+/// the wake rows. Only the last two are built per α.
 #[derive(Clone, Debug)]
 pub struct SourceInfluence {
-    /// D, (N+NW) × (N+NW), row-major: `dij[i·(N+NW) + j] = ∂q_i/∂σ_j`.
-    pub dij: Vec<f64>,
+    /// Airfoil nodes N.
+    n: usize,
+    /// Wake nodes NW.
+    nw: usize,
+    /// Airfoil rows, airfoil columns: N × N row-major, `airfoil[i·N + j] = ∂q_i/∂σ_j`.
+    airfoil: Arc<[f64]>,
+    /// Airfoil rows, wake columns: N × NW row-major.
+    airfoil_wake: Vec<f64>,
+    /// Wake rows: NW × (N+NW) row-major.
+    wake: Vec<f64>,
 }
 
 impl SourceInfluence {
-    /// Builds D for `system` and `wake` (XFOIL QDCALC), O((N+NW)²) kernel evaluations plus
+    /// Builds D for `system` and `wake` (XFOIL QDCALC), O(NW·(N+NW)) kernel evaluations plus
     /// one back-substitution per wake node and an NW×N by N×(N+NW) product.
-    pub fn new(system: &PanelSystem, wake: &Wake) -> Self {
+    pub(crate) fn new(system: &PanelSystem, wake: &Wake) -> Self {
         let g = system.geometry();
         let n = g.len();
         let nw = wake.len();
         let nt = n + nw;
         reset_simd_state();
-        let mut dij = vec![0.0; nt * nt];
+        let airfoil = system.airfoil_source_sensitivity();
 
         // Airfoil rows, wake sources: −dψ/dσ_w on each node row, back-substituted.
         let last_row = if g.te.sharp { n - 1 } else { n };
@@ -61,7 +74,9 @@ impl SourceInfluence {
             }
         });
         // Wake rows: direct source speeds, and (below) dq/dγ for the chain through the airfoil
-        // (the airfoil panels' rows were evaluated with the wake, `Wake::qn_gamma`).
+        // (the airfoil panels' rows were evaluated with the wake, `Wake::qn_gamma`). Row 0 is
+        // filled last.
+        let mut wake_rows = vec![0.0; nw * nt];
         let mut psi_w = vec![0.0; nw];
         let mut qn_w = vec![0.0; nw];
         let mut frames = LineFrames::default();
@@ -69,34 +84,80 @@ impl SourceInfluence {
             let probe = wake.probe(iw);
             let line = wake.source_line();
             wake_source_influence(line, &probe, &mut frames, &mut psi_w, &mut qn_w);
-            let row = &mut dij[(n + iw) * nt..(n + iw + 1) * nt];
+            let row = &mut wake_rows[iw * nt..(iw + 1) * nt];
             row[..n].copy_from_slice(&wake.qn_source[iw * n..(iw + 1) * n]);
             row[n..].copy_from_slice(&qn_w);
         }
-        // Dense linear algebra last: airfoil rows of D from the factorised system.
+        // Dense linear algebra last: airfoil rows' wake columns from the factorised system,
+        // then the wake rows' chain through the airfoil vorticity.
         system.back_substitute(bw.as_mut());
-        let mut d = MatMut::from_row_major_slice_mut(&mut dij, nt, nt);
-        d.as_mut()
-            .submatrix_mut(0, 0, n, n)
-            .copy_from(system.airfoil_source_sensitivity());
-        d.as_mut()
-            .submatrix_mut(0, n, n, nw)
-            .copy_from(bw.as_ref().subrows(0, n));
-        let (top, bottom) = d.split_at_row_mut(n);
-        let c = MatRef::from_row_major_slice(&wake.qn_gamma, nw, n);
-        matmul(bottom, Accum::Add, c, top.as_ref(), 1.0, Par::Seq);
+        let mut airfoil_wake = Vec::with_capacity(n * nw);
+        for i in 0..n {
+            airfoil_wake.extend((0..nw).map(|j| bw[(i, j)]));
+        }
+        let c = MatRef::from_row_major_slice(&wake.qn_gamma[n..], nw - 1, n);
+        let mut bottom = faer::MatMut::from_row_major_slice_mut(&mut wake_rows[nt..], nw - 1, nt);
+        let (mut left, mut right) = bottom.as_mut().split_at_col_mut(n);
+        let a = MatRef::from_row_major_slice(&airfoil, n, n);
+        matmul(left.as_mut(), Accum::Add, c, a, 1.0, Par::Seq);
+        let aw = MatRef::from_row_major_slice(&airfoil_wake, n, nw);
+        matmul(right.as_mut(), Accum::Add, c, aw, 1.0, Par::Seq);
         reset_simd_state();
-        // First wake node carries the TE speed.
-        let (above, first_wake) = dij.split_at_mut(n * nt);
-        first_wake[..nt].copy_from_slice(&above[(n - 1) * nt..]);
-        Self { dij }
+        // First wake node carries the TE speed: D's last airfoil row.
+        wake_rows[..n].copy_from_slice(&airfoil[(n - 1) * n..]);
+        wake_rows[n..nt].copy_from_slice(&airfoil_wake[(n - 1) * nw..]);
+        Self {
+            n,
+            nw,
+            airfoil,
+            airfoil_wake,
+            wake: wake_rows,
+        }
     }
 
-    /// D as a matrix view.
+    /// D = 0 for `n` airfoil and `nw` wake nodes: no coupling between the mass defect and the
+    /// edge speed (a boundary layer on a fixed edge speed).
+    pub fn zeros(n: usize, nw: usize) -> Self {
+        Self {
+            n,
+            nw,
+            airfoil: vec![0.0; n * n].into(),
+            airfoil_wake: vec![0.0; n * nw],
+            wake: vec![0.0; nw * (n + nw)],
+        }
+    }
+
+    /// Number of nodes N + NW (D is square of that size).
+    pub fn n_nodes(&self) -> usize {
+        self.n + self.nw
+    }
+
+    /// Row `i` of D in two parts: its airfoil columns (N) and its wake columns (NW).
+    #[inline]
+    pub fn row(&self, i: usize) -> (&[f64], &[f64]) {
+        let (n, nw) = (self.n, self.nw);
+        if i < n {
+            (
+                &self.airfoil[i * n..(i + 1) * n],
+                &self.airfoil_wake[i * nw..(i + 1) * nw],
+            )
+        } else {
+            self.wake[(i - n) * (n + nw)..(i - n + 1) * (n + nw)].split_at(n)
+        }
+    }
+
+    /// D as a dense matrix.
     #[cfg(test)]
-    pub fn d(&self) -> MatRef<'_, f64> {
-        let nt = (self.dij.len() as f64).sqrt().round() as usize;
-        MatRef::from_row_major_slice(&self.dij, nt, nt)
+    pub fn d(&self) -> Mat<f64> {
+        let nt = self.n_nodes();
+        Mat::from_fn(nt, nt, |i, j| {
+            let (air, wake) = self.row(i);
+            if j < self.n {
+                air[j]
+            } else {
+                wake[j - self.n]
+            }
+        })
     }
 
     /// D·σ: speed change at every node for sources `sigma` (length N + NW).

@@ -12,7 +12,7 @@
 
 use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::Mat;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 use super::contour::{PanelGeometry, PanelParams};
 use super::error::InviscidError;
@@ -51,8 +51,8 @@ pub struct PanelSystem {
     /// Sharp-TE bisector control point (x, y, cos, sin of the bisector angle), if sharp.
     bisector: Option<(f64, f64, f64, f64)>,
     /// dγ_i/dσ_j for the airfoil sources, N × N, computed on first use (XFOIL DIJ airfoil
-    /// block, cached like XFOIL's LADIJ flag), stored transposed.
-    airfoil_dij: OnceLock<Mat<f64>>,
+    /// block, cached like XFOIL's LADIJ flag), row-major.
+    airfoil_dij: OnceLock<Arc<[f64]>>,
 }
 
 /// Inviscid solution at one angle of attack and Mach number.
@@ -326,21 +326,24 @@ impl PanelSystem {
     }
 
     /// Sensitivity of the nodal vorticity (surface speed) to the airfoil nodal sources,
-    /// dγ_i/dσ_j (N × N), from back-substituting the source right-hand sides through the
-    /// factorised system (XFOIL QDCALC airfoil block). Computed once, then cached.
-    pub fn airfoil_source_sensitivity(&self) -> faer::MatRef<'_, f64> {
+    /// dγ_i/dσ_j (N × N, row-major), from back-substituting the source right-hand sides
+    /// through the factorised system (XFOIL QDCALC airfoil block). Computed once, then shared
+    /// by every α's source influence ([`SourceInfluence`](super::SourceInfluence)).
+    pub fn airfoil_source_sensitivity(&self) -> Arc<[f64]> {
         self.airfoil_dij
             .get_or_init(|| {
                 let n = self.n_nodes();
                 let mut b = self.source_rhs.clone();
                 self.lu.solve_in_place(b.as_mut());
                 reset_simd_state();
-                // Kept transposed: the view below is then row-major, as the influence
-                // matrices it is copied into.
-                b.subrows(0, n).transpose().to_owned()
+                // Column j of the solution is row j of the transpose: dγ/dσ row-major.
+                let mut rows = Vec::with_capacity(n * n);
+                for i in 0..n {
+                    rows.extend((0..n).map(|j| b[(i, j)]));
+                }
+                rows.into()
             })
-            .as_ref()
-            .transpose()
+            .clone()
     }
 
     /// System right-hand side of the airfoil sources: entry (i, j) is −dψ_i/dm_j (−d(q_bis)/dm_j

@@ -33,10 +33,10 @@ pub struct PanelModel {
     /// Surface speed at all nodes for α = 0° and α = 90° (XFOIL QINVU, positive on the upper
     /// surface in XFOIL's orientation).
     pub q_unit: [Vec<f64>; 2],
-    /// Row-major (n+nw)² influence matrix: change of the surface speed q_i per unit mass defect
+    /// The (n+nw)² influence matrix: change of the surface speed q_i per unit mass defect
     /// m_j = Ue_j·δ*_j at node j (XFOIL DIJ; the edge speed then changes by −vti_i·vti_j·DIJ_ij·m_j,
     /// XFOIL UESET).
-    pub dij: Vec<f64>,
+    pub dij: SourceInfluence,
 }
 
 impl PanelModel {
@@ -55,7 +55,7 @@ impl PanelModel {
             wake_x: wake.x,
             wake_y: wake.y,
             q_unit,
-            dij: d.dij,
+            dij: d,
         })
     }
 
@@ -92,7 +92,7 @@ impl PanelModel {
         if n < 5
             || self.wake_y.len() != self.wake_x.len()
             || self.q_unit.iter().any(|q| q.len() != nt)
-            || self.dij.len() != nt * nt
+            || self.dij.n_nodes() != nt
             || nt < n + 2
         {
             return Err(ViscousError::BadAirfoil { min: 5, got: n });
@@ -117,13 +117,17 @@ impl PanelModel {
     /// so that a solver rebuilding it when the stagnation point moves reuses the memory, which
     /// is then still in cache.
     pub fn edge_speed_influence_into(&self, layout: &StationLayout, dv: &mut Vec<f64>) {
-        let nn = self.n_nodes();
+        let n_af = self.n_airfoil();
         let n = layout.len();
         dv.resize(n * n, 0.0);
         for (out, sk) in dv.chunks_exact_mut(n).zip(&layout.stations) {
-            let row = &self.dij[sk.node * nn..(sk.node + 1) * nn];
+            let (airfoil, wake) = self.dij.row(sk.node);
             for (o, sj) in out.iter_mut().zip(&layout.stations) {
-                *o = -sk.vti * sj.vti * row[sj.node];
+                let d = match sj.node.checked_sub(n_af) {
+                    None => airfoil[sj.node],
+                    Some(w) => wake[w],
+                };
+                *o = -sk.vti * sj.vti * d;
             }
         }
     }

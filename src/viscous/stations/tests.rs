@@ -28,7 +28,7 @@ fn geometry() -> PanelModel {
         wake_x: vec![1.0, 1.3, 1.8],
         wake_y: vec![0.0; 3],
         q_unit: [vec![0.0; 12], vec![0.0; 12]],
-        dij: vec![0.0; 144],
+        dij: crate::inviscid::SourceInfluence::zeros(9, 3),
     }
 }
 
