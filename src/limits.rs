@@ -135,6 +135,19 @@ pub fn short_number(v: f64) -> String {
     }
 }
 
+/// A number written so that it reads back as the same `f64` and stays short: the plain decimal
+/// (`10`, `0.75`) when it has at most 24 characters, else the shortest exponent form that reads
+/// back exactly (`1e-300`, not a 300-digit decimal). For text that is parsed again, such as the
+/// geometry operations a table records.
+pub fn exact_number(v: f64) -> String {
+    let plain = format!("{v}");
+    if plain.len() <= 24 {
+        plain
+    } else {
+        format!("{v:e}")
+    }
+}
+
 /// A decimal without trailing zeros (and without a trailing point).
 fn trim_zeros(s: &str) -> String {
     if s.contains('.') {
@@ -171,5 +184,28 @@ mod tests {
         assert_eq!(short_number(f64::NAN), "NaN");
         assert_eq!(short_text(&"9".repeat(300)).chars().count(), 40);
         assert_eq!(short_text("0.25"), "0.25");
+    }
+
+    #[test]
+    fn exact_numbers_read_back_and_stay_short() {
+        assert_eq!(exact_number(10.0), "10");
+        assert_eq!(exact_number(-0.75), "-0.75");
+        assert_eq!(exact_number(1e-300), "1e-300");
+        for v in [
+            1e-300,
+            0.1 + 0.2,
+            -7.3e-9,
+            1.23456789012345e20,
+            5e-324,
+            f64::MAX,
+        ] {
+            let text = exact_number(v);
+            assert!(text.len() <= 24, "{text}");
+            assert_eq!(
+                text.parse::<f64>().unwrap().to_bits(),
+                v.to_bits(),
+                "{text}"
+            );
+        }
     }
 }

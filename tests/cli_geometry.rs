@@ -222,3 +222,38 @@ fn the_flags_reach_every_solver_command() {
     assert_eq!(first_row_field(&batch, "geometry"), "thickness 0.15");
     assert_eq!(first_row_field(&batch, "cl"), first_row_field(&thick, "cl"));
 }
+
+/// A tiny value is written so that it reads back exactly and stays short: `1e-300`, not a
+/// 300-digit decimal, in the section's name and in a flap sweep's file name.
+#[test]
+fn tiny_values_keep_short_names() {
+    let o = polargen(&[
+        "geometry",
+        "naca2412",
+        "--flap",
+        "0.75:0:1e-300",
+        "--out",
+        "-",
+    ]);
+    let text = ok(o);
+    assert_eq!(text.lines().next(), Some("NACA 2412 (flap 0.75:0:1e-300)"));
+    let dir = scratch("tiny-flap");
+    let out = dir.join("t.csv");
+    ok(polargen(&[
+        "-q",
+        "--airfoil",
+        "naca2412",
+        "--re",
+        "1e6",
+        "--alpha",
+        "0:2:2",
+        "--flap",
+        "0.75:0",
+        "--flap-deg",
+        "1e-300,5",
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    let table = std::fs::read_to_string(dir.join("t_flap1e-300.csv")).unwrap();
+    assert!(table.contains("(flap 0.75:0:1e-300)"), "{table}");
+}

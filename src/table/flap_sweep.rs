@@ -6,6 +6,7 @@ use super::io::{check_flap_sweep_output, check_table_output, write_aerodyn_flap_
 use super::{PolarTable, TableError, TableFormat};
 use crate::arguments::ArgumentError;
 use crate::geometry::{flap_deflection, flap_deg, with_flap_deflection, ShapeOp};
+use crate::limits::exact_number;
 use crate::output::{names_a_file, OutputError};
 use std::path::{Path, PathBuf};
 
@@ -96,7 +97,8 @@ impl FlapSweep {
             .into_iter()
             .map(|deg| FlapMember {
                 ops: with_flap_deflection(ops, deg),
-                out: (!together).then(|| out.with_file_name(format!("{stem}_flap{deg}{ext}"))),
+                out: (!together)
+                    .then(|| out.with_file_name(format!("{stem}_flap{}{ext}", exact_number(deg)))),
             })
             .collect();
         Ok(Self {

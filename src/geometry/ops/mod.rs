@@ -23,6 +23,7 @@ pub use camber::{LineMaximum, ThicknessCamber};
 use super::spline::ContourSpline;
 use super::{Airfoil, GeometryError};
 use crate::arguments::ArgumentError;
+use crate::limits::exact_number;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -91,16 +92,24 @@ pub enum ShapeOp {
 
 impl fmt::Display for ShapeOp {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // Numbers that read back exactly and stay short (`1e-300`, not 300 digits).
+        let n = |v: &f64| exact_number(*v);
         match self {
-            Self::Thickness { thickness } => write!(f, "thickness {thickness}"),
-            Self::Camber { camber } => write!(f, "camber {camber}"),
-            Self::TeGap { gap, blend } => write!(f, "te-gap {gap}:{blend}"),
+            Self::Thickness { thickness } => write!(f, "thickness {}", n(thickness)),
+            Self::Camber { camber } => write!(f, "camber {}", n(camber)),
+            Self::TeGap { gap, blend } => write!(f, "te-gap {}:{}", n(gap), n(blend)),
             Self::Flap {
                 hinge_x,
                 hinge_y,
                 deflection_deg,
-            } => write!(f, "flap {hinge_x}:{hinge_y}:{deflection_deg}"),
-            Self::Blend { other, fraction } => write!(f, "blend {other}:{fraction}"),
+            } => write!(
+                f,
+                "flap {}:{}:{}",
+                n(hinge_x),
+                n(hinge_y),
+                n(deflection_deg)
+            ),
+            Self::Blend { other, fraction } => write!(f, "blend {other}:{}", n(fraction)),
         }
     }
 }
