@@ -256,4 +256,5 @@ fn tiny_values_keep_short_names() {
     ]));
     let table = std::fs::read_to_string(dir.join("t_flap1e-300.csv")).unwrap();
     assert!(table.contains("(flap 0.75:0:1e-300)"), "{table}");
+    assert_eq!(first_row_field(&table, "flap_deg"), "1e-300");
 }

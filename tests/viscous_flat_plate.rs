@@ -116,3 +116,16 @@ fn blasius_flat_plate() {
     assert_eq!(sol.point.xtr_top, 1.0);
     assert!(sol.point.cl.abs() < 1e-9);
 }
+
+/// A model whose influence matrix splits its rows elsewhere than after the airfoil nodes is
+/// refused (the rows would be read at the wrong columns).
+#[test]
+fn a_misshapen_influence_matrix_is_refused() {
+    let good = flat_plate(81, 30);
+    let nt = good.n_nodes();
+    let bad = PanelModel {
+        dij: SourceInfluence::zeros(nt, 0),
+        ..good
+    };
+    assert!(ViscousSolver::from_panel_model(bad, ViscousParams::default()).is_err());
+}

@@ -48,7 +48,8 @@ pub struct SourceInfluence {
 
 impl SourceInfluence {
     /// Builds D for `system` and `wake` (XFOIL QDCALC), O(NW·(N+NW)) kernel evaluations plus
-    /// one back-substitution per wake node and an NW×N by N×(N+NW) product.
+    /// one back-substitution per wake node and an (NW−1)×N by N×(N+NW) product (in two column
+    /// blocks).
     pub(crate) fn new(system: &PanelSystem, wake: &Wake) -> Self {
         let g = system.geometry();
         let n = g.len();
@@ -130,6 +131,16 @@ impl SourceInfluence {
     /// Number of nodes N + NW (D is square of that size).
     pub fn n_nodes(&self) -> usize {
         self.n + self.nw
+    }
+
+    /// Number of airfoil nodes N (where [`row`](Self::row) splits each row).
+    pub fn n_airfoil(&self) -> usize {
+        self.n
+    }
+
+    /// Bytes of the blocks built per α (the airfoil × airfoil block is shared).
+    pub fn bytes_per_alpha(&self) -> usize {
+        8 * (self.airfoil_wake.len() + self.wake.len())
     }
 
     /// Row `i` of D in two parts: its airfoil columns (N) and its wake columns (NW).

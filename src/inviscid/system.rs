@@ -336,7 +336,7 @@ impl PanelSystem {
                 let mut b = self.source_rhs.clone();
                 self.lu.solve_in_place(b.as_mut());
                 reset_simd_state();
-                // Column j of the solution is row j of the transpose: dγ/dσ row-major.
+                // b(i, j) = dγ_i/dσ_j (column j: the response to source j), copied row-major.
                 let mut rows = Vec::with_capacity(n * n);
                 for i in 0..n {
                     rows.extend((0..n).map(|j| b[(i, j)]));

@@ -101,10 +101,11 @@ impl TableJob<'_> {
         let mut set = OutputSet::new();
         let mut together = Vec::new();
         let mut summaries = Vec::new();
+        let mut streamed = Vec::new();
         for (member, (table, summary)) in sweep.members().iter().zip(tables) {
             match &member.out {
                 Some(path) if !names_a_file(path) => {
-                    write_table(&table, path, Some(self.format))?;
+                    streamed.extend(write_table(&table, path, Some(self.format))?);
                     summaries.push((summary, 1));
                 }
                 Some(path) => {
@@ -117,7 +118,8 @@ impl TableJob<'_> {
                 }
             }
         }
-        let mut written = set.commit().map_err(TableError::from)?;
+        let mut written = streamed;
+        written.extend(set.commit().map_err(TableError::from)?);
         let files = sweep.write_together(&together)?;
         for (summary, count) in summaries {
             say(summary);

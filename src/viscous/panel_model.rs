@@ -86,13 +86,15 @@ impl PanelModel {
     }
 
     /// Rejects a model whose arrays do not fit together: at least 5 airfoil and 2 wake nodes,
-    /// unit speeds and the influence matrix for all of them.
+    /// unit speeds and the influence matrix for all of them, its rows split after the airfoil
+    /// nodes.
     pub(crate) fn check(&self) -> Result<(), ViscousError> {
         let (n, nt) = (self.n_airfoil(), self.n_nodes());
         if n < 5
             || self.wake_y.len() != self.wake_x.len()
             || self.q_unit.iter().any(|q| q.len() != nt)
             || self.dij.n_nodes() != nt
+            || self.dij.n_airfoil() != n
             || nt < n + 2
         {
             return Err(ViscousError::BadAirfoil { min: 5, got: n });
@@ -133,8 +135,9 @@ impl PanelModel {
     }
 }
 
-/// Memory the per-α models of one [`SharedPanels`] may take (their influence matrices); beyond
-/// it, further models are built for the asking solver only and not kept.
+/// Memory the per-α models of one [`SharedPanels`] may take (their blocks of the influence
+/// matrix and node arrays); beyond it, further models are built for the asking solver only and
+/// not kept.
 pub const SHARED_MODEL_BYTES: usize = 256 << 20;
 
 /// One airfoil's panel system and its per-α [`PanelModel`]s, built on first request and then
@@ -163,10 +166,13 @@ impl SharedPanels {
             });
         }
         let system = PanelSystem::new(airfoil)?;
-        // Nodes with the default wake (N/12 + 10 wake nodes, `WakeParams`).
+        // Nodes with the default wake (N/12 + 10 wake nodes, `WakeParams`); a model holds the
+        // per-α blocks of D (NW × (2N + NW), the airfoil block is shared) and a dozen node
+        // arrays (contour, wake, unit speeds).
         let n = system.geometry().len();
-        let nt = n + n / 12 + 10;
-        let capacity = (SHARED_MODEL_BYTES / (8 * nt * nt)).max(1);
+        let nw = n / 12 + 10;
+        let nt = n + nw;
+        let capacity = (SHARED_MODEL_BYTES / (8 * (nw * (n + nt) + 12 * nt))).max(1);
         Ok(Self {
             system,
             models: Mutex::new(HashMap::new()),

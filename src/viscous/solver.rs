@@ -122,8 +122,8 @@ pub struct ViscousSolver {
 }
 
 /// Memory of an attempt's two n × n matrices (n ≈ 200 stations, ≈ 0.3 MB each), kept by the
-/// solver from one attempt to the next: a new allocation of that size is fresh pages from the
-/// system at every α (page faults and zero-filling were ≈ 10 % of a single polar's time).
+/// solver from one attempt to the next: a new allocation of that size would be fresh pages
+/// from the system at every α (page faults and zero-filling).
 #[derive(Debug, Default)]
 struct AttemptMemory {
     /// The Schur complement of the block solve ([`BlockSystem::factor_and_solve`]).

@@ -297,9 +297,10 @@ pub struct RunArgs {
     /// X:Y; each file named <stem>_flap<DEG><ext> (the deflection is the table's flap_deg;
     /// one deflection may go to standard output). Every section is checked and every table
     /// solved before any file is written, and the files appear all together or not at all;
-    /// the tables together count against the points limit of a run. With --format aerodyn several deflections go together: one file per
-    /// Re and Mach (<stem>_Re<RE>_M<MACH><ext>; --out itself for one), holding one table per
-    /// deflection in increasing order, its UserProp the deflection (OpenFAST's AFTabMod 3).
+    /// the tables together count against the points limit of a run. With --format aerodyn
+    /// several deflections go together: one file per Re and Mach (<stem>_Re<RE>_M<MACH><ext>;
+    /// --out itself for one), holding one table per deflection in increasing order, its
+    /// UserProp the deflection (OpenFAST's AFTabMod 3).
     #[arg(
         long,
         value_name = "LIST",

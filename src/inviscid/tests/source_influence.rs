@@ -27,6 +27,7 @@ fn check_columns(name: &str, alpha: f64) {
     let sys = PanelSystem::new(&xfoil_nodes(name)).unwrap();
     let wake = Wake::new(&sys, alpha).unwrap();
     let dij = SourceInfluence::new(&sys, &wake);
+    let d = dij.d();
     let (n, nw) = (sys.n_nodes(), wake.len());
     let nt = n + nw;
     let base = pseudo_random(nt, 7)
@@ -54,16 +55,16 @@ fn check_columns(name: &str, alpha: f64) {
         minus[j] -= h;
         let qp = speeds_with_sources(&sys, &wake, alpha, &plus);
         let qm = speeds_with_sources(&sys, &wake, alpha, &minus);
-        let scale = (0..nt).map(|i| dij.d()[(i, j)].abs()).fold(0.0, f64::max);
+        let scale = (0..nt).map(|i| d[(i, j)].abs()).fold(0.0, f64::max);
         assert!(scale > 0.0, "{name}: column {j} of D is zero");
         for i in 0..nt {
             let fd = (qp[i] - qm[i]) / (2.0 * h);
-            let err = (fd - dij.d()[(i, j)]).abs() / scale;
+            let err = (fd - d[(i, j)]).abs() / scale;
             worst = worst.max(err);
             assert!(
                 err < 1.0e-7,
                 "{name}: D[{i},{j}] = {} but finite difference gives {fd}",
-                dij.d()[(i, j)]
+                d[(i, j)]
             );
         }
     }

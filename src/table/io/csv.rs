@@ -94,7 +94,9 @@ pub(super) fn for_each_record<E>(
     let (shape_names, shape): (&[&str], Vec<String>) = if m.geometry.is_empty() {
         (&[], Vec::new())
     } else {
-        let flap = m.flap_deg().map_or(String::new(), |d| d.to_string());
+        let flap = m
+            .flap_deg()
+            .map_or(String::new(), crate::limits::exact_number);
         (&SHAPE_COLUMNS, vec![shape_ops_text(&m.geometry), flap])
     };
     let mut header = with_ncrit(COLUMNS, &ncrit_names);

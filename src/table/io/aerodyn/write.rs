@@ -128,7 +128,7 @@ pub(super) fn write_file(
     {
         let degs: Vec<String> = entries
             .iter()
-            .map(|(t, _)| user_prop(t).to_string())
+            .map(|(t, _)| crate::limits::exact_number(user_prop(t)))
             .collect();
         let _ = writeln!(
             s,
@@ -197,7 +197,7 @@ fn write_table_block(s: &mut String, k: usize, table: &PolarTable, i_re: usize, 
     } else {
         "no flap: 0"
     };
-    keyed(s, &flap.to_string(), "UserProp", note);
+    keyed(s, &crate::limits::exact_number(flap), "UserProp", note);
     match ua_parameters(table, i_re, i_mach) {
         Some(ua) => {
             keyed(s, "True", "InclUAdata", "unsteady-aero coefficients follow");
