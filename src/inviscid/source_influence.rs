@@ -138,11 +138,6 @@ impl SourceInfluence {
         self.n
     }
 
-    /// Bytes of the blocks built per α (the airfoil × airfoil block is shared).
-    pub fn bytes_per_alpha(&self) -> usize {
-        8 * (self.airfoil_wake.len() + self.wake.len())
-    }
-
     /// Row `i` of D in two parts: its airfoil columns (N) and its wake columns (NW).
     #[inline]
     pub fn row(&self, i: usize) -> (&[f64], &[f64]) {
