@@ -14,6 +14,9 @@ ROUNDS=${ROUNDS:-3}
 XFREF=${XFREF:-tools/xfoil_reference.py}
 cargo build --release --quiet --bin polargen
 PG=${CARGO_TARGET_DIR:-target}/release/polargen
+# The 1-minute load average (other jobs on the machine), printed with the results.
+load_average() { cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo unknown; }
+load_start=$(load_average)
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 yardstick=0
 if [ "${XFOIL:-1}" != 0 ] && command -v xfoil >/dev/null && [ -f "$XFREF" ]; then yardstick=1; fi
@@ -46,3 +49,4 @@ for t in "${tables[@]}"; do
     '{v[NR]=$1} END {m = (NR % 2) ? v[(NR+1)/2] : (v[NR/2] + v[NR/2+1]) / 2;
       printf "%-20s median %6.2f s  min %6.2f s  max %6.2f s  (%d runs)\n", t, m, v[1], v[NR], NR}'
 done
+printf 'load average (1 min) at start %s, at end %s\n' "$load_start" "$(load_average)"

@@ -20,6 +20,9 @@ if [ -z "${PG:-}" ]; then
   cargo build --release --quiet --bin polargen
   PG=${CARGO_TARGET_DIR:-target}/release/polargen
 fi
+# The 1-minute load average (other jobs on the machine), printed with the results.
+load_average() { cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo unknown; }
+load_start=$(load_average)
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 cpu() { local out=$1; shift; /usr/bin/time -f '%U %S' -a -o "$out" "$@"; }
 n_xf=0; n_pg=0
@@ -41,3 +44,4 @@ c_pg=$(awk '{s += $1 + $2} END {print s}' "$tmp/cpu_pg")
 printf 'XFOIL cap %d iterations; CPU per converged point: xfoil %.1f ms, polargen %.1f ms\n' \
   "$ITER" "$(awk "BEGIN{print 1000 * $c_xf / $n_xf}")" "$(awk "BEGIN{print 1000 * $c_pg / $n_pg}")"
 printf 'CPU-time ratio per converged point: %.3f\n' "$(awk "BEGIN{print ($c_pg / $n_pg) / ($c_xf / $n_xf)}")"
+printf 'load average (1 min) at start %s, at end %s\n' "$load_start" "$(load_average)"

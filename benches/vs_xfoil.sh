@@ -19,6 +19,9 @@ if [ -z "${PG:-}" ]; then
   cargo build --release --quiet --bin polargen
   PG=${CARGO_TARGET_DIR:-target}/release/polargen
 fi
+# The 1-minute load average (other jobs on the machine), printed with the results.
+load_average() { cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo unknown; }
+load_start=$(load_average)
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 
 now() { date +%s.%N; }
@@ -49,3 +52,4 @@ c_xf=$(awk '{s += $1 + $2} END {print s}' "$tmp/cpu_xf")
 c_pg=$(awk '{s += $1 + $2} END {print s}' "$tmp/cpu_pg")
 printf 'CPU-time ratio per converged point (robust to load): %.3f\n' \
   "$(awk "BEGIN{print ($c_pg / $n_pg) / ($c_xf / $n_xf)}")"
+printf 'load average (1 min) at start %s, at end %s\n' "$load_start" "$(load_average)"
