@@ -82,12 +82,13 @@ fn one_case_json_and_mu_with_a_reference_rpm() {
     assert!(pitched["rotor_rpm"].as_f64().unwrap() > f("rotor_rpm"));
 }
 
+/// A cases file runs every row in one command and says so on a start line (a single case
+/// runs without one).
 #[test]
 fn cases_csv_runs_table_iii_in_one_command() {
     let (a, t) = (pca2(), goe429());
     let cases = repo("tests/data/pca2/tr515_table3_pitch1.9_faired.csv");
     let out = gyro(&[
-        "-q",
         "autorotate",
         "--aircraft",
         &a,
@@ -97,6 +98,25 @@ fn cases_csv_runs_table_iii_in_one_command() {
         &cases,
     ]);
     assert_ok(&out);
+    let said = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(
+        said.lines()
+            .any(|l| l == "gyro: the rotor in the tunnel: 81 cases"),
+        "{said}"
+    );
+    let one = gyro(&[
+        "autorotate",
+        "--aircraft",
+        &a,
+        "--table",
+        &t,
+        "--alpha-deg",
+        "8",
+        "--speed-m-s",
+        "20",
+    ]);
+    assert_ok(&one);
+    assert!(!String::from_utf8_lossy(&one.stderr).contains("in the tunnel"));
     let text = String::from_utf8(out.stdout).unwrap();
     let mut lines = text.lines();
     let header = lines.next().unwrap();

@@ -5,6 +5,7 @@
 use std::path::PathBuf;
 
 use numpy::IntoPyArray;
+use polargen::progress::Silent;
 use polargen::rotor::{
     autorotate, autorotate_outcomes, check_altitude_m, check_mass_kg, check_speed_kt,
     simulate_takeoff, trim_aircraft, tunnel_case, Aircraft, Atmosphere, Rotor, RotorParams,
@@ -256,7 +257,10 @@ impl PyRotor {
         let rotor = Rotor::from_params(&params);
         let atm = Atmosphere::isa(altitude_m);
         let outcomes = py.detach(|| {
-            shielded(|| autorotate_outcomes(&rotor, section, &cases, &atm, &TrimParams::default()))
+            shielded(|| {
+                let params = TrimParams::default();
+                autorotate_outcomes(&rotor, section, &cases, &atm, &params, &Silent)
+            })
         })?;
         let notes = outcomes.iter().flat_map(|o| o.notes()).collect();
         Ok((json(&outcomes)?, notes))

@@ -1,9 +1,11 @@
 //! `gyro autorotate`: the isolated rotor in a wind tunnel ([`polargen::rotor::autorotate`]);
 //! parse, run, print.
 
+use crate::TOOL;
 use anyhow::Result;
 use clap::Args;
 use polargen::cli::values;
+use polargen::progress::{Progress, Silent};
 use polargen::report::{console as print, ShippedInputs, SHIPPED_TABLE};
 use polargen::rotor::{cases_csv, read_tunnel_cases, tunnel_case, tunnel_run, MAX_ISA_ALTITUDE_M};
 use std::path::PathBuf;
@@ -67,7 +69,19 @@ pub fn run(args: AutorotateArgs, buf: &mut String, say: &dyn Fn(String)) -> Resu
     };
     let section = shipped.table(&args.table, SHIPPED_TABLE)?;
     shipped.notes().into_iter().for_each(say);
-    let outcomes = tunnel_run(&preset.rotor, &section, &cases, args.altitude_m, say)?;
+    // A start line and progress for a cases file of several rows; one case runs quietly.
+    let progress: Box<dyn Progress> = match cases.len() {
+        1 => Box::new(Silent),
+        _ => Box::new(TOOL.progress()),
+    };
+    let outcomes = tunnel_run(
+        &preset.rotor,
+        &section,
+        &cases,
+        args.altitude_m,
+        progress.as_ref(),
+        say,
+    )?;
     match (args.cases.is_some(), args.json) {
         (false, false) => print::autorotation(buf, &outcomes[0].result),
         (false, true) => *buf += &print::json(&outcomes[0].result)?,

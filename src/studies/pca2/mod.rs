@@ -302,6 +302,7 @@ pub fn tunnel_comparison<S: BladeSection + Sync + ?Sized>(
         &cases,
         &tunnel_atmosphere(),
         &TrimParams::default(),
+        &crate::progress::Silent,
     );
     TunnelComparison {
         rows: measured
