@@ -199,13 +199,21 @@ pub(super) fn markdown(
          blade-element lookups over the run: {:.1} % (clean) and {:.1} % (contaminated) \
          outside the tables' range, {:.1} % and {:.1} % on supercritical points, {:.1} % and \
          {:.1} % where the table's points are in massive separation (the 360° extension stands \
-         in for them).",
+         in for them). The separated share is largest at {:.1} kt, {:.1} s after brake release \
+         (clean; lift-off at {:.1} s), and at {:.1} kt, {:.1} s (contaminated; lift-off at \
+         {:.1} s).",
         100.0 * sc.clamped,
         100.0 * sd.clamped,
         100.0 * sc.supercritical,
         100.0 * sd.supercritical,
         100.0 * sc.separated,
         100.0 * sd.separated,
+        c.max_table_separated_speed_kt,
+        c.max_table_separated_time_s,
+        c.liftoff_time_s,
+        d.max_table_separated_speed_kt,
+        d.max_table_separated_time_s,
+        d.liftoff_time_s,
     );
     outln!(o);
     outln!(o, "![Takeoff time histories](takeoff.png)");

@@ -132,6 +132,11 @@ pub struct TakeoffResult {
     /// Largest share over the run of lookups at whose α the table's points are in massive
     /// separation (outside the method's validity; the 360° extension stands in).
     pub max_table_separated_fraction: f64,
+    /// Time from brake release of the rotor solution with that largest separated share \[s\]
+    /// (the first, where several share it).
+    pub max_table_separated_time_s: f64,
+    /// Airspeed of that rotor solution \[kt\].
+    pub max_table_separated_speed_kt: f64,
 }
 
 impl TakeoffResult {
@@ -190,6 +195,8 @@ struct Model<'a, S: BladeSection + ?Sized> {
     liftoff_speed: f64,
     /// The largest lookup shares of the solutions so far.
     validity_peaks: LookupShares,
+    /// Time \[s\] and airspeed \[m/s\] of the first solution with the largest separated share.
+    separated_peak_at: (f64, f64),
 }
 
 impl<S: BladeSection + ?Sized> Model<'_, S> {
@@ -217,7 +224,11 @@ impl<S: BladeSection + ?Sized> Model<'_, S> {
             .rotor
             .solve(self.section, &cond, &mut self.warm)
             .map_err(|source| TakeoffError::Rotor { time_s: t, source })?;
-        self.validity_peaks = self.validity_peaks.max(solution.lookup_shares());
+        let shares = solution.lookup_shares();
+        if shares.separated > self.validity_peaks.separated {
+            self.separated_peak_at = (t, cond.airspeed);
+        }
+        self.validity_peaks = self.validity_peaks.max(shares);
         Ok(solution)
     }
 
@@ -360,6 +371,7 @@ pub fn simulate_takeoff<S: BladeSection + ?Sized>(
         warm: None,
         liftoff_speed: 0.0,
         validity_peaks: LookupShares::default(),
+        separated_peak_at: (0.0, 0.0),
     };
     let dt = to.time_step_s;
     let kt = super::KT_TO_MS;
@@ -433,6 +445,8 @@ pub fn simulate_takeoff<S: BladeSection + ?Sized>(
                 max_table_clamped_fraction: model.validity_peaks.clamped,
                 max_table_supercritical_fraction: model.validity_peaks.supercritical,
                 max_table_separated_fraction: model.validity_peaks.separated,
+                max_table_separated_time_s: model.separated_peak_at.0,
+                max_table_separated_speed_kt: model.separated_peak_at.1 / kt,
             });
         }
         y = next;

@@ -88,7 +88,9 @@ class TakeoffResult(_Fields):
     ``distance_15m_m``, ``max_flapping_deg``, ``liftoff_speed_kt``, ``screen_speed_kt``,
     ``liftoff_rotor_rpm``, ``screen_time_s``, and the largest shares of one rotor solution's
     blade-element lookups over the run ``max_table_clamped_fraction``,
-    ``max_table_supercritical_fraction``, ``max_table_separated_fraction``) and ``history``,
+    ``max_table_supercritical_fraction``, ``max_table_separated_fraction``, with the time
+    ``max_table_separated_time_s`` and airspeed ``max_table_separated_speed_kt`` of the
+    solution with the largest separated share) and ``history``,
     the time history of ``gyro takeoff --history`` as NumPy columns (t, x, h, v, rotor_rpm,
     alpha_r_deg, beta_deg). ``notes`` holds what ``gyro`` prints beside the result (also issued as
     warnings)."""
