@@ -258,3 +258,15 @@ fn tiny_values_keep_short_names() {
     assert!(table.contains("(flap 0.75:0:1e-300)"), "{table}");
     assert_eq!(first_row_field(&table, "flap_deg"), "1e-300");
 }
+
+/// An operation whose contour is refused names the point of the shaped contour, not a line
+/// of a file the user never saw.
+#[test]
+fn a_refused_shaped_contour_names_its_point() {
+    let o = polargen(&["geometry", "naca2412", "--flap", "0.75:0:85", "--out", "-"]);
+    assert_one_line_error(
+        "polargen",
+        &o,
+        "NACA 2412 (flap 0.75:0:85), point 228: the contour folds back",
+    );
+}

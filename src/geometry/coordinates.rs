@@ -9,7 +9,7 @@
 
 use std::path::Path;
 
-use super::error::GeometryError;
+use super::error::{GeometryError, Place};
 use super::validation::{signed_area, validate_contour};
 use super::Airfoil;
 use crate::input::{read_input_or_stdin, text_lines, STDIN_PATH};
@@ -46,6 +46,7 @@ fn parse_number(token: &str, file: &str, line: usize) -> Result<f64, GeometryErr
         Ok(_) => Err(GeometryError::NonFinite {
             file: file.to_string(),
             line,
+            place: Place::Line,
             token: token.to_string(),
         }),
         Err(_) => Err(GeometryError::BadNumber {
@@ -227,7 +228,7 @@ pub fn parse_airfoil_text(
     let x: Vec<f64> = pts.iter().map(|p| p.0).collect();
     let y: Vec<f64> = pts.iter().map(|p| p.1).collect();
     let line_of: Vec<usize> = pts.iter().map(|p| p.2).collect();
-    validate_contour(&x, &y, &line_of, file)?;
+    validate_contour(&x, &y, &line_of, Place::Line, file)?;
 
     let mut airfoil = Airfoil { name, x, y };
     if signed_area(&airfoil.x, &airfoil.y) < 0.0 {

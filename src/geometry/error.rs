@@ -1,10 +1,39 @@
 //! Errors of the geometry layer: coordinate files, NACA designations, the name registry,
 //! splines and paneling. Every message is one line naming the problem (and for files the
-//! file name and line number).
+//! file name and line number, for contours made in memory their name and point number:
+//! [`Place`]).
 
 use crate::input::InputError;
 use crate::limits::{short_number, short_text};
 use thiserror::Error;
+
+/// How an error numbers a contour's points: by their line in a coordinate file, or by their
+/// place (1-based) in a contour made in memory (a shaped or generated section).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Place {
+    /// Line numbers of a file: `foil.dat:12: …`.
+    Line,
+    /// Point numbers of a contour: `NACA 2412 (flap 0.75:0:85), point 228: …`.
+    Point,
+}
+
+impl Place {
+    /// The location after the file or contour name: `:12` or `, point 12`.
+    fn at(self, number: usize) -> String {
+        match self {
+            Self::Line => format!(":{number}"),
+            Self::Point => format!(", point {number}"),
+        }
+    }
+
+    /// What a number counts: `line` or `point`.
+    fn word(self) -> &'static str {
+        match self {
+            Self::Line => "line",
+            Self::Point => "point",
+        }
+    }
+}
 
 /// Everything that can go wrong while building, reading or paneling an airfoil.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -47,12 +76,14 @@ pub enum GeometryError {
         token: String,
     },
     /// A coordinate is NaN or infinite.
-    #[error("{file}:{line}: coordinate '{}' is not finite", short_text(token))]
+    #[error("{file}{}: coordinate '{}' is not finite", place.at(*line), short_text(token))]
     NonFinite {
-        /// File name as given.
+        /// File name as given (or airfoil name).
         file: String,
-        /// 1-based line number.
+        /// 1-based line (or point) number.
         line: usize,
+        /// Whether `line` is a file line or a point number.
+        place: Place,
         /// The token.
         token: String,
     },
@@ -88,16 +119,19 @@ pub enum GeometryError {
     },
     /// A coordinate beyond [`MAX_COORDINATE`](crate::limits::MAX_COORDINATE).
     #[error(
-        "{file}:{line}: coordinate {} is beyond the limit of ±{} (chord units, or a length \
+        "{file}{}: coordinate {} is beyond the limit of ±{} (chord units, or a length \
          unit such as mm)",
+        place.at(*line),
         short_number(*value),
         short_number(*limit)
     )]
     CoordinateTooLarge {
         /// File name (or airfoil name).
         file: String,
-        /// 1-based line number (point number for in-memory airfoils).
+        /// 1-based line (or point) number.
         line: usize,
+        /// Whether `line` is a file line or a point number.
+        place: Place,
         /// The coordinate.
         value: f64,
         /// The limit.
@@ -136,18 +170,22 @@ pub enum GeometryError {
     },
     /// A point repeats an earlier, non-adjacent point.
     #[error(
-        "{file}:{line}: point ({}, {}) repeats the point at line {first_line}: the contour \
-         passes through it twice (listed twice, or folded back)",
+        "{file}{}: point ({}, {}) repeats the point at {} {first_line}: the contour passes \
+         through it twice (listed twice, or folded back)",
+        place.at(*line),
         short_number(*x),
-        short_number(*y)
+        short_number(*y),
+        place.word()
     )]
     RepeatedPoint {
         /// File name (or airfoil name).
         file: String,
-        /// 1-based line number of the repetition.
+        /// 1-based line (or point) number of the repetition.
         line: usize,
-        /// 1-based line number of the first occurrence.
+        /// 1-based line (or point) number of the first occurrence.
         first_line: usize,
+        /// Whether the numbers are file lines or point numbers.
+        place: Place,
         /// x of the point.
         x: f64,
         /// y of the point.
@@ -168,8 +206,9 @@ pub enum GeometryError {
     },
     /// The contour folds back on itself at a point other than the leading edge.
     #[error(
-        "{file}:{line}: the contour folds back at point ({}, {}) (a turn of {:.0}°): a stray \
+        "{file}{}: the contour folds back at point ({}, {}) (a turn of {:.0}°): a stray \
          point or a spike, not a smooth surface",
+        place.at(*line),
         short_number(*x),
         short_number(*y),
         degrees
@@ -177,8 +216,10 @@ pub enum GeometryError {
     Spike {
         /// File name (or airfoil name).
         file: String,
-        /// 1-based line number of the point.
+        /// 1-based line (or point) number of the point.
         line: usize,
+        /// Whether `line` is a file line or a point number.
+        place: Place,
         /// x of the point.
         x: f64,
         /// y of the point.
@@ -189,18 +230,23 @@ pub enum GeometryError {
     /// The contour turns back and forth: many turns against its sense add up to more than a
     /// real section's concave stretches do.
     #[error(
-        "{file}:{line}: the contour zigzags: {reversals} turns against its sense between lines \
-         {line} and {last_line} add up to {degrees:.1}° (a smooth section stays below \
-         {limit:.0}°, and the coordinates' rounding is allowed for): a sawtooth or a noisy \
-         surface, not a smooth one"
+        "{file}{}: the contour zigzags: {reversals} turns against its sense between {}s {line} \
+         and {last_line} add up to {degrees:.1}° (a smooth section stays below {limit:.0}°, and \
+         the coordinates' rounding is allowed for): a sawtooth or a noisy surface, not a smooth \
+         one",
+        place.at(*line),
+        place.word()
     )]
     Zigzag {
         /// File name (or airfoil name).
         file: String,
-        /// 1-based line number of the first point turning against the sense of the contour.
+        /// 1-based line (or point) number of the first point turning against the sense of the
+        /// contour.
         line: usize,
-        /// 1-based line number of the point where the total passed the limit.
+        /// 1-based line (or point) number of the point where the total passed the limit.
         last_line: usize,
+        /// Whether the numbers are file lines or point numbers.
+        place: Place,
         /// Number of points turning against the sense of the contour up to there.
         reversals: usize,
         /// Their turns against the sense of the contour, beyond what rounding explains, added.
@@ -236,15 +282,18 @@ pub enum GeometryError {
     },
     /// Two consecutive points coincide.
     #[error(
-        "{file}:{line}: point ({}, {}) duplicates the previous point",
+        "{file}{}: point ({}, {}) duplicates the previous point",
+        place.at(*line),
         short_number(*x),
         short_number(*y)
     )]
     DuplicatePoint {
         /// File name (or airfoil name).
         file: String,
-        /// 1-based line number (point number for in-memory airfoils).
+        /// 1-based line (or point) number.
         line: usize,
+        /// Whether `line` is a file line or a point number.
+        place: Place,
         /// x of the point.
         x: f64,
         /// y of the point.
@@ -252,10 +301,12 @@ pub enum GeometryError {
     },
     /// Two non-adjacent contour segments cross.
     #[error(
-        "{file}:{line_a}: surfaces cross: segment at line {line_a} intersects segment at line \
+        "{file}{}: surfaces cross: segment at {word} {line_a} intersects segment at {word} \
          {line_b} near ({}, {})",
+        place.at(*line_a),
         short_number(*x),
-        short_number(*y)
+        short_number(*y),
+        word = place.word()
     )]
     SelfIntersecting {
         /// File name (or airfoil name).
@@ -264,6 +315,8 @@ pub enum GeometryError {
         line_a: usize,
         /// Line (or point number) starting the second segment.
         line_b: usize,
+        /// Whether the numbers are file lines or point numbers.
+        place: Place,
         /// Approximate x of the crossing.
         x: f64,
         /// Approximate y of the crossing.

@@ -22,7 +22,7 @@ use crate::limits::short_number;
 pub use coordinates::{
     parse_airfoil_bytes, parse_airfoil_text, read_airfoil_file, to_selig_string, CoordinateFormat,
 };
-pub use error::GeometryError;
+pub use error::{GeometryError, Place};
 pub use naca::{naca, NacaOptions, NacaSection, TrailingEdge};
 pub use ops::{
     apply_shape_ops, flap_deflection, flap_deg, parse_shape_ops, shape_ops_text,
@@ -133,7 +133,7 @@ impl Airfoil {
             });
         }
         let numbers: Vec<usize> = (1..=self.x.len()).collect();
-        validation::validate_contour(&self.x, &self.y, &numbers, &self.name)
+        validation::validate_contour(&self.x, &self.y, &numbers, Place::Point, &self.name)
     }
 
     /// Trailing-edge gap: distance between the first and the last point (XFOIL `GAP`).

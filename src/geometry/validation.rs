@@ -23,7 +23,7 @@
 //!
 //! Errors name the file (or airfoil) and the line (or point number) concerned.
 
-use super::error::GeometryError;
+use super::error::{GeometryError, Place};
 use crate::limits::{MAX_CONTOUR_POINTS, MAX_COORDINATE, MIN_CONTOUR_EXTENT};
 
 /// Minimum number of contour points accepted from a file.
@@ -80,12 +80,13 @@ pub(crate) fn printed_precision(x: &[f64], y: &[f64]) -> f64 {
 /// coordinate near 1.
 const MAX_DECIMALS: i32 = 17;
 
-/// Checks a contour (see the module documentation). `line_of[i]` is the line (or point
-/// number) reported for point i; `file` names the source.
+/// Checks a contour (see the module documentation). `line_of[i]` is the number reported for
+/// point i, a file line or a point number as `place` says; `file` names the source.
 pub(crate) fn validate_contour(
     x: &[f64],
     y: &[f64],
     line_of: &[usize],
+    place: Place,
     file: &str,
 ) -> Result<(), GeometryError> {
     let n = x.len();
@@ -108,6 +109,7 @@ pub(crate) fn validate_contour(
             return Err(GeometryError::NonFinite {
                 file: file.to_string(),
                 line: line_of[i],
+                place,
                 token: format!("({}, {})", x[i], y[i]),
             });
         }
@@ -115,6 +117,7 @@ pub(crate) fn validate_contour(
             return Err(GeometryError::CoordinateTooLarge {
                 file: file.to_string(),
                 line: line_of[i],
+                place,
                 value: if x[i].abs() > y[i].abs() { x[i] } else { y[i] },
                 limit: MAX_COORDINATE,
             });
@@ -154,6 +157,7 @@ pub(crate) fn validate_contour(
             return Err(GeometryError::DuplicatePoint {
                 file: file.to_string(),
                 line: line_of[i],
+                place,
                 x: x[i],
                 y: y[i],
             });
@@ -167,6 +171,7 @@ pub(crate) fn validate_contour(
             file: file.to_string(),
             line: line_of[again],
             first_line: line_of[first],
+            place,
             x: x[again],
             y: y[again],
         });
@@ -176,11 +181,12 @@ pub(crate) fn validate_contour(
             file: file.to_string(),
             line_a: line_of[i],
             line_b: line_of[j],
+            place,
             x: px,
             y: py,
         });
     }
-    check_turning(x, y, line_of, file)?;
+    check_turning(x, y, line_of, place, file)?;
     let gap = (x[0] - x[n - 1]).hypot(y[0] - y[n - 1]);
     if gap > MAX_TE_GAP_RATIO * extent {
         return Err(GeometryError::OpenContour {
@@ -227,7 +233,13 @@ fn vertex_turns<'a>(x: &'a [f64], y: &'a [f64]) -> impl Iterator<Item = f64> + '
 }
 
 /// One turn around the section, no spike, no sawtooth (see the module documentation).
-fn check_turning(x: &[f64], y: &[f64], line_of: &[usize], file: &str) -> Result<(), GeometryError> {
+fn check_turning(
+    x: &[f64],
+    y: &[f64],
+    line_of: &[usize],
+    place: Place,
+    file: &str,
+) -> Result<(), GeometryError> {
     let net: f64 = vertex_turns(x, y).sum::<f64>().to_degrees();
     if net.abs() > MAX_TURNING_DEG {
         return Err(GeometryError::Turning {
@@ -272,6 +284,7 @@ fn check_turning(x: &[f64], y: &[f64], line_of: &[usize], file: &str) -> Result<
         GeometryError::Spike {
             file: file.to_string(),
             line: line_of[tip],
+            place,
             x: x[tip],
             y: y[tip],
             degrees: turn_at(tip).abs(),
@@ -297,6 +310,7 @@ fn check_turning(x: &[f64], y: &[f64], line_of: &[usize], file: &str) -> Result<
                 file: file.to_string(),
                 line: line_of[from],
                 last_line: line_of[i],
+                place,
                 reversals,
                 degrees: reverse_total,
                 limit: MAX_REVERSE_TURNING_DEG,
@@ -489,7 +503,7 @@ mod tests {
         let y: Vec<f64> = (0..n).map(|i| 0.06 * t(i).sin()).collect();
         let lines: Vec<usize> = (1..=n).collect();
         let start = std::time::Instant::now();
-        validate_contour(&x, &y, &lines, "ellipse").unwrap();
+        validate_contour(&x, &y, &lines, Place::Line, "ellipse").unwrap();
         assert!(start.elapsed().as_secs_f64() < 0.5, "{:?}", start.elapsed());
     }
 }
