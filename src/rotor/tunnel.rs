@@ -20,7 +20,7 @@ use super::{rad_s_to_rpm, rpm_to_rad_s};
 use crate::arguments::ArgumentError;
 use crate::input::{read_input_or_stdin, InputError};
 use crate::limits::short_number;
-use crate::progress::{Progress, Work};
+use crate::progress::{Progress, Silent, Work};
 use rayon::prelude::*;
 use serde::Serialize;
 use std::path::Path;
@@ -259,8 +259,8 @@ pub fn autorotate<S: BladeSection + ?Sized>(
 }
 
 /// [`autorotate`] for every case, in parallel, in the order given; `progress` follows the
-/// cases (no estimate at the start: a case takes 5–16 ms of CPU, by rotor, and the progress
-/// lines estimate what is left from the cases done).
+/// cases when there are several (no estimate at the start: a case takes 5–16 ms of CPU, by
+/// rotor, and the progress lines estimate what is left from the cases done).
 pub fn autorotate_cases<S: BladeSection + Sync + ?Sized>(
     rotor: &Rotor,
     section: &S,
@@ -269,6 +269,7 @@ pub fn autorotate_cases<S: BladeSection + Sync + ?Sized>(
     params: &TrimParams,
     progress: &dyn Progress,
 ) -> Vec<Result<Autorotation, TrimError>> {
+    let progress: &dyn Progress = if cases.len() > 1 { progress } else { &Silent };
     progress.start(&Work::new(cases.len(), "cases", "the rotor in the tunnel"));
     let results = cases
         .par_iter()

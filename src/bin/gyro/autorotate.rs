@@ -5,7 +5,6 @@ use crate::TOOL;
 use anyhow::Result;
 use clap::Args;
 use polargen::cli::values;
-use polargen::progress::{Progress, Silent};
 use polargen::report::{console as print, ShippedInputs, SHIPPED_TABLE};
 use polargen::rotor::{cases_csv, read_tunnel_cases, tunnel_case, tunnel_run, MAX_ISA_ALTITUDE_M};
 use std::path::PathBuf;
@@ -69,17 +68,13 @@ pub fn run(args: AutorotateArgs, buf: &mut String, say: &dyn Fn(String)) -> Resu
     };
     let section = shipped.table(&args.table, SHIPPED_TABLE)?;
     shipped.notes().into_iter().for_each(say);
-    // A start line and progress for a cases file of several rows; one case runs quietly.
-    let progress: Box<dyn Progress> = match cases.len() {
-        1 => Box::new(Silent),
-        _ => Box::new(TOOL.progress()),
-    };
+    let progress = TOOL.progress();
     let outcomes = tunnel_run(
         &preset.rotor,
         &section,
         &cases,
         args.altitude_m,
-        progress.as_ref(),
+        &progress,
         say,
     )?;
     match (args.cases.is_some(), args.json) {
