@@ -9,7 +9,7 @@ use polargen::report::console::compare_rows;
 use polargen::report::ShippedInputs;
 use polargen::rotor::check_sweep_speeds;
 use polargen::studies::contamination::ContaminationOptions;
-use polargen::studies::paper::{paper_runs, SpeedSweep, CASE_LABELS};
+use polargen::studies::paper::{paper_runs, paper_runs_notes, SpeedSweep};
 use polargen::studies::wing::WingOptions;
 use polargen::studies::{StudyKind, StudyRequest};
 use pyo3::prelude::*;
@@ -50,12 +50,7 @@ pub fn rotor_compare(
     let ac = &aircraft.inner;
     let runs = py.detach(|| shielded(|| paper_runs(ac, c, d)))?;
     let runs = runs.map_err(|e| raise(None, e))?;
-    let notes = runs
-        .iter()
-        .zip(CASE_LABELS)
-        .flat_map(|(run, case)| run.notes(case))
-        .collect();
-    Ok((json(&compare_rows(&runs))?, notes))
+    Ok((json(&compare_rows(&runs))?, paper_runs_notes(&runs)))
 }
 
 /// A study as `gyro study KIND --json` runs it: (JSON records, notes, files written). The

@@ -68,8 +68,7 @@ pub fn rotor_figure(
         } => {
             let curves = blade_alpha_cases(aircraft, sections, labels, speed_kt, radius, samples)?;
             for (label, c) in labels.iter().zip(&curves) {
-                let at = c.lookup_shares.notes(&format!("at {speed_kt:.1} kt"));
-                case_notes(label, &at, &[]).into_iter().for_each(say);
+                case_notes(label, &c.notes(), &[]).into_iter().for_each(say);
             }
             let refs: Vec<(&str, &[(f64, f64)])> = labels
                 .iter()

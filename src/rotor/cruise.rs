@@ -136,6 +136,7 @@ pub fn cruise_blade_alpha<S: BladeSection + ?Sized>(
     )?;
     Ok(BladeAlpha {
         points: rotor.alpha_at_radius(&solution, r_over_r, samples),
+        speed_kt,
         lookup_shares: solution.lookup_shares(),
     })
 }
@@ -145,6 +146,17 @@ pub fn cruise_blade_alpha<S: BladeSection + ?Sized>(
 pub struct BladeAlpha {
     /// (ψ \[deg\], α \[deg\]) pairs.
     pub points: Vec<(f64, f64)>,
+    /// Airspeed of the trim \[kt\].
+    pub speed_kt: f64,
     /// The trim's blade-element lookups outside the table or the method's validity.
     pub lookup_shares: LookupShares,
+}
+
+impl BladeAlpha {
+    /// What a user should read beside the curve: the trim's lookups outside the table or the
+    /// method's validity (`note: at 60.0 kt, …`, as a trim's notes say them).
+    pub fn notes(&self) -> Vec<String> {
+        self.lookup_shares
+            .notes(&format!("at {:.1} kt", self.speed_kt))
+    }
 }

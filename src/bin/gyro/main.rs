@@ -20,7 +20,7 @@ use polargen::rotor::{
     check_blade_radius, checked_sweep_speeds, cruise_blade_alpha, simulate_takeoff, trim_aircraft,
     Aircraft, TrimParams, MAX_ISA_ALTITUDE_M,
 };
-use polargen::studies::paper::{paper_runs, SpeedSweep, CASE_LABELS};
+use polargen::studies::paper::{paper_runs, paper_runs_notes, SpeedSweep};
 use polargen::table::PolarTable;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -280,9 +280,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             let d = shipped.table(&contaminated, SHIPPED_CONTAMINATED_TABLE)?;
             note_shipped(shipped);
             let runs = paper_runs(&ac, &c, &d)?;
-            for (run, case) in runs.iter().zip(CASE_LABELS) {
-                run.notes(case).iter().for_each(|n| TOOL.say(n));
-            }
+            paper_runs_notes(&runs).iter().for_each(|n| TOOL.say(n));
             if json {
                 print::compare_json(buf, &runs)?;
             } else {
@@ -314,12 +312,7 @@ fn run(cli: Cli, buf: &mut String) -> Result<()> {
             let (ac, (), section) = load(&inputs, None, check)?;
             let params = TrimParams::default();
             let curve = cruise_blade_alpha(&ac, &section, speed_kt, 0.0, radius, samples, &params)?;
-            let at = format!("at {speed_kt:.1} kt");
-            curve
-                .lookup_shares
-                .notes(&at)
-                .iter()
-                .for_each(|n| TOOL.say(n));
+            curve.notes().iter().for_each(|n| TOOL.say(n));
             print::blade_alpha(buf, &curve.points);
         }
         Command::Autorotate(args) => autorotate::run(args, buf, &|n| TOOL.say(n))?,

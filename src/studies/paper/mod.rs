@@ -127,6 +127,14 @@ pub fn paper_runs<S: BladeSection + Sync + ?Sized>(
     Ok([c?, d?])
 }
 
+/// The notes of [`paper_runs`]' two runs, each after its case label (`clean: note: …`).
+pub fn paper_runs_notes(runs: &[PaperRun; 2]) -> Vec<String> {
+    runs.iter()
+        .zip(CASE_LABELS)
+        .flat_map(|(run, case)| run.notes(case))
+        .collect()
+}
+
 /// The trims of a speed sweep at the preset's mass, ISA sea level.
 #[derive(Debug)]
 pub struct SpeedSweep {
