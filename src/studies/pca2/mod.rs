@@ -319,20 +319,7 @@ pub fn tunnel_comparison<S: BladeSection + Sync + ?Sized>(
 /// The measured flight points of Fig. 7: (μ, C_T, rotor rpm), C_T and rpm read at their own μ
 /// and paired in order of μ.
 pub fn flight_points() -> Vec<(f64, f64, f64)> {
-    let mut reader = csv::Reader::from_reader(FLIGHT_ROTOR_CSV.as_bytes());
-    let data: Vec<(String, f64, f64)> = reader
-        .deserialize::<(String, f64, f64)>()
-        .filter_map(Result::ok)
-        .collect();
-    let series = |name: &str| {
-        let mut s: Vec<(f64, f64)> = data
-            .iter()
-            .filter(|d| d.0 == name)
-            .map(|d| (d.1, d.2))
-            .collect();
-        s.sort_by(|a, b| a.0.total_cmp(&b.0));
-        s
-    };
+    let series = |name| quantity_series(FLIGHT_ROTOR_CSV, name);
     series("ct")
         .into_iter()
         .zip(series("rotor_rpm"))
@@ -343,20 +330,20 @@ pub fn flight_points() -> Vec<(f64, f64, f64)> {
 /// The measured coning and flapping of Fig. 8 (degrees, NACA signs) as (μ, value) series:
 /// a0, a1, b1.
 pub fn flight_flapping() -> [Vec<(f64, f64)>; 3] {
-    let mut reader = csv::Reader::from_reader(FLIGHT_FLAPPING_CSV.as_bytes());
-    let data: Vec<(String, f64, f64)> = reader
+    ["a0_deg", "a1_deg", "b1_deg"].map(|name| quantity_series(FLIGHT_FLAPPING_CSV, name))
+}
+
+/// The (μ, value) pairs of quantity `name` in a long-form CSV of `quantity,mu,value` rows, in
+/// order of μ.
+fn quantity_series(csv_text: &str, name: &str) -> Vec<(f64, f64)> {
+    let mut s: Vec<(f64, f64)> = csv::Reader::from_reader(csv_text.as_bytes())
         .deserialize::<(String, f64, f64)>()
         .filter_map(Result::ok)
+        .filter(|d| d.0 == name)
+        .map(|d| (d.1, d.2))
         .collect();
-    ["a0_deg", "a1_deg", "b1_deg"].map(|name| {
-        let mut s: Vec<(f64, f64)> = data
-            .iter()
-            .filter(|d| d.0 == name)
-            .map(|d| (d.1, d.2))
-            .collect();
-        s.sort_by(|a, b| a.0.total_cmp(&b.0));
-        s
-    })
+    s.sort_by(|a, b| a.0.total_cmp(&b.0));
+    s
 }
 
 /// The model trimmed at one flight point of NACA Report 487.
