@@ -358,7 +358,7 @@ fn unknown_x() -> f64 {
 /// depending on α alone (α 30°, Re 2·10⁵: C_l 1.139 after a sweep from 0°, 0.674 from 20°,
 /// both converged) and their drag falls to about half a flat plate's (Hoerner 1965, ch. 3).
 /// In the shipped tables the first point past the bound lies at or past the first C_l
-/// extremum of its α branch on 534 of 588 branches, and on a stall plateau on the others;
+/// extremum of its α branch on 536 of 590 branches, and on a stall plateau on the others;
 /// none lies on a linear part of a lift curve.
 pub const MASSIVE_SEPARATION_XSEP: f64 = 0.5;
 

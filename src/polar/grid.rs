@@ -1,14 +1,23 @@
-//! Many polars at once: one warm-started sweep per (Re, M) node, run in parallel.
+//! Many polars at once: one warm-started sweep per (Re, M) node, run in parallel, and the
+//! holes of each series filled from the polar below.
 //!
 //! Each node gets its own two solvers (no shared mutable state): one for the upward α branch
 //! and one for the downward branch, which run in parallel once the start point has converged
-//! ([`sweep_split`]). The points of a node do not depend on which thread ran them or in which
-//! order: the output is identical for any thread count.
+//! ([`sweep_split`]). Once every node's march is done, the points a march left unconverged are
+//! solved once more from the state the same α converged to at the next lower Reynolds number
+//! of the node's series ([`GridNode::series`], [`fill_from_below`]), series by series from the
+//! lowest Reynolds number up. The points of a node do not depend on which thread ran them or in
+//! which order: the output is identical for any thread count.
 
 use rayon::prelude::*;
 
-use super::sweep::{sweep_split, SweepParams, WarmStartSolver};
+use super::sweep::{fill_from_below, sweep_split, SeriesStates, SweepParams, WarmStartSolver};
 use crate::section::PolarPoint;
+
+/// Largest grid (points) whose converged states are kept for filling the holes of its series:
+/// a state is ≈ 16 kB at the default 160 panels, so the default 3 904-point grid keeps
+/// ≈ 60 MB until its holes are filled. A larger grid is solved without the filling.
+pub const MAX_SERIES_FILL_POINTS: usize = 16_384;
 
 /// One polar a grid asks for: its condition and its angles of attack.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -19,6 +28,10 @@ pub struct GridNode<'a> {
     pub mach: f64,
     /// Angles of attack \[deg\].
     pub alphas: &'a [f64],
+    /// Nodes with the same series and Mach number differ in their Reynolds number alone (the
+    /// same trips and N_crit): a point one of them leaves unconverged is solved once more from
+    /// the state its α converged to at the next lower Reynolds number of the series.
+    pub series: usize,
 }
 
 /// One computed polar of a grid.
@@ -33,11 +46,13 @@ pub struct GridPolar {
 }
 
 /// Run one sweep over its α values for every node on a pool of `threads` threads
-/// (0 = all cores). A node runs at most two tasks at once (its two α branches), so the pool
-/// never gets more than two threads per node: more could not be used, and thousands of idle
-/// threads cost seconds to start. `make_solver(i)` builds the solver of `nodes[i]`; a node whose
-/// solver cannot be built fails the whole grid with that error. `on_polar_done` is called after each node
-/// (from worker threads; for progress display). Polars come back in the order of `nodes`.
+/// (0 = all cores), then fill the holes of each series ([`SweepParams::series_retry`]; not for a
+/// grid of more than [`MAX_SERIES_FILL_POINTS`] points). A node runs at most two tasks at once
+/// (its two α branches), so the pool never gets more than two threads per node: more could not
+/// be used, and thousands of idle threads cost seconds to start. `make_solver(i)` builds the
+/// solver of `nodes[i]`; a node whose solver cannot be built fails the whole grid with that
+/// error. `on_polar_done` is called after each node's march (from worker threads; for progress
+/// display). Polars come back in the order of `nodes`.
 pub fn run_grid<S, E, F, P>(
     nodes: &[GridNode<'_>],
     threads: usize,
@@ -52,8 +67,13 @@ where
     F: Fn(usize) -> Result<S, E> + Sync,
     P: Fn(&GridPolar) + Sync,
 {
+    let points: usize = nodes.iter().map(|n| n.alphas.len()).sum();
+    let chains = series_chains(nodes);
+    let fill = params.series_retry
+        && points <= MAX_SERIES_FILL_POINTS
+        && chains.iter().any(|c| c.len() > 1);
     let work = || {
-        nodes
+        let marched = nodes
             .par_iter()
             .with_max_len(1)
             .enumerate()
@@ -62,15 +82,21 @@ where
                 // the last polars of a grid do not leave a core idle.
                 let mut solver = make_solver(i)?;
                 let second = make_solver(i)?;
+                let (points, states) =
+                    sweep_split(&mut solver, Some(second), node.alphas, params, fill);
                 let polar = GridPolar {
                     re: node.re,
                     mach: node.mach,
-                    points: sweep_split(&mut solver, Some(second), node.alphas, params),
+                    points,
                 };
                 on_polar_done(&polar);
-                Ok(polar)
+                Ok(Some((polar, states)))
             })
-            .collect::<Result<Vec<_>, E>>()
+            .collect::<Result<Vec<_>, E>>()?;
+        if !fill {
+            return Ok(marched.into_iter().flatten().map(|(p, _)| p).collect());
+        }
+        fill_series(nodes, &chains, marched, &make_solver)
     };
     let threads = if threads == 0 {
         0
@@ -83,6 +109,92 @@ where
         // (one thread per core); the output does not depend on the thread count.
         Err(_) => work(),
     }
+}
+
+/// A node's polar after its march, with the states it converged to.
+type MarchedPolar<T> = (GridPolar, SeriesStates<T>);
+
+/// The marched polars of `nodes` with each series' holes filled from the polar below
+/// ([`fill_from_below`]), the series in parallel, each from its lowest Reynolds number up.
+fn fill_series<S, E, F>(
+    nodes: &[GridNode<'_>],
+    chains: &[Vec<usize>],
+    mut marched: Vec<Option<MarchedPolar<S::State>>>,
+    make_solver: &F,
+) -> Result<Vec<GridPolar>, E>
+where
+    S: WarmStartSolver + Send,
+    S::State: Send,
+    E: Send,
+    F: Fn(usize) -> Result<S, E> + Sync,
+{
+    let taken: Vec<Vec<(usize, MarchedPolar<S::State>)>> = chains
+        .iter()
+        .map(|chain| {
+            chain
+                .iter()
+                .map(|&i| (i, marched[i].take().expect("every node is in one series")))
+                .collect()
+        })
+        .collect();
+    let filled = taken
+        .into_par_iter()
+        .with_max_len(1)
+        .map(|mut chain| {
+            for k in 1..chain.len() {
+                let (lower, upper) = chain.split_at_mut(k);
+                let below = &lower[k - 1].1 .1;
+                let (i, (polar, states)) = &mut upper[0];
+                let holes = polar
+                    .points
+                    .iter()
+                    .zip(nodes[*i].alphas)
+                    .any(|(p, &a)| !p.converged && below.get(a).is_some());
+                if holes {
+                    let mut solver = make_solver(*i)?;
+                    fill_from_below(
+                        &mut solver,
+                        nodes[*i].alphas,
+                        &mut polar.points,
+                        states,
+                        below,
+                    );
+                }
+                // The states below are not needed any more.
+                lower[k - 1].1 .1 = SeriesStates::default();
+            }
+            Ok(chain)
+        })
+        .collect::<Result<Vec<_>, E>>()?;
+    let mut polars: Vec<Option<GridPolar>> = vec![None; nodes.len()];
+    for (i, (polar, _)) in filled.into_iter().flatten() {
+        polars[i] = Some(polar);
+    }
+    Ok(polars
+        .into_iter()
+        .map(|p| p.expect("every node is in one series"))
+        .collect())
+}
+
+/// The nodes of each series ([`GridNode::series`] and the Mach number's bits), in order of
+/// Reynolds number (equal ones in the order of `nodes`); series in the order of their first
+/// node.
+fn series_chains(nodes: &[GridNode<'_>]) -> Vec<Vec<usize>> {
+    let mut chains: Vec<((usize, u64), Vec<usize>)> = Vec::new();
+    for (i, node) in nodes.iter().enumerate() {
+        let key = (node.series, (node.mach + 0.0).to_bits());
+        match chains.iter_mut().find(|(k, _)| *k == key) {
+            Some((_, chain)) => chain.push(i),
+            None => chains.push((key, vec![i])),
+        }
+    }
+    chains
+        .into_iter()
+        .map(|(_, mut chain)| {
+            chain.sort_by(|&a, &b| nodes[a].re.total_cmp(&nodes[b].re));
+            chain
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -126,7 +238,12 @@ mod tests {
     fn grid_nodes<'a>(nodes: &[(f64, f64)], alphas: &'a [f64]) -> Vec<GridNode<'a>> {
         nodes
             .iter()
-            .map(|&(re, mach)| GridNode { re, mach, alphas })
+            .map(|&(re, mach)| GridNode {
+                re,
+                mach,
+                alphas,
+                series: 0,
+            })
             .collect()
     }
 
@@ -185,6 +302,92 @@ mod tests {
         assert_eq!(pool_size(&[(1e6, 0.0)], 100_000), 2);
         assert_eq!(pool_size(&[(1e6, 0.0), (2e6, 0.0)], 100_000), 4);
         assert_eq!(pool_size(&[(1e6, 0.0), (2e6, 0.0)], 3), 3);
+    }
+
+    /// A solver whose march fails at α in `bad`: it converges from a state within 1° at its
+    /// own Reynolds number, or from a state at the same α of another Reynolds number (a series
+    /// start), but never where `bad` holds unless started from such a series state.
+    struct Series {
+        re: f64,
+        bad: Vec<f64>,
+        state: Option<(f64, f64)>,
+    }
+
+    impl WarmStartSolver for Series {
+        type State = Option<(f64, f64)>;
+        fn solve(&mut self, alpha: f64) -> PolarPoint {
+            let from_series = matches!(self.state, Some((a, re)) if a == alpha && re != self.re);
+            let near =
+                matches!(self.state, Some((a, re)) if (a - alpha).abs() <= 1.0 && re == self.re);
+            let fresh = self.state.is_none() && alpha == 0.0;
+            let ok = from_series || (near || fresh) && !self.bad.contains(&alpha);
+            self.state = ok.then_some((alpha, self.re));
+            let mut p = Analytic {
+                re: self.re,
+                mach: 0.0,
+            }
+            .solve(alpha);
+            p.converged = ok;
+            p
+        }
+        fn reset(&mut self) {
+            self.state = None;
+        }
+        fn save(&self) -> Self::State {
+            self.state
+        }
+        fn restore(&mut self, s: &Self::State) {
+            self.state = *s;
+        }
+    }
+
+    #[test]
+    fn holes_are_filled_from_the_reynolds_number_below() {
+        let alphas = [0.0, 1.0, 2.0, 3.0];
+        // Re 2e6 and 3e6 fail at 2° in their march (and so at 3°, 2° away from 1°); 3e6 is in
+        // another series (its Mach number), so nothing below it fills its holes.
+        let nodes = grid_nodes(&[(1e6, 0.0), (2e6, 0.0), (3e6, 0.3)], &alphas);
+        let run = |series_retry, threads| {
+            let params = SweepParams {
+                series_retry,
+                ..SweepParams::default()
+            };
+            let make = |i: usize| {
+                Ok::<_, ()>(Series {
+                    re: nodes[i].re,
+                    bad: if i == 0 { vec![] } else { vec![2.0] },
+                    state: None,
+                })
+            };
+            run_grid(&nodes, threads, &params, make, |_| {}).unwrap()
+        };
+        let converged = |g: &[GridPolar]| -> Vec<Vec<bool>> {
+            g.iter()
+                .map(|p| p.points.iter().map(|q| q.converged).collect())
+                .collect()
+        };
+        let alone = run(false, 1);
+        assert_eq!(
+            converged(&alone),
+            [
+                [true; 4],
+                [true, true, false, false],
+                [true, true, false, false]
+            ]
+        );
+        let filled = run(true, 1);
+        assert_eq!(
+            converged(&filled),
+            [[true; 4], [true; 4], [true, true, false, false]]
+        );
+        // The marches are the same: only the holes changed.
+        for (a, f) in alone.iter().zip(&filled) {
+            for (p, q) in a.points.iter().zip(&f.points) {
+                assert!(!p.converged || p == q);
+            }
+        }
+        assert_eq!(filled, run(true, 2));
+        assert_eq!(filled, run(true, 0));
     }
 
     #[test]

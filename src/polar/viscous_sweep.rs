@@ -24,4 +24,8 @@ impl WarmStartSolver for ViscousSolver {
     fn restore(&mut self, state: &WarmStart) {
         self.set_warm_start(state);
     }
+
+    fn series_state(&self) -> WarmStart {
+        self.settled_state()
+    }
 }

@@ -229,6 +229,7 @@ pub fn build_table_cancellable(
             re: c.reynolds,
             mach: c.mach,
             alphas: &grid.alpha_deg,
+            series: 0,
         })
         .collect();
     let params = |i: usize| ViscousParams {

@@ -124,10 +124,13 @@ pub fn solve_points(
     let nodes: Vec<GridNode<'_>> = plan
         .polars
         .iter()
-        .map(|(q, alphas)| GridNode {
+        .enumerate()
+        .map(|(i, (q, alphas))| GridNode {
             re: q.reynolds,
             mach: q.mach,
             alphas,
+            // Each condition its own series: its points are those of its polar alone.
+            series: i,
         })
         .collect();
     let params = |i: usize| {

@@ -213,6 +213,19 @@ impl ViscousSolver {
         WarmStart(self.warm.clone())
     }
 
+    /// [`warm_start`](Self::warm_start) without the state's tangent along α: for a start at the
+    /// same α under another condition (a grid's series, [`crate::polar::run_grid`]), where
+    /// there is no step to predict.
+    pub fn settled_state(&self) -> WarmStart {
+        WarmStart(self.warm.as_ref().map(|w| WarmState {
+            layout: w.layout.clone(),
+            state: w.state.clone(),
+            tangent: None,
+            turbulent_fraction: w.turbulent_fraction,
+            predicted: w.predicted,
+        }))
+    }
+
     /// Return to a snapshot taken with [`warm_start`](Self::warm_start).
     pub fn set_warm_start(&mut self, snapshot: &WarmStart) {
         self.warm = snapshot.0.clone();
