@@ -45,16 +45,17 @@ fn default_grid_shape_and_convergence() {
 }
 
 /// The Clark Y family of the propeller (polars/README.md): the default grid, and a converged
-/// share that falls with thickness (99.5 % at 8 %, 81.5 % at 44 %: the thick sections separate
-/// at smaller |α|).
+/// share that is lower for the thick sections, which separate at smaller |α| (99.8 % at 8 %,
+/// 92.8 % at 36 %, 94.6 % at 44 %; the marches alone converge 83.1 % and 81.5 % at 36 % and
+/// 44 %, the series filling of `polar::run_grid` the rest).
 #[test]
 fn propeller_family_grid_and_convergence() {
     for (name, least) in [
-        ("clarky_t0.08_free.csv", 0.99),
-        ("clarky_t0.18_free.csv", 0.97),
-        ("clarky_t0.24_free.csv", 0.92),
-        ("clarky_t0.36_free.csv", 0.80),
-        ("clarky_t0.44_free.csv", 0.78),
+        ("clarky_t0.08_free.csv", 0.995),
+        ("clarky_t0.18_free.csv", 0.99),
+        ("clarky_t0.24_free.csv", 0.97),
+        ("clarky_t0.36_free.csv", 0.92),
+        ("clarky_t0.44_free.csv", 0.94),
     ] {
         let t = shipped(name);
         assert_eq!(t.point_count(), 3904, "{name}");

@@ -296,3 +296,46 @@ fn fallback_chain_does_not_explode_the_newton_step() {
     assert!(compared >= 6, "{compared}");
     assert!(dcl <= 1.3e-4 && dcd <= 1.3e-3, "{dcl:.2e} {dcd:.2e}");
 }
+
+/// A point the march cannot reach is filled in a grid from the Reynolds number below
+/// (`SweepParams::series_retry`, `polar::run_grid`): NACA 8-H-12 at Re 2·10⁵, M 0.4, α −4.5°
+/// fails on the sweep from 0° down, with every rung of its recovery; in a table with
+/// Re 10⁵ below it, the state that α converged to there starts it, and it lands on XFOIL 6.99's
+/// solution (`tools/xfoil_reference.py polar --airfoil geometry/naca8h12.dat --re 200000
+/// --mach 0.4 --alpha -10 20 0.5 --iter 200`: C_l −0.3547, C_d 0.03668 at −4.5°). The points
+/// the sweep converges are the table's, bit for bit.
+#[test]
+fn grid_fills_a_hole_from_the_reynolds_number_below() {
+    use polargen::table::{build_table, GridSpec};
+    let alphas: Vec<f64> = (-9..=0).map(|k| 0.5 * f64::from(k)).collect();
+    let alone = run(2e5, 0.4, &alphas, true);
+    let first = alone[0];
+    assert_eq!(first.alpha, -4.5);
+    assert!(
+        !first.converged,
+        "the sweep alone converged −4.5°: {first:?}"
+    );
+
+    let grid = GridSpec {
+        reynolds: vec![1e5, 2e5],
+        mach: vec![0.4],
+        alpha_deg: alphas.clone(),
+    };
+    let table = build_table(
+        &naca8h12(),
+        160,
+        &grid,
+        &ViscousParams::at(1e5, 0.4, 1.0),
+        2,
+        |_| {},
+    )
+    .unwrap();
+    let polar = table.polar(2e5, 0.4).unwrap();
+    for (p, q) in alone.iter().zip(polar).filter(|(p, _)| p.converged) {
+        assert_eq!(p, q);
+    }
+    let filled = polar.iter().find(|p| p.alpha == -4.5).unwrap();
+    assert!(filled.converged, "{filled:?}");
+    assert!((filled.cl - -0.3547).abs() < 1.5e-4, "cl {}", filled.cl);
+    assert!((filled.cd / 0.03668 - 1.0).abs() < 3e-4, "cd {}", filled.cd);
+}
