@@ -1,23 +1,21 @@
 //! Many polars at once: one warm-started sweep per (Re, M) node, run in parallel, and the
 //! holes of each series filled from the polar below.
 //!
-//! Each node gets its own two solvers (no shared mutable state): one for the upward α branch
-//! and one for the downward branch, which run in parallel once the start point has converged
-//! ([`sweep_split`]). Once every node's march is done, the points a march left unconverged are
-//! solved once more from the state the same α converged to at the next lower Reynolds number
-//! of the node's series ([`GridNode::series`], [`fill_from_below`]), series by series from the
-//! lowest Reynolds number up. The points of a node do not depend on which thread ran them or in
-//! which order: the output is identical for any thread count.
+//! Each node's march gets its own two solvers (no shared mutable state): one for the upward α
+//! branch and one for the downward branch, which run in parallel once the start point has
+//! converged ([`sweep_split`]). Once every node's march is done, the points a march left
+//! unconverged are solved once more, on a solver of their own, from the state the same α
+//! converged to at the next lower Reynolds number of the node's series ([`GridNode::series`],
+//! [`fill_from_below`]): each series from its lowest Reynolds number up, the series in
+//! parallel. The points of a node do not depend on which thread ran them or in which order:
+//! the output is identical for any thread count.
+
+use std::collections::HashMap;
 
 use rayon::prelude::*;
 
 use super::sweep::{fill_from_below, sweep_split, SeriesStates, SweepParams, WarmStartSolver};
 use crate::section::PolarPoint;
-
-/// Largest grid (points) whose converged states are kept for filling the holes of its series:
-/// a state is ≈ 16 kB at the default 160 panels, so the default 3 904-point grid keeps
-/// ≈ 60 MB until its holes are filled. A larger grid is solved without the filling.
-pub const MAX_SERIES_FILL_POINTS: usize = 16_384;
 
 /// One polar a grid asks for: its condition and its angles of attack.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -30,7 +28,8 @@ pub struct GridNode<'a> {
     pub alphas: &'a [f64],
     /// Nodes with the same series and Mach number differ in their Reynolds number alone (the
     /// same trips and N_crit): a point one of them leaves unconverged is solved once more from
-    /// the state its α converged to at the next lower Reynolds number of the series.
+    /// the state its α converged to at the next lower Reynolds number of the series (the node
+    /// just below it: one with the same Reynolds number or without that α breaks the chain).
     pub series: usize,
 }
 
@@ -46,13 +45,14 @@ pub struct GridPolar {
 }
 
 /// Run one sweep over its α values for every node on a pool of `threads` threads
-/// (0 = all cores), then fill the holes of each series ([`SweepParams::series_retry`]; not for a
-/// grid of more than [`MAX_SERIES_FILL_POINTS`] points). A node runs at most two tasks at once
-/// (its two α branches), so the pool never gets more than two threads per node: more could not
-/// be used, and thousands of idle threads cost seconds to start. `make_solver(i)` builds the
-/// solver of `nodes[i]`; a node whose solver cannot be built fails the whole grid with that
-/// error. `on_polar_done` is called after each node's march (from worker threads; for progress
-/// display). Polars come back in the order of `nodes`.
+/// (0 = all cores), then fill the holes of each series ([`SweepParams::series_retry`]; the
+/// converged states of every node with a node above it are kept until then). A node runs at
+/// most two tasks at once (its two α branches), so the pool never gets more than two threads
+/// per node: more could not be used, and thousands of idle threads cost seconds to start.
+/// `make_solver(i)` builds the solver of `nodes[i]`; a node whose solver cannot be built fails
+/// the whole grid with that error. `on_polar_done` is called after each node's march (from
+/// worker threads; for progress display), so it has reported every point before the filling,
+/// which solves only the holes, starts. Polars come back in the order of `nodes`.
 pub fn run_grid<S, E, F, P>(
     nodes: &[GridNode<'_>],
     threads: usize,
@@ -67,11 +67,19 @@ where
     F: Fn(usize) -> Result<S, E> + Sync,
     P: Fn(&GridPolar) + Sync,
 {
-    let points: usize = nodes.iter().map(|n| n.alphas.len()).sum();
-    let chains = series_chains(nodes);
-    let fill = params.series_retry
-        && points <= MAX_SERIES_FILL_POINTS
-        && chains.iter().any(|c| c.len() > 1);
+    let chains = if params.series_retry {
+        series_chains(nodes)
+    } else {
+        Vec::new()
+    };
+    // Whose states a node above will start from: every node of a series but its top one.
+    let mut below_another = vec![false; nodes.len()];
+    for chain in &chains {
+        for &i in &chain[..chain.len() - 1] {
+            below_another[i] = true;
+        }
+    }
+    let fill = below_another.contains(&true);
     let work = || {
         let marched = nodes
             .par_iter()
@@ -82,19 +90,20 @@ where
                 // the last polars of a grid do not leave a core idle.
                 let mut solver = make_solver(i)?;
                 let second = make_solver(i)?;
+                let keep = below_another[i];
                 let (points, states) =
-                    sweep_split(&mut solver, Some(second), node.alphas, params, fill);
+                    sweep_split(&mut solver, Some(second), node.alphas, params, keep);
                 let polar = GridPolar {
                     re: node.re,
                     mach: node.mach,
                     points,
                 };
                 on_polar_done(&polar);
-                Ok(Some((polar, states)))
+                Ok((polar, states))
             })
             .collect::<Result<Vec<_>, E>>()?;
         if !fill {
-            return Ok(marched.into_iter().flatten().map(|(p, _)| p).collect());
+            return Ok(marched.into_iter().map(|(p, _)| p).collect());
         }
         fill_series(nodes, &chains, marched, &make_solver)
     };
@@ -119,7 +128,7 @@ type MarchedPolar<T> = (GridPolar, SeriesStates<T>);
 fn fill_series<S, E, F>(
     nodes: &[GridNode<'_>],
     chains: &[Vec<usize>],
-    mut marched: Vec<Option<MarchedPolar<S::State>>>,
+    marched: Vec<MarchedPolar<S::State>>,
     make_solver: &F,
 ) -> Result<Vec<GridPolar>, E>
 where
@@ -128,6 +137,7 @@ where
     E: Send,
     F: Fn(usize) -> Result<S, E> + Sync,
 {
+    let mut marched: Vec<Option<MarchedPolar<S::State>>> = marched.into_iter().map(Some).collect();
     let taken: Vec<Vec<(usize, MarchedPolar<S::State>)>> = chains
         .iter()
         .map(|chain| {
@@ -161,7 +171,7 @@ where
                     );
                 }
                 // The states below are not needed any more.
-                lower[k - 1].1 .1 = SeriesStates::default();
+                drop(std::mem::take(&mut lower[k - 1].1 .1));
             }
             Ok(chain)
         })
@@ -180,21 +190,20 @@ where
 /// Reynolds number (equal ones in the order of `nodes`); series in the order of their first
 /// node.
 fn series_chains(nodes: &[GridNode<'_>]) -> Vec<Vec<usize>> {
-    let mut chains: Vec<((usize, u64), Vec<usize>)> = Vec::new();
+    let mut index: HashMap<(usize, u64), usize> = HashMap::new();
+    let mut chains: Vec<Vec<usize>> = Vec::new();
     for (i, node) in nodes.iter().enumerate() {
         let key = (node.series, (node.mach + 0.0).to_bits());
-        match chains.iter_mut().find(|(k, _)| *k == key) {
-            Some((_, chain)) => chain.push(i),
-            None => chains.push((key, vec![i])),
-        }
+        let c = *index.entry(key).or_insert_with(|| {
+            chains.push(Vec::new());
+            chains.len() - 1
+        });
+        chains[c].push(i);
+    }
+    for chain in &mut chains {
+        chain.sort_by(|&a, &b| nodes[a].re.total_cmp(&nodes[b].re));
     }
     chains
-        .into_iter()
-        .map(|(_, mut chain)| {
-            chain.sort_by(|&a, &b| nodes[a].re.total_cmp(&nodes[b].re));
-            chain
-        })
-        .collect()
 }
 
 #[cfg(test)]
@@ -305,8 +314,8 @@ mod tests {
     }
 
     /// A solver whose march fails at α in `bad`: it converges from a state within 1° at its
-    /// own Reynolds number, or from a state at the same α of another Reynolds number (a series
-    /// start), but never where `bad` holds unless started from such a series state.
+    /// own Reynolds number (a fresh start only at 0°), or from the state another Reynolds
+    /// number converged to at the same α, but at α in `bad` only from such a state.
     struct Series {
         re: f64,
         bad: Vec<f64>,
@@ -343,10 +352,27 @@ mod tests {
 
     #[test]
     fn holes_are_filled_from_the_reynolds_number_below() {
-        let alphas = [0.0, 1.0, 2.0, 3.0];
-        // Re 2e6 and 3e6 fail at 2° in their march (and so at 3°, 2° away from 1°); 3e6 is in
-        // another series (its Mach number), so nothing below it fills its holes.
-        let nodes = grid_nodes(&[(1e6, 0.0), (2e6, 0.0), (3e6, 0.3)], &alphas);
+        let alphas = [-2.0, -1.0, 0.0, 1.0, 2.0, 3.0];
+        // (Re, M, series, α where the march fails), given out of Reynolds order. Series 0 at
+        // M 0 is 1e6 → 2e6 → 3e6: 2e6 fails at −2° (the downward branch) and 2° (and so at 3°,
+        // 2° away from 1°), 3e6 at 2° and 3°, which only 2e6's filled points can start. The
+        // same 2e6 in series 1, and at M 0.3, has nothing below it.
+        let spec = [
+            (3e6, 0.0, 0, vec![2.0, 3.0]),
+            (1e6, 0.0, 0, vec![]),
+            (2e6, 0.0, 0, vec![-2.0, 2.0]),
+            (2e6, 0.0, 1, vec![2.0]),
+            (2e6, 0.3, 0, vec![2.0]),
+        ];
+        let nodes: Vec<GridNode<'_>> = spec
+            .iter()
+            .map(|&(re, mach, series, _)| GridNode {
+                re,
+                mach,
+                alphas: &alphas,
+                series,
+            })
+            .collect();
         let run = |series_retry, threads| {
             let params = SweepParams {
                 series_retry,
@@ -355,30 +381,35 @@ mod tests {
             let make = |i: usize| {
                 Ok::<_, ()>(Series {
                     re: nodes[i].re,
-                    bad: if i == 0 { vec![] } else { vec![2.0] },
+                    bad: spec[i].3.clone(),
                     state: None,
                 })
             };
             run_grid(&nodes, threads, &params, make, |_| {}).unwrap()
         };
-        let converged = |g: &[GridPolar]| -> Vec<Vec<bool>> {
+        let holes = |g: &[GridPolar]| -> Vec<Vec<f64>> {
             g.iter()
-                .map(|p| p.points.iter().map(|q| q.converged).collect())
+                .map(|p| {
+                    let holes = p.points.iter().filter(|q| !q.converged);
+                    holes.map(|q| q.alpha).collect()
+                })
                 .collect()
         };
         let alone = run(false, 1);
         assert_eq!(
-            converged(&alone),
+            holes(&alone),
             [
-                [true; 4],
-                [true, true, false, false],
-                [true, true, false, false]
+                vec![2.0, 3.0],
+                vec![],
+                vec![-2.0, 2.0, 3.0],
+                vec![2.0, 3.0],
+                vec![2.0, 3.0]
             ]
         );
         let filled = run(true, 1);
         assert_eq!(
-            converged(&filled),
-            [[true; 4], [true; 4], [true, true, false, false]]
+            holes(&filled),
+            [vec![], vec![], vec![], vec![2.0, 3.0], vec![2.0, 3.0]]
         );
         // The marches are the same: only the holes changed.
         for (a, f) in alone.iter().zip(&filled) {

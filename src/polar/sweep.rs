@@ -31,8 +31,9 @@ pub trait WarmStartSolver {
     fn save(&self) -> Self::State;
     /// Return to a snapshot taken with [`save`](Self::save).
     fn restore(&mut self, state: &Self::State);
-    /// Snapshot of the current state for a start at the same α under another condition
-    /// ([`fill_from_below`]); what only the march along α needs may be left out.
+    /// Snapshot of the current state for a start at the same α under another condition (a
+    /// grid's series, [`run_grid`](super::run_grid)); what only the march along α needs may
+    /// be left out.
     fn series_state(&self) -> Self::State {
         self.save()
     }
@@ -57,7 +58,7 @@ pub struct SweepParams {
     pub point_budget: u32,
     /// In a grid, a point its polar leaves unconverged is solved once more from the state its
     /// α converged to at the next lower Reynolds number of its series (the same Mach number
-    /// and trips; [`fill_from_below`], [`run_grid`](super::run_grid)). The marches along α
+    /// and trips; [`run_grid`](super::run_grid)). The marches along α
     /// are not changed by it: every point they converge is the same with it or without.
     pub series_retry: bool,
 }

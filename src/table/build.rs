@@ -9,7 +9,9 @@ use crate::limits::MAX_GRID_POINTS;
 use crate::polar::{parse_alpha_range, run_grid, GridNode, GridPolar, SweepParams};
 use crate::progress::Work;
 use crate::section::FlowCondition;
-use crate::viscous::{SharedPanels, ViscousError, ViscousParams, ViscousSolver};
+use crate::viscous::{
+    SharedPanels, ViscousError, ViscousParams, ViscousSolver, SETTLED_STATE_BYTES_PER_NODE,
+};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
@@ -32,7 +34,7 @@ pub const DEFAULT_ALPHA: &str = "-10:20:0.5";
 /// line: the shipped default-grid tables rebuilt with `--threads 1` on a loaded two-core
 /// machine took 6.3 ms per point (NACA 8-H-12, free transition), 2.4–5.0 ms (8-H-12 tripped,
 /// 23012, Clark Y, GOE 429) and 8–22 ms (the thick Clark Y sections of the propeller, t/c
-/// 0.18–0.44, where a fifth of the points fail after their full recovery). An estimate, not a
+/// 0.18–0.44, where up to a fifth of the points fail their march and its recovery). An estimate, not a
 /// promise: the machine's load moves it by 2×, the airfoil by up to 3×.
 pub const SECONDS_PER_POINT_CORE: f64 = 0.007;
 
@@ -248,10 +250,17 @@ pub fn build_table_cancellable(
     .map_err(BuildError::Table)
 }
 
+/// Memory the converged states of a grid may take while its series' holes wait to be filled
+/// ([`run_grid`], [`SETTLED_STATE_BYTES_PER_NODE`]): a grid whose states would take more is
+/// solved without the filling. The default 3 904-point grid at 160 panels needs ≈ 70 MB; at
+/// 1 000 panels grids up to ≈ 2 500 points are filled.
+pub const SERIES_STATES_BYTES: usize = 256 << 20;
+
 /// The polars of `nodes` on `foil`, node `i` solved with `params(i)` (one panel store for all:
 /// the per-α inviscid model does not depend on Re, M or trips), on at most `threads` threads,
-/// `on_points` called with each finished polar's point count; no polar starts once `cancel`
-/// is set, and the result is then [`BuildError::Cancelled`].
+/// `on_points` called with each finished polar's point count (after its march; the filling
+/// of the holes comes after all of them); no polar starts once `cancel` is set, and the result
+/// is then [`BuildError::Cancelled`].
 pub(crate) fn solve_nodes(
     foil: &Airfoil,
     nodes: &[GridNode<'_>],
@@ -261,10 +270,16 @@ pub(crate) fn solve_nodes(
     cancel: &AtomicBool,
 ) -> Result<Vec<GridPolar>, BuildError> {
     let store = Arc::new(SharedPanels::new(foil).map_err(BuildError::Solver)?);
+    let points: usize = nodes.iter().map(|n| n.alphas.len()).sum();
+    let state_bytes = store.node_count() * SETTLED_STATE_BYTES_PER_NODE;
+    let sweep = SweepParams {
+        series_retry: points.saturating_mul(state_bytes) <= SERIES_STATES_BYTES,
+        ..SweepParams::default()
+    };
     let polars = run_grid(
         nodes,
         threads,
-        &SweepParams::default(),
+        &sweep,
         |i| {
             if cancel.load(Ordering::Relaxed) {
                 return Err(BuildError::Cancelled);

@@ -103,7 +103,7 @@ pub use batch::{
 };
 pub use build::{
     build_table, build_table_cancellable, estimated_build_seconds, BuildError, GridSpec,
-    DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE, SECONDS_PER_POINT_CORE,
+    DEFAULT_ALPHA, DEFAULT_MACH, DEFAULT_RE, SECONDS_PER_POINT_CORE, SERIES_STATES_BYTES,
 };
 pub use census::TableCensus;
 pub use error::TableError;

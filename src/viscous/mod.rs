@@ -50,5 +50,5 @@ pub use march::MarchParams;
 pub use panel_model::{PanelModel, SharedPanels};
 pub use params::ViscousParams;
 pub use solution::{BlStation, ViscousSolution};
-pub use solver::{SolverWork, ViscousSolver, WarmStart};
+pub use solver::{SolverWork, ViscousSolver, WarmStart, SETTLED_STATE_BYTES_PER_NODE};
 pub use update::UpdateLimits;

@@ -140,6 +140,12 @@ impl PanelModel {
 /// not kept.
 pub const SHARED_MODEL_BYTES: usize = 256 << 20;
 
+/// Nodes of a model of `n` airfoil nodes with the default wake (N/12 + 10 wake nodes,
+/// `WakeParams`).
+fn default_node_count(n: usize) -> usize {
+    n + n / 12 + 10
+}
+
 /// One airfoil's panel system and its per-α [`PanelModel`]s, built on first request and then
 /// shared by every solver holding this store (any thread). Keys are the exact α values, so a
 /// model is reused only for the identical angle.
@@ -166,18 +172,22 @@ impl SharedPanels {
             });
         }
         let system = PanelSystem::new(airfoil)?;
-        // Nodes with the default wake (N/12 + 10 wake nodes, `WakeParams`); a model holds the
-        // per-α blocks of D (NW × (2N + NW), the airfoil block is shared) and a dozen node
-        // arrays (contour, wake, unit speeds).
+        // A model holds the per-α blocks of D (NW × (2N + NW), the airfoil block is shared) and
+        // a dozen node arrays (contour, wake, unit speeds).
         let n = system.geometry().len();
-        let nw = n / 12 + 10;
-        let nt = n + nw;
+        let nt = default_node_count(n);
+        let nw = nt - n;
         let capacity = (SHARED_MODEL_BYTES / (8 * (nw * (n + nt) + 12 * nt))).max(1);
         Ok(Self {
             system,
             models: Mutex::new(HashMap::new()),
             capacity,
         })
+    }
+
+    /// Number of nodes of a model, airfoil and wake (with the default wake length).
+    pub fn node_count(&self) -> usize {
+        default_node_count(self.system.geometry().len())
     }
 
     /// The model at `alpha_deg`, built now if no solver asked for this α before.

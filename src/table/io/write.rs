@@ -150,7 +150,7 @@ pub fn check_table_output(
     check_files(path, &table_files(path, format, re, mach))
 }
 
-/// The AeroDyn files [`write_aerodyn_flap_sweep`] writes for a flap sweep over Reynolds
+/// The AeroDyn files [`write_aerodyn_flap_sweep`](super::write_aerodyn_flap_sweep) writes for a flap sweep over Reynolds
 /// numbers `re` × Mach numbers `mach` at `path`: `path` itself for one (Re, M), else
 /// `<stem>_Re<re>_M<mach>.<ext>` beside it, Re by Re.
 pub fn flap_sweep_files(path: &Path, re: &[f64], mach: &[f64]) -> Vec<PathBuf> {
