@@ -314,11 +314,13 @@ mod tests {
     }
 
     /// A solver whose march fails at α in `bad`: it converges from a state within 1° at its
-    /// own Reynolds number (a fresh start only at 0°), or from the state another Reynolds
-    /// number converged to at the same α, but at α in `bad` only from such a state.
+    /// own Reynolds number (a fresh start within 1° of 0°, but not at α in `bad_fresh`), or
+    /// from the state another Reynolds number converged to at the same α, but at α in `bad`
+    /// only from such a state.
     struct Series {
         re: f64,
         bad: Vec<f64>,
+        bad_fresh: Vec<f64>,
         state: Option<(f64, f64)>,
     }
 
@@ -328,7 +330,8 @@ mod tests {
             let from_series = matches!(self.state, Some((a, re)) if a == alpha && re != self.re);
             let near =
                 matches!(self.state, Some((a, re)) if (a - alpha).abs() <= 1.0 && re == self.re);
-            let fresh = self.state.is_none() && alpha == 0.0;
+            let fresh =
+                self.state.is_none() && alpha.abs() <= 1.0 && !self.bad_fresh.contains(&alpha);
             let ok = from_series || (near || fresh) && !self.bad.contains(&alpha);
             self.state = ok.then_some((alpha, self.re));
             let mut p = Analytic {
@@ -382,6 +385,7 @@ mod tests {
                 Ok::<_, ()>(Series {
                     re: nodes[i].re,
                     bad: spec[i].3.clone(),
+                    bad_fresh: vec![],
                     state: None,
                 })
             };
@@ -419,6 +423,25 @@ mod tests {
         }
         assert_eq!(filled, run(true, 2));
         assert_eq!(filled, run(true, 0));
+    }
+
+    /// A start point that converges only on its retry from the point above it
+    /// (`sweep_split`'s `retry_start`) keeps its state for the polar above it too.
+    #[test]
+    fn a_start_point_rescued_by_its_retry_fills_the_polar_above() {
+        let alphas = [0.0, 1.0];
+        let nodes = grid_nodes(&[(1e6, 0.0), (2e6, 0.0)], &alphas);
+        let make = |i: usize| {
+            Ok::<_, ()>(Series {
+                re: nodes[i].re,
+                // 1e6: no fresh start at 0°, so 0° converges warm from 1°; 2e6 fails at 0°.
+                bad: if i == 1 { vec![0.0] } else { vec![] },
+                bad_fresh: vec![0.0],
+                state: None,
+            })
+        };
+        let grid = run_grid(&nodes, 1, &SweepParams::default(), make, |_| {}).unwrap();
+        assert!(grid.iter().all(|p| p.points.iter().all(|q| q.converged)));
     }
 
     #[test]
