@@ -14,7 +14,8 @@ use std::collections::HashMap;
 
 use rayon::prelude::*;
 
-use super::sweep::{fill_from_below, sweep_split, SeriesStates, SweepParams, WarmStartSolver};
+use super::series::{fill_from_below, SeriesStates};
+use super::sweep::{sweep_split, SweepParams, WarmStartSolver};
 use crate::section::PolarPoint;
 
 /// One polar a grid asks for: its condition and its angles of attack.

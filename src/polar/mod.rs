@@ -5,6 +5,8 @@ mod grid;
 mod operating_point;
 mod point_cases;
 mod range;
+mod recovery;
+mod series;
 mod sweep;
 mod target_cl;
 mod viscous_sweep;

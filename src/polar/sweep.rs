@@ -12,9 +12,9 @@
 //! Newton iterations, so a sweep's cost stays bounded. A solve that repeats one already done from
 //! the same converged state along the same α path is not redone: its outcome is replayed.
 
-use std::collections::HashMap;
-
 use super::range::march_order;
+use super::recovery::{recover, AnchorMemo};
+use super::series::SeriesStates;
 use crate::section::PolarPoint;
 
 /// A point solver that can be marched along α with warm starts.
@@ -84,41 +84,6 @@ where
     sweep_split(solver, None, alphas, params, false).0
 }
 
-/// The converged states of one polar by α ([`WarmStartSolver::series_state`]): where a point
-/// the next polar of its series (the same Mach number and trips at the next higher Reynolds
-/// number of a grid) leaves unconverged is solved once more ([`fill_from_below`]). States of
-/// points in massive separation are kept too: without them the filling of the 8-H-12 free
-/// table converges 3 points that lookups use instead of 10.
-#[derive(Clone, Debug)]
-pub struct SeriesStates<T> {
-    /// States by the bit pattern of α (+0.0 for −0.0).
-    by_alpha: HashMap<u64, T>,
-}
-
-impl<T> Default for SeriesStates<T> {
-    fn default() -> Self {
-        Self {
-            by_alpha: HashMap::new(),
-        }
-    }
-}
-
-impl<T> SeriesStates<T> {
-    fn key(alpha: f64) -> u64 {
-        (alpha + 0.0).to_bits()
-    }
-
-    /// Keeps the state converged at `alpha`.
-    fn insert(&mut self, alpha: f64, state: T) {
-        self.by_alpha.insert(Self::key(alpha), state);
-    }
-
-    /// The state converged at exactly `alpha`, if any.
-    pub(super) fn get(&self, alpha: f64) -> Option<&T> {
-        self.by_alpha.get(&Self::key(alpha))
-    }
-}
-
 /// What a march reads: the polar's α values and the recovery's settings, and whether it keeps
 /// the states it converged to ([`SeriesStates`]).
 struct Polar<'a> {
@@ -148,7 +113,7 @@ impl<T> Marched<T> {
                 *mine = theirs;
             }
         }
-        self.states.by_alpha.extend(other.states.by_alpha);
+        self.states.merge(other.states);
     }
 }
 
@@ -327,121 +292,6 @@ fn march<S: WarmStartSolver>(
         out.points[i] = Some(point);
     }
     first_state
-}
-
-/// Outcomes of the solves done from the current anchor (the last converged state), keyed by
-/// the α path taken from it. A recovery often repeats such a solve exactly: the half step towards
-/// the point after a failed one is that failed point again, from the same converged neighbour.
-/// Solves are deterministic ([`WarmStartSolver::solve`]), so the stored point and end state are
-/// exactly what the repeat would give. Cleared whenever the anchor changes.
-pub(super) struct AnchorMemo<T> {
-    /// (α path from the anchor as bit patterns, its last point, the state after it).
-    entries: Vec<(Vec<u64>, PolarPoint, T)>,
-}
-
-impl<T> Default for AnchorMemo<T> {
-    fn default() -> Self {
-        Self {
-            entries: Vec::new(),
-        }
-    }
-}
-
-impl<T: Clone> AnchorMemo<T> {
-    /// Forgets every outcome (the anchor changed).
-    fn clear(&mut self) {
-        self.entries.clear();
-    }
-
-    /// Solves `alpha` after the solves of `path` from the anchor (the solver holds the state
-    /// they left), or replays the outcome if this path was solved before; `path` then ends with
-    /// `alpha`. The iterations of a new solve are added to `spent`.
-    fn solve<S: WarmStartSolver<State = T>>(
-        &mut self,
-        solver: &mut S,
-        path: &mut Vec<u64>,
-        alpha: f64,
-        spent: &mut u32,
-    ) -> PolarPoint {
-        path.push(alpha.to_bits());
-        if let Some((_, point, state)) = self.entries.iter().find(|(p, _, _)| p == path) {
-            solver.restore(state);
-            return *point;
-        }
-        let point = solver.solve(alpha);
-        *spent = spent.saturating_add(point.iterations);
-        self.entries.push((path.clone(), point, solver.save()));
-        point
-    }
-}
-
-/// Retry a failed point: sub-steps from the last converged neighbour, then a fresh start, while
-/// the point has not used its budget ([`SweepParams::point_budget`]; `spent` iterations so far).
-pub(super) fn recover<S: WarmStartSolver>(
-    solver: &mut S,
-    alpha: f64,
-    anchor: Option<&(f64, S::State)>,
-    params: &SweepParams,
-    memo: &mut AnchorMemo<S::State>,
-    mut spent: u32,
-) -> Option<PolarPoint> {
-    let budget = params.point_budget;
-    if let Some((a0, state)) = anchor {
-        for level in 1..=params.substep_levels {
-            let n = 1u32 << level;
-            solver.restore(state);
-            let mut path = Vec::new();
-            let mut ok = true;
-            for j in 1..n {
-                let a = a0 + (alpha - a0) * f64::from(j) / f64::from(n);
-                if spent >= budget || !memo.solve(solver, &mut path, a, &mut spent).converged {
-                    ok = false;
-                    break;
-                }
-            }
-            if ok && spent < budget {
-                let p = memo.solve(solver, &mut path, alpha, &mut spent);
-                if p.converged {
-                    return Some(p);
-                }
-            }
-        }
-    }
-    if params.fresh_retry && spent < budget {
-        solver.reset();
-        let p = solver.solve(alpha);
-        if p.converged {
-            return Some(p);
-        }
-    }
-    None
-}
-
-/// Solves once more each point of a polar (`alphas`, `points`) that is not converged, from
-/// the state its α converged to in the polar below it in its series (`below`), and keeps the
-/// state of each point this converges in `states` (for the polar above). Across one step of a
-/// grid's Reynolds numbers the boundary layer changes little, so that state is a close start
-/// where the march along α found none. The march itself is not changed: every point it
-/// converged stays as it was, so the polar follows the branch its α continuation gives
-/// (XFOIL's).
-pub(super) fn fill_from_below<S: WarmStartSolver>(
-    solver: &mut S,
-    alphas: &[f64],
-    points: &mut [PolarPoint],
-    states: &mut SeriesStates<S::State>,
-    below: &SeriesStates<S::State>,
-) {
-    for (&alpha, point) in alphas.iter().zip(points.iter_mut()) {
-        let Some(start) = below.get(alpha).filter(|_| !point.converged) else {
-            continue;
-        };
-        solver.restore(start);
-        let p = solver.solve(alpha);
-        if p.converged {
-            *point = p;
-            states.insert(alpha, solver.series_state());
-        }
-    }
 }
 
 #[cfg(test)]

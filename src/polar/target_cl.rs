@@ -1,7 +1,8 @@
 //! Operating point at a prescribed lift coefficient: the α at which a viscous solution has
 //! Cl = Cl_target (XFOIL's `CL` command), found by secant iteration on α with warm starts.
 
-use super::sweep::{recover, AnchorMemo, SweepParams};
+use super::recovery::{recover, AnchorMemo};
+use super::sweep::SweepParams;
 use crate::viscous::{ViscousSolution, ViscousSolver};
 
 /// Controls of [`solve_at_cl`].

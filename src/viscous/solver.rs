@@ -220,7 +220,7 @@ impl ViscousSolver {
     }
 
     /// [`warm_start`](Self::warm_start) without the state's tangent along α: for a start at the
-    /// same α under another condition (a grid's series, [`crate::polar::run_grid`]), where
+    /// same α under another condition (another Reynolds number of a table's grid), where
     /// there is no step to predict. About [`SETTLED_STATE_BYTES_PER_NODE`] per node of the
     /// panel model.
     pub fn settled_state(&self) -> WarmStart {
